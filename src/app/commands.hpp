@@ -1,0 +1,17 @@
+// Subcommands of the geartrib command line. Each adds itself to the CLI11 app; its callback
+// runs the command and throws on bad input (main maps the exception to the exit status).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+
+namespace geartrib::app {
+
+void add_asperity_command(CLI::App& app);
+void add_version_command(CLI::App& app);
+
+// gears/m6z30.toml in the working directory, else in the source tree the tool was built from.
+std::filesystem::path default_case_file();
+
+}  // namespace geartrib::app

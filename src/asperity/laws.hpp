@@ -1,0 +1,225 @@
+// Single-asperity elastic-plastic laws (sphere on a rigid flat), written once as functors
+// templated on the scalar so that the simulator (double) and Ceres fitting (ceres::Jet) run the
+// same code. Each law gives the dimensionless load F* = F/F_c and area A* = A/A_c at
+// delta* = delta/delta_c, normalised by its own published critical values, from a parameter
+// array holding its named constants (ConstantSpec tables below, in order).
+#pragma once
+
+#include "asperity/contact_pair.hpp"
+#include "asperity/critical.hpp"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string_view>
+
+namespace geartrib::asperity {
+
+template <class T>
+struct Star {
+  T load;  // F* = F / F_c
+  T area;  // A* = A / A_c
+};
+
+// A named model constant: default value, admissible range (inclusive) and meaning.
+struct ConstantSpec {
+  std::string_view name;
+  double value;
+  double lower;
+  double upper;
+  std::string_view meaning;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Hertz: purely elastic at any interference (Johnson ch. 4). delta_c is the CEB one.
+struct HertzLaw {
+  static constexpr std::string_view name = "hertz";
+  static constexpr std::string_view citation = "Hertz (1882); Johnson, Contact Mechanics (1985) ch. 4";
+  static constexpr std::array<ConstantSpec, 0> constants{};
+  static double yield_peak_pressure(const ContactPair& p, const double*) {
+    return ceb_pressure_factor(p.poisson_ratio) * p.hardness;
+  }
+  template <class T>
+  static Star<T> star(const T& d, const T*, const ContactPair&) {
+    using std::pow;
+    return {pow(d, 1.5), d};
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Chang, Etsion & Bogy (1987): Hertz up to delta_c, then volume conservation of the plastically
+// deformed tip, A = pi R delta (2 - delta_c/delta), at a uniform mean pressure k H. Published
+// with a load jump of 3/2 at delta* = 1.
+struct CebLaw {
+  static constexpr std::string_view name = "ceb";
+  static constexpr std::string_view citation = "Chang, Etsion & Bogy, J. Tribol. 109 (1987) 257";
+  static constexpr std::array<ConstantSpec, 0> constants{};
+  static double yield_peak_pressure(const ContactPair& p, const double*) {
+    return ceb_pressure_factor(p.poisson_ratio) * p.hardness;
+  }
+  template <class T>
+  static Star<T> star(const T& d, const T*, const ContactPair&) {
+    using std::pow;
+    if (d <= 1.0) return {pow(d, 1.5), d};
+    const T area = 2.0 * d - 1.0;
+    return {1.5 * area, area};  // F/F_c = (k H A) / ((2/3) k H A_c)
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Kogut & Etsion (2002), FEM fits for 1 <= delta* <= 110 (nu = 0.3 based):
+//   1 <= d <= 6:   F* = 1.03 d^1.425, A* = 0.93 d^1.136
+//   6 <= d <= 110: F* = 1.40 d^1.263, A* = 0.94 d^1.146
+//   d > 110: fully plastic, F = 2 pi R delta H (F* = 3 d / k), A = 2 pi R delta (A* = 2 d).
+// As published it jumps at d = 1 (area down by 7%), 6 and 110.
+struct KogutEtsionLaw {
+  static constexpr std::string_view name = "kogut-etsion";
+  static constexpr std::string_view citation = "Kogut & Etsion, J. Appl. Mech. 69 (2002) 657";
+  static constexpr std::array<ConstantSpec, 10> constants{{
+      {"load_coefficient_1", 1.03, 0.1, 10.0, "F* coefficient for 1 <= delta* <= 6"},
+      {"load_exponent_1", 1.425, 1.0, 2.0, "F* exponent for 1 <= delta* <= 6"},
+      {"area_coefficient_1", 0.93, 0.1, 10.0, "A* coefficient for 1 <= delta* <= 6"},
+      {"area_exponent_1", 1.136, 0.5, 2.0, "A* exponent for 1 <= delta* <= 6"},
+      {"load_coefficient_2", 1.40, 0.1, 10.0, "F* coefficient for 6 <= delta* <= 110"},
+      {"load_exponent_2", 1.263, 1.0, 2.0, "F* exponent for 6 <= delta* <= 110"},
+      {"area_coefficient_2", 0.94, 0.1, 10.0, "A* coefficient for 6 <= delta* <= 110"},
+      {"area_exponent_2", 1.146, 0.5, 2.0, "A* exponent for 6 <= delta* <= 110"},
+      {"surface_yield", 6.0, 1.0, 100.0, "delta* where the plastic zone reaches the surface"},
+      {"fully_plastic", 110.0, 2.0, 1000.0, "delta* of fully plastic contact"},
+  }};
+  static double yield_peak_pressure(const ContactPair& p, const double*) {
+    return ceb_pressure_factor(p.poisson_ratio) * p.hardness;
+  }
+  template <class T>
+  static Star<T> star(const T& d, const T* c, const ContactPair& p) {
+    using std::pow;
+    if (d <= 1.0) return {pow(d, 1.5), d};
+    if (d <= c[8]) return {c[0] * pow(d, c[1]), c[2] * pow(d, c[3])};
+    if (d <= c[9]) return {c[4] * pow(d, c[5]), c[6] * pow(d, c[7])};
+    return {3.0 * d / ceb_pressure_factor(p.poisson_ratio), 2.0 * d};
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Jackson & Green (2005), FEM-based, Hertz up to delta* = 1.9, then
+//   F* = exp(-1/4 d^(5/12)) d^(3/2) + 4 H_G/(C S_y) [1 - exp(-1/25 d^(5/9))] d
+//   A* = d (d/1.9)^B,  B = 0.14 exp(23 S_y/E)
+//   H_G/S_y = 2.84 [1 - exp(-0.82 (a/R)^-0.7)]
+// with delta_c = (pi C S_y/(2 E_t))^2 R, C = 1.295 exp(0.736 nu).
+struct JacksonGreenLaw {
+  static constexpr std::string_view name = "jackson-green";
+  static constexpr std::string_view citation = "Jackson & Green, J. Tribol. 127 (2005) 343";
+  static constexpr std::array<ConstantSpec, 6> constants{{
+      {"elastic_limit", 1.9, 1.0, 10.0, "delta* up to which the contact is Hertzian"},
+      {"hardness_limit", 2.84, 2.0, 3.5, "H_G/S_y of a small contact, a/R -> 0"},
+      {"hardness_coefficient", 0.82, 0.1, 5.0, "coefficient of (a/R)^-exponent in H_G"},
+      {"hardness_exponent", 0.7, 0.1, 2.0, "exponent of a/R in H_G"},
+      {"area_coefficient", 0.14, 0.01, 1.0, "B = coefficient exp(slope S_y/E)"},
+      {"area_slope", 23.0, 0.0, 100.0, "B = coefficient exp(slope S_y/E)"},
+  }};
+  static double yield_peak_pressure(const ContactPair& p, const double*) {
+    return jackson_green_yield_factor(p.poisson_ratio) * p.yield_strength;
+  }
+  template <class T>
+  static Star<T> star(const T& d, const T* c, const ContactPair& p) {
+    using std::exp, std::pow, std::sqrt;
+    if (d <= c[0]) return {pow(d, 1.5), d};
+    const double cy = jackson_green_yield_factor(p.poisson_ratio);
+    const double sqrt_dc_over_r = std::numbers::pi * cy * p.yield_strength / (2.0 * p.modulus);
+    const T b = c[4] * exp(c[5] * (p.yield_strength / p.youngs_modulus));
+    const T area = d * pow(d / c[0], b);
+    const T a_over_r = sqrt(area) * sqrt_dc_over_r;  // a/R = sqrt(A*/pi * pi delta_c / R) / 1
+    const T hg = c[1] * (1.0 - exp(-c[2] * pow(a_over_r, -c[3])));
+    const T load = exp(-0.25 * pow(d, 5.0 / 12.0)) * pow(d, 1.5) +
+                   4.0 * hg / cy * (1.0 - exp(-pow(d, 5.0 / 9.0) / 25.0)) * d;
+    return {load, area};
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Zhao, Maietta & Chang (2000): Hertz until the Hertz mean pressure reaches K H
+// (delta_1 = (3 pi K H/(4 E_t))^2 R), fully plastic beyond delta_2 = 54 delta_1, and between
+//   A = pi R delta [1 - 2 x^3 + 3 x^2],  x = (delta - delta_1)/(delta_2 - delta_1)
+//   p_m = H [1 - (1 - K) ln(delta_2/delta) / ln(delta_2/delta_1)].
+struct ZmcLaw {
+  static constexpr std::string_view name = "zmc";
+  static constexpr std::string_view citation = "Zhao, Maietta & Chang, J. Tribol. 122 (2000) 86";
+  static constexpr std::array<ConstantSpec, 2> constants{{
+      {"mean_pressure_factor", 0.6, 0.1, 1.0, "K: Hertz mean pressure K H at first yield"},
+      {"fully_plastic", 54.0, 2.0, 1000.0, "delta_2/delta_1, onset of fully plastic flow"},
+  }};
+  static double yield_peak_pressure(const ContactPair& p, const double* c) { return 1.5 * c[0] * p.hardness; }
+  template <class T>
+  static Star<T> star(const T& d, const T* c, const ContactPair&) {
+    using std::log, std::pow;
+    if (d <= 1.0) return {pow(d, 1.5), d};
+    const T& k = c[0];
+    if (d >= c[1]) return {2.0 * d / k, 2.0 * d};  // F_c = K H A_c
+    const T x = (d - 1.0) / (c[1] - 1.0);
+    const T area = d * (1.0 + 3.0 * x * x - 2.0 * x * x * x);
+    const T pm_over_h = 1.0 - (1.0 - k) * log(c[1] / d) / log(c[1]);
+    return {area * pm_over_h / k, area};
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// The seed's continuous elastic-plastic model (section 2), re-derived (ERRATA). Load carried by
+// an elastic annulus with the Hertz-type pressure p_e sqrt(1 - r^2/r_a^2), p_e = 2 E_t r_a/(pi R),
+// and a plastic core of radius r_p at sigma_rp:
+//   F = 4 E_t (r_a^2 - r_p^2)^(3/2) / (3 R) + pi r_p^2 sigma_rp,
+// which is Hertz at r_p = 0 and 2 pi R delta H when r_p = r_a, r_a^2 = 2 R delta, sigma_rp = H.
+// The closure the seed omits (x = delta* - 1 > 0):
+//   r_a^2 = R delta g,  g = 1 + x^na/(da^na + x^na)             (1 -> 2)
+//   (r_p/r_a)^2 = phi = x^np/(dp^np + x^np)                      (0 -> 1)
+//   sigma_rp/H = s = k + (1 - k) x^ns/(ds^ns + x^ns)             (k -> 1)
+// so F* = (d g)^(3/2) (1 - phi)^(3/2) + 3/(2k) d g phi s and A* = d g. Defaults: least-squares
+// fit (in log) to Kogut-Etsion 2002 and Jackson-Green 2005 for 1 <= delta* <= 1e4, with
+// fully-plastic asymptotics; provenance in validation/continuous-closure/ (fit_closure.py).
+struct ContinuousLaw {
+  static constexpr std::string_view name = "continuous";
+  static constexpr std::string_view citation = "seed section 2, closure re-derived (ERRATA); defaults fitted to KE 2002 / JG 2005";
+  static constexpr std::array<ConstantSpec, 6> constants{{
+      {"area_scale", 23.4, 0.1, 1e4, "da: delta* - 1 at which r_a^2 is halfway from R delta to 2 R delta"},
+      {"area_exponent", 1.04, 0.2, 5.0, "na: steepness of the contact-radius growth"},
+      {"plastic_scale", 3.27, 0.01, 1e4, "dp: delta* - 1 at which half the contact area is plastic"},
+      {"plastic_exponent", 1.5, 1.0, 5.0, "np: steepness of the plastic-core growth (>= 1 keeps the peak pressure bounded)"},
+      {"pressure_scale", 6.95, 0.01, 1e4, "ds: delta* - 1 at which sigma_rp is halfway from k H to H"},
+      {"pressure_exponent", 0.869, 0.2, 5.0, "ns: steepness of the core-pressure growth"},
+  }};
+  static double yield_peak_pressure(const ContactPair& p, const double*) {
+    return ceb_pressure_factor(p.poisson_ratio) * p.hardness;
+  }
+  template <class T>
+  struct Closure {
+    T area_factor;       // g = r_a^2 / (R delta)
+    T plastic_fraction;  // phi = (r_p/r_a)^2
+    T elastic_fraction;  // 1 - phi, computed without cancellation
+    T core_pressure;     // s = sigma_rp / H
+  };
+  // x/(c + x) in the power form x^n/(c^n + x^n) = 1/(1 + (c/x)^n), stable for large x.
+  template <class T>
+  static T rise(const T& x, const T& scale, const T& exponent) {
+    using std::pow;
+    return 1.0 / (1.0 + pow(scale / x, exponent));
+  }
+  template <class T>
+  static Closure<T> closure(const T& d, const T* c, double k) {
+    using std::pow;
+    const T x = d - 1.0;  // > 0: callers handle d <= 1 as Hertz
+    const T tp = pow(x / c[2], c[3]);
+    return {1.0 + rise(x, c[0], c[1]), tp / (1.0 + tp), 1.0 / (1.0 + tp), k + (1.0 - k) * rise(x, c[4], c[5])};
+  }
+  template <class T>
+  static Star<T> star(const T& d, const T* c, const ContactPair& p) {
+    using std::pow;
+    if (d <= 1.0) return {pow(d, 1.5), d};
+    const double k = ceb_pressure_factor(p.poisson_ratio);
+    const Closure<T> cl = closure(d, c, k);
+    const T area = d * cl.area_factor;
+    const T elastic = pow(area * cl.elastic_fraction, 1.5);
+    const T plastic = 1.5 / k * area * cl.plastic_fraction * cl.core_pressure;
+    return {elastic + plastic, area};
+  }
+};
+
+}  // namespace geartrib::asperity

@@ -1,0 +1,107 @@
+#include "asperity/pressure_profile.hpp"
+
+#include "asperity/axis_stress.hpp"
+#include "core/maximize.hpp"
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace geartrib::asperity {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+}
+
+double PressureProfile::load() const {
+  const double a = contact_radius;
+  if (a <= 0.0) return 0.0;
+  const double ann = std::max(0.0, a * a - core_radius * core_radius);
+  return kPi * core_radius * core_radius * core_pressure + (2.0 * kPi / 3.0) * annulus_peak * ann * std::sqrt(ann) / a;
+}
+
+double PressureProfile::max_pressure() const {
+  if (contact_radius <= 0.0) return 0.0;
+  const double rho = core_radius / contact_radius;
+  const double edge = annulus_peak * std::sqrt(std::max(0.0, 1.0 - rho * rho));
+  return std::max(core_radius > 0.0 ? core_pressure : 0.0, edge);
+}
+
+double PressureProfile::plastic_fraction() const {
+  if (contact_radius <= 0.0) return 0.0;
+  const double rho = core_radius / contact_radius;
+  return rho * rho;
+}
+
+AxisStress PressureProfile::axis_stress(double depth, double nu) const {
+  const double a = contact_radius;
+  AxisStress s{};
+  if (a <= 0.0) return s;
+  auto add = [&](const AxisStress& t, double scale) {
+    s.radial += scale * t.radial;
+    s.axial += scale * t.axial;
+  };
+  if (core_radius > 0.0) add(uniform_disc_axis_stress(depth / core_radius, nu), core_pressure);
+  if (core_radius < a && annulus_peak != 0.0) {
+    add(hertz_axis_stress(depth / a, nu), annulus_peak);
+    if (core_radius > 0.0) {
+      // Inner cap of the Hertz distribution, r = a sin t so that the integrand stays smooth.
+      const double t_max = std::asin(std::min(1.0, core_radius / a));
+      auto component = [&](bool radial) {
+        auto f = [&](double t) {
+          const double r = a * std::sin(t);
+          const double p = annulus_peak * std::cos(t);
+          const AxisStress k = boussinesq_axis_kernel(r, depth, nu);
+          return p * (radial ? k.radial : k.axial) * 2.0 * kPi * r * a * std::cos(t);
+        };
+        return boost::math::quadrature::gauss_kronrod<double, 31>::integrate(f, 0.0, t_max, 12, 1e-11);
+      };
+      s.radial -= component(true);
+      s.axial -= component(false);
+    }
+  }
+  return s;
+}
+
+VonMisesMaximum PressureProfile::von_mises_maximum(double nu) const {
+  const double a = contact_radius;
+  if (a <= 0.0) return {};
+  const auto m = maximize_on_interval(
+      [&](double z) { return von_mises_on_axis(axis_stress(z * a, nu)); }, 1e-4, 3.0, 48);
+  return {m.value, m.x * a};
+}
+
+PressureProfile hertz_profile(double contact_radius, double peak_pressure) {
+  return {contact_radius, 0.0, 0.0, peak_pressure};
+}
+
+PressureProfile uniform_profile(double contact_radius, double pressure) {
+  return {contact_radius, contact_radius, pressure, 0.0};
+}
+
+PressureProfile profile_from_mean_pressure(double contact_radius, double mean_pressure,
+                                           double yield_peak_pressure, double hardness) {
+  const double py = yield_peak_pressure;
+  if (mean_pressure <= 2.0 * py / 3.0) return hertz_profile(contact_radius, 1.5 * mean_pressure);
+  if (mean_pressure >= hardness) return uniform_profile(contact_radius, mean_pressure);
+  // Solve (p_y + D phi)(2 + phi) = 3 p_m for phi in (0, 1), D = H - p_y.
+  const double d = hardness - py;
+  double phi;
+  if (d <= 1e-12 * hardness) {
+    phi = (3.0 * mean_pressure - 2.0 * py) / py;
+  } else {
+    const double b = py + 2.0 * d;
+    const double c = 2.0 * py - 3.0 * mean_pressure;  // < 0
+    phi = -2.0 * c / (b + std::sqrt(b * b - 4.0 * d * c));  // stable root of d phi^2 + b phi + c
+  }
+  phi = std::clamp(phi, 0.0, 1.0);
+  const double core = py + d * phi;
+  const double rho = std::sqrt(phi);
+  PressureProfile p{contact_radius, rho * contact_radius, core, 0.0};
+  p.annulus_peak = phi < 1.0 ? core / std::sqrt(1.0 - phi) : 0.0;
+  return p;
+}
+
+}  // namespace geartrib::asperity

@@ -1,0 +1,158 @@
+#include "io/case_file.hpp"
+
+#include "asperity/model.hpp"
+#include "io/toml_reader.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace geartrib::io {
+
+namespace {
+
+void require(TomlReader& r, std::string_view key, bool ok, const std::string& rule) {
+  if (!ok) r.fail(key, rule);
+}
+
+double positive_quantity(TomlReader& r, std::string_view key, Dimension d) {
+  const double v = r.quantity(key, d);
+  require(r, key, v > 0.0, "must be positive");
+  return v;
+}
+
+GearSpec read_gear(TomlReader& r, const std::string& name) {
+  GearSpec g;
+  const std::string p = name + ".";
+  g.teeth = static_cast<int>(r.integer(p + "teeth"));
+  require(r, p + "teeth", g.teeth >= 5 && g.teeth <= 1000, "tooth number must lie in [5, 1000]");
+  g.profile_shift = r.number(p + "profile_shift", 0.0);
+  require(r, p + "profile_shift", std::abs(g.profile_shift) <= 2.0, "profile shift coefficient must lie in [-2, 2]");
+  g.material_file = r.string(p + "material");
+  const auto material_path = r.directory() / g.material_file;
+  if (!std::filesystem::exists(material_path)) r.fail(p + "material", "material file not found: " + material_path.string());
+  g.material = load_material(material_path);
+  g.flank.summit_radius = positive_quantity(r, p + "flank.summit_radius", Dimension::length);
+  g.flank.ra = positive_quantity(r, p + "flank.ra", Dimension::length);
+  return g;
+}
+
+}  // namespace
+
+Material load_material(const std::filesystem::path& file) {
+  TomlReader r(file);
+  Material m;
+  m.name = r.string("name");
+  r.string("source");  // provenance is required, not interpreted
+  m.youngs_modulus = positive_quantity(r, "youngs_modulus", Dimension::pressure);
+  m.poisson_ratio = r.number("poisson_ratio");
+  require(r, "poisson_ratio", m.poisson_ratio > 0.0 && m.poisson_ratio < 0.5, "Poisson's ratio must lie in (0, 0.5)");
+  m.yield_strength = positive_quantity(r, "yield_strength", Dimension::pressure);
+  require(r, "yield_strength", m.yield_strength < m.youngs_modulus, "yield strength must be below Young's modulus");
+  m.hardness = r.quantity("hardness", Dimension::pressure, kTaborHardnessRatio * m.yield_strength);
+  require(r, "hardness", m.hardness >= m.yield_strength, "hardness must be at least the yield strength");
+  m.density = positive_quantity(r, "density", Dimension::density);
+  if (r.has("flow_curve")) {
+    r.string("flow_curve.source");
+    const auto stress = r.quantity_array("flow_curve.stress", Dimension::pressure);
+    const auto strain = r.quantity_array("flow_curve.plastic_strain", Dimension::dimensionless);
+    require(r, "flow_curve.plastic_strain", strain.size() == stress.size(),
+            "must have as many entries as flow_curve.stress (" + std::to_string(stress.size()) + ")");
+    require(r, "flow_curve.stress", stress.size() >= 2, "needs at least two points");
+    for (std::size_t i = 0; i < stress.size(); ++i) m.flow_curve.push_back({stress[i], strain[i]});
+    require(r, "flow_curve.plastic_strain", strain.front() == 0.0, "must start at 0");
+    require(r, "flow_curve.stress", std::abs(stress.front() - m.yield_strength) <= 0.01 * m.yield_strength,
+            "first stress must equal yield_strength (within 1%)");
+    for (std::size_t i = 1; i < stress.size(); ++i) {
+      require(r, "flow_curve.plastic_strain", strain[i] > strain[i - 1],
+              "must increase strictly (entry " + std::to_string(i) + ")");
+      require(r, "flow_curve.stress", stress[i] >= stress[i - 1], "must not decrease (entry " + std::to_string(i) + ")");
+    }
+  }
+  r.check_all_used();
+  m.validate();
+  return m;
+}
+
+Case load_case(const std::filesystem::path& file) {
+  TomlReader r(file);
+  Case c;
+  c.title = r.string("title");
+  c.source = r.string("source");
+
+  auto& gp = c.gear_pair;
+  gp.module = positive_quantity(r, "gear_pair.module", Dimension::length);
+  gp.pressure_angle = r.quantity("gear_pair.pressure_angle", Dimension::angle);
+  require(r, "gear_pair.pressure_angle", gp.pressure_angle > 0.0 && gp.pressure_angle < std::numbers::pi / 4.0,
+          "pressure angle must lie in (0, 45) deg");
+  gp.face_width = positive_quantity(r, "gear_pair.face_width", Dimension::length);
+  gp.addendum_coefficient = r.number("gear_pair.addendum_coefficient", 1.0);
+  require(r, "gear_pair.addendum_coefficient", gp.addendum_coefficient > 0.0 && gp.addendum_coefficient <= 2.0,
+          "must lie in (0, 2]");
+  gp.dedendum_coefficient = r.number("gear_pair.dedendum_coefficient", 1.25);
+  require(r, "gear_pair.dedendum_coefficient", gp.dedendum_coefficient > gp.addendum_coefficient,
+          "must exceed the addendum coefficient (tip clearance)");
+  gp.root_radius_coefficient = r.number("gear_pair.root_radius_coefficient", 0.38);
+  require(r, "gear_pair.root_radius_coefficient", gp.root_radius_coefficient >= 0.0 && gp.root_radius_coefficient < 1.0,
+          "must lie in [0, 1)");
+
+  c.pinion = read_gear(r, "pinion");
+  c.wheel = read_gear(r, "wheel");
+
+  c.operating.pinion_torque = positive_quantity(r, "operating.pinion_torque", Dimension::torque);
+  c.operating.pinion_speed = positive_quantity(r, "operating.pinion_speed", Dimension::angular_speed);
+
+  c.friction_coefficient = r.number("friction.mu");
+  require(r, "friction.mu", c.friction_coefficient >= 0.0 && c.friction_coefficient < 1.0, "must lie in [0, 1)");
+
+  auto& a = c.asperity;
+  a.model = r.string("asperity.model", std::string("continuous"));
+  {
+    bool known = false;
+    for (auto n : asperity::asperity_model_names()) known = known || n == a.model;
+    if (!known) {
+      std::string names;
+      for (auto n : asperity::asperity_model_names()) names += (names.empty() ? "" : ", ") + std::string(n);
+      r.fail("asperity.model", "unknown asperity model (known: " + names + ")");
+    }
+  }
+  for (const auto& model_name : r.keys_of("asperity.constants")) {
+    const std::string table = "asperity.constants." + model_name;
+    std::unique_ptr<asperity::AsperityModel> model;
+    try {
+      model = asperity::make_asperity_model(model_name);
+    } catch (const std::invalid_argument& e) {
+      r.fail(table, e.what());
+    }
+    for (const auto& constant : r.keys_of(table)) {
+      const std::string key = table + "." + constant;
+      const double v = r.number(key);
+      try {
+        model->set_constant(constant, v);
+      } catch (const std::invalid_argument& e) {
+        r.fail(key, e.what());
+      }
+      a.constants[model_name].emplace_back(constant, v);
+    }
+  }
+  a.measured_axis_offset = r.quantity("asperity.side_contact.measured_offset", Dimension::length, 0.0);
+  a.measured_tip_gap = r.quantity("asperity.side_contact.measured_tip_gap", Dimension::length, 0.0);
+  require(r, "asperity.side_contact.measured_offset", a.measured_axis_offset >= 0.0, "must not be negative");
+  require(r, "asperity.side_contact.measured_tip_gap", a.measured_tip_gap >= 0.0, "must not be negative");
+  a.cylinder_tip_radius = positive_quantity(r, "asperity.cylinder.tip_radius", Dimension::length);
+  if (r.is_string("asperity.cylinder.yield_constant")) {
+    const std::string choice = r.string("asperity.cylinder.yield_constant");
+    require(r, "asperity.cylinder.yield_constant", choice == "green-2005",
+            "must be a number or \"green-2005\" (Green's plane-strain C_L(nu))");
+    const auto& soft = c.pinion.material.hardness <= c.wheel.material.hardness ? c.pinion.material : c.wheel.material;
+    a.cylinder_yield_constant = asperity::green_cylinder_yield_factor(soft.poisson_ratio);
+  } else {
+    a.cylinder_yield_constant = r.number("asperity.cylinder.yield_constant", 1.64);
+  }
+  require(r, "asperity.cylinder.yield_constant", a.cylinder_yield_constant > 0.5 && a.cylinder_yield_constant < 5.0,
+          "must lie in (0.5, 5)");
+
+  r.check_all_used();
+  return c;
+}
+
+}  // namespace geartrib::io

@@ -1,0 +1,66 @@
+#include "io/table_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <fstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace geartrib::io {
+
+std::string format_csv(const Table& t) {
+  std::string out;
+  for (std::size_t i = 0; i < t.header.size(); ++i) out += (i ? "," : "") + t.header[i];
+  out += '\n';
+  for (const auto& row : t.rows) {
+    for (std::size_t i = 0; i < row.size(); ++i) out += fmt::format("{}{:.10g}", i ? "," : "", row[i]);
+    out += '\n';
+  }
+  return out;
+}
+
+std::string format_text(const Table& t) {
+  std::vector<std::vector<std::string>> cells;
+  for (const auto& row : t.rows) {
+    std::vector<std::string> r;
+    for (double v : row) r.push_back(fmt::format("{:.6g}", v));
+    cells.push_back(std::move(r));
+  }
+  std::vector<std::size_t> width(t.header.size());
+  for (std::size_t i = 0; i < t.header.size(); ++i) {
+    width[i] = t.header[i].size();
+    for (const auto& r : cells) width[i] = std::max(width[i], r[i].size());
+  }
+  std::string out;
+  for (std::size_t i = 0; i < t.header.size(); ++i) out += fmt::format("{}{:>{}}", i ? "  " : "", t.header[i], width[i]);
+  out += '\n';
+  for (const auto& r : cells) {
+    for (std::size_t i = 0; i < r.size(); ++i) out += fmt::format("{}{:>{}}", i ? "  " : "", r[i], width[i]);
+    out += '\n';
+  }
+  return out;
+}
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
+  const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  const auto tmp = dir / ("." + path.filename().string() + ".tmp." + std::to_string(::getpid()));
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+    out << content;
+    out.flush();
+    if (!out) {
+      std::filesystem::remove(tmp);
+      throw std::runtime_error("error while writing " + tmp.string());
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp);
+    throw std::runtime_error("cannot rename " + tmp.string() + " to " + path.string() + ": " + ec.message());
+  }
+}
+
+}  // namespace geartrib::io

@@ -1,0 +1,165 @@
+#include "io/toml_reader.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace geartrib::io {
+
+TomlReader::TomlReader(const std::filesystem::path& file) : file_(file.string()) {
+  if (!std::filesystem::exists(file)) throw InputError(file_, 0, "", "", "file not found");
+  try {
+    root_ = toml::parse_file(file_);
+  } catch (const toml::parse_error& e) {
+    throw InputError(file_, static_cast<int>(e.source().begin.line), "", "",
+                     "TOML syntax error: " + std::string(e.description()));
+  }
+}
+
+const toml::node* TomlReader::find(std::string_view key) const {
+  return root_.at_path(key).node();
+}
+
+bool TomlReader::has(std::string_view key) const { return find(key) != nullptr; }
+
+bool TomlReader::is_string(std::string_view key) const {
+  const toml::node* n = find(key);
+  return n && n->is_string();
+}
+
+int TomlReader::line_of(std::string_view key) const {
+  // The key's own line, else the nearest enclosing table that exists.
+  std::string k(key);
+  while (true) {
+    if (const toml::node* n = find(k)) return static_cast<int>(n->source().begin.line);
+    const auto dot = k.rfind('.');
+    if (dot == std::string::npos) return 0;
+    k.resize(dot);
+  }
+}
+
+std::string TomlReader::value_text(std::string_view key) const {
+  const toml::node* n = find(key);
+  if (!n) return "";
+  std::ostringstream os;
+  if (n->is_string()) os << '"' << n->as_string()->get() << '"';
+  else if (n->is_table()) os << "(table)";
+  else n->visit([&](auto&& v) { os << v; });
+  return os.str();
+}
+
+void TomlReader::fail(std::string_view key, const std::string& rule) const {
+  throw InputError(file_, line_of(key), std::string(key), value_text(key), rule);
+}
+
+double TomlReader::to_quantity(const toml::node& n, std::string_view key, Dimension d) const {
+  if (n.is_integer() || n.is_floating_point()) {
+    const double v = n.value<double>().value();
+    if (!std::isfinite(v)) fail(key, "value must be finite");
+    return v;
+  }
+  if (!n.is_string())
+    fail(key, "expected a " + std::string(dimension_name(d)) + ": a number (SI) or a string like \"6 mm\"");
+  try {
+    return parse_quantity(n.as_string()->get(), d);
+  } catch (const std::invalid_argument& e) {
+    fail(key, e.what());
+  }
+}
+
+double TomlReader::quantity(std::string_view key, Dimension d, std::optional<double> fallback) {
+  const toml::node* n = find(key);
+  if (!n) {
+    if (fallback) return *fallback;
+    fail(key, "missing required key (a " + std::string(dimension_name(d)) + ")");
+  }
+  used_.emplace(key);
+  return to_quantity(*n, key, d);
+}
+
+std::vector<double> TomlReader::quantity_array(std::string_view key, Dimension d) {
+  const toml::node* n = find(key);
+  if (!n) fail(key, "missing required key (an array of " + std::string(dimension_name(d)) + " values)");
+  used_.emplace(key);
+  const toml::array* arr = n->as_array();
+  if (!arr) fail(key, "expected an array");
+  std::vector<double> out;
+  for (std::size_t i = 0; i < arr->size(); ++i) {
+    const std::string item = std::string(key) + "[" + std::to_string(i) + "]";
+    const toml::node& e = *arr->get(i);
+    if (e.is_integer() || e.is_floating_point()) {
+      out.push_back(e.value<double>().value());
+    } else if (e.is_string()) {
+      try {
+        out.push_back(parse_quantity(e.as_string()->get(), d));
+      } catch (const std::invalid_argument& ex) {
+        throw InputError(file_, static_cast<int>(e.source().begin.line), item, '"' + e.as_string()->get() + '"',
+                         ex.what());
+      }
+    } else {
+      throw InputError(file_, static_cast<int>(e.source().begin.line), item, "",
+                       "expected a number or a string like \"418 MPa\"");
+    }
+  }
+  return out;
+}
+
+double TomlReader::number(std::string_view key, std::optional<double> fallback) {
+  const toml::node* n = find(key);
+  if (!n) {
+    if (fallback) return *fallback;
+    fail(key, "missing required key (a number)");
+  }
+  used_.emplace(key);
+  if (!(n->is_integer() || n->is_floating_point())) fail(key, "expected a number");
+  const double v = n->value<double>().value();
+  if (!std::isfinite(v)) fail(key, "value must be finite");
+  return v;
+}
+
+long TomlReader::integer(std::string_view key, std::optional<long> fallback) {
+  const toml::node* n = find(key);
+  if (!n) {
+    if (fallback) return *fallback;
+    fail(key, "missing required key (an integer)");
+  }
+  used_.emplace(key);
+  if (!n->is_integer()) fail(key, "expected an integer");
+  return static_cast<long>(n->as_integer()->get());
+}
+
+std::string TomlReader::string(std::string_view key, std::optional<std::string> fallback) {
+  const toml::node* n = find(key);
+  if (!n) {
+    if (fallback) return *fallback;
+    fail(key, "missing required key (a string)");
+  }
+  used_.emplace(key);
+  if (!n->is_string()) fail(key, "expected a string");
+  return n->as_string()->get();
+}
+
+std::vector<std::string> TomlReader::keys_of(std::string_view table) const {
+  std::vector<std::string> out;
+  const toml::node* n = find(table);
+  if (!n || !n->is_table()) return out;
+  for (auto&& [k, v] : *n->as_table()) out.emplace_back(k.str());
+  return out;
+}
+
+void TomlReader::check_all_used() const {
+  // Depth-first over the tables; a leaf (or array) no accessor read is unknown.
+  auto walk = [&](auto&& self, const toml::table& t, const std::string& prefix) -> void {
+    for (auto&& [k, v] : t) {
+      const std::string path = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+      if (const toml::table* sub = v.as_table()) {
+        self(self, *sub, path);
+      } else if (!used_.contains(path)) {
+        throw InputError(file_, static_cast<int>(v.source().begin.line), path, value_text(path),
+                         "unknown key (misspelt, or not used by this version)");
+      }
+    }
+  };
+  walk(walk, root_, "");
+}
+
+}  // namespace geartrib::io

@@ -1,0 +1,54 @@
+// Reading a TOML data file key by key with units and validation. Every failure becomes an
+// InputError naming the file, line, key, value and rule; keys that nothing read are reported as
+// unknown (a misspelt key is an error, not a silent default).
+#pragma once
+
+#include "io/input_error.hpp"
+#include "io/units.hpp"
+
+#include <toml++/toml.h>
+
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace geartrib::io {
+
+class TomlReader {
+ public:
+  explicit TomlReader(const std::filesystem::path& file);
+
+  const std::string& file() const { return file_; }
+  std::filesystem::path directory() const { return std::filesystem::path(file_).parent_path(); }
+
+  bool has(std::string_view key) const;
+  bool is_string(std::string_view key) const;
+  // A quantity with a unit ("6 mm") or a bare SI number; required unless a fallback is given.
+  double quantity(std::string_view key, Dimension d, std::optional<double> fallback = std::nullopt);
+  std::vector<double> quantity_array(std::string_view key, Dimension d);
+  double number(std::string_view key, std::optional<double> fallback = std::nullopt);
+  long integer(std::string_view key, std::optional<long> fallback = std::nullopt);
+  std::string string(std::string_view key, std::optional<std::string> fallback = std::nullopt);
+  // Names of the entries of a table (empty when the table is absent).
+  std::vector<std::string> keys_of(std::string_view table) const;
+
+  // Throws InputError for `key` with `rule`, pointing at the key's line and value.
+  [[noreturn]] void fail(std::string_view key, const std::string& rule) const;
+  // Throws for the first key that no accessor read.
+  void check_all_used() const;
+
+ private:
+  const toml::node* find(std::string_view key) const;
+  int line_of(std::string_view key) const;
+  std::string value_text(std::string_view key) const;
+  double to_quantity(const toml::node& n, std::string_view key, Dimension d) const;
+
+  std::string file_;
+  toml::table root_;
+  std::set<std::string, std::less<>> used_;
+};
+
+}  // namespace geartrib::io

@@ -1,0 +1,111 @@
+#include "io/units.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace geartrib::io {
+
+namespace {
+
+struct UnitEntry {
+  std::string_view symbol;
+  Dimension dimension;
+  double to_si;
+};
+
+constexpr double kPi = std::numbers::pi;
+
+// The whole table. Symbols are matched exactly (case-sensitive: "MPa" is not "mpa").
+constexpr std::array<UnitEntry, 30> kUnits{{
+    {"m", Dimension::length, 1.0},
+    {"mm", Dimension::length, 1e-3},
+    {"um", Dimension::length, 1e-6},
+    {"µm", Dimension::length, 1e-6},
+    {"nm", Dimension::length, 1e-9},
+    {"m^2", Dimension::area, 1.0},
+    {"mm^2", Dimension::area, 1e-6},
+    {"um^2", Dimension::area, 1e-12},
+    {"nm^2", Dimension::area, 1e-18},
+    {"Pa", Dimension::pressure, 1.0},
+    {"kPa", Dimension::pressure, 1e3},
+    {"MPa", Dimension::pressure, 1e6},
+    {"GPa", Dimension::pressure, 1e9},
+    {"N", Dimension::force, 1.0},
+    {"kN", Dimension::force, 1e3},
+    {"N m", Dimension::torque, 1.0},
+    {"Nm", Dimension::torque, 1.0},
+    {"N*m", Dimension::torque, 1.0},
+    {"kN m", Dimension::torque, 1e3},
+    {"rad", Dimension::angle, 1.0},
+    {"deg", Dimension::angle, kPi / 180.0},
+    {"rad/s", Dimension::angular_speed, 1.0},
+    {"rpm", Dimension::angular_speed, 2.0 * kPi / 60.0},
+    {"kg/m^3", Dimension::density, 1.0},
+    {"kg/m3", Dimension::density, 1.0},
+    {"g/cm^3", Dimension::density, 1e3},
+    {"m/s", Dimension::speed, 1.0},
+    {"mm/s", Dimension::speed, 1e-3},
+    {"1", Dimension::dimensionless, 1.0},
+    {"%", Dimension::dimensionless, 1e-2},
+}};
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+}  // namespace
+
+std::string_view dimension_name(Dimension d) {
+  switch (d) {
+    case Dimension::dimensionless: return "dimensionless number";
+    case Dimension::length: return "length";
+    case Dimension::area: return "area";
+    case Dimension::pressure: return "pressure";
+    case Dimension::force: return "force";
+    case Dimension::torque: return "torque";
+    case Dimension::angle: return "angle";
+    case Dimension::angular_speed: return "angular speed";
+    case Dimension::density: return "density";
+    case Dimension::speed: return "speed";
+  }
+  return "quantity";
+}
+
+std::string allowed_units(Dimension d) {
+  std::string out;
+  for (const auto& u : kUnits)
+    if (u.dimension == d) out += (out.empty() ? "" : ", ") + std::string(u.symbol);
+  return out;
+}
+
+double unit_factor(std::string_view unit, Dimension d) {
+  for (const auto& u : kUnits) {
+    if (u.symbol != unit) continue;
+    if (u.dimension != d)
+      throw std::invalid_argument("unit '" + std::string(unit) + "' is a " + std::string(dimension_name(u.dimension)) +
+                                  ", expected a " + std::string(dimension_name(d)) + " (" + allowed_units(d) + ")");
+    return u.to_si;
+  }
+  throw std::invalid_argument("unknown unit '" + std::string(unit) + "' (a " + std::string(dimension_name(d)) +
+                              " takes: " + allowed_units(d) + ")");
+}
+
+double parse_quantity(std::string_view text, Dimension d) {
+  const std::string_view t = trim(text);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+  if (ec != std::errc{} || end == t.data())
+    throw std::invalid_argument("expected '<number> <unit>' for a " + std::string(dimension_name(d)) + " (units: " +
+                                allowed_units(d) + ")");
+  if (!std::isfinite(value)) throw std::invalid_argument("value must be finite");
+  const std::string_view unit = trim(t.substr(static_cast<std::size_t>(end - t.data())));
+  if (unit.empty()) return value;  // bare number: SI
+  return value * unit_factor(unit, d);
+}
+
+}  // namespace geartrib::io

@@ -1,0 +1,24 @@
+// The small fixed unit table: a value in a data file is an SI number or a string
+// "<number> <unit>" ("206 GPa", "6 mm", "1.65 um"). Converted to SI once, at input.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace geartrib::io {
+
+enum class Dimension { dimensionless, length, area, pressure, force, torque, angle, angular_speed, density, speed };
+
+std::string_view dimension_name(Dimension d);
+// The units accepted for a dimension, comma separated (for error messages and --help).
+std::string allowed_units(Dimension d);
+
+// SI factor of `unit` for dimension `d`; throws std::invalid_argument("unknown unit ...") when
+// the unit is not in the table or belongs to another dimension.
+double unit_factor(std::string_view unit, Dimension d);
+
+// Parses "<number> <unit>" (space optional) or a bare number (SI) into SI; throws
+// std::invalid_argument with the rule broken.
+double parse_quantity(std::string_view text, Dimension d);
+
+}  // namespace geartrib::io

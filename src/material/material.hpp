@@ -1,0 +1,41 @@
+// Material data of one gear body, SI units throughout.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace geartrib {
+
+// One point of the plastic flow curve: true stress [Pa] at an equivalent plastic strain [-].
+struct FlowPoint {
+  double stress = 0.0;
+  double plastic_strain = 0.0;
+};
+
+struct Material {
+  std::string name;
+  double youngs_modulus = 0.0;   // E [Pa]
+  double poisson_ratio = 0.0;    // nu [-], in (0, 0.5)
+  double yield_strength = 0.0;   // sigma_s / S_y [Pa]
+  double hardness = 0.0;         // H [Pa]; Tabor's H = 2.8 S_y unless measured (seed section 2)
+  double density = 0.0;          // [kg/m^3]
+  std::vector<FlowPoint> flow_curve;  // plastic part of the stress-strain curve (seed section 6)
+
+  // Throws std::invalid_argument naming the first rule broken (positive moduli, 0 < nu < 0.5,
+  // H >= S_y, flow curve starting at zero strain with strictly increasing strain and
+  // non-decreasing stress).
+  void validate() const;
+
+  // Flow stress [Pa] at an equivalent plastic strain: linear between table points, constant
+  // beyond the last (perfectly plastic continuation); S_y when no table is given.
+  double flow_stress(double plastic_strain) const;
+};
+
+// Tabor's hardness-yield ratio used by the seed (H = 2.8 sigma_s, section 2).
+inline constexpr double kTaborHardnessRatio = 2.8;
+
+// Composite (contact) modulus 1/E_t = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (seed section 1;
+// Johnson's E*). For two 45-steel bodies: E/(2(1 - nu^2)) = 113.19 GPa.
+double composite_modulus(const Material& a, const Material& b);
+
+}  // namespace geartrib

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# The command line: exit status, messages and outputs for good and bad input.
+# Usage: cli_errors.sh path/to/geartrib   (run from the source tree)
+set -u
+bin="$1"
+fail=0
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+check() {  # check NAME EXPECTED_STATUS PATTERN -- command...
+  local name="$1" want="$2" pattern="$3"; shift 4
+  local out status
+  out="$("$@" 2>&1)"; status=$?
+  if [[ $status -ne $want ]]; then echo "FAIL $name: exit $status, expected $want"; echo "$out" | head -5; fail=1; return; fi
+  if [[ -n "$pattern" ]] && ! grep -qE -- "$pattern" <<<"$out"; then echo "FAIL $name: output lacks /$pattern/"; echo "$out" | head -5; fail=1; return; fi
+  echo "ok   $name"
+}
+
+# The required CSV columns, in order.
+header="delta_star,delta_m,load_N,load_star,area_m2,area_star,contact_radius_m,plastic_radius_m,mean_pressure_Pa,max_pressure_Pa,plastic_fraction,max_von_mises_Pa,von_mises_depth_m"
+check csv-header 0 "^$header\$" -- "$bin" asperity --model jackson-green --delta-star 1,2,6 --csv
+check range-rows 0 "" -- "$bin" asperity --range 1e-3:1e4:200 --csv
+rows=$("$bin" asperity --range 1e-3:1e4:200 --csv | wc -l)
+[[ $rows -eq 201 ]] && echo "ok   range-count" || { echo "FAIL range-count: $rows lines"; fail=1; }
+check side 0 "theta_deg" -- "$bin" asperity --contact side --mu 0.1 --delta-star 2 --csv
+check summary 0 "113.19 GPa" -- "$bin" asperity --summary
+check help 0 "delta\*" -- "$bin" asperity --help
+check version 0 "SUNDIALS" -- "$bin" version
+
+# Bad input: exit 2 with a message naming what is wrong.
+check unknown-model 2 "unknown asperity model 'nope'" -- "$bin" asperity --model nope
+check bad-range 2 "MIN:MAX:COUNT" -- "$bin" asperity --range 1:0:5
+check bad-contact 2 "" -- "$bin" asperity --contact sideways
+check missing-case 2 "file not found" -- "$bin" asperity --case "$tmp/none.toml"
+mkdir -p "$tmp/gears" "$tmp/materials"
+cp gears/m6z30.toml "$tmp/gears/"
+sed 's/youngs_modulus = "206 GPa"/youngs_modulus = "-206 GPa"/' materials/steel-45.toml > "$tmp/materials/steel-45.toml"
+check negative-modulus 2 "steel-45.toml:[0-9]+: key 'youngs_modulus' = \"-206 GPa\": must be positive" -- \
+  "$bin" asperity --case "$tmp/gears/m6z30.toml"
+
+# Output files: written whole, atomically; nothing written on error.
+check output-file 0 "" -- "$bin" asperity --csv -o "$tmp/out.csv" --delta-star 1,2
+grep -q "^$header\$" "$tmp/out.csv" && echo "ok   output-content" || { echo "FAIL output-content"; fail=1; }
+ls -a "$tmp" | grep -q '\.tmp\.' && { echo "FAIL temporary file left behind"; fail=1; }
+check output-on-error 2 "" -- "$bin" asperity --case "$tmp/gears/m6z30.toml" -o "$tmp/bad.csv"
+[[ ! -e "$tmp/bad.csv" ]] && echo "ok   nothing-written-on-error" || { echo "FAIL bad.csv written"; fail=1; }
+
+exit $fail

@@ -1,0 +1,183 @@
+// Loading the data files, and the error each kind of bad input produces.
+#include "io/case_file.hpp"
+#include "io/input_error.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+using namespace geartrib;
+
+namespace {
+
+std::string read(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// A scratch copy of gears/ and materials/ in which one file's text is edited.
+class BadInput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("geartrib-test-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_ / "gears");
+    std::filesystem::create_directories(dir_ / "materials");
+    std::filesystem::copy_file(test::source_dir() / "gears/m6z30.toml", dir_ / "gears/m6z30.toml");
+    std::filesystem::copy_file(test::source_dir() / "materials/steel-45.toml", dir_ / "materials/steel-45.toml");
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  void edit(const std::string& rel, const std::string& from, const std::string& to) {
+    std::string text = read(dir_ / rel);
+    const auto pos = text.find(from);
+    ASSERT_NE(pos, std::string::npos) << from;
+    text.replace(pos, from.size(), to);
+    std::ofstream(dir_ / rel) << text;
+  }
+  io::InputError load_error() {
+    try {
+      io::load_case(dir_ / "gears/m6z30.toml");
+    } catch (const io::InputError& e) {
+      return e;
+    }
+    ADD_FAILURE() << "no InputError";
+    return io::InputError("", 0, "", "", "");
+  }
+  int line_of(const std::string& rel, const std::string& needle) {
+    std::ifstream in(dir_ / rel);
+    std::string l;
+    for (int n = 1; std::getline(in, l); ++n)
+      if (l.find(needle) != std::string::npos) return n;
+    return -1;
+  }
+  std::filesystem::path dir_;
+};
+
+}  // namespace
+
+TEST(CaseFile, LoadsTheSeedCaseInSi) {
+  const Case& c = test::seed_case();
+  EXPECT_DOUBLE_EQ(c.gear_pair.module, 6e-3);
+  EXPECT_DOUBLE_EQ(c.gear_pair.face_width, 80e-3);
+  EXPECT_DOUBLE_EQ(c.gear_pair.pressure_angle, 20.0 * std::numbers::pi / 180.0);
+  EXPECT_EQ(c.pinion.teeth, 30);
+  EXPECT_EQ(c.wheel.teeth, 30);
+  EXPECT_DOUBLE_EQ(c.pinion.flank.summit_radius, 1.65e-6);
+  EXPECT_DOUBLE_EQ(c.wheel.flank.summit_radius, 1.75e-6);
+  EXPECT_DOUBLE_EQ(c.pinion.flank.ra, 0.8e-6);
+  EXPECT_DOUBLE_EQ(c.operating.pinion_torque, 1000.0);
+  EXPECT_DOUBLE_EQ(c.operating.pinion_speed, 1000.0 * 2.0 * std::numbers::pi / 60.0);
+  EXPECT_DOUBLE_EQ(c.friction_coefficient, 0.1);
+  EXPECT_DOUBLE_EQ(c.asperity.measured_axis_offset, 0.68e-6);
+  EXPECT_DOUBLE_EQ(c.asperity.measured_tip_gap, 0.068e-6);
+  EXPECT_DOUBLE_EQ(c.asperity.cylinder_tip_radius, 6.6e-6);
+  EXPECT_EQ(c.asperity.model, "continuous");
+  const Material& m = c.pinion.material;
+  EXPECT_DOUBLE_EQ(m.youngs_modulus, 206e9);
+  EXPECT_DOUBLE_EQ(m.poisson_ratio, 0.3);
+  EXPECT_DOUBLE_EQ(m.yield_strength, 418e6);
+  EXPECT_DOUBLE_EQ(m.hardness, 2.8 * 418e6);  // not given: Tabor's 2.8 x yield
+  ASSERT_EQ(m.flow_curve.size(), 13u);        // seed section 6 table
+  EXPECT_DOUBLE_EQ(m.flow_curve.back().stress, 1040e6);
+  EXPECT_DOUBLE_EQ(m.flow_curve.back().plastic_strain, 0.85);
+}
+
+TEST_F(BadInput, NegativeModulusNamesFileLineKeyValueRule) {
+  edit("materials/steel-45.toml", "youngs_modulus = \"206 GPa\"", "youngs_modulus = \"-206 GPa\"");
+  const auto e = load_error();
+  EXPECT_NE(e.file().find("steel-45.toml"), std::string::npos);
+  EXPECT_EQ(e.line(), line_of("materials/steel-45.toml", "youngs_modulus"));
+  EXPECT_EQ(e.key(), "youngs_modulus");
+  EXPECT_EQ(e.value(), "\"-206 GPa\"");
+  EXPECT_EQ(e.rule(), "must be positive");
+}
+
+TEST_F(BadInput, PoissonRatioOutOfRange) {
+  edit("materials/steel-45.toml", "poisson_ratio = 0.3", "poisson_ratio = 0.5");
+  const auto e = load_error();
+  EXPECT_EQ(e.key(), "poisson_ratio");
+  EXPECT_EQ(e.value(), "0.5");
+  EXPECT_NE(e.rule().find("(0, 0.5)"), std::string::npos);
+}
+
+TEST_F(BadInput, UnknownUnit) {
+  edit("gears/m6z30.toml", "module = \"6 mm\"", "module = \"6 parsec\"");
+  const auto e = load_error();
+  EXPECT_EQ(e.key(), "gear_pair.module");
+  EXPECT_EQ(e.line(), line_of("gears/m6z30.toml", "module = "));
+  EXPECT_NE(e.rule().find("unknown unit 'parsec'"), std::string::npos) << e.rule();
+}
+
+TEST_F(BadInput, WrongDimension) {
+  edit("gears/m6z30.toml", "face_width = \"80 mm\"", "face_width = \"80 MPa\"");
+  EXPECT_NE(load_error().rule().find("expected a length"), std::string::npos);
+}
+
+TEST_F(BadInput, WrongType) {
+  edit("gears/m6z30.toml", "teeth = 30", "teeth = \"thirty\"");  // the first one: the pinion
+  const auto e = load_error();
+  EXPECT_EQ(e.key(), "pinion.teeth");
+  EXPECT_EQ(e.rule(), "expected an integer");
+}
+
+TEST_F(BadInput, MissingKey) {
+  edit("gears/m6z30.toml", "face_width = \"80 mm\"", "");
+  const auto e = load_error();
+  EXPECT_EQ(e.key(), "gear_pair.face_width");
+  EXPECT_NE(e.rule().find("missing required key"), std::string::npos);
+  EXPECT_EQ(e.line(), line_of("gears/m6z30.toml", "[gear_pair]"));  // points at the table
+}
+
+TEST_F(BadInput, MisspeltKeyIsUnknown) {
+  edit("gears/m6z30.toml", "mu = 0.1", "mu = 0.1\nmue = 0.2");
+  const auto e = load_error();
+  EXPECT_EQ(e.key(), "friction.mue");
+  EXPECT_NE(e.rule().find("unknown key"), std::string::npos);
+}
+
+TEST_F(BadInput, UnknownModelAndConstantOutOfRange) {
+  edit("gears/m6z30.toml", "model = \"continuous\"", "model = \"greenwood\"");
+  EXPECT_NE(load_error().rule().find("known: hertz"), std::string::npos);
+}
+
+TEST_F(BadInput, ModelConstantOutOfRange) {
+  edit("gears/m6z30.toml", "# [asperity.constants.continuous]\n# plastic_scale = 3.27",
+       "[asperity.constants.continuous]\nplastic_exponent = 0.5");
+  const auto e = load_error();
+  EXPECT_EQ(e.key(), "asperity.constants.continuous.plastic_exponent");
+  EXPECT_NE(e.rule().find("must lie in [1"), std::string::npos) << e.rule();
+}
+
+TEST_F(BadInput, ModelConstantOverrideIsApplied) {
+  edit("gears/m6z30.toml", "# [asperity.constants.continuous]\n# plastic_scale = 3.27",
+       "[asperity.constants.continuous]\nplastic_scale = 5.0");
+  const Case c = io::load_case(dir_ / "gears/m6z30.toml");
+  EXPECT_DOUBLE_EQ(asperity::make_case_model(c, "continuous")->constant("plastic_scale"), 5.0);
+  EXPECT_DOUBLE_EQ(asperity::make_case_model(c, "continuous")->constant("area_scale"), 23.4);
+}
+
+TEST_F(BadInput, TomlSyntaxError) {
+  edit("gears/m6z30.toml", "mu = 0.1", "mu = = 0.1");
+  const auto e = load_error();
+  EXPECT_EQ(e.line(), line_of("gears/m6z30.toml", "mu = = 0.1"));
+  EXPECT_NE(e.rule().find("TOML syntax error"), std::string::npos);
+}
+
+TEST_F(BadInput, FlowCurveMustStartAtYield) {
+  edit("materials/steel-45.toml", "stress = [\"418 MPa\"", "stress = [\"450 MPa\"");
+  const auto e = load_error();
+  EXPECT_EQ(e.key(), "flow_curve.stress");
+  EXPECT_NE(e.rule().find("yield_strength"), std::string::npos);
+}
+
+TEST_F(BadInput, GreenCylinderConstantByName) {
+  edit("gears/m6z30.toml", "yield_constant = 1.64", "yield_constant = \"green-2005\"");
+  const Case c = io::load_case(dir_ / "gears/m6z30.toml");
+  EXPECT_NEAR(c.asperity.cylinder_yield_constant, 1.795, 5e-4);  // Green 2005 at nu = 0.3, 4 digits
+}

@@ -1,0 +1,27 @@
+// Shared fixtures of the test suite: the seed's case and its equivalent asperity pair.
+#pragma once
+
+#include "asperity/case_setup.hpp"
+#include "core/case.hpp"
+#include "io/case_file.hpp"
+
+#include <filesystem>
+
+namespace geartrib::test {
+
+inline std::filesystem::path source_dir() { return GEARTRIB_SOURCE_DIR; }
+inline const Case& seed_case() {
+  static const Case c = io::load_case(source_dir() / "gears/m6z30.toml");
+  return c;
+}
+inline asperity::ContactPair seed_pair() { return asperity::contact_pair(seed_case()); }
+
+// n log-spaced values from lo to hi, both included.
+inline std::vector<double> log_space(double lo, double hi, int n) {
+  std::vector<double> v;
+  for (int i = 0; i < n; ++i) v.push_back(lo * std::pow(hi / lo, static_cast<double>(i) / (n - 1)));
+  v.back() = hi;
+  return v;
+}
+
+}  // namespace geartrib::test
