@@ -37,6 +37,23 @@ sed 's/youngs_modulus = "206 GPa"/youngs_modulus = "-206 GPa"/' materials/steel-
 check negative-modulus 2 "steel-45.toml:[0-9]+: key 'youngs_modulus' = \"-206 GPa\": must be positive" -- \
   "$bin" asperity --case "$tmp/gears/m6z30.toml"
 
+# Each kind of bad field in a data file: exit 2, message with file:line, key, value, rule.
+bad_case() {  # bad_case NAME FILE SED_EXPR PATTERN
+  local name="$1" file="$2" expr="$3" pattern="$4"
+  rm -rf "$tmp/b" && mkdir -p "$tmp/b/gears" "$tmp/b/materials"
+  cp gears/m6z30.toml "$tmp/b/gears/" && cp materials/steel-45.toml "$tmp/b/materials/"
+  sed -i "$expr" "$tmp/b/$file"
+  check "$name" 2 "$pattern" -- "$bin" asperity --case "$tmp/b/gears/m6z30.toml"
+}
+bad_case poisson-range materials/steel-45.toml 's/^poisson_ratio = 0.3/poisson_ratio = 0.7/' \
+  "steel-45.toml:[0-9]+: key 'poisson_ratio' = 0.7: Poisson's ratio must lie in \\(0, 0.5\\)"
+bad_case unknown-unit gears/m6z30.toml 's/module = "6 mm"/module = "6 furlong"/' \
+  "m6z30.toml:[0-9]+: key 'gear_pair.module' = \"6 furlong\": unknown unit 'furlong'"
+bad_case wrong-type gears/m6z30.toml '0,/teeth = 30/s//teeth = "thirty"/' \
+  "m6z30.toml:[0-9]+: key 'pinion.teeth' = \"thirty\": expected an integer"
+bad_case missing-key gears/m6z30.toml '/^face_width/d' \
+  "m6z30.toml:[0-9]+: key 'gear_pair.face_width': missing required key"
+
 # Output files: written whole, atomically; nothing written on error.
 check output-file 0 "" -- "$bin" asperity --csv -o "$tmp/out.csv" --delta-star 1,2
 grep -q "^$header\$" "$tmp/out.csv" && echo "ok   output-content" || { echo "FAIL output-content"; fail=1; }

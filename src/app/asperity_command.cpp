@@ -156,8 +156,10 @@ void print_summary(const Case& c, const asperity::AsperityModel& model, double m
   CylinderAsperity seed_c = cyl;
   seed_c.yield_constant = 1.64;
   fmt::print("Cylinder asperity (seed section 5), R_m = {:.4g} um\n", cyl.tip_radius * 1e6);
-  fmt::print("  delta_pc (2 R_m s/E_t)[ln(2E_t/s) - 1] C with C = {:.4g}: {:.4g} um (seed prints 0.38 um; C = 1.64 gives {:.4g} um)\n",
-             cyl.yield_constant, seed_critical_interference(cyl) * 1e6, seed_critical_interference(seed_c) * 1e6);
+  fmt::print("  delta_pc (2 R_m s/E_t)[ln(2 E_t/s) - 1] C, C = {:.4g}: {:.4g} um (the seed prints 0.38 um", cyl.yield_constant,
+             seed_critical_interference(cyl) * 1e6);
+  if (cyl.yield_constant != 1.64) fmt::print("; its C = 1.64 gives {:.4g} um", seed_critical_interference(seed_c) * 1e6);
+  fmt::print(")\n");
   fmt::print("  Green (2005) plane-strain C_L(nu = {:.3g}) = {:.4g}\n", cyl.poisson_ratio,
              green_cylinder_yield_factor(cyl.poisson_ratio));
   fmt::print("  first yield of the line contact: b_c = {:.4g} nm, F'_c = {:.4g} N/m, p0 = {:.4g} MPa\n",

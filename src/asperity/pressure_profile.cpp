@@ -84,7 +84,9 @@ PressureProfile uniform_profile(double contact_radius, double pressure) {
 PressureProfile profile_from_mean_pressure(double contact_radius, double mean_pressure,
                                            double yield_peak_pressure, double hardness) {
   const double py = yield_peak_pressure;
-  if (mean_pressure <= 2.0 * py / 3.0) return hertz_profile(contact_radius, 1.5 * mean_pressure);
+  // Up to the first-yield mean pressure (with a rounding margin, so a model evaluated exactly at
+  // its delta_c reports no plastic core): the Hertz profile.
+  if (mean_pressure <= 2.0 * py / 3.0 * (1.0 + 1e-12)) return hertz_profile(contact_radius, 1.5 * mean_pressure);
   if (mean_pressure >= hardness) return uniform_profile(contact_radius, mean_pressure);
   // Solve (p_y + D phi)(2 + phi) = 3 p_m for phi in (0, 1), D = H - p_y.
   const double d = hardness - py;

@@ -1,5 +1,7 @@
 #include "io/toml_reader.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <sstream>
 
@@ -42,6 +44,7 @@ std::string TomlReader::value_text(std::string_view key) const {
   if (!n) return "";
   std::ostringstream os;
   if (n->is_string()) os << '"' << n->as_string()->get() << '"';
+  else if (n->is_floating_point()) os << fmt::format("{}", n->as_floating_point()->get());  // shortest round trip: 0.7
   else if (n->is_table()) os << "(table)";
   else n->visit([&](auto&& v) { os << v; });
   return os.str();
