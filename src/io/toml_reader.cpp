@@ -69,20 +69,23 @@ double TomlReader::to_quantity(const toml::node& n, std::string_view key, Dimens
   }
 }
 
-double TomlReader::quantity(std::string_view key, Dimension d, std::optional<double> fallback) {
+const toml::node* TomlReader::take(std::string_view key, bool has_fallback, const std::string& what) {
   const toml::node* n = find(key);
   if (!n) {
-    if (fallback) return *fallback;
-    fail(key, "missing required key (a " + std::string(dimension_name(d)) + ")");
+    if (has_fallback) return nullptr;
+    fail(key, "missing required key (" + what + ")");
   }
   used_.emplace(key);
-  return to_quantity(*n, key, d);
+  return n;
+}
+
+double TomlReader::quantity(std::string_view key, Dimension d, std::optional<double> fallback) {
+  const toml::node* n = take(key, fallback.has_value(), "a " + std::string(dimension_name(d)));
+  return n ? to_quantity(*n, key, d) : *fallback;
 }
 
 std::vector<double> TomlReader::quantity_array(std::string_view key, Dimension d) {
-  const toml::node* n = find(key);
-  if (!n) fail(key, "missing required key (an array of " + std::string(dimension_name(d)) + " values)");
-  used_.emplace(key);
+  const toml::node* n = take(key, false, "an array of " + std::string(dimension_name(d)) + " values");
   const toml::array* arr = n->as_array();
   if (!arr) fail(key, "expected an array");
   std::vector<double> out;
@@ -107,12 +110,8 @@ std::vector<double> TomlReader::quantity_array(std::string_view key, Dimension d
 }
 
 double TomlReader::number(std::string_view key, std::optional<double> fallback) {
-  const toml::node* n = find(key);
-  if (!n) {
-    if (fallback) return *fallback;
-    fail(key, "missing required key (a number)");
-  }
-  used_.emplace(key);
+  const toml::node* n = take(key, fallback.has_value(), "a number");
+  if (!n) return *fallback;
   if (!(n->is_integer() || n->is_floating_point())) fail(key, "expected a number");
   const double v = n->value<double>().value();
   if (!std::isfinite(v)) fail(key, "value must be finite");
@@ -120,23 +119,15 @@ double TomlReader::number(std::string_view key, std::optional<double> fallback) 
 }
 
 long TomlReader::integer(std::string_view key, std::optional<long> fallback) {
-  const toml::node* n = find(key);
-  if (!n) {
-    if (fallback) return *fallback;
-    fail(key, "missing required key (an integer)");
-  }
-  used_.emplace(key);
+  const toml::node* n = take(key, fallback.has_value(), "an integer");
+  if (!n) return *fallback;
   if (!n->is_integer()) fail(key, "expected an integer");
   return static_cast<long>(n->as_integer()->get());
 }
 
 std::string TomlReader::string(std::string_view key, std::optional<std::string> fallback) {
-  const toml::node* n = find(key);
-  if (!n) {
-    if (fallback) return *fallback;
-    fail(key, "missing required key (a string)");
-  }
-  used_.emplace(key);
+  const toml::node* n = take(key, fallback.has_value(), "a string");
+  if (!n) return *fallback;
   if (!n->is_string()) fail(key, "expected a string");
   return n->as_string()->get();
 }

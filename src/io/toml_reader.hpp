@@ -42,6 +42,9 @@ class TomlReader {
 
  private:
   const toml::node* find(std::string_view key) const;
+  // The key's node, marked as read; nullptr when absent and a fallback exists; fails when
+  // absent and required (`what` names the expected value).
+  const toml::node* take(std::string_view key, bool has_fallback, const std::string& what);
   int line_of(std::string_view key) const;
   std::string value_text(std::string_view key) const;
   double to_quantity(const toml::node& n, std::string_view key, Dimension d) const;
