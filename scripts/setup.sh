@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # geartrib setup: install missing Debian 12 packages, configure and build (Release), then
 #   bash scripts/setup.sh          build only
-#   bash scripts/setup.sh run      build, then run the default case (gears/m6z30.toml)
+#   bash scripts/setup.sh run      build, then run the default case (gears/m6z30.toml): the mesh
+#                                  along the line of action, then its single-asperity contact
 #   bash scripts/setup.sh test     build, then run the default test suite (CTest, label "long" excluded)
 # Works as root on a fresh machine (apt-get) and is a no-op for packages already installed.
 set -euo pipefail
@@ -37,6 +38,8 @@ cmake --build build -j "$jobs"
 
 case "$mode" in
   run)
+    ./build/geartrib kinematics --summary
+    ./build/geartrib kinematics
     ./build/geartrib asperity --summary
     ./build/geartrib asperity --model continuous --delta-star 0.5,1,2,6,10,40,110,1000
     ;;

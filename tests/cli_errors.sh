@@ -26,6 +26,20 @@ check summary 0 "113.19 GPa" -- "$bin" asperity --summary
 check help 0 "delta\*" -- "$bin" asperity --help
 check version 0 "SUNDIALS" -- "$bin" version
 
+# Kinematics: required columns, summary keys, bad input.
+kin_cols="point,s_m,gamma,rho1_m,rho2_m,r_eq_m,load_share,line_load_N_per_m,hertz_p0_Pa,hertz_halfwidth_m"
+check kinematics-header 0 "^$kin_cols," -- "$bin" kinematics --csv
+for col in v1_m_per_s v2_m_per_s entrainment_m_per_s sliding_m_per_s srr mesh_stiffness_N_per_m; do
+  check "kinematics-column-$col" 0 "$col" -- "$bin" kinematics --csv --points C
+done
+for key in center_distance_m operating_pressure_angle_rad base_pitch_m length_of_contact_m contact_ratio \
+           mean_mesh_stiffness_N_per_m iso_c_prime_N_per_m_um iso_c_gamma_alpha_N_per_m_um; do
+  check "summary-$key" 0 "^$key," -- "$bin" kinematics --summary --csv
+done
+check kinematics-positions 0 "^10," -- "$bin" kinematics --positions 11 --load-sharing stiffness --csv
+check kinematics-bad-point 2 "unknown point 'F'" -- "$bin" kinematics --points A,F
+check kinematics-bad-sharing 2 "" -- "$bin" kinematics --load-sharing equal
+
 # Bad input: exit 2 with a message naming what is wrong.
 check unknown-model 2 "unknown asperity model 'nope'" -- "$bin" asperity --model nope
 check bad-range 2 "MIN:MAX:COUNT" -- "$bin" asperity --range 1:0:5
@@ -53,6 +67,12 @@ bad_case wrong-type gears/m6z30.toml '0,/teeth = 30/s//teeth = "thirty"/' \
   "m6z30.toml:[0-9]+: key 'pinion.teeth' = \"thirty\": expected an integer"
 bad_case missing-key gears/m6z30.toml '/^face_width/d' \
   "m6z30.toml:[0-9]+: key 'gear_pair.face_width': missing required key"
+bad_case contact-ratio gears/m6z30.toml 's/^tip_shortening = 0.0/tip_shortening = 0.6/' \
+  "m6z30.toml:[0-9]+: key 'gear_pair.addendum_coefficient'.*contact ratio 0.[0-9]+ is below 1"
+bad_case tip-interference gears/m6z30.toml '0,/teeth = 30/s//teeth = 8/; 0,/bore_diameter = "60 mm"/s//bore_diameter = "10 mm"/' \
+  "key 'wheel.teeth'.*no involute exists"
+bad_case jammed gears/m6z30.toml 's/^# center_distance = "180 mm"/center_distance = "179 mm"/' \
+  "m6z30.toml:[0-9]+: key 'gear_pair.center_distance' = \"179 mm\": centre distance 179 mm is below the zero-backlash"
 
 # Output files: written whole, atomically; nothing written on error.
 check output-file 0 "" -- "$bin" asperity --csv -o "$tmp/out.csv" --delta-star 1,2

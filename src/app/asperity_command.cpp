@@ -207,8 +207,7 @@ void run_compare(const Options& o, const asperity::AsperityModel& m, const asper
 }
 
 void run(const Options& o) {
-  const std::filesystem::path case_path = o.case_file.empty() ? default_case_file() : std::filesystem::path(o.case_file);
-  const Case c = io::load_case(case_path);
+  const Case c = load_case_reporting(o.case_file);
   const std::string model_name = o.model.empty() ? c.asperity.model : o.model;
   const auto model = asperity::make_case_model(c, model_name);
   const double mu = o.mu.value_or(c.friction_coefficient);
@@ -254,12 +253,6 @@ void run(const Options& o) {
 }
 
 }  // namespace
-
-std::filesystem::path default_case_file() {
-  const std::filesystem::path local = "gears/m6z30.toml";
-  if (std::filesystem::exists(local)) return local;
-  return std::filesystem::path(GEARTRIB_SOURCE_DIR) / local;
-}
 
 void add_asperity_command(CLI::App& app) {
   auto o = std::make_shared<Options>();

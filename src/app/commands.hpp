@@ -4,14 +4,20 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/case.hpp"
+
 #include <filesystem>
+#include <string>
 
 namespace geartrib::app {
 
 void add_asperity_command(CLI::App& app);
+void add_kinematics_command(CLI::App& app);
 void add_version_command(CLI::App& app);
 
 // gears/m6z30.toml in the working directory, else in the source tree the tool was built from.
 std::filesystem::path default_case_file();
+// Loads the case (the default one when `file` is empty), printing its warnings to stderr.
+Case load_case_reporting(const std::string& file);
 
 }  // namespace geartrib::app

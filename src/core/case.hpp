@@ -20,6 +20,8 @@ struct GearPairSpec {
   double addendum_coefficient = 1.0;      // h_aP / m
   double dedendum_coefficient = 1.25;     // h_fP / m
   double root_radius_coefficient = 0.38;  // rho_fP / m
+  double tip_shortening = 0.0;            // k: tip diameter reduced by 2 k m on both gears
+  double center_distance = 0.0;           // a_w [m]; 0: zero-backlash distance from the shifts
 };
 
 // The rough flank of one gear, as far as the asperity models see it.
@@ -31,6 +33,8 @@ struct FlankSpec {
 struct GearSpec {
   int teeth = 0;
   double profile_shift = 0.0;  // x [-]
+  double tip_diameter = 0.0;   // d_a [m]; 0: from addendum, shift and tip shortening
+  double bore_diameter = 0.0;  // gear-body bore [m], for the fillet-foundation stiffness
   std::string material_file;   // as written in the case file
   Material material;
   FlankSpec flank;
@@ -52,6 +56,14 @@ struct AsperitySettings {
   double cylinder_yield_constant = 1.64;  // C of delta_pc
 };
 
+// Mesh-cycle settings: how the load is shared between simultaneous tooth pairs, how many
+// positions sample one base pitch, and the beam model of the tooth stiffness.
+struct MeshSettings {
+  std::string load_sharing = "iso";  // "iso" (ISO/TS 6336-22 method B) or "stiffness"
+  int positions = 64;                // samples of one base pitch of pinion rotation
+  bool plane_strain = true;          // tooth beam in plane strain (wide face) or plane stress
+};
+
 struct Case {
   std::string title;
   std::string source;
@@ -60,7 +72,9 @@ struct Case {
   GearSpec wheel;
   OperatingPoint operating;
   double friction_coefficient = 0.0;  // mu [-]
+  MeshSettings mesh;
   AsperitySettings asperity;
+  std::vector<std::string> warnings;  // non-fatal findings of the loader (e.g. undercut), located
 };
 
 }  // namespace geartrib

@@ -1,7 +1,10 @@
 #include "io/case_file.hpp"
 
 #include "asperity/model.hpp"
+#include "gear/spur_pair.hpp"
 #include "io/toml_reader.hpp"
+
+#include <fmt/format.h>
 
 #include <cmath>
 #include <numbers>
@@ -27,6 +30,10 @@ GearSpec read_gear(TomlReader& r, const std::string& name) {
   require(r, p + "teeth", g.teeth >= 5 && g.teeth <= 1000, "tooth number must lie in [5, 1000]");
   g.profile_shift = r.number(p + "profile_shift", 0.0);
   require(r, p + "profile_shift", std::abs(g.profile_shift) <= 2.0, "profile shift coefficient must lie in [-2, 2]");
+  g.tip_diameter = r.quantity(p + "tip_diameter", Dimension::length, 0.0);
+  require(r, p + "tip_diameter", g.tip_diameter >= 0.0, "must not be negative");
+  g.bore_diameter = r.quantity(p + "bore_diameter", Dimension::length, 0.0);
+  require(r, p + "bore_diameter", g.bore_diameter >= 0.0, "must not be negative");
   g.material_file = r.string(p + "material");
   const auto material_path = r.directory() / g.material_file;
   if (!std::filesystem::exists(material_path)) r.fail(p + "material", "material file not found: " + material_path.string());
@@ -94,12 +101,26 @@ Case load_case(const std::filesystem::path& file) {
   gp.root_radius_coefficient = r.number("gear_pair.root_radius_coefficient", 0.38);
   require(r, "gear_pair.root_radius_coefficient", gp.root_radius_coefficient >= 0.0 && gp.root_radius_coefficient < 1.0,
           "must lie in [0, 1)");
+  gp.tip_shortening = r.number("gear_pair.tip_shortening", 0.0);
+  require(r, "gear_pair.tip_shortening", gp.tip_shortening >= 0.0 && gp.tip_shortening < gp.addendum_coefficient,
+          "must lie in [0, addendum_coefficient)");
+  gp.center_distance = r.quantity("gear_pair.center_distance", Dimension::length, 0.0);
+  require(r, "gear_pair.center_distance", gp.center_distance >= 0.0, "must not be negative (omit it for the zero-backlash distance)");
 
   c.pinion = read_gear(r, "pinion");
   c.wheel = read_gear(r, "wheel");
 
   c.operating.pinion_torque = positive_quantity(r, "operating.pinion_torque", Dimension::torque);
   c.operating.pinion_speed = positive_quantity(r, "operating.pinion_speed", Dimension::angular_speed);
+
+  c.mesh.load_sharing = r.string("mesh.load_sharing", std::string("iso"));
+  require(r, "mesh.load_sharing", c.mesh.load_sharing == "iso" || c.mesh.load_sharing == "stiffness",
+          "must be \"iso\" or \"stiffness\"");
+  c.mesh.positions = static_cast<int>(r.integer("mesh.positions", 64));
+  require(r, "mesh.positions", c.mesh.positions >= 2 && c.mesh.positions <= 100000, "must lie in [2, 100000]");
+  const std::string beam = r.string("mesh.tooth_beam", std::string("plane-strain"));
+  require(r, "mesh.tooth_beam", beam == "plane-strain" || beam == "plane-stress", "must be \"plane-strain\" or \"plane-stress\"");
+  c.mesh.plane_strain = beam == "plane-strain";
 
   c.friction_coefficient = r.number("friction.mu");
   require(r, "friction.mu", c.friction_coefficient >= 0.0 && c.friction_coefficient < 1.0, "must lie in [0, 1)");
@@ -152,6 +173,16 @@ Case load_case(const std::filesystem::path& file) {
           "must lie in (0.5, 5)");
 
   r.check_all_used();
+
+  // The pair must exist: an impossible geometry is an error at the key to change; findings
+  // such as undercut are kept as located warnings.
+  try {
+    const gear::SpurPair pair(gear::spur_pair_spec(c));
+    for (const auto& w : pair.warnings())
+      c.warnings.push_back(fmt::format("{}: warning: key '{}': {}", r.where(w.key), w.key, w.message));
+  } catch (const gear::GeometryError& e) {
+    r.fail(e.key(), e.what());
+  }
   return c;
 }
 

@@ -13,8 +13,11 @@ std::string format_csv(const Table& t) {
   std::string out;
   for (std::size_t i = 0; i < t.header.size(); ++i) out += (i ? "," : "") + t.header[i];
   out += '\n';
-  for (const auto& row : t.rows) {
-    for (std::size_t i = 0; i < row.size(); ++i) out += fmt::format("{}{:.10g}", i ? "," : "", row[i]);
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const bool labelled = !t.labels.empty();
+    if (labelled) out += t.labels[r];
+    for (std::size_t i = 0; i < t.rows[r].size(); ++i)
+      out += fmt::format("{}{:.10g}", (i || labelled) ? "," : "", t.rows[r][i]);
     out += '\n';
   }
   return out;
@@ -22,9 +25,10 @@ std::string format_csv(const Table& t) {
 
 std::string format_text(const Table& t) {
   std::vector<std::vector<std::string>> cells;
-  for (const auto& row : t.rows) {
+  for (std::size_t k = 0; k < t.rows.size(); ++k) {
     std::vector<std::string> r;
-    for (double v : row) r.push_back(fmt::format("{:.6g}", v));
+    if (!t.labels.empty()) r.push_back(t.labels[k]);
+    for (double v : t.rows[k]) r.push_back(fmt::format("{:.6g}", v));
     cells.push_back(std::move(r));
   }
   std::vector<std::size_t> width(t.header.size());

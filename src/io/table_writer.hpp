@@ -7,9 +7,12 @@
 
 namespace geartrib::io {
 
+// A numeric table; when `labels` is not empty, each row starts with its label and header[0]
+// names that label column.
 struct Table {
   std::vector<std::string> header;
   std::vector<std::vector<double>> rows;
+  std::vector<std::string> labels;
 };
 
 // CSV: header line, then rows with full precision (%.10g). Text: right-aligned columns (%.6g).

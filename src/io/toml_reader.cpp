@@ -50,6 +50,11 @@ std::string TomlReader::value_text(std::string_view key) const {
   return os.str();
 }
 
+std::string TomlReader::where(std::string_view key) const {
+  const int line = line_of(key);
+  return line > 0 ? file_ + ":" + std::to_string(line) : file_;
+}
+
 void TomlReader::fail(std::string_view key, const std::string& rule) const {
   throw InputError(file_, line_of(key), std::string(key), value_text(key), rule);
 }

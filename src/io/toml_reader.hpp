@@ -35,6 +35,8 @@ class TomlReader {
   // Names of the entries of a table (empty when the table is absent).
   std::vector<std::string> keys_of(std::string_view table) const;
 
+  // "file:line" of a key (or of its nearest enclosing table), for warnings.
+  std::string where(std::string_view key) const;
   // Throws InputError for `key` with `rule`, pointing at the key's line and value.
   [[noreturn]] void fail(std::string_view key, const std::string& rule) const;
   // Throws for the first key that no accessor read.

@@ -1,0 +1,174 @@
+// `geartrib kinematics`: the spur pair along its line of action: geometry, load sharing,
+// curvature, Hertz line contact, rolling and sliding, mesh stiffness.
+#include "app/commands.hpp"
+
+#include "gear/gear_mesh.hpp"
+#include "gear/iso6336_stiffness.hpp"
+#include "io/table_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <stdexcept>
+
+namespace geartrib::app {
+
+namespace {
+
+struct Options {
+  std::string case_file;
+  std::vector<std::string> points;
+  std::optional<int> positions;
+  std::string load_sharing;
+  bool csv = false;
+  bool summary = false;
+  std::string output;
+};
+
+void emit(const Options& o, const io::Table& t) {
+  const std::string text = o.csv ? io::format_csv(t) : io::format_text(t);
+  if (o.output.empty()) std::cout << text;
+  else io::write_file_atomically(o.output, text);
+}
+
+// Mean, minimum and maximum mesh stiffness over one base pitch.
+struct StiffnessStats {
+  double mean = 0.0, min = 0.0, max = 0.0;
+};
+StiffnessStats mesh_stiffness_stats(const gear::MeshAnalysis& analysis, int n) {
+  const auto cycle = analysis.cycle(n);
+  StiffnessStats s{0.0, cycle.front().mesh_stiffness, cycle.front().mesh_stiffness};
+  for (const auto& m : cycle) {
+    s.mean += m.mesh_stiffness / n;
+    s.min = std::min(s.min, m.mesh_stiffness);
+    s.max = std::max(s.max, m.mesh_stiffness);
+  }
+  return s;
+}
+
+void run_summary(const Options& o, const Case& c, const gear::GearMesh& mesh) {
+  const auto& pair = mesh.pair();
+  const auto& p = pair.path();
+  const StiffnessStats k = mesh_stiffness_stats(mesh.analysis(), c.mesh.positions);
+  const double b = pair.spec().face_width;
+  const double tangential_line_load = c.operating.pinion_torque / pair.pinion().pitch_radius / b;
+  const gear::IsoMeshStiffness iso = gear::iso6336_mesh_stiffness(pair, tangential_line_load);
+  const double to_n_per_m_um = 1e-6;  // N/m per m width -> N/(m um)
+  io::Table t;
+  t.header = {"name", "value"};
+  auto row = [&](const std::string& name, double v) {
+    t.labels.push_back(name);
+    t.rows.push_back({v});
+  };
+  row("reference_center_distance_m", pair.reference_center_distance());
+  row("center_distance_m", pair.center_distance());
+  row("operating_pressure_angle_rad", pair.operating_pressure_angle());
+  row("operating_pressure_angle_deg", pair.operating_pressure_angle() * 180.0 / std::numbers::pi);
+  for (int i = 0; i < 2; ++i) {
+    const auto& g = pair.gear(i);
+    const std::string n = i == 0 ? "pinion" : "wheel";
+    row(n + "_base_radius_m", g.base_radius);
+    row(n + "_tip_radius_m", g.tip_radius);
+    row(n + "_root_radius_m", g.root_radius);
+    row(n + "_operating_pitch_radius_m", g.operating_pitch_radius);
+    row(n + "_fillet_foundation_in_fit_range", gear::fillet_foundation_in_range(g) ? 1.0 : 0.0);
+  }
+  row("line_of_action_T1T2_m", p.line_length);
+  row("s_A_m", p.a);
+  row("s_B_m", p.b);
+  row("s_C_m", p.c);
+  row("s_D_m", p.d);
+  row("s_E_m", p.e);
+  row("base_pitch_m", p.base_pitch);
+  row("length_of_contact_m", p.length);
+  row("contact_ratio", p.contact_ratio);
+  row("normal_force_N", mesh.normal_force());
+  row("pinion_speed_rad_per_s", mesh.pinion_speed());
+  row("mean_mesh_stiffness_N_per_m", k.mean);
+  row("min_mesh_stiffness_N_per_m", k.min);
+  row("max_mesh_stiffness_N_per_m", k.max);
+  row("mean_mesh_stiffness_per_width_N_per_m_um", k.mean / b * to_n_per_m_um);
+  row("iso_c_prime_N_per_m_um", iso.single * to_n_per_m_um);
+  row("iso_c_gamma_alpha_N_per_m_um", iso.mesh * to_n_per_m_um);
+  row("mean_mesh_stiffness_over_iso_c_gamma_alpha", k.mean / (iso.mesh * b));
+  emit(o, t);
+}
+
+void run(const Options& o) {
+  const Case c = load_case_reporting(o.case_file);
+  std::optional<gear::LoadSharing> method;
+  if (!o.load_sharing.empty()) method = gear::parse_load_sharing(o.load_sharing);
+  const gear::GearMesh mesh(c, method);
+  if (o.summary) return run_summary(o, c, mesh);
+
+  const auto& pair = mesh.pair();
+  const auto& p = pair.path();
+  io::Table t;
+  t.header = {"point", "s_m", "gamma", "rho1_m", "rho2_m", "r_eq_m", "load_share", "line_load_N_per_m",
+              "hertz_p0_Pa", "hertz_halfwidth_m", "hertz_p0_single_pair_Pa", "v1_m_per_s", "v2_m_per_s",
+              "entrainment_m_per_s", "sliding_m_per_s", "srr", "specific_sliding_pinion", "specific_sliding_wheel",
+              "pair_stiffness_N_per_m", "mesh_stiffness_N_per_m", "pairs_in_contact"};
+  auto add = [&](const std::string& label, double s, bool single_side) {
+    const gear::MeshInstant m = mesh.analysis().at(s, single_side);
+    const gear::PairLoad* own = nullptr;
+    for (const auto& l : m.pairs)
+      if (std::abs(l.s - s) <= 1e-9 * p.line_length) own = &l;
+    if (!own) throw std::logic_error("tracked pair missing from the mesh instant");
+    const gear::FlankGeometry f = pair.flank(s);
+    const gear::FlankKinematics k = pair.kinematics(s, mesh.pinion_speed());
+    const gear::PairLoad single = mesh.analysis().pair_load(s, mesh.normal_force() / pair.spec().face_width);
+    t.labels.push_back(label);
+    t.rows.push_back({s, f.roll_parameter, f.radius_pinion, f.radius_wheel, f.radius_equivalent, own->share,
+                      own->line_load, own->hertz_peak, own->hertz_half_width, single.hertz_peak, k.rolling_pinion,
+                      k.rolling_wheel, k.entrainment, k.sliding, k.slide_to_roll, k.specific_sliding_pinion,
+                      k.specific_sliding_wheel, own->stiffness, m.mesh_stiffness, static_cast<double>(m.pairs.size())});
+  };
+  if (o.positions) {
+    const int n = *o.positions;
+    if (n < 2) throw std::invalid_argument("--positions must be at least 2");
+    for (int i = 0; i < n; ++i) add(std::to_string(i), p.a + p.length * i / (n - 1), false);
+  } else {
+    std::vector<std::string> names = o.points.empty() ? std::vector<std::string>{"A", "B", "C", "D", "E"} : o.points;
+    for (const auto& name : names) {
+      double s = 0.0;
+      if (name == "A") s = p.a;
+      else if (name == "B") s = p.b;
+      else if (name == "C") s = p.c;
+      else if (name == "D") s = p.d;
+      else if (name == "E") s = p.e;
+      else throw std::invalid_argument("--points: unknown point '" + name + "' (known: A, B, C, D, E)");
+      add(name, s, true);
+    }
+  }
+  emit(o, t);
+}
+
+}  // namespace
+
+void add_kinematics_command(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  auto* cmd = app.add_subcommand(
+      "kinematics",
+      "The spur pair along its line of action. For the points A (start of contact), B (lowest single-tooth\n"
+      "point), C (pitch point), D (highest single-tooth point), E (end), or N positions from A to E of one\n"
+      "tooth pair: curvature radii, ISO roll parameter gamma, load share and line load, Hertz line-contact\n"
+      "peak pressure and half-width (shared and if the pair carried the whole load), rolling, entrainment\n"
+      "and sliding speeds, slide-to-roll ratio (sliding over mean rolling speed), specific sliding, and the\n"
+      "tooth-pair and mesh stiffness. At B and D a named point reports the single-tooth side of the jump.\n"
+      "--summary prints the geometry, contact ratio, mesh stiffness and ISO 6336-1 c' and c_gamma_alpha.");
+  cmd->add_option("case", o->case_file, "Case file (default: gears/m6z30.toml)");
+  auto* pts = cmd->add_option("--points", o->points, "Comma-separated named points (default A,B,C,D,E)")->delimiter(',');
+  auto* pos = cmd->add_option("--positions", o->positions, "N equally spaced positions from A to E instead of named points");
+  pts->excludes(pos);
+  cmd->add_option("--load-sharing", o->load_sharing, "iso or stiffness (default: the case's mesh.load_sharing)")
+      ->check(CLI::IsMember({"iso", "stiffness"}));
+  cmd->add_flag("--csv", o->csv, "CSV with a header instead of aligned columns");
+  cmd->add_flag("--summary", o->summary, "name,value rows: geometry, contact ratio, mesh stiffness, ISO stiffness");
+  cmd->add_option("-o,--output", o->output, "Write the table to this file (atomically) instead of stdout");
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace geartrib::app

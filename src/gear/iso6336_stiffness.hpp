@@ -1,0 +1,20 @@
+// ISO 6336-1:2019 method B: single stiffness c' and mesh stiffness c_gamma_alpha of a spur
+// pair of solid steel gears (clause 9).
+#pragma once
+
+#include "gear/spur_pair.hpp"
+
+namespace geartrib::gear {
+
+struct IsoMeshStiffness {
+  double flexibility_q = 0.0;  // q' [m^2/N per m width]: 1/c'_th, ISO in mm um/N
+  double theoretical = 0.0;    // c'_th [N/m per m width]
+  double single = 0.0;         // c' = c'_th C_M C_R C_B cos(beta) (x load factor below 100 N/mm) [N/m/m]
+  double mesh = 0.0;           // c_gamma_alpha = c' (0.75 eps_alpha + 0.25) [N/m/m]
+};
+
+// line_load: F_t K_A / b [N/m]; below 100 N/mm ISO scales c' by (F_t K_A/b)/(100 N/mm).
+// C_M = 0.8 (solid disc), C_R = 1 (solid), C_B from the basic rack dedendum and angle.
+IsoMeshStiffness iso6336_mesh_stiffness(const SpurPair& pair, double tangential_line_load);
+
+}  // namespace geartrib::gear

@@ -1,0 +1,59 @@
+#include "gear/mesh_analysis.hpp"
+
+#include "asperity/cylinder.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace geartrib::gear {
+
+MeshAnalysis::MeshAnalysis(const SpurPair& pair, const MeshStiffnessModel& stiffness, LoadSharing method,
+                           double normal_force, double composite_modulus)
+    : pair_(pair), stiffness_(stiffness), method_(method), normal_force_(normal_force), composite_modulus_(composite_modulus) {
+  if (!(normal_force >= 0.0)) throw std::invalid_argument("normal force must be >= 0");
+}
+
+PairLoad MeshAnalysis::pair_load(double s, double w) const {
+  PairLoad l;
+  l.s = s;
+  l.line_load = w;
+  const double r = pair_.flank(s).radius_equivalent;
+  l.hertz_half_width = asperity::hertz_half_width(w, r, composite_modulus_);
+  l.hertz_peak = l.hertz_half_width > 0.0 ? 2.0 * w / (std::numbers::pi * l.hertz_half_width) : 0.0;
+  return l;
+}
+
+MeshInstant MeshAnalysis::at(double s, bool single_side) const {
+  const PathOfContact& p = pair_.path();
+  std::vector<double> positions = pairs_in_contact(p, s);
+  if (single_side) {
+    const double tol = 1e-9 * p.line_length;
+    const bool at_b = std::abs(s - p.b) <= tol, at_d = std::abs(s - p.d) <= tol;
+    std::erase_if(positions, [&](double x) {
+      return (at_b && std::abs(x - p.e) <= tol && std::abs(s - p.e) > tol) ||
+             (at_d && std::abs(x - p.a) <= tol && std::abs(s - p.a) > tol);
+    });
+  }
+  const std::vector<double> shares = load_shares(p, positions, method_, &stiffness_);
+  MeshInstant m;
+  const double width = pair_.spec().face_width;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    PairLoad l = pair_load(positions[i], shares[i] * normal_force_ / width);
+    l.share = shares[i];
+    l.stiffness = stiffness_.pair(positions[i]).stiffness;
+    m.mesh_stiffness += l.stiffness;
+    m.pairs.push_back(l);
+  }
+  return m;
+}
+
+std::vector<MeshInstant> MeshAnalysis::cycle(int n) const {
+  if (n < 1) throw std::invalid_argument("mesh cycle needs at least one position");
+  std::vector<MeshInstant> out;
+  const PathOfContact& p = pair_.path();
+  for (int i = 0; i < n; ++i) out.push_back(at(p.a + p.base_pitch * i / n));
+  return out;
+}
+
+}  // namespace geartrib::gear

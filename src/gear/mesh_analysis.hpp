@@ -1,0 +1,52 @@
+// The loaded mesh at any instant: the pairs in contact, their load shares, line loads and
+// Hertz line-contact pressures, and the mesh stiffness; and the mesh cycle of one base pitch.
+#pragma once
+
+#include "gear/load_sharing.hpp"
+#include "gear/spur_pair.hpp"
+#include "gear/tooth_stiffness.hpp"
+
+#include <vector>
+
+namespace geartrib::gear {
+
+struct PairLoad {
+  double s = 0.0;                 // position on the line of action [m]
+  double share = 0.0;             // share of the transmitted normal load
+  double line_load = 0.0;         // normal load per unit face width [N/m]
+  double hertz_peak = 0.0;        // Hertz line-contact peak pressure p0 = 2 w/(pi b_H) [Pa]
+  double hertz_half_width = 0.0;  // b_H = sqrt(4 w R/(pi E_t)) [m]
+  double stiffness = 0.0;         // tooth-pair stiffness [N/m]
+};
+
+struct MeshInstant {
+  std::vector<PairLoad> pairs;    // every pair in contact, in order of s
+  double mesh_stiffness = 0.0;    // sum of the pair stiffnesses [N/m]
+};
+
+class MeshAnalysis {
+ public:
+  // normal_force: the total normal tooth force F_bn = T1/r_b1 [N]; composite_modulus E_t [Pa].
+  MeshAnalysis(const SpurPair& pair, const MeshStiffnessModel& stiffness, LoadSharing method, double normal_force,
+               double composite_modulus);
+
+  // The mesh when one pair is at s. single_side: at B and D take the single-pair side of the
+  // jump (the neighbour at E or A has just left or not yet arrived).
+  MeshInstant at(double s, bool single_side = false) const;
+  // Hertz values of a pair at s carrying line load w.
+  PairLoad pair_load(double s, double line_load) const;
+  // One base pitch of pinion rotation, n positions s0 = A + i p_b/n, i = 0..n-1.
+  std::vector<MeshInstant> cycle(int n) const;
+
+  double normal_force() const { return normal_force_; }
+  LoadSharing method() const { return method_; }
+
+ private:
+  const SpurPair& pair_;
+  const MeshStiffnessModel& stiffness_;
+  LoadSharing method_;
+  double normal_force_;
+  double composite_modulus_;
+};
+
+}  // namespace geartrib::gear
