@@ -98,12 +98,6 @@ std::vector<double> parse_range(const std::string& text) {
   return out;
 }
 
-void emit(const Options& o, const io::Table& t) {
-  const std::string text = o.csv ? io::format_csv(t) : io::format_text(t);
-  if (o.output.empty()) std::cout << text;
-  else io::write_file_atomically(o.output, text);
-}
-
 void print_summary(const Case& c, const asperity::AsperityModel& model, double mu) {
   using namespace asperity;
   const ContactPair p = contact_pair(c);
@@ -249,7 +243,7 @@ void run(const Options& o) {
       t.rows.push_back(std::move(row));
     }
   }
-  emit(o, t);
+  io::output_table(t, o.csv, o.output);
 }
 
 }  // namespace
@@ -272,8 +266,7 @@ void add_asperity_command(CLI::App& app) {
                  ->delimiter(',');
   auto* rg = cmd->add_option("--range", o->range, "MIN:MAX:COUNT, log-spaced delta* with both ends included");
   ds->excludes(rg);
-  cmd->add_flag("--csv", o->csv, "CSV with a header instead of aligned columns");
-  cmd->add_option("-o,--output", o->output, "Write the table to this file (atomically) instead of stdout");
+  add_table_options(cmd, o->csv, o->output);
   cmd->add_flag("--summary", o->summary, "Print E_t, R, k, H, delta_c, F_c, the yield depth, side-contact and cylinder values");
   cmd->add_flag("--constants", o->list_constants, "List the model's named constants with values, ranges and meaning");
   cmd->add_option("--compare", o->compare, "Reference table (validation/*/...csv) to print the model beside");

@@ -6,6 +6,11 @@
 
 namespace geartrib::app {
 
+void add_table_options(CLI::App* cmd, bool& csv, std::string& output) {
+  cmd->add_flag("--csv", csv, "CSV with a header instead of aligned columns");
+  cmd->add_option("-o,--output", output, "Write the table to this file (atomically) instead of stdout");
+}
+
 std::filesystem::path default_case_file() {
   const std::filesystem::path local = "gears/m6z30.toml";
   if (std::filesystem::exists(local)) return local;

@@ -15,6 +15,9 @@ void add_asperity_command(CLI::App& app);
 void add_kinematics_command(CLI::App& app);
 void add_version_command(CLI::App& app);
 
+// The --csv and -o/--output options every table-printing command takes.
+void add_table_options(CLI::App* cmd, bool& csv, std::string& output);
+
 // gears/m6z30.toml in the working directory, else in the source tree the tool was built from.
 std::filesystem::path default_case_file();
 // Loads the case (the default one when `file` is empty), printing its warnings to stderr.

@@ -28,12 +28,6 @@ struct Options {
   std::string output;
 };
 
-void emit(const Options& o, const io::Table& t) {
-  const std::string text = o.csv ? io::format_csv(t) : io::format_text(t);
-  if (o.output.empty()) std::cout << text;
-  else io::write_file_atomically(o.output, text);
-}
-
 // Mean, minimum and maximum mesh stiffness over one base pitch.
 struct StiffnessStats {
   double mean = 0.0, min = 0.0, max = 0.0;
@@ -94,7 +88,7 @@ void run_summary(const Options& o, const Case& c, const gear::GearMesh& mesh) {
   row("iso_c_prime_N_per_m_um", iso.single * to_n_per_m_um);
   row("iso_c_gamma_alpha_N_per_m_um", iso.mesh * to_n_per_m_um);
   row("mean_mesh_stiffness_over_iso_c_gamma_alpha", k.mean / (iso.mesh * b));
-  emit(o, t);
+  io::output_table(t, o.csv, o.output);
 }
 
 void run(const Options& o) {
@@ -143,7 +137,7 @@ void run(const Options& o) {
       add(name, s, true);
     }
   }
-  emit(o, t);
+  io::output_table(t, o.csv, o.output);
 }
 
 }  // namespace
@@ -165,9 +159,8 @@ void add_kinematics_command(CLI::App& app) {
   pts->excludes(pos);
   cmd->add_option("--load-sharing", o->load_sharing, "iso or stiffness (default: the case's mesh.load_sharing)")
       ->check(CLI::IsMember({"iso", "stiffness"}));
-  cmd->add_flag("--csv", o->csv, "CSV with a header instead of aligned columns");
+  add_table_options(cmd, o->csv, o->output);
   cmd->add_flag("--summary", o->summary, "name,value rows: geometry, contact ratio, mesh stiffness, ISO stiffness");
-  cmd->add_option("-o,--output", o->output, "Write the table to this file (atomically) instead of stdout");
   cmd->callback([o] { run(*o); });
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 #include <unistd.h>
@@ -46,9 +47,15 @@ std::string format_text(const Table& t) {
   return out;
 }
 
+void output_table(const Table& t, bool csv, const std::string& path) {
+  const std::string text = csv ? format_csv(t) : format_text(t);
+  if (path.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
+  else write_file_atomically(path, text);
+}
+
 void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
   const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  const auto tmp = dir / ("." + path.filename().string() + ".tmp." + std::to_string(::getpid()));
+  const auto tmp = dir / fmt::format(".{}.tmp.{}", path.filename().string(), ::getpid());
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw std::runtime_error("cannot write " + tmp.string());

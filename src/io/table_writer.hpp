@@ -19,6 +19,9 @@ struct Table {
 std::string format_csv(const Table& t);
 std::string format_text(const Table& t);
 
+// The table as CSV or text, to stdout when `path` is empty, else to `path` atomically.
+void output_table(const Table& t, bool csv, const std::string& path);
+
 // Writes `content` to `path` through a temporary file in the same directory, renamed into
 // place when complete: a reader never sees a half-written file. Throws std::runtime_error.
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
