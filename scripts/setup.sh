@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # geartrib setup: install missing Debian 12 packages, configure and build (Release), then
 #   bash scripts/setup.sh          build only
-#   bash scripts/setup.sh run      build, then run the default case (gears/m6z30.toml): the mesh
-#                                  along the line of action, then its single-asperity contact
+#   bash scripts/setup.sh run      build, then run the main job on the default case (gears/m6z30.toml):
+#                                  results/m6z30.h5 (+ .csv) and the plots in results/plots
 #   bash scripts/setup.sh test     build, then run the default test suite (CTest, label "long" excluded)
 # Works as root on a fresh machine (apt-get) and is a no-op for packages already installed.
 set -euo pipefail
@@ -13,7 +13,8 @@ case "$mode" in build|run|test) ;; *) echo "usage: bash scripts/setup.sh [build|
 
 packages=(g++ cmake make pkg-config
           libeigen3-dev libsundials-dev libboost-dev libceres-dev libhdf5-dev
-          libcli11-dev libtomlplusplus-dev libfmt-dev libgtest-dev libbenchmark-dev)
+          libcli11-dev libtomlplusplus-dev libfmt-dev libgtest-dev libbenchmark-dev
+          python3 python3-h5py python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
@@ -38,10 +39,11 @@ cmake --build build -j "$jobs"
 
 case "$mode" in
   run)
+    mkdir -p results
     ./build/geartrib kinematics --summary
-    ./build/geartrib kinematics
     ./build/geartrib asperity --summary
-    ./build/geartrib asperity --model continuous --delta-star 0.5,1,2,6,10,40,110,1000
+    ./build/geartrib run gears/m6z30.toml -o results/m6z30.h5 --csv results/m6z30.csv
+    /usr/bin/python3 scripts/plot_mesh.py results/m6z30.h5 results/plots
     ;;
   test)
     ctest --test-dir build --output-on-failure -j "$jobs" -LE long

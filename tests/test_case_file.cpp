@@ -70,7 +70,8 @@ TEST(CaseFile, LoadsTheSeedCaseInSi) {
   EXPECT_EQ(c.wheel.teeth, 30);
   EXPECT_DOUBLE_EQ(c.pinion.flank.summit_radius, 1.65e-6);
   EXPECT_DOUBLE_EQ(c.wheel.flank.summit_radius, 1.75e-6);
-  EXPECT_DOUBLE_EQ(c.pinion.flank.ra, 0.8e-6);
+  EXPECT_DOUBLE_EQ(c.pinion.flank.roughness.ra, 0.8e-6);
+  EXPECT_EQ(c.pinion.flank.roughness.form, surface::FlankRoughness::Form::ra);
   EXPECT_DOUBLE_EQ(c.operating.pinion_torque, 1000.0);
   EXPECT_DOUBLE_EQ(c.operating.pinion_speed, 1000.0 * 2.0 * std::numbers::pi / 60.0);
   EXPECT_DOUBLE_EQ(c.friction_coefficient, 0.1);

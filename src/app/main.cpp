@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.fallthrough();
   geartrib::app::add_asperity_command(app);
+  geartrib::app::add_run_command(app);
   geartrib::app::add_kinematics_command(app);
   geartrib::app::add_version_command(app);
   try {

@@ -33,8 +33,9 @@ struct AsperityState {
   double von_mises_depth = 0.0;   // its depth [m]
 };
 
-// What to compute: the load and area only (cheap) or also the stress outputs.
-enum class Detail { load_area, full };
+// What to compute: the load and area only (cheap); also the pressure profile (peak pressure,
+// plastic core and share: cheap); or also the von Mises maximum (a quadrature: ~0.3 ms).
+enum class Detail { load_area, profile, full };
 
 class AsperityModel {
  public:

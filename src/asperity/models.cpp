@@ -60,6 +60,7 @@ AsperityState AsperityModel::evaluate(const ContactPair& pair, double delta, Det
   s.plastic_radius = prof.core_radius;
   s.plastic_fraction = prof.plastic_fraction();
   s.max_pressure = prof.max_pressure();
+  if (detail == Detail::profile) return s;
   const VonMisesMaximum vm = prof.von_mises_maximum(pair.poisson_ratio);
   s.max_von_mises = vm.value;
   s.von_mises_depth = vm.depth;

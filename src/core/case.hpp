@@ -4,6 +4,7 @@
 #pragma once
 
 #include "material/material.hpp"
+#include "surface/rough_surface.hpp"
 
 #include <map>
 #include <string>
@@ -24,10 +25,11 @@ struct GearPairSpec {
   double center_distance = 0.0;           // a_w [m]; 0: zero-backlash distance from the shifts
 };
 
-// The rough flank of one gear, as far as the asperity models see it.
+// The rough flank of one gear: its summit radius and its roughness in one of the forms of
+// surface::FlankRoughness (Ra, Rq, summit statistics or spectral moments).
 struct FlankSpec {
   double summit_radius = 0.0;  // mean asperity tip radius [m]
-  double ra = 0.0;             // arithmetic mean roughness Ra [m]
+  surface::FlankRoughness roughness;
 };
 
 struct GearSpec {
@@ -64,6 +66,24 @@ struct MeshSettings {
   bool plane_strain = true;          // tooth beam in plane strain (wide face) or plane stress
 };
 
+// Rough-surface settings shared by both flanks.
+struct RoughnessSettings {
+  surface::HeightDistribution distribution = surface::HeightDistribution::gaussian;
+  double eta_sigma_beta = surface::kTypicalEtaSigmaBeta;  // for flanks given by Ra or Rq
+};
+
+// The mesh-cycle contact run: fidelity, the outputs asked for, and the resolution knobs.
+struct ContactSettings {
+  bool coupled = false;          // "uncoupled" (Hertz pressure imposed) or "coupled" (Greenwood-Tripp)
+  bool real_area = true;         // outputs asked for
+  bool plastic_fraction = true;
+  bool asperity_stress = true;
+  int positions = 201;           // along A -> E of one tooth pair
+  int strip_points = 64;         // uncoupled quadrature across the strip
+  int height_points = 128;       // GW quadrature over summit heights
+  int coupled_nodes = 128;       // coupled pressure elements
+};
+
 struct Case {
   std::string title;
   std::string source;
@@ -73,7 +93,10 @@ struct Case {
   OperatingPoint operating;
   double friction_coefficient = 0.0;  // mu [-]
   MeshSettings mesh;
+  RoughnessSettings roughness;
+  ContactSettings contact;
   AsperitySettings asperity;
+  std::string source_text;            // the case file as read (stored with the results)
   std::vector<std::string> warnings;  // non-fatal findings of the loader (e.g. undercut), located
 };
 

@@ -38,8 +38,30 @@ GearSpec read_gear(TomlReader& r, const std::string& name) {
   const auto material_path = r.directory() / g.material_file;
   if (!std::filesystem::exists(material_path)) r.fail(p + "material", "material file not found: " + material_path.string());
   g.material = load_material(material_path);
-  g.flank.summit_radius = positive_quantity(r, p + "flank.summit_radius", Dimension::length);
-  g.flank.ra = positive_quantity(r, p + "flank.ra", Dimension::length);
+  const std::string f = p + "flank.";
+  g.flank.summit_radius = positive_quantity(r, f + "summit_radius", Dimension::length);
+  auto& rough = g.flank.roughness;
+  rough.summit_radius = g.flank.summit_radius;
+  const int forms = int(r.has(f + "ra")) + int(r.has(f + "rq")) + int(r.has(f + "summit_density")) + int(r.has(f + "m0"));
+  if (forms != 1)
+    r.fail(p + "flank", "give the roughness in exactly one form: ra, rq, summit_density + summit_sigma, or m0 + m2 + m4");
+  using Form = surface::FlankRoughness::Form;
+  if (r.has(f + "ra")) {
+    rough.form = Form::ra;
+    rough.ra = positive_quantity(r, f + "ra", Dimension::length);
+  } else if (r.has(f + "rq")) {
+    rough.form = Form::rq;
+    rough.rq = positive_quantity(r, f + "rq", Dimension::length);
+  } else if (r.has(f + "summit_density")) {
+    rough.form = Form::summits;
+    rough.summit_density = positive_quantity(r, f + "summit_density", Dimension::areal_density);
+    rough.summit_sigma = positive_quantity(r, f + "summit_sigma", Dimension::length);
+  } else {
+    rough.form = Form::spectral;
+    rough.m0 = positive_quantity(r, f + "m0", Dimension::area);
+    rough.m2 = positive_quantity(r, f + "m2", Dimension::dimensionless);
+    rough.m4 = positive_quantity(r, f + "m4", Dimension::areal_density);
+  }
   return g;
 }
 
@@ -122,6 +144,39 @@ Case load_case(const std::filesystem::path& file) {
   require(r, "mesh.tooth_beam", beam == "plane-strain" || beam == "plane-stress", "must be \"plane-strain\" or \"plane-stress\"");
   c.mesh.plane_strain = beam == "plane-strain";
 
+  {
+    const std::string dist = r.string("roughness.distribution", std::string("gaussian"));
+    require(r, "roughness.distribution", dist == "gaussian" || dist == "exponential", "must be \"gaussian\" or \"exponential\"");
+    c.roughness.distribution = dist == "gaussian" ? surface::HeightDistribution::gaussian : surface::HeightDistribution::exponential;
+    c.roughness.eta_sigma_beta = r.number("roughness.eta_sigma_beta", surface::kTypicalEtaSigmaBeta);
+    require(r, "roughness.eta_sigma_beta", c.roughness.eta_sigma_beta > 0.0 && c.roughness.eta_sigma_beta < 10.0,
+            "must lie in (0, 10)");
+  }
+  {
+    auto& ct = c.contact;
+    const std::string fidelity = r.string("contact.fidelity", std::string("uncoupled"));
+    require(r, "contact.fidelity", fidelity == "uncoupled" || fidelity == "coupled", "must be \"uncoupled\" or \"coupled\"");
+    ct.coupled = fidelity == "coupled";
+    if (r.has("contact.outputs")) {
+      const auto outputs = r.string_array("contact.outputs");
+      ct.real_area = ct.plastic_fraction = ct.asperity_stress = false;
+      for (const auto& o : outputs) {
+        if (o == "real_area") ct.real_area = true;
+        else if (o == "plastic_fraction") ct.plastic_fraction = true;
+        else if (o == "asperity_stress") ct.asperity_stress = true;
+        else r.fail("contact.outputs", "unknown output '" + o + "' (known: real_area, plastic_fraction, asperity_stress)");
+      }
+    }
+    ct.positions = static_cast<int>(r.integer("contact.positions", 201));
+    require(r, "contact.positions", ct.positions >= 2 && ct.positions <= 100000, "must lie in [2, 100000]");
+    ct.strip_points = static_cast<int>(r.integer("contact.strip_points", 64));
+    require(r, "contact.strip_points", ct.strip_points >= 8 && ct.strip_points <= 100000, "must lie in [8, 100000]");
+    ct.height_points = static_cast<int>(r.integer("contact.height_points", 128));
+    require(r, "contact.height_points", ct.height_points >= 8 && ct.height_points <= 100000, "must lie in [8, 100000]");
+    ct.coupled_nodes = static_cast<int>(r.integer("contact.coupled_nodes", 128));
+    require(r, "contact.coupled_nodes", ct.coupled_nodes >= 16 && ct.coupled_nodes <= 4000, "must lie in [16, 4000]");
+  }
+
   c.friction_coefficient = r.number("friction.mu");
   require(r, "friction.mu", c.friction_coefficient >= 0.0 && c.friction_coefficient < 1.0, "must lie in [0, 1)");
 
@@ -173,6 +228,9 @@ Case load_case(const std::filesystem::path& file) {
           "must lie in (0.5, 5)");
 
   r.check_all_used();
+  c.source_text = r.text();
+  if (c.pinion.flank.roughness.form != c.wheel.flank.roughness.form)
+    r.fail("wheel.flank", "give both flanks' roughness in the same form as the pinion's");
 
   // The pair must exist: an impossible geometry is an error at the key to change; findings
   // such as undercut are kept as located warnings.

@@ -3,14 +3,21 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 namespace geartrib::io {
 
 TomlReader::TomlReader(const std::filesystem::path& file) : file_(file.string()) {
   if (!std::filesystem::exists(file)) throw InputError(file_, 0, "", "", "file not found");
+  {
+    std::ifstream in(file);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    text_ = ss.str();
+  }
   try {
-    root_ = toml::parse_file(file_);
+    root_ = toml::parse(text_, file_);
   } catch (const toml::parse_error& e) {
     throw InputError(file_, static_cast<int>(e.source().begin.line), "", "",
                      "TOML syntax error: " + std::string(e.description()));
@@ -135,6 +142,21 @@ std::string TomlReader::string(std::string_view key, std::optional<std::string> 
   if (!n) return *fallback;
   if (!n->is_string()) fail(key, "expected a string");
   return n->as_string()->get();
+}
+
+std::vector<std::string> TomlReader::string_array(std::string_view key) {
+  const toml::node* n = take(key, false, "an array of strings");
+  const toml::array* arr = n->as_array();
+  if (!arr) fail(key, "expected an array of strings");
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < arr->size(); ++i) {
+    const toml::node& e = *arr->get(i);
+    if (!e.is_string())
+      throw InputError(file_, static_cast<int>(e.source().begin.line), std::string(key) + "[" + std::to_string(i) + "]", "",
+                       "expected a string");
+    out.push_back(e.as_string()->get());
+  }
+  return out;
 }
 
 std::vector<std::string> TomlReader::keys_of(std::string_view table) const {

@@ -32,6 +32,9 @@ class TomlReader {
   double number(std::string_view key, std::optional<double> fallback = std::nullopt);
   long integer(std::string_view key, std::optional<long> fallback = std::nullopt);
   std::string string(std::string_view key, std::optional<std::string> fallback = std::nullopt);
+  std::vector<std::string> string_array(std::string_view key);
+  // The file's text as read.
+  const std::string& text() const { return text_; }
   // Names of the entries of a table (empty when the table is absent).
   std::vector<std::string> keys_of(std::string_view table) const;
 
@@ -52,6 +55,7 @@ class TomlReader {
   double to_quantity(const toml::node& n, std::string_view key, Dimension d) const;
 
   std::string file_;
+  std::string text_;
   toml::table root_;
   std::set<std::string, std::less<>> used_;
 };

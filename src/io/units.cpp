@@ -19,7 +19,7 @@ struct UnitEntry {
 constexpr double kPi = std::numbers::pi;
 
 // The whole table. Symbols are matched exactly (case-sensitive: "MPa" is not "mpa").
-constexpr std::array<UnitEntry, 30> kUnits{{
+constexpr std::array<UnitEntry, 33> kUnits{{
     {"m", Dimension::length, 1.0},
     {"mm", Dimension::length, 1e-3},
     {"um", Dimension::length, 1e-6},
@@ -29,6 +29,9 @@ constexpr std::array<UnitEntry, 30> kUnits{{
     {"mm^2", Dimension::area, 1e-6},
     {"um^2", Dimension::area, 1e-12},
     {"nm^2", Dimension::area, 1e-18},
+    {"1/m^2", Dimension::areal_density, 1.0},
+    {"1/mm^2", Dimension::areal_density, 1e6},
+    {"1/um^2", Dimension::areal_density, 1e12},
     {"Pa", Dimension::pressure, 1.0},
     {"kPa", Dimension::pressure, 1e3},
     {"MPa", Dimension::pressure, 1e6},
@@ -65,6 +68,7 @@ std::string_view dimension_name(Dimension d) {
     case Dimension::dimensionless: return "dimensionless number";
     case Dimension::length: return "length";
     case Dimension::area: return "area";
+    case Dimension::areal_density: return "areal density";
     case Dimension::pressure: return "pressure";
     case Dimension::force: return "force";
     case Dimension::torque: return "torque";

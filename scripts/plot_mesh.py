@@ -1,0 +1,97 @@
+#!/usr/bin/python3
+"""Plot a `geartrib run` result along the path of contact.
+
+Usage: scripts/plot_mesh.py RESULTS.h5 OUTDIR
+
+Draws every /mesh and /contact quantity against the position s on the line of action (mm) as
+OUTDIR/<group>_<name>.png, with the points A..E marked, and OUTDIR/overview.png with the main
+quantities stacked. Needs Debian's python3-h5py and python3-matplotlib (scripts/setup.sh
+installs them); run with /usr/bin/python3.
+"""
+import os
+import sys
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+OVERVIEW = [("mesh", "load_share"), ("mesh", "hertz_p0_Pa"), ("contact", "real_area_ratio"),
+            ("contact", "plastic_area_fraction"), ("contact", "max_asperity_von_mises_Pa"), ("mesh", "srr")]
+
+
+def text(value):
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def tidy_axis(ax, values):
+    # Plain tick labels (no offset notation); a visible band for nearly constant data.
+    ax.ticklabel_format(axis="y", useOffset=False)
+    lo, hi = float(min(values)), float(max(values))
+    if hi - lo <= 1e-9 * max(abs(hi), abs(lo), 1e-300):
+        pad = 0.05 * max(abs(hi), 1e-300)
+        ax.set_ylim(lo - pad, hi + pad)
+
+
+def mark_points(ax, points):
+    for name, s in points:
+        ax.axvline(s, color="0.6", linestyle="--", linewidth=0.8)
+        ax.annotate(name, (s, 0.03), xycoords=("data", "axes fraction"), ha="left", va="bottom", fontsize=8,
+                    xytext=(2, 0), textcoords="offset points")
+
+
+def main(argv):
+    if len(argv) != 3:
+        print(__doc__.strip(), file=sys.stderr)
+        return 2
+    path, outdir = argv[1], argv[2]
+    os.makedirs(outdir, exist_ok=True)
+    with h5py.File(path, "r") as f:
+        s = f["mesh/s_m"][()] * 1e3
+        points = [(p, f["mesh"].attrs[f"s_{p}_m"] * 1e3) for p in "ABCDE"]
+        title = f"{text(f['meta'].attrs['asperity_model'])}, {text(f['meta'].attrs['fidelity'])} strip"
+        series = {}
+        for group in ("mesh", "contact"):
+            if group not in f:
+                continue
+            for name, data in f[group].items():
+                if name != "s_m":
+                    series[(group, name)] = (data[()], text(data.attrs["units"]))
+    written = []
+    for (group, name), (values, units) in series.items():
+        fig, ax = plt.subplots(figsize=(6.4, 3.6), dpi=110)
+        ax.plot(s, values, color="C0")
+        tidy_axis(ax, values)
+        mark_points(ax, points)
+        ax.set_xlabel("position on the line of action s [mm]")
+        ax.set_ylabel(f"{name} [{units}]")
+        ax.grid(True, alpha=0.3)
+        fig.tight_layout()
+        out = os.path.join(outdir, f"{group}_{name}.png")
+        fig.savefig(out)
+        plt.close(fig)
+        written.append(out)
+    wanted = [k for k in OVERVIEW if k in series]
+    if wanted:
+        fig, axes = plt.subplots(len(wanted), 1, figsize=(7.0, 1.9 * len(wanted)), dpi=110, sharex=True)
+        for ax, key in zip(axes if len(wanted) > 1 else [axes], wanted):
+            values, units = series[key]
+            ax.plot(s, values, color="C0")
+            tidy_axis(ax, values)
+            mark_points(ax, points)
+            ax.set_ylabel(f"{key[1]}\n[{units}]", fontsize=8)
+            ax.grid(True, alpha=0.3)
+        axes[-1].set_xlabel("position on the line of action s [mm]")
+        fig.suptitle(title, fontsize=9)
+        fig.tight_layout()
+        out = os.path.join(outdir, "overview.png")
+        fig.savefig(out)
+        plt.close(fig)
+        written.append(out)
+    print(f"wrote {len(written)} plots to {outdir}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

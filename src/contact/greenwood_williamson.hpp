@@ -1,0 +1,71 @@
+// Greenwood-Williamson summation of single-asperity contacts over the summit-height
+// distribution of an equivalent rough surface, with any asperity model of the registry
+// (Greenwood & Williamson 1966; elastic-plastic extensions after Chang-Etsion-Bogy 1987).
+// Separation d: from the rigid flat to the mean of the summit heights [m].
+#pragma once
+
+#include "asperity/model.hpp"
+#include "surface/rough_surface.hpp"
+
+#include <vector>
+
+namespace geartrib::contact {
+
+// Contact of the rough surface per unit nominal area at one separation.
+struct SurfaceContact {
+  double separation = 0.0;               // d [m]
+  double nominal_pressure = 0.0;         // p = eta int F(z - d) phi(z) dz [Pa]
+  double real_area_ratio = 0.0;          // A_r/A_n = eta int A(z - d) phi(z) dz
+  double contact_density = 0.0;          // contacts per nominal area, eta int_d phi [1/m^2]
+  double plastic_area_ratio = 0.0;       // eta int A(z - d) phi_p(z - d) phi(z) dz, phi_p the plastic share of one contact
+  double plastic_contact_density = 0.0;  // contacts with z - d > delta_c, per nominal area [1/m^2]
+};
+
+struct GreenwoodWilliamsonOptions {
+  int height_points = 128;    // quadrature points over the summit heights in contact
+  int table_points_per_sigma = 32;  // separation table resolution
+  bool plastic = true;        // tabulate the plastic area and contacts (needs the pressure profile)
+  void validate() const;
+};
+
+class GreenwoodWilliamson {
+ public:
+  // `pair` carries the materials; its radius is replaced by the surface's summit radius. The
+  // pressure-separation table covers nominal pressures up to at least `max_pressure` [Pa].
+  GreenwoodWilliamson(const surface::EquivalentSurface& surface, const asperity::AsperityModel& model,
+                      const asperity::ContactPair& pair, double max_pressure, const GreenwoodWilliamsonOptions& options);
+
+  // Direct quadrature at a separation (what the table is built from).
+  SurfaceContact at_separation(double d) const;
+  // From the table: monotone log-linear interpolation in d.
+  SurfaceContact interpolate(double d) const;
+  // Nominal pressure at d and its derivative dp/dd (<= 0), from the table.
+  double pressure(double d) const;
+  double pressure_slope(double d) const;
+  // The separation giving nominal pressure p >= 0 (bracketed inversion of the monotone table);
+  // p = 0 gives the separation where contact begins.
+  double separation_for_pressure(double p) const;
+  // Height above the summit mean of the highest summit expected in a nominal area [m^2]:
+  // the height exceeded by one summit of eta A on average (0 when eta A < 1).
+  double highest_summit(double nominal_area) const;
+
+  double contact_onset() const { return z_high_; }  // separation beyond which nothing touches [m]
+  double max_pressure() const { return table_.back().nominal_pressure; }
+  const surface::EquivalentSurface& surface() const { return surface_; }
+  const asperity::AsperityModel& model() const { return model_; }
+  const asperity::ContactPair& pair() const { return pair_; }
+  double critical_interference() const { return delta_c_; }
+
+ private:
+  double density(double z) const;  // summit-height probability density phi(z) [1/m]
+  surface::EquivalentSurface surface_;
+  const asperity::AsperityModel& model_;
+  asperity::ContactPair pair_;
+  GreenwoodWilliamsonOptions options_;
+  double delta_c_;
+  double z_low_, z_high_;  // support of phi used in the quadrature
+  double step_;            // table spacing in d [m]
+  std::vector<SurfaceContact> table_;  // decreasing d from z_high_: table_[k].separation = z_high_ - k step
+};
+
+}  // namespace geartrib::contact

@@ -1,0 +1,181 @@
+#include "contact/mesh_contact.hpp"
+
+#include "asperity/case_setup.hpp"
+#include "asperity/side_contact.hpp"
+#include "contact/greenwood_williamson.hpp"
+#include "contact/rough_line_contact.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace geartrib::contact {
+
+const Series* MeshContactResult::find(const std::string& name) const {
+  for (const auto* group : {&mesh, &contact})
+    for (const auto& s : *group)
+      if (s.name == name) return &s;
+  return nullptr;
+}
+
+namespace {
+class Stopwatch {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return s;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+}  // namespace
+
+MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
+                                   const std::function<void(int, int)>& progress, int positions) {
+  const ContactSettings& cs = c.contact;
+  const int n = positions > 0 ? positions : cs.positions;
+  MeshContactResult r;
+  r.path = mesh.pair().path();
+  r.fidelity = cs.coupled ? "coupled" : "uncoupled";
+  Stopwatch clock;
+
+  // Stage 1: kinematics and loading of one pair from A to E.
+  // Each series is filled through the reference add() returns: the groups are reserved so
+  // that adding a series never moves the earlier ones.
+  constexpr std::size_t kMaxSeries = 32;
+  r.mesh.reserve(kMaxSeries);
+  r.contact.reserve(kMaxSeries);
+  auto add = [](std::vector<Series>& g, const char* name, const char* unit) -> std::vector<double>& {
+    if (g.size() == g.capacity()) throw std::logic_error("run_mesh_contact: raise kMaxSeries");
+    g.push_back({name, unit, {}});
+    return g.back().values;
+  };
+  std::vector<double> s_m, share, line_load, r_eq, p0, b_h;
+  {
+    auto& s_v = add(r.mesh, "s_m", "m");
+    auto& roll = add(r.mesh, "roll_angle_rad", "rad");
+    auto& gamma = add(r.mesh, "gamma", "1");
+    auto& rho1 = add(r.mesh, "rho1_m", "m");
+    auto& rho2 = add(r.mesh, "rho2_m", "m");
+    auto& req = add(r.mesh, "r_eq_m", "m");
+    auto& sh = add(r.mesh, "load_share", "1");
+    auto& w = add(r.mesh, "line_load_N_per_m", "N/m");
+    auto& hp = add(r.mesh, "hertz_p0_Pa", "Pa");
+    auto& hb = add(r.mesh, "hertz_halfwidth_m", "m");
+    auto& v1 = add(r.mesh, "v1_m_per_s", "m/s");
+    auto& v2 = add(r.mesh, "v2_m_per_s", "m/s");
+    auto& ue = add(r.mesh, "entrainment_m_per_s", "m/s");
+    auto& vs = add(r.mesh, "sliding_m_per_s", "m/s");
+    auto& srr = add(r.mesh, "srr", "1");
+    auto& ks = add(r.mesh, "mesh_stiffness_N_per_m", "N/m");
+    const auto& path = r.path;
+    for (int i = 0; i < n; ++i) {
+      const double s = path.a + path.length * i / (n - 1);
+      const gear::MeshInstant m = mesh.analysis().at(s);
+      const gear::PairLoad* own = &m.pairs.front();
+      for (const auto& l : m.pairs)
+        if (std::abs(l.s - s) < std::abs(own->s - s)) own = &l;
+      const gear::FlankGeometry f = mesh.pair().flank(s);
+      const gear::FlankKinematics k = mesh.pair().kinematics(s, mesh.pinion_speed());
+      s_v.push_back(s);
+      roll.push_back(mesh.pair().roll_angle(0, s));
+      gamma.push_back(f.roll_parameter);
+      rho1.push_back(f.radius_pinion);
+      rho2.push_back(f.radius_wheel);
+      req.push_back(f.radius_equivalent);
+      sh.push_back(own->share);
+      w.push_back(own->line_load);
+      hp.push_back(own->hertz_peak);
+      hb.push_back(own->hertz_half_width);
+      v1.push_back(k.rolling_pinion);
+      v2.push_back(k.rolling_wheel);
+      ue.push_back(k.entrainment);
+      vs.push_back(k.sliding);
+      srr.push_back(k.slide_to_roll);
+      ks.push_back(m.mesh_stiffness);
+    }
+    s_m = s_v;
+    line_load = w;
+    r_eq = req;
+    p0 = hp;
+  }
+  r.stages.push_back({"kinematics", clock.lap()});
+
+  // Stage 2: the equivalent surface and its pressure-separation table (built once).
+  r.surface = surface::equivalent_surface(c.pinion.flank.roughness, c.wheel.flank.roughness, c.roughness.distribution,
+                                          c.roughness.eta_sigma_beta);
+  const asperity::ContactPair pair = asperity::contact_pair(c);
+  r.plasticity_index = surface::plasticity_index(r.surface, pair.modulus, pair.hardness);
+  const auto model = asperity::make_case_model(c, c.asperity.model);
+  r.asperity_model = std::string(model->name());
+  GreenwoodWilliamsonOptions gwo;
+  gwo.height_points = cs.height_points;
+  gwo.plastic = cs.plastic_fraction;
+  double p_max = 0.0;
+  for (double p : p0) p_max = std::max(p_max, p);
+  const GreenwoodWilliamson gw(r.surface, *model, pair, 1.5 * p_max + 1.0, gwo);
+  r.stages.push_back({"surface_table", clock.lap()});
+
+  // Stage 3: the rough line contact across the strip at every position.
+  StripOptions so;
+  so.fidelity = cs.coupled ? StripFidelity::coupled : StripFidelity::uncoupled;
+  so.strip_points = cs.strip_points;
+  so.coupled_nodes = cs.coupled_nodes;
+  const RoughLineContact strip(gw, mesh.composite_modulus(), mesh.pair().spec().face_width, so, solver);
+  std::vector<StripResult> strips;
+  for (int i = 0; i < n; ++i) {
+    strips.push_back(strip.solve(line_load[static_cast<std::size_t>(i)], r_eq[static_cast<std::size_t>(i)]));
+    if (progress) progress(i + 1, n);
+  }
+  r.stages.push_back({cs.coupled ? "strip_contact_coupled" : "strip_contact_uncoupled", clock.lap()});
+  if (cs.real_area) {
+    auto& a = add(r.contact, "real_area_ratio", "1");
+    auto& ap = add(r.contact, "real_area_per_width_m", "m");
+    auto& pr = add(r.contact, "mean_real_pressure_Pa", "Pa");
+    auto& nc = add(r.contact, "contacts_per_width_per_m", "1/m");
+    auto& pn = add(r.contact, "max_nominal_pressure_Pa", "Pa");
+    auto& hw = add(r.contact, "contact_halfwidth_m", "m");
+    auto& sep = add(r.contact, "min_separation_m", "m");
+    for (const auto& st : strips) {
+      a.push_back(st.real_area_ratio);
+      ap.push_back(st.real_area_per_width);
+      pr.push_back(st.mean_real_pressure);
+      nc.push_back(st.contacts_per_width);
+      pn.push_back(st.max_nominal_pressure);
+      hw.push_back(st.contact_half_width);
+      sep.push_back(st.min_separation);
+    }
+  }
+  if (cs.plastic_fraction) {
+    auto& pa = add(r.contact, "plastic_area_fraction", "1");
+    auto& pc = add(r.contact, "plastic_contact_fraction", "1");
+    for (const auto& st : strips) {
+      pa.push_back(st.plastic_area_fraction);
+      pc.push_back(st.plastic_contact_fraction);
+    }
+  }
+
+  // Stage 4 (if asked): the highest asperity's stresses, in side contact when mu > 0.
+  if (cs.asperity_stress) {
+    const bool side = c.friction_coefficient > 0.0;
+    asperity::SideContactGeometry geometry;
+    if (side) geometry = asperity::side_contact_geometry(c.pinion.flank.summit_radius, c.wheel.flank.summit_radius,
+                                                         c.friction_coefficient);
+    auto& ai = add(r.contact, "max_asperity_interference_m", "m");
+    auto& ap = add(r.contact, "max_asperity_pressure_Pa", "Pa");
+    auto& av = add(r.contact, "max_asperity_von_mises_Pa", "Pa");
+    for (const auto& st : strips) {
+      const HighestAsperity h = highest_asperity(gw, st, mesh.pair().spec().face_width, side ? &geometry : nullptr);
+      ai.push_back(h.interference);
+      ap.push_back(h.peak_pressure);
+      av.push_back(h.von_mises);
+    }
+    r.stages.push_back({side ? "asperity_stress_side_contact" : "asperity_stress_normal_contact", clock.lap()});
+  }
+  return r;
+}
+
+}  // namespace geartrib::contact

@@ -1,0 +1,44 @@
+// The main job: rough-surface contact at every position of one tooth pair's path A -> E,
+// evaluating only what the case asks for, with the time each stage took.
+#pragma once
+
+#include "core/case.hpp"
+#include "core/nonlinear_solver.hpp"
+#include "gear/gear_mesh.hpp"
+#include "surface/rough_surface.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace geartrib::contact {
+
+// One quantity over the positions, with its unit.
+struct Series {
+  std::string name;
+  std::string unit;
+  std::vector<double> values;
+};
+
+struct StageTiming {
+  std::string name;
+  double seconds = 0.0;
+};
+
+struct MeshContactResult {
+  std::vector<Series> mesh;     // kinematics and loading: s_m, load_share, hertz_p0_Pa, ...
+  std::vector<Series> contact;  // rough contact: real_area_ratio, plastic_area_fraction, ...
+  std::vector<StageTiming> stages;
+  surface::EquivalentSurface surface;
+  double plasticity_index = 0.0;
+  gear::PathOfContact path;
+  std::string asperity_model;
+  std::string fidelity;
+  const Series* find(const std::string& name) const;  // in mesh, then contact; nullptr if absent
+};
+
+// progress(done, total) is called after each position. positions <= 0: the case's number.
+MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
+                                   const std::function<void(int, int)>& progress = {}, int positions = 0);
+
+}  // namespace geartrib::contact

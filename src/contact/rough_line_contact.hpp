@@ -1,0 +1,77 @@
+// Rough line contact across the Hertzian strip of one tooth-pair position, two fidelities:
+//  - uncoupled: the smooth Hertz pressure p0 sqrt(1 - x^2/b^2) imposed on the rough surface and
+//    the Greenwood-Williamson quantities integrated across the strip;
+//  - coupled: rough line contact in the spirit of Greenwood & Tripp (1967): the bulk elastic
+//    (plane-strain half-space) deformation and the asperity pressure solved together, Newton's
+//    method through the NonlinearSolver the caller supplies (SUNDIALS KINSOL in the tool).
+#pragma once
+
+#include "asperity/side_contact.hpp"
+#include "contact/greenwood_williamson.hpp"
+#include "core/nonlinear_solver.hpp"
+
+#include <vector>
+
+namespace geartrib::contact {
+
+enum class StripFidelity { uncoupled, coupled };
+
+struct StripOptions {
+  StripFidelity fidelity = StripFidelity::uncoupled;
+  int strip_points = 64;     // uncoupled: Gauss points across the Hertz strip
+  int coupled_nodes = 128;   // coupled: pressure elements across the contact
+  void validate() const;
+};
+
+// Strip results per unit face width. The nominal width is the smooth Hertz width 2b in both
+// fidelities, so their ratios compare.
+struct StripResult {
+  double line_load = 0.0;                 // integral of the nominal pressure [N/m]
+  double hertz_half_width = 0.0;          // b [m]
+  double max_nominal_pressure = 0.0;      // [Pa]
+  double contact_half_width = 0.0;        // half-width of the region carrying 99.9% of the load [m]
+  double real_area_per_width = 0.0;       // integral of A_r/A_n [m]
+  double real_area_ratio = 0.0;           // real_area_per_width / (2b)
+  double contacts_per_width = 0.0;        // [1/m]
+  double plastic_area_fraction = 0.0;     // plastic share of the real contact area
+  double plastic_contact_fraction = 0.0;  // share of contacting asperities beyond delta_c
+  double mean_real_pressure = 0.0;        // line load / real area per width [Pa]
+  double min_separation = 0.0;            // separation at the centre of the strip [m]
+  int solver_iterations = 0;               // coupled: Newton iterations
+  std::vector<double> x, nominal_pressure; // the pressure across the strip [m], [Pa]
+};
+
+class RoughLineContact {
+ public:
+  // solver: required for the coupled fidelity (nullptr otherwise).
+  RoughLineContact(const GreenwoodWilliamson& gw, double composite_modulus, double face_width,
+                   const StripOptions& options, const NonlinearSolver* solver);
+  // line_load w [N/m] on equivalent radius R [m]. Throws std::runtime_error when the coupled
+  // solve does not converge (never returns an unconverged answer).
+  StripResult solve(double line_load, double radius) const;
+
+ private:
+  StripResult uncoupled(double w, double radius) const;
+  StripResult coupled(double w, double radius) const;
+
+  const GreenwoodWilliamson& gw_;
+  double modulus_;
+  double face_width_;
+  StripOptions options_;
+  const NonlinearSolver* solver_;
+};
+
+// The highest asperity expected in the nominal contact zone of a strip (2b x face width) at the
+// strip's centre: the summit height exceeded by one summit of eta 2b L on average
+// (GreenwoodWilliamson::highest_summit), pressed by the centre's separation. In side contact
+// (mu > 0) it is evaluated as a tilted paraboloid pair (side_contact.hpp) at the same approach.
+struct HighestAsperity {
+  double interference = 0.0;    // [m]; 0 when it does not touch
+  double peak_pressure = 0.0;   // [Pa]
+  double von_mises = 0.0;       // largest von Mises stress of the elastic field on the axis [Pa]
+  double plastic_fraction = 0.0;
+};
+HighestAsperity highest_asperity(const GreenwoodWilliamson& gw, const StripResult& strip, double face_width,
+                                 const asperity::SideContactGeometry* side = nullptr);
+
+}  // namespace geartrib::contact

@@ -1,0 +1,66 @@
+#include "surface/rough_surface.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace geartrib::surface {
+
+void EquivalentSurface::validate() const {
+  auto fail = [](const std::string& rule) { throw std::invalid_argument("equivalent rough surface: " + rule); };
+  if (!(summit_density > 0.0 && std::isfinite(summit_density))) fail("summit density must be positive");
+  if (!(summit_radius > 0.0)) fail("summit radius must be positive");
+  if (!(summit_sigma > 0.0)) fail("summit height deviation must be positive");
+  if (!(surface_sigma > 0.0)) fail("surface height deviation must be positive");
+}
+
+EquivalentSurface equivalent_surface(const FlankRoughness& a, const FlankRoughness& b, HeightDistribution dist,
+                                     double esb) {
+  using Form = FlankRoughness::Form;
+  if (a.form != b.form) throw std::invalid_argument("both flanks must describe their roughness in the same form");
+  EquivalentSurface s;
+  s.distribution = dist;
+  auto series_radius = [](double r1, double r2) { return r1 * r2 / (r1 + r2); };
+  switch (a.form) {
+    case Form::ra:
+    case Form::rq: {
+      const double s1 = a.form == Form::ra ? kRqOverRaGaussian * a.ra : a.rq;
+      const double s2 = b.form == Form::ra ? kRqOverRaGaussian * b.ra : b.rq;
+      if (!(s1 > 0.0 && s2 > 0.0)) throw std::invalid_argument("flank roughness must be positive");
+      if (!(esb > 0.0)) throw std::invalid_argument("eta sigma beta must be positive");
+      s.surface_sigma = std::hypot(s1, s2);
+      s.summit_sigma = s.surface_sigma;
+      s.summit_radius = series_radius(a.summit_radius, b.summit_radius);
+      s.summit_density = esb / (s.summit_sigma * s.summit_radius);
+      s.summit_mean_height = 0.0;
+      break;
+    }
+    case Form::summits: {
+      s.summit_sigma = std::hypot(a.summit_sigma, b.summit_sigma);
+      s.surface_sigma = s.summit_sigma;
+      s.summit_radius = series_radius(a.summit_radius, b.summit_radius);
+      s.summit_density = 0.5 * (a.summit_density + b.summit_density);
+      break;
+    }
+    case Form::spectral: {
+      const double m0 = a.m0 + b.m0, m2 = a.m2 + b.m2, m4 = a.m4 + b.m4;
+      if (!(m0 > 0.0 && m2 > 0.0 && m4 > 0.0)) throw std::invalid_argument("spectral moments must be positive");
+      const double alpha = m0 * m4 / (m2 * m2);
+      if (!(alpha > 0.8968)) throw std::invalid_argument("bandwidth parameter m0 m4/m2^2 must exceed 0.8968 (McCool)");
+      s.surface_sigma = std::sqrt(m0);
+      s.summit_sigma = std::sqrt((1.0 - 0.8968 / alpha) * m0);
+      s.summit_density = m4 / (6.0 * std::numbers::pi * std::sqrt(3.0) * m2);
+      s.summit_radius = 0.375 * std::sqrt(std::numbers::pi / m4);
+      s.summit_mean_height = 4.0 * std::sqrt(m0 / (std::numbers::pi * alpha));
+      break;
+    }
+  }
+  s.validate();
+  return s;
+}
+
+double plasticity_index(const EquivalentSurface& s, double composite_modulus, double hardness) {
+  return composite_modulus / hardness * std::sqrt(s.summit_sigma / s.summit_radius);
+}
+
+}  // namespace geartrib::surface

@@ -1,0 +1,58 @@
+// Statistical description of rough flanks and their reduction to one equivalent rough surface
+// against a rigid flat (Greenwood & Williamson 1966; McCool 1986; seed section 4).
+#pragma once
+
+#include <string>
+
+namespace geartrib::surface {
+
+enum class HeightDistribution { gaussian, exponential };
+
+// One flank's roughness, in one of three forms (SI).
+struct FlankRoughness {
+  enum class Form { ra, rq, summits, spectral } form = Form::ra;
+  double summit_radius = 0.0;   // beta [m] (all forms but spectral)
+  double ra = 0.0;              // [m] (form ra)
+  double rq = 0.0;              // [m] (form rq)
+  double summit_density = 0.0;  // eta [1/m^2] (form summits)
+  double summit_sigma = 0.0;    // std deviation of summit heights [m] (form summits)
+  double m0 = 0.0, m2 = 0.0, m4 = 0.0;  // spectral moments [m^2], [-], [1/m^2] (form spectral)
+};
+
+// The equivalent rough surface: summits of one radius with normally (or exponentially)
+// distributed heights against a flat.
+struct EquivalentSurface {
+  double summit_density = 0.0;       // eta [1/m^2]
+  double summit_radius = 0.0;        // beta [m]
+  double summit_sigma = 0.0;         // sigma_s [m]
+  double surface_sigma = 0.0;        // sigma of the surface heights (composite Rq) [m]
+  double summit_mean_height = 0.0;   // mean summit height above the mean plane of the surface [m]
+  HeightDistribution distribution = HeightDistribution::gaussian;
+  // Dimensionless GW product eta sigma_s beta.
+  double eta_sigma_beta() const { return summit_density * summit_sigma * summit_radius; }
+  void validate() const;  // throws std::invalid_argument
+};
+
+// Gaussian heights: Rq = sqrt(pi/2) Ra.
+inline constexpr double kRqOverRaGaussian = 1.2533141373155003;
+
+// Typical Greenwood-Williamson product for engineering surfaces (GW 1966 report 0.03 to 0.05);
+// the default when a flank is given by Ra/Rq and summit radius only (an assumption).
+inline constexpr double kTypicalEtaSigmaBeta = 0.05;
+
+// Combines two flanks into the equivalent surface against a flat.
+//  - ra/rq + summit radius (both flanks): sigma = sqrt(sigma1^2 + sigma2^2) (independent heights,
+//    seed section 4: y_e = y_u + y_d), beta = beta1 beta2/(beta1 + beta2) (as the seed's R),
+//    sigma_s = sigma, eta = eta_sigma_beta/(sigma beta).
+//  - summits: sigma_s = sqrt(s1^2 + s2^2), beta as above, eta = the mean of the densities.
+//  - spectral: moments add (McCool 1986, for independent surfaces), then McCool's relations with
+//    alpha = m0 m4/m2^2: eta = m4/(6 pi sqrt(3) m2), beta = 0.375 sqrt(pi/m4),
+//    sigma_s^2 = (1 - 0.8968/alpha) m0, mean summit height 4 sqrt(m0/(pi alpha)).
+// Mixing forms between flanks is an error (std::invalid_argument).
+EquivalentSurface equivalent_surface(const FlankRoughness& pinion, const FlankRoughness& wheel,
+                                     HeightDistribution distribution, double eta_sigma_beta = kTypicalEtaSigmaBeta);
+
+// Greenwood-Williamson plasticity index psi = (E_t/H) sqrt(sigma_s/beta).
+double plasticity_index(const EquivalentSurface& s, double composite_modulus, double hardness);
+
+}  // namespace geartrib::surface

@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# The main job end to end: HDF5 layout and units, finiteness, the stages a case asks for, the
+# plot script, atomic output. Usage: run_outputs.sh path/to/geartrib (from the source tree).
+set -u
+bin="$1"
+py=/usr/bin/python3
+fail=0
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+ok() { echo "ok   $1"; }
+bad() { echo "FAIL $1"; fail=1; }
+
+"$bin" run -q -o "$tmp/m6z30.h5" --csv "$tmp/m6z30.csv" >/dev/null && ok run-default || bad run-default
+"$py" - "$tmp/m6z30.h5" <<'PY' && ok hdf5-layout || bad hdf5-layout
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1], "r")
+mesh = ["s_m", "roll_angle_rad", "load_share", "line_load_N_per_m", "r_eq_m", "hertz_p0_Pa", "hertz_halfwidth_m",
+        "sliding_m_per_s", "entrainment_m_per_s", "srr"]
+contact = ["real_area_ratio", "real_area_per_width_m", "mean_real_pressure_Pa", "max_asperity_pressure_Pa",
+           "max_asperity_von_mises_Pa", "plastic_area_fraction", "plastic_contact_fraction", "contacts_per_width_per_m"]
+for group, names in (("mesh", mesh), ("contact", contact)):
+    for n in names:
+        d = f[group][n]
+        assert d.shape == (201,), (n, d.shape)
+        assert np.all(np.isfinite(d[()])), n
+        assert "units" in d.attrs, n
+assert f["mesh/s_m"].attrs["units"] in (b"m", "m")
+assert b"m6z30" in f["scene"][()] or b"m6 z30" in f["scene"][()]
+assert f["meta"].attrs["version"]
+names = [n.decode() if isinstance(n, bytes) else n for n in f["meta/stage_names"][()]]
+assert "surface_table" in names and any(n.startswith("asperity_stress") for n in names), names
+assert f["meta/stage_seconds"].shape == (len(names),)
+# The load shares of the tracked pair go 1/3 -> 1 -> 1/3 (ISO)
+share = f["mesh/load_share"][()]
+assert abs(share[0] - 1 / 3) < 1e-12 and abs(share[-1] - 1 / 3) < 1e-12 and abs(share.max() - 1) < 1e-12
+PY
+head -1 "$tmp/m6z30.csv" | grep -q "^s_m,roll_angle_rad" && ok csv-header || bad csv-header
+[[ $(wc -l < "$tmp/m6z30.csv") -eq 202 ]] && ok csv-rows || bad csv-rows
+
+# Plots
+"$py" scripts/plot_mesh.py "$tmp/m6z30.h5" "$tmp/plots" >/dev/null && [[ -s "$tmp/plots/overview.png" ]] \
+  && [[ $(ls "$tmp/plots"/*.png | wc -l) -ge 20 ]] && ok plots || bad plots
+
+# Only what the case asks for: real area only, mu = 0 (no side contact), coupled fidelity.
+mkdir -p "$tmp/g"
+sed -e 's/^outputs = .*/outputs = ["real_area"]/' -e 's#"../materials/#"'"$PWD"'/materials/#' gears/m6z30.toml > "$tmp/g/area.toml"
+"$bin" run -q "$tmp/g/area.toml" -o "$tmp/area.h5" >/dev/null && ok run-area-only || bad run-area-only
+"$py" - "$tmp/area.h5" <<'PY' && ok outputs-gated || bad outputs-gated
+import sys, h5py
+f = h5py.File(sys.argv[1], "r")
+assert "real_area_ratio" in f["contact"] and "plastic_area_fraction" not in f["contact"]
+assert "max_asperity_von_mises_Pa" not in f["contact"]
+names = [n.decode() if isinstance(n, bytes) else n for n in f["meta/stage_names"][()]]
+assert not any(n.startswith("asperity_stress") for n in names), names
+PY
+sed -e 's/^mu = 0.1 .*/mu = 0.0/' -e 's#"../materials/#"'"$PWD"'/materials/#' gears/m6z30.toml > "$tmp/g/frictionless.toml"
+"$bin" run -q "$tmp/g/frictionless.toml" -o "$tmp/mu0.h5" --positions 11 >/dev/null && ok run-mu0 || bad run-mu0
+"$py" -c "
+import h5py
+f = h5py.File('$tmp/mu0.h5', 'r')
+names = [n.decode() if isinstance(n, bytes) else n for n in f['meta/stage_names'][()]]
+assert 'asperity_stress_normal_contact' in names and 'asperity_stress_side_contact' not in names, names
+assert f['mesh/s_m'].shape == (11,)
+" && ok no-side-contact-at-mu0 || bad no-side-contact-at-mu0
+"$bin" run -q --fidelity coupled --positions 21 -o "$tmp/coupled.h5" >/dev/null && ok run-coupled || bad run-coupled
+"$py" -c "
+import h5py
+f = h5py.File('$tmp/coupled.h5', 'r')
+assert f['meta'].attrs['fidelity'] in (b'coupled', 'coupled')
+names = [n.decode() if isinstance(n, bytes) else n for n in f['meta/stage_names'][()]]
+assert 'strip_contact_coupled' in names, names
+" && ok coupled-recorded || bad coupled-recorded
+
+# Atomic output: a failing write leaves nothing behind.
+"$bin" run -q -o "$tmp/missing-dir/x.h5" >/dev/null 2>&1 && bad write-error-status || ok write-error-status
+ls -a "$tmp" | grep -q '\.tmp\.' && bad temporary-left || ok no-temporary-left
+exit $fail

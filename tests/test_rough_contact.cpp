@@ -1,0 +1,155 @@
+// Greenwood-Williamson statistics and the rough line contact across the Hertzian strip.
+#include "contact/rough_line_contact.hpp"
+#include "solvers/kinsol_solver.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+using namespace geartrib;
+using namespace geartrib::contact;
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+
+surface::EquivalentSurface make_surface(double sigma, double beta, double esb,
+                                        surface::HeightDistribution d = surface::HeightDistribution::gaussian) {
+  surface::EquivalentSurface s;
+  s.summit_sigma = s.surface_sigma = sigma;
+  s.summit_radius = beta;
+  s.summit_density = esb / (sigma * beta);
+  s.distribution = d;
+  return s;
+}
+}  // namespace
+
+TEST(GreenwoodWilliamson, GaussianIntegralsMatchTables) {
+  // With Hertzian asperities: p = eta 4/3 E sqrt(beta) sigma^3/2 F_3/2(h), A_r/A_n = eta pi beta
+  // sigma F_1(h), n = eta F_0(h). GW's tabulated F_0(1) = 0.15866, F_1(1) = 0.08332,
+  // F_3/2(1) = 0.07567: checked to half their last digit.
+  const auto model = asperity::make_asperity_model("hertz");
+  const asperity::ContactPair pair = test::seed_pair();
+  const auto surf = make_surface(1e-6, 50e-6, 0.04);
+  GreenwoodWilliamsonOptions opt;
+  opt.height_points = 512;
+  const GreenwoodWilliamson gw(surf, *model, pair, 1e6, opt);
+  const SurfaceContact c = gw.at_separation(1e-6);  // h = d/sigma = 1
+  const double eta = surf.summit_density, s = surf.summit_sigma, beta = surf.summit_radius;
+  EXPECT_NEAR(c.contact_density / eta, 0.15866, 5e-6);
+  EXPECT_NEAR(c.real_area_ratio / (eta * kPi * beta * s), 0.08332, 5e-6);
+  EXPECT_NEAR(c.nominal_pressure / (eta * 4.0 / 3.0 * pair.modulus * std::sqrt(beta) * std::pow(s, 1.5)), 0.07567, 5e-6);
+}
+
+TEST(GreenwoodWilliamson, ExponentialClosedForms) {
+  // phi(z) = exp(-z/sigma)/sigma: int_d (z - d)^k phi dz = Gamma(k+1) sigma^k exp(-d/sigma) for d >= 0.
+  const auto model = asperity::make_asperity_model("hertz");
+  const asperity::ContactPair pair = test::seed_pair();
+  const auto surf = make_surface(1e-6, 50e-6, 0.04, surface::HeightDistribution::exponential);
+  GreenwoodWilliamsonOptions opt;
+  opt.height_points = 512;
+  const GreenwoodWilliamson gw(surf, *model, pair, 1e6, opt);
+  const double eta = surf.summit_density, s = surf.summit_sigma, beta = surf.summit_radius;
+  for (double h : {0.0, 0.5, 2.0, 5.0}) {
+    const SurfaceContact c = gw.at_separation(h * s);
+    const double e = std::exp(-h);
+    // 512-point quadrature of a smooth integrand (u = v^2): 1e-8 relative.
+    EXPECT_NEAR(c.contact_density / (eta * e), 1.0, 1e-12) << h;
+    EXPECT_NEAR(c.real_area_ratio / (eta * kPi * beta * s * e), 1.0, 1e-8) << h;
+    EXPECT_NEAR(c.nominal_pressure / (eta * 4.0 / 3.0 * pair.modulus * std::sqrt(beta) * std::pow(s, 1.5) * std::tgamma(2.5) * e),
+                1.0, 1e-8) << h;
+  }
+}
+
+TEST(GreenwoodWilliamson, InversionRobustFromZeroToFullPlasticity) {
+  const auto model = asperity::make_asperity_model("continuous");
+  const auto surf = make_surface(1.418e-6, 0.849e-6, 0.05);  // the seed's flanks (Ra 0.8 um, eta sigma beta 0.05)
+  const GreenwoodWilliamson gw(surf, *model, test::seed_pair(), 5e9, {});
+  double prev_d = gw.contact_onset() + 1.0, prev_area = -1.0;
+  EXPECT_EQ(gw.separation_for_pressure(0.0), gw.contact_onset());
+  for (double p : test::log_space(1e-3, 5e9, 800)) {
+    const double d = gw.separation_for_pressure(p);
+    ASSERT_TRUE(std::isfinite(d)) << p;
+    EXPECT_LT(d, prev_d) << p;  // monotone
+    EXPECT_NEAR(gw.pressure(d) / p, 1.0, 1e-9) << p;  // the inverse of the same interpolant
+    const SurfaceContact c = gw.interpolate(d);
+    EXPECT_GT(c.real_area_ratio, prev_area) << p;  // real area grows with load
+    EXPECT_LE(c.plastic_area_ratio, c.real_area_ratio * (1.0 + 1e-12));
+    prev_d = d;
+    prev_area = c.real_area_ratio;
+  }
+  // Beyond the table (here 20 GPa) the inversion falls back to bisection on the quadrature.
+  const double d = gw.separation_for_pressure(2e10);
+  EXPECT_NEAR(gw.at_separation(d).nominal_pressure / 2e10, 1.0, 1e-6);
+}
+
+TEST(GreenwoodWilliamson, PlasticFractionLimits) {
+  const auto model = asperity::make_asperity_model("continuous");
+  const asperity::ContactPair pair = test::seed_pair();
+  // Smooth and blunt: sigma 1 nm, beta 1 mm: plasticity index (E_t/H) sqrt(sigma/beta) = 0.1.
+  const GreenwoodWilliamson smooth(make_surface(1e-9, 1e-3, 0.05), *model, pair, 1e9, {});
+  const SurfaceContact a = smooth.interpolate(smooth.separation_for_pressure(1e6));
+  EXPECT_LT(a.plastic_area_ratio / a.real_area_ratio, 1e-3);
+  // Very rough and sharp: sigma 2 um, beta 0.5 um: index 193.
+  const GreenwoodWilliamson rough(make_surface(2e-6, 0.5e-6, 0.05), *model, pair, 1e9, {});
+  const SurfaceContact b = rough.interpolate(rough.separation_for_pressure(1e6));
+  EXPECT_GT(b.plastic_area_ratio / b.real_area_ratio, 0.99);
+  EXPECT_GT(b.plastic_contact_density / b.contact_density, 0.99);
+}
+
+TEST(RoughLineContact, UncoupledCarriesTheLoad) {
+  const auto model = asperity::make_asperity_model("continuous");
+  const GreenwoodWilliamson gw(make_surface(1.418e-6, 0.849e-6, 0.05), *model, test::seed_pair(), 2e9, {});
+  const RoughLineContact strip(gw, 113.19e9, 0.08, {}, nullptr);
+  const StripResult r = strip.solve(1.5e5, 0.0154);
+  EXPECT_NEAR(r.line_load / 1.5e5, 1.0, 1e-6);
+  EXPECT_NEAR(r.max_nominal_pressure, std::sqrt(1.5e5 * 113.19e9 / (kPi * 0.0154)), 1.0);  // Hertz p0
+  EXPECT_GT(r.real_area_ratio, 0.0);
+  EXPECT_LT(r.real_area_ratio, 1.0);
+  // The highest asperity: with eta 2b L = 0.05/(sigma beta) x 2b x 80 mm ~ 6.6e5 summits, the
+  // Gaussian quantile 1 - 1/N lies at 4.8 sigma above the summit mean.
+  const HighestAsperity h = highest_asperity(gw, r, 0.08);
+  const double n = gw.surface().summit_density * 2.0 * r.hertz_half_width * 0.08;
+  EXPECT_NEAR(0.5 * std::erfc(gw.highest_summit(2.0 * r.hertz_half_width * 0.08) / (gw.surface().summit_sigma * std::sqrt(2.0))) * n,
+              1.0, 1e-9);
+  EXPECT_NEAR(h.interference, gw.highest_summit(2.0 * r.hertz_half_width * 0.08) - r.min_separation, 1e-18);
+  EXPECT_GT(h.peak_pressure, 0.0);
+  EXPECT_GT(h.von_mises, 0.0);
+}
+
+TEST(RoughLineContact, CoupledCarriesTheLoadAndSpreadsIt) {
+  const auto model = asperity::make_asperity_model("continuous");
+  const GreenwoodWilliamson gw(make_surface(1.418e-6, 0.849e-6, 0.05), *model, test::seed_pair(), 2e9, {});
+  const solvers::KinsolSolver kinsol;
+  StripOptions opt;
+  opt.fidelity = StripFidelity::coupled;
+  const RoughLineContact strip(gw, 113.19e9, 0.08, opt, &kinsol);
+  const StripResult r = strip.solve(1.5e5, 0.0154);
+  EXPECT_NEAR(r.line_load / 1.5e5, 1.0, 1e-6);
+  const double p0 = std::sqrt(1.5e5 * 113.19e9 / (kPi * 0.0154));
+  EXPECT_LT(r.max_nominal_pressure, p0);                // roughness lowers the peak ...
+  EXPECT_GT(r.contact_half_width, r.hertz_half_width);  // ... and widens the contact (Greenwood-Tripp)
+}
+
+TEST(RoughLineContact, CoupledTendsToHertzAsRoughnessVanishes) {
+  const auto model = asperity::make_asperity_model("continuous");
+  const solvers::KinsolSolver kinsol;
+  StripOptions opt;
+  opt.fidelity = StripFidelity::coupled;
+  opt.coupled_nodes = 256;
+  const double w = 1.5e5, r = 0.0154, e = 113.19e9;
+  const double p0 = std::sqrt(w * e / (kPi * r)), b = std::sqrt(4.0 * w * r / (kPi * e));
+  double prev_error = 1.0;
+  for (double sigma : {1e-7, 1e-8, 1e-9}) {
+    const GreenwoodWilliamson gw(make_surface(sigma, 50e-6, 0.05), *model, test::seed_pair(), 2e9, {});
+    const StripResult s = RoughLineContact(gw, e, 0.08, opt, &kinsol).solve(w, r);
+    EXPECT_NEAR(s.line_load / w, 1.0, 1e-6);
+    const double error = std::abs(s.max_nominal_pressure / p0 - 1.0);
+    EXPECT_LT(error, prev_error) << sigma;  // converging toward Hertz
+    prev_error = error;
+  }
+  // At sigma = 1 nm (sigma R/b^2 = 6e-7): within 2% of p0, the discretisation error of 256
+  // elements over the domain at the Hertz peak.
+  EXPECT_LT(prev_error, 0.02);
+  (void)b;
+}
