@@ -1,8 +1,8 @@
 #include "io/hdf5_results.hpp"
 
+#include "io/table_writer.hpp"
+
 #include <hdf5.h>
-#include <fmt/format.h>
-#include <unistd.h>
 
 #include <stdexcept>
 #include <vector>
@@ -113,21 +113,8 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
 
 void write_mesh_contact_hdf5(const std::filesystem::path& path, const contact::MeshContactResult& result,
                              const std::string& case_file, const std::string& case_text) {
-  const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  const auto tmp = dir / fmt::format(".{}.tmp.{}", path.filename().string(), ::getpid());
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not stderr dumps
-  try {
-    write_file(tmp.string(), result, case_file, case_text);
-  } catch (...) {
-    std::filesystem::remove(tmp);
-    throw;
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp);
-    throw std::runtime_error("cannot rename " + tmp.string() + " to " + path.string() + ": " + ec.message());
-  }
+  write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp.string(), result, case_file, case_text); });
 }
 
 }  // namespace geartrib::io

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,11 @@ std::string format_text(const Table& t);
 // The table as CSV or text, to stdout when `path` is empty, else to `path` atomically.
 void output_table(const Table& t, bool csv, const std::string& path);
 
-// Writes `content` to `path` through a temporary file in the same directory, renamed into
-// place when complete: a reader never sees a half-written file. Throws std::runtime_error.
+// Writes `path` through a temporary file in the same directory (written by `write_temporary`),
+// renamed into place when complete: a reader never sees a half-written file, and a failure
+// removes the temporary. Throws std::runtime_error.
+void write_atomically(const std::filesystem::path& path,
+                      const std::function<void(const std::filesystem::path&)>& write_temporary);
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
 
 }  // namespace geartrib::io
