@@ -153,3 +153,50 @@ TEST(RoughLineContact, CoupledTendsToHertzAsRoughnessVanishes) {
   EXPECT_LT(prev_error, 0.02);
   (void)b;
 }
+
+TEST(EquivalentSurface, FromRaAndSummitRadii) {
+  // The seed's flanks: Ra 0.8 um each -> Rq = sqrt(pi/2) Ra = 1.00265 um; composite
+  // sqrt(2) x 1.00265 = 1.41796 um; beta = 1.65 x 1.75/3.4 = 0.849265 um; eta = 0.05/(sigma beta).
+  surface::FlankRoughness a, b;
+  a.ra = b.ra = 0.8e-6;
+  a.summit_radius = 1.65e-6;
+  b.summit_radius = 1.75e-6;
+  const auto s = surface::equivalent_surface(a, b, surface::HeightDistribution::gaussian);
+  EXPECT_NEAR(s.surface_sigma, std::sqrt(2.0) * std::sqrt(kPi / 2.0) * 0.8e-6, 1e-18);
+  EXPECT_NEAR(s.summit_radius, 1.65e-6 * 1.75e-6 / 3.4e-6, 1e-18);
+  EXPECT_NEAR(s.eta_sigma_beta(), 0.05, 1e-15);
+  // Plasticity index (E_t/H) sqrt(sigma/beta) = 96.71 x 1.2922 = 125.0.
+  EXPECT_NEAR(surface::plasticity_index(s, 113.19e9, 1.1704e9), 124.96, 0.01);
+}
+
+TEST(EquivalentSurface, McCoolRelationsFromSpectralMoments) {
+  // Moments add for independent surfaces; alpha = m0 m4/m2^2; eta = m4/(6 pi sqrt3 m2),
+  // beta = 0.375 sqrt(pi/m4), sigma_s^2 = (1 - 0.8968/alpha) m0 (McCool 1986).
+  surface::FlankRoughness a, b;
+  a.form = b.form = surface::FlankRoughness::Form::spectral;
+  a.m0 = 0.5e-12, a.m2 = 2e-3, a.m4 = 1e8;
+  b.m0 = 0.3e-12, b.m2 = 1e-3, b.m4 = 2e8;
+  const auto s = surface::equivalent_surface(a, b, surface::HeightDistribution::gaussian);
+  const double m0 = 0.8e-12, m2 = 3e-3, m4 = 3e8, alpha = m0 * m4 / (m2 * m2);
+  EXPECT_NEAR(s.summit_density / (m4 / (6.0 * kPi * std::sqrt(3.0) * m2)), 1.0, 1e-14);
+  EXPECT_NEAR(s.summit_radius / (0.375 * std::sqrt(kPi / m4)), 1.0, 1e-14);
+  EXPECT_NEAR(s.summit_sigma / std::sqrt((1.0 - 0.8968 / alpha) * m0), 1.0, 1e-14);
+  EXPECT_NEAR(s.surface_sigma / std::sqrt(m0), 1.0, 1e-14);
+  // Too narrow a band (alpha <= 0.8968) has no summit statistics.
+  a.m4 = b.m4 = 1.0;
+  EXPECT_THROW(surface::equivalent_surface(a, b, surface::HeightDistribution::gaussian), std::invalid_argument);
+}
+
+TEST(EquivalentSurface, SummitStatisticsAndMixedFormsRejected) {
+  surface::FlankRoughness a, b;
+  a.form = b.form = surface::FlankRoughness::Form::summits;
+  a.summit_density = 1e10, b.summit_density = 3e10;
+  a.summit_sigma = 0.3e-6, b.summit_sigma = 0.4e-6;
+  a.summit_radius = b.summit_radius = 10e-6;
+  const auto s = surface::equivalent_surface(a, b, surface::HeightDistribution::exponential);
+  EXPECT_NEAR(s.summit_sigma, 0.5e-6, 1e-18);
+  EXPECT_NEAR(s.summit_radius, 5e-6, 1e-18);
+  EXPECT_NEAR(s.summit_density, 2e10, 1e-3);
+  b.form = surface::FlankRoughness::Form::ra;
+  EXPECT_THROW(surface::equivalent_surface(a, b, surface::HeightDistribution::gaussian), std::invalid_argument);
+}
