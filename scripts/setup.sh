@@ -13,7 +13,7 @@ case "$mode" in build|run|test) ;; *) echo "usage: bash scripts/setup.sh [build|
 
 packages=(g++ cmake make pkg-config
           libeigen3-dev libsundials-dev libboost-dev libceres-dev libhdf5-dev
-          libcli11-dev libtomlplusplus-dev libfmt-dev libgtest-dev libbenchmark-dev
+          libcli11-dev libtomlplusplus-dev libfmt-dev libgtest-dev libbenchmark-dev libfftw3-dev
           python3 python3-h5py python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do

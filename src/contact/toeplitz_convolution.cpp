@@ -1,0 +1,51 @@
+#include "contact/toeplitz_convolution.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace geartrib::contact {
+
+ToeplitzConvolution::ToeplitzConvolution(const std::vector<double>& kernel, int n, bool periodic)
+    : n_(n), m_(periodic ? n : 2 * n) {
+  if (n < 1) throw std::invalid_argument("convolution size must be positive");
+  if (kernel.size() != static_cast<std::size_t>(periodic ? n : 2 * n - 1))
+    throw std::invalid_argument("kernel has the wrong length");
+  real_ = fftw_alloc_real(static_cast<std::size_t>(m_));
+  spectrum_ = fftw_alloc_complex(static_cast<std::size_t>(m_ / 2 + 1));
+  if (!real_ || !spectrum_) throw std::bad_alloc();
+  forward_ = fftw_plan_dft_r2c_1d(m_, real_, spectrum_, FFTW_ESTIMATE);
+  backward_ = fftw_plan_dft_c2r_1d(m_, spectrum_, real_, FFTW_ESTIMATE);
+  // Circular layout of the kernel: index m >= 0 at m, negative m at m_ + m.
+  std::fill(real_, real_ + m_, 0.0);
+  if (periodic) {
+    std::copy(kernel.begin(), kernel.end(), real_);
+  } else {
+    for (int m = -(n - 1); m <= n - 1; ++m) real_[m >= 0 ? m : m_ + m] = kernel[static_cast<std::size_t>(m + n - 1)];
+  }
+  fftw_execute(forward_);
+  kernel_hat_.resize(static_cast<std::size_t>(m_ / 2 + 1));
+  for (int k = 0; k <= m_ / 2; ++k)
+    kernel_hat_[static_cast<std::size_t>(k)] = std::complex<double>(spectrum_[k][0], spectrum_[k][1]) / static_cast<double>(m_);
+}
+
+ToeplitzConvolution::~ToeplitzConvolution() {
+  fftw_destroy_plan(forward_);
+  fftw_destroy_plan(backward_);
+  fftw_free(real_);
+  fftw_free(spectrum_);
+}
+
+void ToeplitzConvolution::apply(const double* in, double* out) const {
+  std::copy(in, in + n_, real_);
+  std::fill(real_ + n_, real_ + m_, 0.0);
+  fftw_execute(forward_);
+  for (int k = 0; k <= m_ / 2; ++k) {
+    const std::complex<double> v = std::complex<double>(spectrum_[k][0], spectrum_[k][1]) * kernel_hat_[static_cast<std::size_t>(k)];
+    spectrum_[k][0] = v.real();
+    spectrum_[k][1] = v.imag();
+  }
+  fftw_execute(backward_);
+  std::copy(real_, real_ + n_, out);
+}
+
+}  // namespace geartrib::contact
