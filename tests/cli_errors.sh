@@ -40,6 +40,16 @@ check kinematics-positions 0 "^10," -- "$bin" kinematics --positions 11 --load-s
 check kinematics-bad-point 2 "unknown point 'F'" -- "$bin" kinematics --points A,F
 check kinematics-bad-sharing 2 "" -- "$bin" kinematics --load-sharing equal
 
+# Multi-asperity: per-asperity columns, totals, layouts, sweep, bad input.
+check multi-columns 0 "^asperity,load_N_per_m,contact_width_m,max_pressure_Pa,max_surface_von_mises_Pa,max_deformation_m" -- \
+  "$bin" multi-asperity --layout LHL --height-step 1 --spacing 0.5um --delta-pc 0.5797nm --elements 2048 --csv
+check multi-totals 0 "^inflection_depth_m," -- "$bin" multi-asperity --layout HLH --delta-pc 0.5797nm --elements 2048 --csv
+check multi-single 0 "^1H," -- "$bin" multi-asperity --layout H --delta-pc 0.5797nm --elements 2048 --csv
+check multi-load 0 "line_load_N_per_m +150" -- "$bin" multi-asperity --layout HHH --load 150 --delta-pc 0.5797nm --elements 2048
+check multi-sweep 0 "^2e-06," -- "$bin" multi-asperity --layout HHH --sweep-spacing 0.5um:2um:4 --delta-pc 0.5797nm --elements 2048 --csv
+check multi-bad-layout 2 "layout must be letters H and L" -- "$bin" multi-asperity --layout LXL
+check multi-bad-spacing 2 "unknown unit 'parsec'" -- "$bin" multi-asperity --spacing 1parsec
+
 # Bad input: exit 2 with a message naming what is wrong.
 check unknown-model 2 "unknown asperity model 'nope'" -- "$bin" asperity --model nope
 check bad-range 2 "MIN:MAX:COUNT" -- "$bin" asperity --range 1:0:5

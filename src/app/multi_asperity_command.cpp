@@ -1,0 +1,164 @@
+// `geartrib multi-asperity`: the seed's three parabolic-cylinder asperities (sections 5-7)
+// pressed by a rigid flat, by plane-strain boundary elements.
+#include "app/commands.hpp"
+
+#include "asperity/case_setup.hpp"
+#include "contact/multi_asperity.hpp"
+#include "io/table_writer.hpp"
+#include "io/units.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+
+namespace geartrib::app {
+
+namespace {
+
+struct Options {
+  std::string case_file;
+  std::string layout = "HLH";
+  double height_step = 0.0;
+  std::string spacing = "0.5um";
+  double approach = 6.0;
+  std::optional<double> load;
+  std::string asperity_height = "4um";
+  std::string delta_pc;
+  int elements = 16384;
+  std::string cap = "hardness";
+  std::string reference_depth;
+  std::string sweep;
+  bool csv = false;
+  std::string output;
+};
+
+double length_option(const std::string& name, const std::string& text) {
+  try {
+    return io::parse_quantity(text, io::Dimension::length);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(name + " '" + text + "': " + e.what());
+  }
+}
+
+contact::MultiAsperitySpec make_spec(const Options& o, const Case& c, double delta_pc) {
+  const Material& m = c.pinion.material.hardness <= c.wheel.material.hardness ? c.pinion.material : c.wheel.material;
+  contact::MultiAsperitySpec s;
+  s.layout = o.layout;
+  s.tip_radius = c.asperity.cylinder_tip_radius;
+  s.height_step = o.height_step * delta_pc;
+  s.spacing = length_option("--spacing", o.spacing);
+  s.asperity_height = length_option("--asperity-height", o.asperity_height);
+  s.approach = o.approach * delta_pc;
+  s.line_load = o.load;
+  s.modulus = m.youngs_modulus / (1.0 - m.poisson_ratio * m.poisson_ratio);
+  s.poisson_ratio = m.poisson_ratio;
+  if (o.cap == "hardness") s.pressure_cap = m.hardness;
+  else if (o.cap == "yield") s.pressure_cap = (2.0 + std::numbers::pi) * m.yield_strength / std::sqrt(3.0);  // Prandtl punch
+  else s.pressure_cap = std::numeric_limits<double>::infinity();
+  s.elements = o.elements;
+  if (!o.reference_depth.empty()) s.reference_length = length_option("--reference-depth", o.reference_depth);
+  return s;
+}
+
+void run(const Options& o) {
+  const Case c = load_case_reporting(o.case_file);
+  const double delta_pc = o.delta_pc.empty() ? asperity::seed_critical_interference(asperity::cylinder_asperity(c))
+                                             : length_option("--delta-pc", o.delta_pc);
+  if (!o.sweep.empty()) {
+    // MIN:MAX:COUNT, linearly spaced, units on MIN and MAX.
+    const auto a = o.sweep.find(':'), b = o.sweep.rfind(':');
+    if (a == std::string::npos || a == b) throw std::invalid_argument("--sweep-spacing expects MIN:MAX:COUNT");
+    const double lo = length_option("--sweep-spacing", o.sweep.substr(0, a));
+    const double hi = length_option("--sweep-spacing", o.sweep.substr(a + 1, b - a - 1));
+    const int n = std::stoi(o.sweep.substr(b + 1));
+    if (n < 2 || !(hi > lo) || lo < 0.0) throw std::invalid_argument("--sweep-spacing needs 0 <= MIN < MAX and COUNT >= 2");
+    io::Table t;
+    t.header = {"spacing_m", "total_contact_area_m2", "midpoint_von_mises_Pa", "inflection_depth_m",
+                "inflection_von_mises_Pa", "middle_load_N_per_m", "line_load_N_per_m", "iterations"};
+    for (int i = 0; i < n; ++i) {
+      Options oi = o;
+      oi.spacing = fmt::format("{} m", lo + (hi - lo) * i / (n - 1));
+      const auto r = contact::solve_multi_asperity(make_spec(oi, c, delta_pc));
+      t.rows.push_back({lo + (hi - lo) * i / (n - 1), r.total_contact_area,
+                        r.midpoint_von_mises.empty() ? 0.0 : r.midpoint_von_mises.front(), r.inflection_depth,
+                        r.inflection_von_mises, r.asperities[r.asperities.size() / 2].load, r.line_load,
+                        static_cast<double>(r.iterations)});
+    }
+    io::output_table(t, o.csv, o.output);
+    return;
+  }
+  const auto r = contact::solve_multi_asperity(make_spec(o, c, delta_pc));
+  io::Table t;
+  t.header = {"asperity", "load_N_per_m", "contact_width_m", "max_pressure_Pa", "max_surface_von_mises_Pa",
+              "max_deformation_m", "centre_m"};
+  for (std::size_t k = 0; k < r.asperities.size(); ++k) {
+    const auto& a = r.asperities[k];
+    t.labels.push_back(fmt::format("{}{}", k + 1, a.kind));
+    t.rows.push_back({a.load, a.contact_width, a.max_pressure, a.max_surface_von_mises, a.max_deformation, a.centre});
+  }
+  io::Table totals;
+  totals.header = {"name", "value"};
+  auto row = [&](const std::string& n, double v) {
+    totals.labels.push_back(n);
+    totals.rows.push_back({v});
+  };
+  row("total_contact_area_m2", r.total_contact_area);
+  for (std::size_t k = 0; k < r.midpoint_von_mises.size(); ++k)
+    row(fmt::format("midpoint_von_mises_{}_{}_Pa", k + 1, k + 2), r.midpoint_von_mises[k]);
+  row("inflection_depth_m", r.inflection_depth);
+  row("inflection_von_mises_Pa", r.inflection_von_mises);
+  row("approach_m", r.approach);
+  row("approach_over_delta_pc", r.approach / delta_pc);
+  row("line_load_N_per_m", r.line_load);
+  row("delta_pc_m", delta_pc);
+  row("elements", static_cast<double>(r.grid.size));
+  row("element_width_m", r.grid.spacing);
+  row("iterations", static_cast<double>(r.iterations));
+  row("complementarity_error", r.complementarity_error);
+  const std::string text = (o.csv ? io::format_csv(t) : io::format_text(t)) + "\n" +
+                           (o.csv ? io::format_csv(totals) : io::format_text(totals));
+  if (o.output.empty()) std::cout << text;
+  else io::write_file_atomically(o.output, text);
+}
+
+}  // namespace
+
+void add_multi_asperity_command(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  auto* cmd = app.add_subcommand(
+      "multi-asperity",
+      "Parallel parabolic-cylinder asperities y = -x^2/(2 R_m) (the case's asperity.cylinder R_m) on a base\n"
+      "plane, pressed by a rigid flat (seed sections 5-7), by plane-strain boundary elements with an\n"
+      "elastic-perfectly-plastic pressure cap. Height step and approach in units of the seed's delta_pc.\n"
+      "Prints per asperity its load, contact width, peak pressure, surface von Mises stress and\n"
+      "largest deformation, then the total contact area (10 um long cylinders), the von Mises stress at the\n"
+      "surface midway between neighbours and the inflection point of the von Mises profile below the middle\n"
+      "asperity.");
+  cmd->add_option("--case", o->case_file, "Case file for the material and R_m (default: gears/m6z30.toml)");
+  cmd->add_option("--layout", o->layout, "H (high) and L (low) letters, e.g. LLH, LHL, LHH, HLH, or H alone (default HLH)");
+  cmd->add_option("--height-step", o->height_step, "Height difference h_m of the low asperities, in delta_pc (default 0)")
+      ->check(CLI::Range(0.0, 9.0));
+  cmd->add_option("--spacing", o->spacing, "Distance d_m between neighbouring asperity axes (default 0.5um)");
+  auto* ap = cmd->add_option("--approach", o->approach, "Approach of the flat after touching the high tips, in delta_pc (default 6)");
+  auto* ld = cmd->add_option("--load", o->load, "Line load [N/m] instead of an approach (load control)");
+  ap->excludes(ld);
+  cmd->add_option("--asperity-height", o->asperity_height, "High asperities' height above the base plane (default 4um, assumed)");
+  cmd->add_option("--delta-pc", o->delta_pc,
+                  "The unit of --height-step and --approach (default: the seed's formula, 0.423 um for the default case; "
+                  "the seed's deformation table implies 0.58nm)");
+  cmd->add_option("--elements", o->elements, "Boundary elements over the domain (default 16384)")->check(CLI::Range(64, 1 << 22));
+  cmd->add_option("--pressure-cap", o->cap, "hardness (H), yield (Prandtl punch (2+pi) S_y/sqrt3) or none (elastic)")
+      ->check(CLI::IsMember({"hardness", "yield", "none"}));
+  cmd->add_option("--reference-depth", o->reference_depth, "Displacement reference L_ref: a rigid base ~L_ref deep (default 50um, assumed)");
+  cmd->add_option("--sweep-spacing", o->sweep, "MIN:MAX:COUNT spacings (e.g. 0.25um:2um:8): one row per spacing");
+  add_table_options(cmd, o->csv, o->output);
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace geartrib::app

@@ -1,0 +1,65 @@
+// The seed's multi-asperity trends (section 7) from the boundary-element solver, at the scale
+// the seed's deformation table implies (delta_pc = 0.5797 nm; validation/seed-section7).
+#include "contact/multi_asperity.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace geartrib::contact;
+
+namespace {
+constexpr double kDeltaPc = 0.5797e-9;
+MultiAsperitySpec spec(const std::string& layout, double h_steps, double spacing) {
+  MultiAsperitySpec s;
+  s.layout = layout;
+  s.height_step = h_steps * kDeltaPc;
+  s.spacing = spacing;
+  s.approach = 6.0 * kDeltaPc;
+  s.modulus = 206e9 / 0.91;
+  s.pressure_cap = 1.1704e9;
+  s.elements = 8192;
+  return s;
+}
+}  // namespace
+
+TEST(MultiAsperity, HighNeighboursUnloadTheMiddleOne) {
+  // HLH: the middle asperity carries less load and less surface stress as h_m grows; the high
+  // ones always take the full approach.
+  double prev_load = 1e300, prev_stress = 1e300;
+  for (double h : {0.0, 1.0, 2.0}) {
+    const MultiAsperityResult r = solve_multi_asperity(spec("HLH", h, 0.5e-6));
+    EXPECT_LT(r.asperities[1].load, prev_load) << h;
+    EXPECT_LT(r.asperities[1].max_surface_von_mises, prev_stress) << h;
+    prev_load = r.asperities[1].load;
+    prev_stress = r.asperities[1].max_surface_von_mises;
+    for (int k : {0, 2}) EXPECT_NEAR(r.asperities[k].max_deformation, 6.0 * kDeltaPc, 0.005 * 6.0 * kDeltaPc) << h;
+    EXPECT_LT(r.complementarity_error, 1e-10);
+  }
+}
+
+TEST(MultiAsperity, AreaGrowsWithSpacingTowardIndependentAsperities) {
+  const double single = solve_multi_asperity(spec("H", 0.0, 0.5e-6)).total_contact_area;
+  double prev_area = 0.0, prev_mid = 1e300;
+  for (double d : {0.25e-6, 0.5e-6, 1e-6, 2e-6}) {
+    const MultiAsperityResult r = solve_multi_asperity(spec("HHH", 0.0, d));
+    EXPECT_GT(r.total_contact_area, prev_area) << d;
+    EXPECT_LT(r.total_contact_area, 3.0 * single) << d;
+    EXPECT_LT(r.midpoint_von_mises[0], prev_mid) << d;  // the midpoint stress falls with spacing
+    prev_area = r.total_contact_area;
+    prev_mid = r.midpoint_von_mises[0];
+  }
+}
+
+TEST(MultiAsperity, AreaFallsAsHeightDifferencesGrow) {
+  for (const std::string layout : {"LLH", "LHL", "LHH", "HLH"}) {
+    const double a0 = solve_multi_asperity(spec(layout, 0.0, 0.5e-6)).total_contact_area;
+    const double a1 = solve_multi_asperity(spec(layout, 1.0, 0.5e-6)).total_contact_area;
+    const double a2 = solve_multi_asperity(spec(layout, 2.0, 0.5e-6)).total_contact_area;
+    EXPECT_GT(a0, a1) << layout;
+    EXPECT_GT(a1, a2) << layout;
+  }
+}
+
+TEST(MultiAsperity, RejectsBadLayouts) {
+  EXPECT_THROW(solve_multi_asperity(spec("LXL", 1.0, 0.5e-6)), std::invalid_argument);
+  EXPECT_THROW(solve_multi_asperity(spec("LLL", 1.0, 0.5e-6)), std::invalid_argument);
+}
