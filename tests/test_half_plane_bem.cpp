@@ -116,8 +116,11 @@ TEST(HalfPlaneBem, PlasticCapLimitsThePressure) {
   for (double p : s.pressure) EXPECT_LE(p, cap);
   // Where capped the surface is pressed beyond the flat (plastic): gap < 0; elsewhere >= 0.
   for (int i = 0; i < grid.size; ++i) {
-    if (s.pressure[i] >= cap) EXPECT_LE(s.gap[i], 1e-10 * 6e-6 * 6e-6 / (2 * r));
-    else if (s.pressure[i] == 0.0) EXPECT_GE(s.gap[i], -1e-10 * (6e-6 * 6e-6 / (2 * r)));
+    if (s.pressure[i] >= cap) {
+      EXPECT_LE(s.gap[i], 1e-10 * 6e-6 * 6e-6 / (2 * r));
+    } else if (s.pressure[i] == 0.0) {
+      EXPECT_GE(s.gap[i], -1e-10 * (6e-6 * 6e-6 / (2 * r)));
+    }
   }
 }
 

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -223,23 +224,7 @@ BemSolution HalfPlaneBem::solve(const std::vector<double>& g0, bool load_control
       }
     }
   }
-  if (!(error < options_.tolerance))
-    throw std::runtime_error(fmt::format("boundary elements: complementarity error {:.3g} above the tolerance {:.3g} after {} "
-                                         "iterations",
-                                         error, options_.tolerance, it));
-  BemSolution s;
-  s.pressure = p;
-  s.displacement = u;
-  s.gap = g;
-  s.approach = approach;
-  s.iterations = it;
-  s.complementarity_error = error;
-  for (double x : p) {
-    s.line_load += x * h;
-    s.contact_elements += x > 0.0;
-    s.capped_elements += x >= cap;
-  }
-  return s;
+  return finish(std::move(p), std::move(u), std::move(g), approach, it, error);
 }
 
 BemSolution HalfPlaneBem::solve_box(const std::vector<double>& g0, double approach, const std::vector<double>* initial) const {
@@ -249,7 +234,7 @@ BemSolution HalfPlaneBem::solve_box(const std::vector<double>& g0, double approa
   // free gradient when a bound is hit, proportioning steps when the chopped gradient dominates.
   const int n = grid_.size;
   if (static_cast<int>(g0.size()) != n) throw std::invalid_argument("gap has the wrong length");
-  const double h = grid_.spacing, cap = options_.pressure_cap;
+  const double cap = options_.pressure_cap;
   const double g_min = *std::min_element(g0.begin(), g0.end()), g_max = *std::max_element(g0.begin(), g0.end());
   double scale = g_max - g_min;
   if (!(scale > 0.0)) scale = std::max(std::abs(approach - g_min), 1e-12);
@@ -321,22 +306,29 @@ BemSolution HalfPlaneBem::solve_box(const std::vector<double>& g0, double approa
       d = phi;
     }
   }
+  std::vector<double> u;
+  displacement(p, u);
+  return finish(std::move(p), std::move(u), std::move(g), approach, it, error);
+}
+
+BemSolution HalfPlaneBem::finish(std::vector<double> p, std::vector<double> u, std::vector<double> g, double approach,
+                                 int iterations, double error) const {
   if (!(error < options_.tolerance))
     throw std::runtime_error(fmt::format("boundary elements: complementarity error {:.3g} above the tolerance {:.3g} after {} "
                                          "iterations",
-                                         error, options_.tolerance, it));
+                                         error, options_.tolerance, iterations));
   BemSolution s;
-  s.pressure = p;
-  displacement(p, s.displacement);
-  s.gap = g;
-  s.approach = approach;
-  s.iterations = it;
-  s.complementarity_error = error;
   for (double x : p) {
-    s.line_load += x * h;
+    s.line_load += x * grid_.spacing;
     s.contact_elements += x > 0.0;
-    s.capped_elements += x >= cap;
+    s.capped_elements += x >= options_.pressure_cap;
   }
+  s.pressure = std::move(p);
+  s.displacement = std::move(u);
+  s.gap = std::move(g);
+  s.approach = approach;
+  s.iterations = iterations;
+  s.complementarity_error = error;
   return s;
 }
 

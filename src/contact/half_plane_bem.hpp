@@ -66,6 +66,9 @@ class HalfPlaneBem {
   BemSolution solve(const std::vector<double>& gap0, bool load_control, double target,
                     const std::vector<double>* initial) const;
   BemSolution solve_box(const std::vector<double>& gap0, double approach, const std::vector<double>* initial) const;
+  // Packs a solution, or throws when the complementarity error is above the tolerance.
+  BemSolution finish(std::vector<double> p, std::vector<double> u, std::vector<double> g, double approach,
+                     int iterations, double error) const;
   HalfPlaneGrid grid_;
   double modulus_;
   BemOptions options_;
