@@ -142,3 +142,18 @@ TEST(HalfPlaneBem, PeriodicKernelHasZeroMean) {
   bem.displacement(p, u);
   for (double x : u) EXPECT_NEAR(x, 0.0, 1e-12 * 1e9 * 256 * 1e-8 / kEstar);
 }
+
+TEST(HalfPlaneBem, PeriodicArrayOfCylindersCarriesTheLoad) {
+  // One cylinder per period L: with L much wider than the contact, the peak pressure approaches
+  // the isolated cylinder's Hertz p0 (within 2%: the neighbours' images relieve the edges).
+  const double r = 6.6e-6, w = 200.0;
+  const double b = std::sqrt(4.0 * w * r / (kPi * kEstar)), p0 = 2.0 * w / (kPi * b);
+  const HalfPlaneGrid grid{-10.0 * b, 20.0 * b / 4096, 4096};
+  BemOptions opt;
+  opt.periodic = true;
+  const BemSolution s = HalfPlaneBem(grid, kEstar, opt).solve_load(cylinder_gap(grid, r), w);
+  EXPECT_NEAR(s.line_load / w, 1.0, 1e-9);
+  EXPECT_LT(s.complementarity_error, 1e-10);
+  const double pmax = *std::max_element(s.pressure.begin(), s.pressure.end());
+  EXPECT_NEAR(pmax / p0, 1.0, 0.02);
+}
