@@ -50,6 +50,18 @@ check multi-sweep 0 "^2e-06," -- "$bin" multi-asperity --layout HHH --sweep-spac
 check multi-bad-layout 2 "layout must be letters H and L" -- "$bin" multi-asperity --layout LXL
 check multi-bad-spacing 2 "unknown unit 'parsec'" -- "$bin" multi-asperity --spacing 1parsec
 
+# Fitting: the constants list, a fit, and each kind of unusable input.
+check fit-list 0 "plastic_scale" -- "$bin" fit --list continuous
+check fit-run 0 "Root-mean-square" -- "$bin" fit --model kogut-etsion --data validation/fem-reference/kogut-etsion-2002.csv \
+  --free load_coefficient_1,load_exponent_1 --observe load_star
+check fit-unknown-constant 2 "has no constant 'nope'" -- "$bin" fit --model continuous \
+  --data validation/fem-reference/kogut-etsion-2002.csv --free nope
+printf '# source: test\ndelta_star,load_star\n1.5,2.0\n2.0,nan\n' > "$tmp/nan.csv"
+check fit-nan 2 "nan.csv:4: key 'load_star' = nan: not a finite number" -- "$bin" fit --model continuous --data "$tmp/nan.csv"
+printf 'delta_star,load_star\n1.5,2.0\n' > "$tmp/one.csv"
+check fit-too-few 2 "1 observations cannot determine 5 free constants" -- "$bin" fit --model continuous --data "$tmp/one.csv" \
+  --free area_scale,area_exponent,plastic_scale,pressure_scale,pressure_exponent
+
 # Bad input: exit 2 with a message naming what is wrong.
 check unknown-model 2 "unknown asperity model 'nope'" -- "$bin" asperity --model nope
 check bad-range 2 "MIN:MAX:COUNT" -- "$bin" asperity --range 1:0:5

@@ -160,7 +160,7 @@ TEST_F(BadInput, ModelConstantOverrideIsApplied) {
        "[asperity.constants.continuous]\nplastic_scale = 5.0");
   const Case c = io::load_case(dir_ / "gears/m6z30.toml");
   EXPECT_DOUBLE_EQ(asperity::make_case_model(c, "continuous")->constant("plastic_scale"), 5.0);
-  EXPECT_DOUBLE_EQ(asperity::make_case_model(c, "continuous")->constant("area_scale"), 23.4);
+  EXPECT_DOUBLE_EQ(asperity::make_case_model(c, "continuous")->constant("area_scale"), asperity::fitted::continuous_area_scale);
 }
 
 TEST_F(BadInput, TomlSyntaxError) {

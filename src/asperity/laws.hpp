@@ -6,9 +6,15 @@
 #pragma once
 
 #include "asperity/contact_pair.hpp"
+#include "asperity/continuous_defaults.hpp"
 #include "asperity/critical.hpp"
 
 #include <array>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <type_traits>
 #include <cmath>
 #include <numbers>
 #include <string_view>
@@ -36,8 +42,9 @@ struct HertzLaw {
   static constexpr std::string_view name = "hertz";
   static constexpr std::string_view citation = "Hertz (1882); Johnson, Contact Mechanics (1985) ch. 4";
   static constexpr std::array<ConstantSpec, 0> constants{};
-  static double yield_peak_pressure(const ContactPair& p, const double*) {
-    return ceb_pressure_factor(p.poisson_ratio) * p.hardness;
+  template <class T>
+  static T yield_peak_pressure(const ContactPair& p, const T*) {
+    return T(ceb_pressure_factor(p.poisson_ratio) * p.hardness);
   }
   template <class T>
   static Star<T> star(const T& d, const T*, const ContactPair&) {
@@ -54,8 +61,9 @@ struct CebLaw {
   static constexpr std::string_view name = "ceb";
   static constexpr std::string_view citation = "Chang, Etsion & Bogy, J. Tribol. 109 (1987) 257";
   static constexpr std::array<ConstantSpec, 0> constants{};
-  static double yield_peak_pressure(const ContactPair& p, const double*) {
-    return ceb_pressure_factor(p.poisson_ratio) * p.hardness;
+  template <class T>
+  static T yield_peak_pressure(const ContactPair& p, const T*) {
+    return T(ceb_pressure_factor(p.poisson_ratio) * p.hardness);
   }
   template <class T>
   static Star<T> star(const T& d, const T*, const ContactPair&) {
@@ -87,8 +95,9 @@ struct KogutEtsionLaw {
       {"surface_yield", 6.0, 1.0, 100.0, "delta* where the plastic zone reaches the surface"},
       {"fully_plastic", 110.0, 2.0, 1000.0, "delta* of fully plastic contact"},
   }};
-  static double yield_peak_pressure(const ContactPair& p, const double*) {
-    return ceb_pressure_factor(p.poisson_ratio) * p.hardness;
+  template <class T>
+  static T yield_peak_pressure(const ContactPair& p, const T*) {
+    return T(ceb_pressure_factor(p.poisson_ratio) * p.hardness);
   }
   template <class T>
   static Star<T> star(const T& d, const T* c, const ContactPair& p) {
@@ -117,8 +126,9 @@ struct JacksonGreenLaw {
       {"area_coefficient", 0.14, 0.01, 1.0, "B = coefficient exp(slope S_y/E)"},
       {"area_slope", 23.0, 0.0, 100.0, "B = coefficient exp(slope S_y/E)"},
   }};
-  static double yield_peak_pressure(const ContactPair& p, const double*) {
-    return jackson_green_yield_factor(p.poisson_ratio) * p.yield_strength;
+  template <class T>
+  static T yield_peak_pressure(const ContactPair& p, const T*) {
+    return T(jackson_green_yield_factor(p.poisson_ratio) * p.yield_strength);
   }
   template <class T>
   static Star<T> star(const T& d, const T* c, const ContactPair& p) {
@@ -148,7 +158,10 @@ struct ZmcLaw {
       {"mean_pressure_factor", 0.6, 0.1, 1.0, "K: Hertz mean pressure K H at first yield"},
       {"fully_plastic", 54.0, 2.0, 1000.0, "delta_2/delta_1, onset of fully plastic flow"},
   }};
-  static double yield_peak_pressure(const ContactPair& p, const double* c) { return 1.5 * c[0] * p.hardness; }
+  template <class T>
+  static T yield_peak_pressure(const ContactPair& p, const T* c) {
+    return 1.5 * c[0] * p.hardness;
+  }
   template <class T>
   static Star<T> star(const T& d, const T* c, const ContactPair&) {
     using std::log, std::pow;
@@ -172,22 +185,23 @@ struct ZmcLaw {
 //   r_a^2 = R delta g,  g = 1 + x^na/(da^na + x^na)             (1 -> 2)
 //   (r_p/r_a)^2 = phi = x^np/(dp^np + x^np)                      (0 -> 1)
 //   sigma_rp/H = s = k + (1 - k) x^ns/(ds^ns + x^ns)             (k -> 1)
-// so F* = (d g)^(3/2) (1 - phi)^(3/2) + 3/(2k) d g phi s and A* = d g. Defaults: least-squares
-// fit (in log) to Kogut-Etsion 2002 and Jackson-Green 2005 for 1 <= delta* <= 1e4, with
-// fully-plastic asymptotics; provenance in validation/continuous-closure/ (fit_closure.py).
+// so F* = (d g)^(3/2) (1 - phi)^(3/2) + 3/(2k) d g phi s and A* = d g. Defaults: the Ceres fit to
+// the Kogut-Etsion 2002 and Jackson-Green 2005 FEM-based curves written by
+// validation/fem-reference/refit-continuous.sh into continuous_defaults.hpp (one source).
 struct ContinuousLaw {
   static constexpr std::string_view name = "continuous";
   static constexpr std::string_view citation = "seed section 2, closure re-derived (ERRATA); defaults fitted to KE 2002 / JG 2005";
   static constexpr std::array<ConstantSpec, 6> constants{{
-      {"area_scale", 23.4, 0.1, 1e4, "da: delta* - 1 at which r_a^2 is halfway from R delta to 2 R delta"},
-      {"area_exponent", 1.04, 0.2, 5.0, "na: steepness of the contact-radius growth"},
-      {"plastic_scale", 3.27, 0.01, 1e4, "dp: delta* - 1 at which half the contact area is plastic"},
-      {"plastic_exponent", 1.5, 1.0, 5.0, "np: steepness of the plastic-core growth (>= 1 keeps the peak pressure bounded)"},
-      {"pressure_scale", 6.95, 0.01, 1e4, "ds: delta* - 1 at which sigma_rp is halfway from k H to H"},
-      {"pressure_exponent", 0.869, 0.2, 5.0, "ns: steepness of the core-pressure growth"},
+      {"area_scale", fitted::continuous_area_scale, 0.1, 1e4, "da: delta* - 1 at which r_a^2 is halfway from R delta to 2 R delta"},
+      {"area_exponent", fitted::continuous_area_exponent, 0.2, 5.0, "na: steepness of the contact-radius growth"},
+      {"plastic_scale", fitted::continuous_plastic_scale, 0.01, 1e4, "dp: delta* - 1 at which half the contact area is plastic"},
+      {"plastic_exponent", fitted::continuous_plastic_exponent, 1.0, 5.0, "np: steepness of the plastic-core growth (>= 1 keeps the peak pressure bounded)"},
+      {"pressure_scale", fitted::continuous_pressure_scale, 0.01, 1e4, "ds: delta* - 1 at which sigma_rp is halfway from k H to H"},
+      {"pressure_exponent", fitted::continuous_pressure_exponent, 0.2, 5.0, "ns: steepness of the core-pressure growth"},
   }};
-  static double yield_peak_pressure(const ContactPair& p, const double*) {
-    return ceb_pressure_factor(p.poisson_ratio) * p.hardness;
+  template <class T>
+  static T yield_peak_pressure(const ContactPair& p, const T*) {
+    return T(ceb_pressure_factor(p.poisson_ratio) * p.hardness);
   }
   template <class T>
   struct Closure {
@@ -221,5 +235,39 @@ struct ContinuousLaw {
     return {elastic + plastic, area};
   }
 };
+
+// ---------------------------------------------------------------------------------------------
+// The one list of laws: the model registry (models.cpp) and the fitting (src/fit/) both visit it.
+using LawList = std::tuple<HertzLaw, CebLaw, KogutEtsionLaw, JacksonGreenLaw, ZmcLaw, ContinuousLaw>;
+
+template <class Law>
+struct LawTag {
+  using type = Law;
+};
+
+// Calls f(LawTag<Law>{}) for the law named `name`; throws std::invalid_argument (listing the
+// known names) for an unknown one.
+template <class F>
+auto visit_law(std::string_view name, F&& f) {
+  using Result = decltype(f(LawTag<HertzLaw>{}));
+  std::optional<std::conditional_t<std::is_void_v<Result>, int, Result>> out;
+  bool found = false;
+  std::string known;
+  std::apply(
+      [&](auto... laws) {
+        (([&] {
+           using Law = decltype(laws);
+           known += (known.empty() ? "" : ", ") + std::string(Law::name);
+           if (found || Law::name != name) return;
+           found = true;
+           if constexpr (std::is_void_v<Result>) f(LawTag<Law>{});
+           else out.emplace(f(LawTag<Law>{}));
+         }()),
+         ...);
+      },
+      LawList{});
+  if (!found) throw std::invalid_argument("unknown asperity model '" + std::string(name) + "' (known: " + known + ")");
+  if constexpr (!std::is_void_v<Result>) return std::move(*out);
+}
 
 }  // namespace geartrib::asperity

@@ -79,7 +79,7 @@ class LawModel : public AsperityModel {
   std::string_view citation() const override { return Law::citation; }
   std::span<const ConstantSpec> constant_specs() const override { return Law::constants; }
   double yield_peak_pressure(const ContactPair& pair) const override {
-    return Law::yield_peak_pressure(pair, constants_.data());
+    return Law::template yield_peak_pressure<double>(pair, constants_.data());
   }
   Star<double> star(double d, const ContactPair& pair) const override {
     return Law::star(d, constants_.data(), pair);
@@ -119,23 +119,34 @@ class ContinuousModel final : public LawModel<ContinuousLaw> {
   }
 };
 
-constexpr std::array<std::string_view, 6> kNames{HertzLaw::name,     CebLaw::name,  KogutEtsionLaw::name,
-                                                  JacksonGreenLaw::name, ZmcLaw::name, ContinuousLaw::name};
+// The model class of each law: the default, or one that defines its own pressure profile.
+template <class Law>
+struct ModelFor {
+  using type = LawModel<Law>;
+};
+template <>
+struct ModelFor<HertzLaw> {
+  using type = HertzModel;
+};
+template <>
+struct ModelFor<CebLaw> {
+  using type = CebModel;
+};
+template <>
+struct ModelFor<ContinuousLaw> {
+  using type = ContinuousModel;
+};
+
+constexpr auto kNames = std::apply([](auto... laws) { return std::array{decltype(laws)::name...}; }, LawList{});
 
 }  // namespace
 
 std::span<const std::string_view> asperity_model_names() { return kNames; }
 
 std::unique_ptr<AsperityModel> make_asperity_model(std::string_view name) {
-  if (name == HertzLaw::name) return std::make_unique<HertzModel>();
-  if (name == CebLaw::name) return std::make_unique<CebModel>();
-  if (name == KogutEtsionLaw::name) return std::make_unique<LawModel<KogutEtsionLaw>>();
-  if (name == JacksonGreenLaw::name) return std::make_unique<LawModel<JacksonGreenLaw>>();
-  if (name == ZmcLaw::name) return std::make_unique<LawModel<ZmcLaw>>();
-  if (name == ContinuousLaw::name) return std::make_unique<ContinuousModel>();
-  std::string known;
-  for (auto n : kNames) known += (known.empty() ? "" : ", ") + std::string(n);
-  throw std::invalid_argument("unknown asperity model '" + std::string(name) + "' (known: " + known + ")");
+  return visit_law(name, [](auto tag) -> std::unique_ptr<AsperityModel> {
+    return std::make_unique<typename ModelFor<typename decltype(tag)::type>::type>();
+  });
 }
 
 }  // namespace geartrib::asperity

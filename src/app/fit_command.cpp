@@ -1,0 +1,103 @@
+// `geartrib fit`: a registered asperity model's named constants fitted to reference data with
+// Ceres; report, TOML fragment for case files, optionally the C++ defaults header.
+#include "app/commands.hpp"
+
+#include "asperity/case_setup.hpp"
+#include "fit/model_fit.hpp"
+#include "io/fit_files.hpp"
+#include "io/table_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
+
+namespace geartrib::app {
+
+namespace {
+
+struct Options {
+  std::string list;
+  std::string model;
+  std::vector<std::string> data;
+  std::vector<std::string> free;
+  std::vector<std::string> observe;
+  std::vector<double> weights;
+  std::string loss = "squared";
+  double loss_scale = 0.1;
+  std::string case_file;
+  std::string output;
+  std::string report;
+  std::string emit_cpp;
+  bool quiet = false;
+};
+
+void list_constants(const std::string& name) {
+  const auto m = asperity::make_asperity_model(name);
+  fmt::print("{}: {}\n", m->name(), m->citation());
+  const auto specs = m->constant_specs();
+  if (specs.empty()) fmt::print("  (no adjustable constants)\n");
+  for (std::size_t i = 0; i < specs.size(); ++i)
+    fmt::print("  {:<22} default {:<10.6g} range [{:g}, {:g}]  {}\n", specs[i].name, m->constants()[i], specs[i].lower,
+               specs[i].upper, specs[i].meaning);
+}
+
+void run(const Options& o) {
+  if (!o.list.empty()) return list_constants(o.list);
+  if (o.model.empty() || o.data.empty()) throw std::invalid_argument("fit needs --model NAME and at least one --data FILE (or --list MODEL)");
+  const Case c = load_case_reporting(o.case_file);
+  const auto model = asperity::make_case_model(c, o.model);
+  std::vector<fit::FitData> data;
+  for (const auto& f : o.data) data.push_back(io::read_fit_data(f));
+  fit::FitOptions opt;
+  opt.free = o.free;
+  for (const auto& name : o.observe) opt.observe.push_back(fit::parse_observable(name));
+  opt.observe_weight = o.weights;
+  if (!opt.observe_weight.empty() && opt.observe_weight.size() != opt.observe.size())
+    throw std::invalid_argument("--weight needs one weight per --observe column");
+  opt.loss = fit::parse_loss(o.loss);
+  opt.loss_scale = o.loss_scale;
+  const fit::FitResult r = fit::fit_model(*model, asperity::contact_pair(c), data, opt);
+
+  std::string provenance = fmt::format("model {}, data", r.model);
+  for (const auto& f : o.data) provenance += " " + f;
+  if (!o.free.empty()) {
+    provenance += ", free";
+    for (const auto& f : o.free) provenance += " " + f;
+  }
+  const std::string report = io::format_fit_report(r);
+  if (!o.report.empty()) io::write_file_atomically(o.report, report);
+  if (!o.output.empty()) io::write_file_atomically(o.output, io::format_fit_toml(r, provenance));
+  if (!o.emit_cpp.empty()) io::write_file_atomically(o.emit_cpp, io::format_fit_cpp(r, provenance));
+  if (!o.quiet) std::cout << (o.report.empty() ? report : report.substr(0, report.find("\nResiduals")) + "\n");
+}
+
+}  // namespace
+
+void add_fit_command(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  auto* cmd = app.add_subcommand(
+      "fit",
+      "Fit a registered asperity model's named constants to reference data (validation/fem-reference/*.csv)\n"
+      "with Ceres: automatic differentiation through the model's own law, bounds from each constant's range,\n"
+      "relative residuals (or residuals over sd_<quantity> columns), optional robust loss. Prints each\n"
+      "constant with its standard error, the correlation matrix, the rms relative error per observed column\n"
+      "and the residuals; -o writes a TOML fragment a case file can include ([asperity.constants.<model>]).");
+  cmd->add_option("--list", o->list, "Print a model's named constants (default, range, meaning) and exit");
+  cmd->add_option("--model", o->model, "Model to fit (hertz, ceb, kogut-etsion, jackson-green, zmc, continuous)");
+  cmd->add_option("--data", o->data, "Reference data CSV (repeat for several data sets)");
+  cmd->add_option("--free", o->free, "Comma-separated constants to fit (default: all); the rest stay at their values")->delimiter(',');
+  cmd->add_option("--observe", o->observe, "Comma-separated observed columns (default: all in the data)")->delimiter(',');
+  cmd->add_option("--weight", o->weights, "Comma-separated relative weights, one per --observe column")->delimiter(',');
+  cmd->add_option("--loss", o->loss, "squared, huber or cauchy")->check(CLI::IsMember({"squared", "huber", "cauchy"}));
+  cmd->add_option("--loss-scale", o->loss_scale, "Residual scale of the robust losses (default 0.1, a relative 10%)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--case", o->case_file, "Case for the material (default: gears/m6z30.toml), and its constant overrides as the start");
+  cmd->add_option("-o,--output", o->output, "Write the fitted constants as a TOML fragment");
+  cmd->add_option("--report", o->report, "Write the full report (with every residual and Ceres' report) to this file");
+  cmd->add_option("--emit-cpp", o->emit_cpp, "Write the constants as a C++ defaults header (see src/asperity/continuous_defaults.hpp)");
+  cmd->add_flag("-q,--quiet", o->quiet, "Print nothing");
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace geartrib::app

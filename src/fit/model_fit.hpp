@@ -1,0 +1,72 @@
+// Fitting a registered asperity model's named constants to reference data with Ceres: automatic
+// differentiation through the same scalar-templated law the simulator runs (laws.hpp), bounds
+// from the constants' admissible ranges, a robust loss if asked, standard errors and
+// correlations from Ceres' covariance.
+#pragma once
+
+#include "asperity/contact_pair.hpp"
+#include "asperity/model.hpp"
+#include "fit/fit_data.hpp"
+
+#include <string>
+#include <vector>
+
+namespace geartrib::fit {
+
+enum class Loss { squared, huber, cauchy };
+Loss parse_loss(std::string_view name);  // throws std::invalid_argument
+
+struct FitOptions {
+  std::vector<std::string> free;          // constants to fit; empty: all
+  std::vector<Observable> observe;        // empty: every observed column present in the data
+  std::vector<double> observe_weight;     // relative weight per observed column (1 when empty)
+  Loss loss = Loss::squared;
+  double loss_scale = 0.1;                // residual scale of the robust losses (a relative 10%)
+  int max_iterations = 500;
+};
+
+struct FittedConstant {
+  std::string name;
+  double value = 0.0;
+  double std_error = 0.0;  // NaN when not identifiable; 0 for fixed constants
+  bool free = false;
+};
+
+struct RowResidual {
+  std::string data;  // data set name
+  int line = 0;
+  double delta_star = 0.0;
+  Observable what = Observable::load_star;
+  double observed = 0.0;
+  double model = 0.0;
+  double relative = 0.0;  // model/observed - 1
+};
+
+struct FitResult {
+  std::string model;
+  std::vector<FittedConstant> constants;
+  std::vector<std::vector<double>> correlation;  // among the free constants, in their order
+  std::vector<RowResidual> residuals;
+  std::vector<std::pair<Observable, double>> rms_relative;  // per observed column
+  struct DataRms {
+    std::string data;
+    Observable what;
+    double rms;
+  };
+  std::vector<DataRms> rms_by_data;                          // per data set and observed column
+  std::string ceres_report;                                  // Ceres' full report
+  int iterations = 0;
+  double final_cost = 0.0;
+};
+
+// Starts from `model`'s current constants. Throws std::invalid_argument for unusable input
+// (unknown constant, no observations of a column, NaN, fewer observations than free
+// constants) and std::runtime_error when Ceres does not converge.
+FitResult fit_model(const asperity::AsperityModel& model, const asperity::ContactPair& pair,
+                    const std::vector<FitData>& data, const FitOptions& options);
+
+// The model's dimensionless value of an observable at delta* (as the fit computes it).
+double model_observable(const asperity::AsperityModel& model, const asperity::ContactPair& pair, double delta_star,
+                        Observable what);
+
+}  // namespace geartrib::fit
