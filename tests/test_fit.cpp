@@ -116,6 +116,13 @@ TEST(Fit, ReportsWhatCannotBeFitted) {
   FitData with_nan = d;
   with_nan.delta_star[3] = std::nan("");
   EXPECT_THROW(fit_model(*model, test::seed_pair(), {with_nan}, opt), std::invalid_argument);
+  FitOptions bounded;
+  bounded.free = kFree;
+  bounded.bounds = {{"area_scale", 5.0, 1e6}};  // beyond the constant's range [0.1, 1e4]
+  EXPECT_THROW(fit_model(*model, test::seed_pair(), {d}, bounded), std::invalid_argument);
+  bounded.bounds = {{"area_scale", 10.0, 20.0}};  // the truth (30) excluded: the fit stops at the bound
+  const FitResult at_bound = fit_model(*near(*truth), test::seed_pair(), {d}, bounded);
+  EXPECT_NEAR(at_bound.constants[0].value, 20.0, 1e-9);
   opt.max_iterations = 1;  // cannot converge in one step from the defaults
   EXPECT_THROW(fit_model(*model, test::seed_pair(), {d}, opt), std::runtime_error);
   EXPECT_THROW(fit_model(*asperity::make_asperity_model("hertz"), test::seed_pair(), {d}, {}), std::invalid_argument);

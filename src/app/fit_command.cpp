@@ -23,6 +23,7 @@ struct Options {
   std::vector<std::string> free;
   std::vector<std::string> observe;
   std::vector<double> weights;
+  std::vector<std::string> bounds;
   std::string loss = "squared";
   double loss_scale = 0.1;
   std::string case_file;
@@ -55,6 +56,16 @@ void run(const Options& o) {
   opt.observe_weight = o.weights;
   if (!opt.observe_weight.empty() && opt.observe_weight.size() != opt.observe.size())
     throw std::invalid_argument("--weight needs one weight per --observe column");
+  for (const auto& b : o.bounds) {
+    const auto eq = b.find('='), colon = b.find(':', eq == std::string::npos ? 0 : eq);
+    if (eq == std::string::npos || colon == std::string::npos)
+      throw std::invalid_argument("--bound '" + b + "': expected NAME=LOWER:UPPER");
+    try {
+      opt.bounds.emplace_back(b.substr(0, eq), std::stod(b.substr(eq + 1, colon - eq - 1)), std::stod(b.substr(colon + 1)));
+    } catch (const std::logic_error&) {
+      throw std::invalid_argument("--bound '" + b + "': LOWER and UPPER must be numbers");
+    }
+  }
   opt.loss = fit::parse_loss(o.loss);
   opt.loss_scale = o.loss_scale;
   const fit::FitResult r = fit::fit_model(*model, asperity::contact_pair(c), data, opt);
@@ -89,6 +100,7 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--free", o->free, "Comma-separated constants to fit (default: all); the rest stay at their values")->delimiter(',');
   cmd->add_option("--observe", o->observe, "Comma-separated observed columns (default: all in the data)")->delimiter(',');
   cmd->add_option("--weight", o->weights, "Comma-separated relative weights, one per --observe column")->delimiter(',');
+  cmd->add_option("--bound", o->bounds, "NAME=LOWER:UPPER, narrower bounds than the constant's range (repeatable)");
   cmd->add_option("--loss", o->loss, "squared, huber or cauchy")->check(CLI::IsMember({"squared", "huber", "cauchy"}));
   cmd->add_option("--loss-scale", o->loss_scale, "Residual scale of the robust losses (default 0.1, a relative 10%)")
       ->check(CLI::PositiveNumber);

@@ -5,6 +5,7 @@
 #include <ceres/ceres.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -105,10 +106,23 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
   for (bool f : is_free) free_count += f;
 
   ceres::Problem problem;
+  std::array<double, n> lower{}, upper{};
+  for (std::size_t k = 0; k < n; ++k) lower[k] = Law::constants[k].lower, upper[k] = Law::constants[k].upper;
+  for (const auto& [name, lo, hi] : options.bounds) {
+    std::size_t k = 0;
+    while (k < n && Law::constants[k].name != name) ++k;
+    if (k == n) throw std::invalid_argument("bound for unknown constant '" + name + "'");
+    if (!(lo <= hi && lo >= lower[k] && hi <= upper[k]))
+      throw std::invalid_argument(fmt::format("bounds [{}, {}] of '{}' must be ordered and lie within its range [{}, {}]", lo, hi,
+                                              name, lower[k], upper[k]));
+    lower[k] = lo;
+    upper[k] = hi;
+    values[k] = std::clamp(values[k], lo, hi);
+  }
   for (std::size_t k = 0; k < n; ++k) {
     problem.AddParameterBlock(&values[k], 1);
-    problem.SetParameterLowerBound(&values[k], 0, Law::constants[k].lower);
-    problem.SetParameterUpperBound(&values[k], 0, Law::constants[k].upper);
+    problem.SetParameterLowerBound(&values[k], 0, lower[k]);
+    problem.SetParameterUpperBound(&values[k], 0, upper[k]);
     if (!is_free[k]) problem.SetParameterBlockConstant(&values[k]);
   }
   ceres::LossFunction* loss = nullptr;

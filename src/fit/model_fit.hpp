@@ -9,6 +9,7 @@
 #include "fit/fit_data.hpp"
 
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace geartrib::fit {
@@ -20,6 +21,7 @@ struct FitOptions {
   std::vector<std::string> free;          // constants to fit; empty: all
   std::vector<Observable> observe;        // empty: every observed column present in the data
   std::vector<double> observe_weight;     // relative weight per observed column (1 when empty)
+  std::vector<std::tuple<std::string, double, double>> bounds;  // (constant, lower, upper) within its range
   Loss loss = Loss::squared;
   double loss_scale = 0.1;                // residual scale of the robust losses (a relative 10%)
   int max_iterations = 500;
