@@ -62,6 +62,11 @@ printf 'delta_star,load_star\n1.5,2.0\n' > "$tmp/one.csv"
 check fit-too-few 2 "1 observations cannot determine 5 free constants" -- "$bin" fit --model continuous --data "$tmp/one.csv" \
   --free area_scale,area_exponent,plastic_scale,pressure_scale,pressure_exponent
 
+# Dynamics: a steady cycle, a short sweep, bad input.
+check dynamics-cycle 0 "^time_s,s_m,mesh_stiffness_N_per_m,deflection_m" -- "$bin" dynamics --speed 1000rpm --integrator odeint --csv
+check dynamics-sweep 0 "^speed_rpm,mesh_frequency_Hz,dynamic_factor" -- "$bin" dynamics --speed-sweep 500rpm:1500rpm:3 --csv
+check dynamics-bad-speed 2 "expected a angular speed|angular speed" -- "$bin" dynamics --speed 1000mm
+
 # Bad input: exit 2 with a message naming what is wrong.
 check unknown-model 2 "unknown asperity model 'nope'" -- "$bin" asperity --model nope
 check bad-range 2 "MIN:MAX:COUNT" -- "$bin" asperity --range 1:0:5

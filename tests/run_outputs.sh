@@ -71,6 +71,18 @@ names = [n.decode() if isinstance(n, bytes) else n for n in f['meta/stage_names'
 assert 'strip_contact_coupled' in names, names
 " && ok coupled-recorded || bad coupled-recorded
 
+# Dynamic loads: a case asking for dynamics records the stage and the dynamic load factor.
+sed -e 's/^dynamics = "none" .*/dynamics = "odeint"/' -e 's#"../materials/#"'"$PWD"'/materials/#' gears/m6z30.toml > "$tmp/g/dynamic.toml"
+"$bin" run -q "$tmp/g/dynamic.toml" -o "$tmp/dynamic.h5" --positions 21 >/dev/null && ok run-dynamic || bad run-dynamic
+"$py" -c "
+import h5py, numpy as np
+f = h5py.File('$tmp/dynamic.h5', 'r')
+names = [n.decode() if isinstance(n, bytes) else n for n in f['meta/stage_names'][()]]
+assert 'dynamics_odeint' in names, names
+k = f['mesh/dynamic_load_factor'][()]
+assert np.all(np.isfinite(k)) and k.max() > 1.0, k
+" && ok dynamic-load-recorded || bad dynamic-load-recorded
+
 # Atomic output: a failing write leaves nothing behind.
 "$bin" run -q -o "$tmp/missing-dir/x.h5" >/dev/null 2>&1 && bad write-error-status || ok write-error-status
 ls -a "$tmp" | grep -q '\.tmp\.' && bad temporary-left || ok no-temporary-left

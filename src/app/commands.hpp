@@ -16,6 +16,7 @@ void add_kinematics_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_multi_asperity_command(CLI::App& app);
 void add_fit_command(CLI::App& app);
+void add_dynamics_command(CLI::App& app);
 void add_version_command(CLI::App& app);
 
 // The --csv and -o/--output options every table-printing command takes.

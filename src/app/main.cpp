@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   geartrib::app::add_run_command(app);
   geartrib::app::add_kinematics_command(app);
   geartrib::app::add_multi_asperity_command(app);
+  geartrib::app::add_dynamics_command(app);
   geartrib::app::add_fit_command(app);
   geartrib::app::add_version_command(app);
   try {

@@ -6,6 +6,7 @@
 #include "gear/gear_mesh.hpp"
 #include "io/hdf5_results.hpp"
 #include "io/table_writer.hpp"
+#include "solvers/integrators.hpp"
 #include "solvers/kinsol_solver.hpp"
 
 #include <fmt/format.h>
@@ -88,10 +89,12 @@ void run(const Options& o) {
   if (!o.fidelity.empty()) c.contact.coupled = o.fidelity == "coupled";
   const gear::GearMesh mesh(c);
   const solvers::KinsolSolver kinsol;
+  const std::unique_ptr<OdeIntegrator> integrator =
+      c.dynamics.engine != "none" ? solvers::make_integrator(c.dynamics.engine) : nullptr;
   ProgressBar bar(!o.quiet);
   const contact::MeshContactResult r = contact::run_mesh_contact(
       c, mesh, c.contact.coupled ? &kinsol : nullptr, [&](int done, int total) { bar(done, total); },
-      o.positions.value_or(0));
+      o.positions.value_or(0), integrator.get());
   for (const auto* group : {&r.mesh, &r.contact})
     for (const auto& q : *group)
       for (double v : q.values)

@@ -2,6 +2,7 @@
 
 #include "asperity/case_setup.hpp"
 #include "asperity/side_contact.hpp"
+#include "gear/mesh_dynamics.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/rough_line_contact.hpp"
 
@@ -34,7 +35,8 @@ class Stopwatch {
 }  // namespace
 
 MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
-                                   const std::function<void(int, int)>& progress, int positions) {
+                                   const std::function<void(int, int)>& progress, int positions,
+                                   const OdeIntegrator* dynamics) {
   const ContactSettings& cs = c.contact;
   const int n = positions > 0 ? positions : cs.positions;
   MeshContactResult r;
@@ -98,11 +100,28 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
       ks.push_back(m.mesh_stiffness);
     }
     s_m = s_v;
-    line_load = w;
     r_eq = req;
+    r.stages.push_back({"kinematics", clock.lap()});
+    if (c.dynamics.engine != "none") {
+      // The steady mesh cycle at the operating speed; each pair's dynamic load replaces its share.
+      if (!dynamics) throw std::invalid_argument("the case asks for dynamics but no integrator was given");
+      const gear::MeshDynamics dyn(mesh, gear::dynamics_settings(c));
+      const gear::SteadyCycle cycle = dyn.steady_cycle(*dynamics, mesh.pinion_speed());
+      auto& factor = add(r.mesh, "dynamic_load_factor", "1");
+      const double width = mesh.pair().spec().face_width;
+      for (std::size_t i = 0; i < s_v.size(); ++i) {
+        const double dynamic = dyn.pair_force(cycle, s_v[i]) / width;
+        factor.push_back(w[i] > 0.0 ? dynamic / w[i] : 1.0);
+        w[i] = dynamic;
+        const gear::PairLoad l = mesh.analysis().pair_load(s_v[i], dynamic);
+        hp[i] = l.hertz_peak;
+        hb[i] = l.hertz_half_width;
+      }
+      r.stages.push_back({"dynamics_" + dynamics->name(), clock.lap()});
+    }
+    line_load = w;
     p0 = hp;
   }
-  r.stages.push_back({"kinematics", clock.lap()});
 
   // Stage 2: the equivalent surface and its pressure-separation table (built once).
   r.surface = surface::equivalent_surface(c.pinion.flank.roughness, c.wheel.flank.roughness, c.roughness.distribution,

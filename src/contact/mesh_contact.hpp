@@ -4,6 +4,7 @@
 
 #include "core/case.hpp"
 #include "core/nonlinear_solver.hpp"
+#include "core/ode_integrator.hpp"
 #include "gear/gear_mesh.hpp"
 #include "surface/rough_surface.hpp"
 
@@ -38,7 +39,10 @@ struct MeshContactResult {
 };
 
 // progress(done, total) is called after each position. positions <= 0: the case's number.
+// dynamics: when the case asks for dynamics (mesh.dynamics = cvode | odeint), the integrator that
+// computes the steady mesh cycle; each pair then carries its dynamic load instead of the static share.
 MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
-                                   const std::function<void(int, int)>& progress = {}, int positions = 0);
+                                   const std::function<void(int, int)>& progress = {}, int positions = 0,
+                                   const OdeIntegrator* dynamics = nullptr);
 
 }  // namespace geartrib::contact

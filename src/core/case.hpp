@@ -84,6 +84,16 @@ struct ContactSettings {
   int coupled_nodes = 128;       // coupled pressure elements
 };
 
+// Mesh dynamics: the engine (none: static load sharing) and the model's data.
+struct DynamicsCase {
+  std::string engine = "none";       // "none", "cvode" or "odeint"
+  double damping_ratio = 0.07;       // zeta, a typical value for spur meshes (assumed)
+  double relative_tolerance = 1e-8;  // integrator rtol
+  double backlash = 0.0;             // along the line of action [m]; 0: no back-flank contact
+  double pinion_inertia = 0.0;       // [kg m^2]; 0: solid disc
+  double wheel_inertia = 0.0;
+};
+
 struct Case {
   std::string title;
   std::string source;
@@ -93,6 +103,7 @@ struct Case {
   OperatingPoint operating;
   double friction_coefficient = 0.0;  // mu [-]
   MeshSettings mesh;
+  DynamicsCase dynamics;
   RoughnessSettings roughness;
   ContactSettings contact;
   AsperitySettings asperity;

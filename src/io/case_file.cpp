@@ -143,6 +143,20 @@ Case load_case(const std::filesystem::path& file) {
   const std::string beam = r.string("mesh.tooth_beam", std::string("plane-strain"));
   require(r, "mesh.tooth_beam", beam == "plane-strain" || beam == "plane-stress", "must be \"plane-strain\" or \"plane-stress\"");
   c.mesh.plane_strain = beam == "plane-strain";
+  c.dynamics.engine = r.string("mesh.dynamics", std::string("none"));
+  require(r, "mesh.dynamics", c.dynamics.engine == "none" || c.dynamics.engine == "cvode" || c.dynamics.engine == "odeint",
+          "must be \"none\", \"cvode\" or \"odeint\"");
+  c.dynamics.damping_ratio = r.number("dynamics.damping_ratio", 0.07);
+  require(r, "dynamics.damping_ratio", c.dynamics.damping_ratio >= 0.0 && c.dynamics.damping_ratio < 1.0, "must lie in [0, 1)");
+  c.dynamics.relative_tolerance = r.number("dynamics.relative_tolerance", 1e-8);
+  require(r, "dynamics.relative_tolerance", c.dynamics.relative_tolerance >= 1e-14 && c.dynamics.relative_tolerance <= 1e-2,
+          "must lie in [1e-14, 1e-2]");
+  c.dynamics.backlash = r.quantity("dynamics.backlash", Dimension::length, 0.0);
+  require(r, "dynamics.backlash", c.dynamics.backlash >= 0.0, "must not be negative");
+  c.dynamics.pinion_inertia = r.quantity("dynamics.pinion_inertia", Dimension::inertia, 0.0);
+  c.dynamics.wheel_inertia = r.quantity("dynamics.wheel_inertia", Dimension::inertia, 0.0);
+  require(r, "dynamics.pinion_inertia", c.dynamics.pinion_inertia >= 0.0, "must not be negative");
+  require(r, "dynamics.wheel_inertia", c.dynamics.wheel_inertia >= 0.0, "must not be negative");
 
   {
     const std::string dist = r.string("roughness.distribution", std::string("gaussian"));

@@ -19,7 +19,7 @@ struct UnitEntry {
 constexpr double kPi = std::numbers::pi;
 
 // The whole table. Symbols are matched exactly (case-sensitive: "MPa" is not "mpa").
-constexpr std::array<UnitEntry, 33> kUnits{{
+constexpr std::array<UnitEntry, 35> kUnits{{
     {"m", Dimension::length, 1.0},
     {"mm", Dimension::length, 1e-3},
     {"um", Dimension::length, 1e-6},
@@ -50,6 +50,8 @@ constexpr std::array<UnitEntry, 33> kUnits{{
     {"kg/m3", Dimension::density, 1.0},
     {"g/cm^3", Dimension::density, 1e3},
     {"m/s", Dimension::speed, 1.0},
+    {"kg m^2", Dimension::inertia, 1.0},
+    {"kg*m^2", Dimension::inertia, 1.0},
     {"mm/s", Dimension::speed, 1e-3},
     {"1", Dimension::dimensionless, 1.0},
     {"%", Dimension::dimensionless, 1e-2},
@@ -76,6 +78,7 @@ std::string_view dimension_name(Dimension d) {
     case Dimension::angular_speed: return "angular speed";
     case Dimension::density: return "density";
     case Dimension::speed: return "speed";
+    case Dimension::inertia: return "moment of inertia";
   }
   return "quantity";
 }

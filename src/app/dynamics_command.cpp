@@ -1,0 +1,118 @@
+// `geartrib dynamics`: the mesh's single-degree-of-freedom dynamics at one speed (the steady
+// cycle) or over a speed sweep (the dynamic factor against speed).
+#include "app/commands.hpp"
+
+#include "gear/mesh_dynamics.hpp"
+#include "io/table_writer.hpp"
+#include "io/units.hpp"
+#include "solvers/integrators.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <numbers>
+
+namespace geartrib::app {
+
+namespace {
+
+struct Options {
+  std::string case_file;
+  std::string integrator;
+  std::optional<double> rtol;
+  std::string speed;
+  std::string sweep;
+  bool csv = false;
+  std::string output;
+};
+
+double speed_option(const std::string& name, const std::string& text) {
+  try {
+    return io::parse_quantity(text, io::Dimension::angular_speed);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(name + " '" + text + "': " + e.what());
+  }
+}
+
+constexpr double kRpm = 2.0 * std::numbers::pi / 60.0;
+
+void run(const Options& o) {
+  const Case c = load_case_reporting(o.case_file);
+  const gear::GearMesh mesh(c);
+  gear::DynamicsSettings settings = gear::dynamics_settings(c);
+  if (o.rtol) settings.tolerances.relative = *o.rtol;
+  const std::string engine = !o.integrator.empty() ? o.integrator : (c.dynamics.engine == "none" ? "cvode" : c.dynamics.engine);
+  const auto integrator = solvers::make_integrator(engine);
+  const gear::MeshDynamics dyn(mesh, settings);
+  const int z1 = mesh.pair().pinion().teeth;
+  std::cerr << fmt::format(
+      "equivalent mass {:.4g} kg, mean mesh stiffness {:.4g} N/m, damping {:.4g} N s/m (zeta {}), natural frequency "
+      "{:.1f} Hz (resonance at {:.0f} rpm), quasi-static peak {:.4g} x F; integrator {} rtol {:g}\n",
+      dyn.equivalent_mass(), dyn.mean_stiffness(), dyn.damping(), settings.damping_ratio, dyn.natural_frequency(),
+      60.0 * dyn.natural_frequency() / z1, dyn.quasi_static_peak() / mesh.normal_force(), integrator->name(),
+      settings.tolerances.relative);
+  io::Table t;
+  if (!o.sweep.empty()) {
+    const auto a = o.sweep.find(':'), b = o.sweep.rfind(':');
+    if (a == std::string::npos || a == b) throw std::invalid_argument("--speed-sweep expects MIN:MAX:COUNT, e.g. 100rpm:9000rpm:200");
+    const double lo = speed_option("--speed-sweep", o.sweep.substr(0, a)), hi = speed_option("--speed-sweep", o.sweep.substr(a + 1, b - a - 1));
+    const int n = std::stoi(o.sweep.substr(b + 1));
+    if (!(lo > 0.0 && hi > lo) || n < 2) throw std::invalid_argument("--speed-sweep needs 0 < MIN < MAX and COUNT >= 2");
+    t.header = {"speed_rpm", "mesh_frequency_Hz", "dynamic_factor", "dynamic_factor_quasi_static", "contact_lost", "periodic",
+                "cycles"};
+    double best = 0.0, best_f = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const double w = lo + (hi - lo) * i / (n - 1);
+      const gear::SteadyCycle s = dyn.steady_cycle(*integrator, w);
+      t.rows.push_back({w / kRpm, s.mesh_frequency, s.dynamic_factor, s.dynamic_factor_quasi_static,
+                        s.contact_lost ? 1.0 : 0.0, s.periodic ? 1.0 : 0.0, static_cast<double>(s.cycles)});
+      if (s.dynamic_factor > best) best = s.dynamic_factor, best_f = s.mesh_frequency;
+    }
+    std::cerr << fmt::format("largest dynamic factor {:.4g} at a mesh frequency of {:.1f} Hz ({:+.1f}% from the natural frequency)\n",
+                             best, best_f, 100.0 * (best_f / dyn.natural_frequency() - 1.0));
+  } else {
+    const double w = o.speed.empty() ? c.operating.pinion_speed : speed_option("--speed", o.speed);
+    const gear::SteadyCycle s = dyn.steady_cycle(*integrator, w);
+    const auto& p = mesh.pair().path();
+    t.header = {"time_s", "s_m", "mesh_stiffness_N_per_m", "deflection_m", "static_deflection_m", "mesh_force_N",
+                "force_over_static", "pair1_force_N", "pair2_force_N"};
+    for (std::size_t i = 0; i < s.time.size(); ++i) {
+      const double s1 = s.position[i], s2 = s1 + p.base_pitch;
+      t.rows.push_back({s.time[i], s1, s.stiffness[i], s.deflection[i], s.static_deflection[i], s.force[i],
+                        s.force[i] / s.static_force, dyn.pair_force(s, s1), s2 <= p.e ? dyn.pair_force(s, s2) : 0.0});
+    }
+    std::cerr << fmt::format("{:.0f} rpm: mesh frequency {:.1f} Hz, dynamic factor {:.4g} ({:.4g} of the quasi-static peak), "
+                             "contact {}, {} after {} cycles, {} steps\n",
+                             w / kRpm, s.mesh_frequency, s.dynamic_factor, s.dynamic_factor_quasi_static,
+                             s.contact_lost ? "lost" : "kept", s.periodic ? "periodic" : "NOT periodic", s.cycles, s.steps);
+  }
+  io::output_table(t, o.csv, o.output);
+}
+
+}  // namespace
+
+void add_dynamics_command(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  auto* cmd = app.add_subcommand(
+      "dynamics",
+      "Single-degree-of-freedom mesh dynamics along the line of action: m_e x'' + c x' + k(t) x = F with the\n"
+      "potential-energy mesh stiffness (steps at B and D integrated explicitly), damping ratio zeta, contact\n"
+      "loss (and back-flank contact with a backlash). At one speed: the periodic steady cycle (deflection,\n"
+      "static transmission error, mesh force, each pair's dynamic load). Over a sweep: the dynamic factor\n"
+      "(peak mesh force over F, and over the model's quasi-static peak) against speed; plot it with\n"
+      "scripts/plot_sweep.py.");
+  cmd->add_option("case", o->case_file, "Case file (default: gears/m6z30.toml)");
+  cmd->add_option("--integrator", o->integrator, "cvode (SUNDIALS BDF) or odeint (Boost Dormand-Prince 5(4))")
+      ->check(CLI::IsMember({"cvode", "odeint"}));
+  cmd->add_option("--rtol", o->rtol, "Relative tolerance (default: the case's dynamics.relative_tolerance, 1e-8)")
+      ->check(CLI::Range(1e-14, 1e-2));
+  auto* sp = cmd->add_option("--speed", o->speed, "Pinion speed, e.g. 1000rpm (default: the case's)");
+  auto* sw = cmd->add_option("--speed-sweep", o->sweep, "MIN:MAX:COUNT pinion speeds, e.g. 100rpm:9000rpm:200");
+  sp->excludes(sw);
+  add_table_options(cmd, o->csv, o->output);
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace geartrib::app

@@ -1,0 +1,191 @@
+#include "gear/mesh_dynamics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace geartrib::gear {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+}
+
+void DynamicsSettings::validate() const {
+  if (!(damping_ratio >= 0.0 && damping_ratio < 1.0)) throw std::invalid_argument("damping ratio must lie in [0, 1)");
+  if (!(backlash > 0.0)) throw std::invalid_argument("backlash must be positive");
+  if (!(pinion_inertia >= 0.0 && wheel_inertia >= 0.0)) throw std::invalid_argument("inertias must not be negative");
+  if (!(density > 0.0)) throw std::invalid_argument("density must be positive");
+  if (!(tolerances.relative > 0.0)) throw std::invalid_argument("relative tolerance must be positive");
+  if (!(steady_tolerance >= 0.0)) throw std::invalid_argument("steady-state tolerance must not be negative");
+  if (max_cycles < 1 || samples_per_cycle < 8) throw std::invalid_argument("max_cycles >= 1 and samples_per_cycle >= 8");
+}
+
+DynamicsSettings dynamics_settings(const Case& c) {
+  DynamicsSettings s;
+  s.damping_ratio = c.dynamics.damping_ratio;
+  s.backlash = c.dynamics.backlash > 0.0 ? c.dynamics.backlash : std::numeric_limits<double>::infinity();
+  s.pinion_inertia = c.dynamics.pinion_inertia;
+  s.wheel_inertia = c.dynamics.wheel_inertia;
+  s.density = c.pinion.material.density;
+  s.tolerances.relative = c.dynamics.relative_tolerance;
+  return s;
+}
+
+MeshDynamics::MeshDynamics(const GearMesh& mesh, const DynamicsSettings& settings) : mesh_(mesh), settings_(settings) {
+  settings_.validate();
+  const SpurPair& pair = mesh.pair();
+  const double b = pair.spec().face_width;
+  auto disc = [&](const GearBody& g, double given) {
+    if (given > 0.0) return given;
+    const double r = g.pitch_radius, ri = g.bore_radius;
+    return 0.5 * settings_.density * kPi * b * (std::pow(r, 4) - std::pow(ri, 4));
+  };
+  const double i1 = disc(pair.pinion(), settings_.pinion_inertia), i2 = disc(pair.wheel(), settings_.wheel_inertia);
+  const double rb1 = pair.pinion().base_radius, rb2 = pair.wheel().base_radius;
+  mass_ = i1 * i2 / (i1 * rb2 * rb2 + i2 * rb1 * rb1);
+  // Stiffness over one cycle, u = s0 - A in [0, p_b): two smooth segments split where the
+  // leading pair leaves at E (u = B - A), each tabulated and interpolated by a cubic B-spline.
+  const PathOfContact& p = pair.path();
+  split_ = std::max(0.0, p.b - p.a);
+  const std::vector<std::pair<double, double>> parts =
+      split_ > 0.0 ? std::vector<std::pair<double, double>>{{0.0, split_}, {split_, p.base_pitch}}
+                   : std::vector<std::pair<double, double>>{{0.0, p.base_pitch}};
+  double integral = 0.0;
+  for (auto [lo, hi] : parts) {
+    const int n = 129;
+    std::vector<double> k(n);
+    const double h = (hi - lo) / (n - 1);
+    for (int i = 0; i < n; ++i) {
+      // Inside the segment (the jump sits at its ends): one-sided evaluation at the ends.
+      const double u = std::clamp(lo + i * h, lo + 1e-9 * p.base_pitch, hi - 1e-9 * p.base_pitch);
+      double ks = 0.0;
+      for (double s = p.a + u; s <= p.e + 1e-12; s += p.base_pitch) ks += mesh.stiffness().pair(s).stiffness;
+      k[static_cast<std::size_t>(i)] = ks;
+    }
+    segments_.emplace_back(k.begin(), k.end(), lo, h);
+    segment_start_.push_back(lo);
+    segment_end_.push_back(hi);
+    for (int i = 0; i + 1 < n; ++i) integral += 0.5 * (k[static_cast<std::size_t>(i)] + k[static_cast<std::size_t>(i + 1)]) * h;
+  }
+  mean_stiffness_ = integral / p.base_pitch;
+  damping_ = 2.0 * settings_.damping_ratio * std::sqrt(mean_stiffness_ * mass_);
+}
+
+double MeshDynamics::natural_frequency() const { return std::sqrt(mean_stiffness_ / mass_) / (2.0 * kPi); }
+
+double MeshDynamics::quasi_static_peak() const {
+  const double force = mesh_.normal_force();
+  if (segments_.size() < 2) return force;  // no step within the cycle
+  const double pb = mesh_.pair().path().base_pitch;
+  const double k_double_end = segments_[0](segment_end_[0]), k_single_start = segments_[1](segment_start_[1]);
+  const double k_single_end = segments_[1](segment_end_[1]), k_double_start = segments_[0](0.0);
+  (void)pb;
+  const double zeta = settings_.damping_ratio;
+  const double overshoot = std::exp(-zeta * kPi / std::sqrt(1.0 - zeta * zeta));
+  const double at_b = force * (1.0 + (1.0 - k_single_start / k_double_end) * overshoot);  // softening step
+  const double at_d = force * k_double_start / k_single_end;                              // stiffening step
+  return std::max({force, at_b, at_d});
+}
+
+double MeshDynamics::stiffness(double u) const {
+  const double pb = mesh_.pair().path().base_pitch;
+  u = std::fmod(u, pb);
+  if (u < 0.0) u += pb;
+  for (std::size_t i = 0; i < segments_.size(); ++i)
+    if (u <= segment_end_[i] || i + 1 == segments_.size()) return segments_[i](std::clamp(u, segment_start_[i], segment_end_[i]));
+  return segments_.back()(u);
+}
+
+SteadyCycle MeshDynamics::steady_cycle(const OdeIntegrator& integrator, double pinion_speed) const {
+  if (!(pinion_speed > 0.0)) throw std::invalid_argument("pinion speed must be positive");
+  const PathOfContact& p = mesh_.pair().path();
+  const double velocity = mesh_.pair().pinion().base_radius * pinion_speed;  // along the line of action [m/s]
+  const double period = p.base_pitch / velocity;
+  const double force = mesh_.normal_force();
+  const double x_static = force / mean_stiffness_;
+  const double omega_n = 2.0 * kPi * natural_frequency();
+  const double backlash = settings_.backlash;
+  auto contact = [backlash](double x) { return x > 0.0 ? x : (x <= -backlash ? x + backlash : 0.0); };
+  OdeSystem sys;
+  sys.size = 2;
+  sys.rhs = [&](double t, const std::vector<double>& y, std::vector<double>& dy) {
+    dy.resize(2);
+    dy[0] = y[1];
+    dy[1] = (force - damping_ * y[1] - stiffness(velocity * t) * contact(y[0])) / mass_;
+  };
+  OdeTolerances tol = settings_.tolerances;
+  if (!(tol.absolute > 0.0)) tol.absolute = tol.relative * x_static;
+  // Segment boundaries in time: the stiffness jumps at u = B - A and at u = p_b.
+  std::vector<double> bounds{0.0};
+  for (double e : segment_end_) bounds.push_back(e / velocity);
+  const int m = settings_.samples_per_cycle;
+  SteadyCycle c;
+  c.pinion_speed = pinion_speed;
+  c.period = period;
+  c.mesh_frequency = 1.0 / period;
+  c.static_force = force;
+  std::vector<double> y{force / stiffness(0.0), 0.0};
+  std::vector<std::vector<double>> samples;
+  double late_peak = 0.0;  // largest mesh force over the last cycles, for an aperiodic response
+  for (int cycle = 1; cycle <= settings_.max_cycles; ++cycle) {
+    const std::vector<double> start = y;
+    samples.clear();
+    for (std::size_t k = 0; k + 1 < bounds.size(); ++k) {
+      std::vector<double> times;
+      for (int i = 0; i < m; ++i) {
+        const double t = period * i / m;
+        if (t >= bounds[k] && (t < bounds[k + 1] || (k + 2 == bounds.size() && t <= bounds[k + 1]))) times.push_back(t);
+      }
+      // Each segment is integrated in its own time; the integrator restarts at the jump.
+      c.steps += integrator.integrate(sys, bounds[k], bounds[k + 1], y, times, samples, tol);
+    }
+    const double change = std::max(std::abs(y[0] - start[0]) / x_static, std::abs(y[1] - start[1]) / (omega_n * x_static));
+    c.cycles = cycle;
+    c.last_change = change;
+    if (cycle > settings_.max_cycles - 100)
+      for (int i = 0; i < m; ++i) {
+        const double x = samples[static_cast<std::size_t>(i)][0], v = samples[static_cast<std::size_t>(i)][1];
+        const double g = contact(x);
+        if (g != 0.0) late_peak = std::max(late_peak, stiffness(velocity * period * i / m) * g + damping_ * v);
+      }
+    const double steady = settings_.steady_tolerance > 0.0 ? settings_.steady_tolerance : 100.0 * tol.relative;
+    if (change < steady) break;
+    if (cycle == settings_.max_cycles) c.periodic = false;
+  }
+  for (int i = 0; i < m; ++i) {
+    const double t = period * i / m, u = velocity * t;
+    const double x = samples[static_cast<std::size_t>(i)][0], v = samples[static_cast<std::size_t>(i)][1];
+    const double k = stiffness(u);
+    const double g = contact(x);
+    const double f = g != 0.0 ? k * g + damping_ * v : 0.0;
+    c.time.push_back(t);
+    c.position.push_back(p.a + u);
+    c.stiffness.push_back(k);
+    c.deflection.push_back(x);
+    c.static_deflection.push_back(force / k);
+    c.force.push_back(f);
+    c.dynamic_factor = std::max(c.dynamic_factor, f / force);
+    c.contact_lost = c.contact_lost || x <= 0.0;
+  }
+  if (!c.periodic) c.dynamic_factor = std::max(c.dynamic_factor, late_peak / force);
+  c.dynamic_factor_quasi_static = c.dynamic_factor * force / quasi_static_peak();
+  return c;
+}
+
+double MeshDynamics::pair_force(const SteadyCycle& cycle, double s) const {
+  const PathOfContact& p = mesh_.pair().path();
+  double u = std::fmod(s - p.a, p.base_pitch);
+  if (u < 0.0) u += p.base_pitch;
+  // Linear interpolation of the periodic mesh force at u.
+  const double x = u / p.base_pitch * static_cast<double>(cycle.force.size());
+  const std::size_t i = static_cast<std::size_t>(x) % cycle.force.size();
+  const std::size_t j = (i + 1) % cycle.force.size();
+  const double t = x - std::floor(x);
+  const double mesh_force = (1.0 - t) * cycle.force[i] + t * cycle.force[j];
+  return mesh_.stiffness().pair(s).stiffness / stiffness(u) * mesh_force;
+}
+
+}  // namespace geartrib::gear
