@@ -67,6 +67,38 @@ check dynamics-cycle 0 "^time_s,s_m,mesh_stiffness_N_per_m,deflection_m" -- "$bi
 check dynamics-sweep 0 "^speed_rpm,mesh_frequency_Hz,dynamic_factor" -- "$bin" dynamics --speed-sweep 500rpm:1500rpm:3 --csv
 check dynamics-bad-speed 2 "expected a angular speed|angular speed" -- "$bin" dynamics --speed 1000mm
 
+# Measured topography: generate -> stats / asperities / equivalent, the measured case, bad files.
+check surface-generate 0 "" -- "$bin" surface generate hobbed -o "$tmp/hob.xyz" --nx 256 --ny 16 --noise "2 nm" --seed 3
+check surface-cylinders 0 "tip radius R_m 6\.[0-9]+ \+- " -- "$bin" surface asperities "$tmp/hob.xyz" --cylinders --form 0
+check surface-cylinder-columns 0 "^centre_m,height_m,tip_radius_m,spacing_m" -- "$bin" surface asperities "$tmp/hob.xyz" --cylinders --csv
+check surface-generate-sa 0 "" -- "$bin" surface generate self-affine -o "$tmp/a.h5" --nx 64 --ny 64 --seed 1
+check surface-generate-sb 0 "" -- "$bin" surface generate self-affine -o "$tmp/b.csv" --nx 64 --ny 64 --seed 2
+check surface-stats 0 "^Rq_m,.*" -- "$bin" surface stats "$tmp/a.h5" --csv
+check surface-mccool 0 "^mccool_summit_radius_m," -- "$bin" surface stats "$tmp/b.csv" --csv --cutoff "10 um" --outliers 5 --fill
+check surface-summits 0 "^x_m,y_m,height_m,radius_m" -- "$bin" surface asperities "$tmp/a.h5" --csv
+check surface-equivalent 0 "^summit_density_1_per_m2," -- "$bin" surface equivalent "$tmp/a.h5" "$tmp/b.csv" -o "$tmp/e.txt" --csv
+[[ -s "$tmp/e.txt" ]] && echo "ok   surface-equivalent-file" || { echo "FAIL surface-equivalent-file"; fail=1; }
+check surface-multi 0 "^1[HL]," -- "$bin" multi-asperity --topography "$tmp/hob.xyz" --form 0 --delta-pc 0.5797nm --elements 2048 --csv
+check measured-case 0 "pinion flank measured \(surfaces/pinion-flank.h5\)" -- "$bin" run gears/m6z30-measured.toml -o "$tmp/m.h5" --positions 5
+printf '# spacing: 1 um\n1 2 3\n4 five 6\n' > "$tmp/bad-number.txt"
+check surface-bad-number 2 "bad-number.txt:3: .*not a number" -- "$bin" surface stats "$tmp/bad-number.txt"
+printf '# spacing: 1 um\n1,2,3\n4,5\n' > "$tmp/ragged.csv"
+check surface-ragged 2 "ragged.csv:3: .*ragged row" -- "$bin" surface stats "$tmp/ragged.csv"
+printf '' > "$tmp/empty.txt"
+check surface-empty 2 "empty.txt:.*no height rows" -- "$bin" surface stats "$tmp/empty.txt"
+printf '# spacing: 1 um\nNaN NaN NaN\nBad Bad Bad\nNaN NaN NaN\n' > "$tmp/missing.txt"
+check surface-all-missing 2 "missing.txt:4: .*too few valid points" -- "$bin" surface stats "$tmp/missing.txt"
+printf '# spacing: -1 um\n1 2 3\n' > "$tmp/spacing.txt"
+check surface-bad-spacing 2 "spacing.txt:1: .*spacing must be positive" -- "$bin" surface stats "$tmp/spacing.txt"
+printf '1 2 3\n4 5 6\n7 8 9\n' > "$tmp/nospacing.txt"
+check surface-no-spacing 2 "spacing missing" -- "$bin" surface stats "$tmp/nospacing.txt"
+check surface-given-spacing 0 "^points,9" -- "$bin" surface stats "$tmp/nospacing.txt" --grid-spacing "1 um" --form 0 --csv
+printf "1 2 3\n" > "$tmp/a.dat"
+check surface-unknown-format 2 "unknown topography format" -- "$bin" surface stats "$tmp/a.dat"
+check surface-misaligned 2 "same size and spacing" -- "$bin" surface equivalent "$tmp/a.h5" "$tmp/hob.xyz" -o "$tmp/x.h5"
+[[ ! -e "$tmp/x.h5" ]] && echo "ok   surface-nothing-written-on-error" || { echo "FAIL x.h5 written"; fail=1; }
+check surface-bad-outliers 2 "outlier limit" -- "$bin" surface stats "$tmp/a.h5" --outliers 1
+
 # Bad input: exit 2 with a message naming what is wrong.
 check unknown-model 2 "unknown asperity model 'nope'" -- "$bin" asperity --model nope
 check bad-range 2 "MIN:MAX:COUNT" -- "$bin" asperity --range 1:0:5

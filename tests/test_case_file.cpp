@@ -1,6 +1,9 @@
 // Loading the data files, and the error each kind of bad input produces.
 #include "io/case_file.hpp"
 #include "io/input_error.hpp"
+#include "io/topography_files.hpp"
+#include "surface/surface_statistics.hpp"
+#include "surface/synthetic_surface.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -181,4 +184,63 @@ TEST_F(BadInput, GreenCylinderConstantByName) {
   edit("gears/m6z30.toml", "yield_constant = 1.64", "yield_constant = \"green-2005\"");
   const Case c = io::load_case(dir_ / "gears/m6z30.toml");
   EXPECT_NEAR(c.asperity.cylinder_yield_constant, 1.795, 5e-4);  // Green 2005 at nu = 0.3, 4 digits
+}
+
+namespace {
+// Replaces the whole line containing `needle` in the scratch case.
+void replace_line(const std::filesystem::path& file, const std::string& needle, const std::string& with) {
+  std::string text = read(file);
+  const auto pos = text.find(needle);
+  ASSERT_NE(pos, std::string::npos) << needle;
+  const auto begin = text.rfind('\n', pos) + 1, end = text.find('\n', pos);
+  text.replace(begin, end - begin, with);
+  std::ofstream(file) << text;
+}
+}  // namespace
+
+TEST_F(BadInput, MeasuredFlanksGiveTheirSummitStatistics) {
+  // Both flanks named by generated topography files: the case takes the summit statistics of the
+  // cleaned surfaces (the same pipeline as `geartrib surface stats`), exactly.
+  surface::SelfAffineSpec spec;
+  spec.nx = spec.ny = 96;
+  spec.seed = 5;
+  io::write_topography(dir_ / "gears/pinion.h5", surface::self_affine_surface(spec));
+  spec.seed = 6;
+  io::write_topography(dir_ / "gears/wheel.csv", surface::self_affine_surface(spec));
+  const auto toml = dir_ / "gears/m6z30.toml";
+  replace_line(toml, "summit_radius = \"1.65 um\"", "");
+  replace_line(toml, "ra = \"0.8 um\"", "topography = { file = \"pinion.h5\", form = 1, outliers = 5.0 }");
+  replace_line(toml, "summit_radius = \"1.75 um\"", "summit_radius = \"2 um\"");
+  replace_line(toml, "ra = \"0.8 um\"", "topography = { file = \"wheel.csv\", fill = true }");
+  const Case c = io::load_case(toml);
+  ASSERT_TRUE(c.pinion.flank.measured.has_value());
+  surface::HeightGrid g = io::read_topography(dir_ / "gears/pinion.h5");
+  surface::CleanupOptions o;
+  o.form_degree = 1;
+  o.outlier_limit = 5.0;
+  surface::clean_surface(g, o);
+  const surface::SurfaceStatistics s = surface::surface_statistics(g);
+  EXPECT_EQ(c.pinion.flank.roughness.form, surface::FlankRoughness::Form::summits);
+  EXPECT_DOUBLE_EQ(c.pinion.flank.roughness.summit_density, s.summit_density);
+  EXPECT_DOUBLE_EQ(c.pinion.flank.roughness.summit_sigma, s.summit_sigma);
+  EXPECT_DOUBLE_EQ(c.pinion.flank.summit_radius, s.summit_radius);
+  EXPECT_DOUBLE_EQ(c.wheel.flank.summit_radius, 2e-6);  // the case's radius overrides the measured one
+  EXPECT_EQ(c.wheel.flank.topography_file, "wheel.csv");
+}
+
+TEST_F(BadInput, MeasuredFlankErrorsNameTheFile) {
+  const auto toml = dir_ / "gears/m6z30.toml";
+  replace_line(toml, "ra = \"0.8 um\"", "topography = { file = \"missing.xyz\" }");
+  const io::InputError e = load_error();
+  EXPECT_EQ(e.key(), "pinion.flank.topography.file");
+  EXPECT_NE(std::string(e.what()).find("not found"), std::string::npos) << e.what();
+  // Two forms at once are refused.
+  std::ofstream(dir_ / "gears/bad.txt") << "# spacing: 1 um\n1 2 3\n4 x 6\n";
+  replace_line(toml, "topography = { file = \"missing.xyz\" }", "ra = \"0.8 um\"\ntopography = { file = \"bad.txt\" }");
+  EXPECT_NE(std::string(load_error().what()).find("exactly one form"), std::string::npos);
+  // A malformed surface: the error names the surface file and its line.
+  replace_line(toml, "ra = \"0.8 um\"", "");
+  const io::InputError bad = load_error();
+  EXPECT_NE(bad.file().find("bad.txt"), std::string::npos) << bad.what();
+  EXPECT_EQ(bad.line(), 3);
 }

@@ -63,3 +63,28 @@ TEST(MultiAsperity, RejectsBadLayouts) {
   EXPECT_THROW(solve_multi_asperity(spec("LXL", 1.0, 0.5e-6)), std::invalid_argument);
   EXPECT_THROW(solve_multi_asperity(spec("LLL", 1.0, 0.5e-6)), std::invalid_argument);
 }
+
+TEST(MultiAsperity, MeasuredProfileReproducesTheLayoutItDescribes) {
+  // The same three cylinders given as a measured profile (arbitrary datum and offset) give the
+  // same contact as the layout HLH: the geometry agrees to round-off (~1e-22 m after the datum and
+  // offset are removed), so the iterative solver stops within its tolerance of the same solution
+  // (observed 3e-8 relative; 1e-6 allows for the stopping point).
+  const MultiAsperitySpec layout = spec("HLH", 1.0, 0.5e-6);
+  MultiAsperitySpec measured = layout;
+  const double datum = 3e-6, offset = 17e-6;
+  measured.profile = {{offset - 0.5e-6, datum, 6.6e-6}, {offset, datum - kDeltaPc, 6.6e-6}, {offset + 0.5e-6, datum, 6.6e-6}};
+  const MultiAsperityResult a = solve_multi_asperity(layout), b = solve_multi_asperity(measured);
+  ASSERT_EQ(b.asperities.size(), 3u);
+  const std::string kinds{b.asperities[0].kind, b.asperities[1].kind, b.asperities[2].kind};
+  EXPECT_EQ(kinds, "HLH");
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(b.asperities[k].load / a.asperities[k].load, 1.0, 1e-6) << k;
+  EXPECT_NEAR(b.total_contact_area / a.total_contact_area, 1.0, 1e-6);
+  // Unequal radii: the blunter middle asperity (same tip height) carries more than a sharp one.
+  measured.profile[1] = {offset, datum, 20e-6};
+  const MultiAsperityResult blunt = solve_multi_asperity(measured);
+  measured.profile[1].tip_radius = 2e-6;
+  EXPECT_GT(blunt.asperities[1].load, solve_multi_asperity(measured).asperities[1].load);
+  // Out of order or non-positive radii are rejected.
+  measured.profile[1].tip_radius = 0.0;
+  EXPECT_THROW(solve_multi_asperity(measured), std::invalid_argument);
+}

@@ -11,6 +11,14 @@ void add_table_options(CLI::App* cmd, bool& csv, std::string& output) {
   cmd->add_option("-o,--output", output, "Write the table to this file (atomically) instead of stdout");
 }
 
+double quantity_option(const std::string& option, const std::string& text, io::Dimension d) {
+  try {
+    return io::parse_quantity(text, d);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(option + " '" + text + "': " + e.what());
+  }
+}
+
 std::filesystem::path default_case_file() {
   const std::filesystem::path local = "gears/m6z30.toml";
   if (std::filesystem::exists(local)) return local;

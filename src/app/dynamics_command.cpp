@@ -18,6 +18,10 @@ namespace geartrib::app {
 
 namespace {
 
+double speed_option(const std::string& option, const std::string& text) {
+  return quantity_option(option, text, io::Dimension::angular_speed);
+}
+
 struct Options {
   std::string case_file;
   std::string integrator;
@@ -27,14 +31,6 @@ struct Options {
   bool csv = false;
   std::string output;
 };
-
-double speed_option(const std::string& name, const std::string& text) {
-  try {
-    return io::parse_quantity(text, io::Dimension::angular_speed);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(name + " '" + text + "': " + e.what());
-  }
-}
 
 constexpr double kRpm = 2.0 * std::numbers::pi / 60.0;
 

@@ -4,6 +4,8 @@
 
 #include "asperity/case_setup.hpp"
 #include "contact/multi_asperity.hpp"
+#include "surface/cylinder_reduction.hpp"
+#include "surface/surface_statistics.hpp"
 #include "io/table_writer.hpp"
 #include "io/units.hpp"
 
@@ -21,6 +23,10 @@ namespace geartrib::app {
 
 namespace {
 
+double length_option(const std::string& option, const std::string& text) {
+  return quantity_option(option, text, io::Dimension::length);
+}
+
 struct Options {
   std::string case_file;
   std::string layout = "HLH";
@@ -34,17 +40,11 @@ struct Options {
   std::string cap = "hardness";
   std::string reference_depth;
   std::string sweep;
+  std::string topography;
+  SurfaceInputOptions surface;
   bool csv = false;
   std::string output;
 };
-
-double length_option(const std::string& name, const std::string& text) {
-  try {
-    return io::parse_quantity(text, io::Dimension::length);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(name + " '" + text + "': " + e.what());
-  }
-}
 
 contact::MultiAsperitySpec make_spec(const Options& o, const Case& c, double delta_pc) {
   const Material& m = c.pinion.material.hardness <= c.wheel.material.hardness ? c.pinion.material : c.wheel.material;
@@ -63,6 +63,22 @@ contact::MultiAsperitySpec make_spec(const Options& o, const Case& c, double del
   else s.pressure_cap = std::numeric_limits<double>::infinity();
   s.elements = o.elements;
   if (!o.reference_depth.empty()) s.reference_length = length_option("--reference-depth", o.reference_depth);
+  if (!o.topography.empty()) {
+    // A measured profile: its parabolic-cylinder asperities replace the layout (seed section 4 -> 5).
+    const io::LoadedSurface in = load_surface_reporting(o.topography, o.surface);
+    const surface::CylinderReduction r = surface::reduce_to_cylinders(in.grid, surface::surface_statistics(in.grid).lay_angle);
+    if (r.asperities.empty()) throw std::invalid_argument(o.topography + ": no asperity across the lay to reduce to cylinders");
+    double top = -std::numeric_limits<double>::infinity(), low = -top;
+    for (const auto& a : r.asperities) {
+      s.profile.push_back({a.centre, a.height, a.tip_radius});
+      top = std::max(top, a.height), low = std::min(low, a.height);
+    }
+    s.asperity_height = std::max(s.asperity_height, 2.0 * (top - low));  // the base plane below every tip
+    // The displacement reference must lie beyond the domain (asperities plus a margin each side).
+    const double span = s.profile.back().centre - s.profile.front().centre;
+    const double margin = std::max(s.profile.size() > 1 ? span / (s.profile.size() - 1) : 0.0, 2e-6);
+    if (o.reference_depth.empty()) s.reference_length = std::max(s.reference_length, 2.0 * (span + 2.0 * margin));
+  }
   return s;
 }
 
@@ -156,7 +172,13 @@ void add_multi_asperity_command(CLI::App& app) {
   cmd->add_option("--pressure-cap", o->cap, "hardness (H), yield (Prandtl punch (2+pi) S_y/sqrt3) or none (elastic)")
       ->check(CLI::IsMember({"hardness", "yield", "none"}));
   cmd->add_option("--reference-depth", o->reference_depth, "Displacement reference L_ref: a rigid base ~L_ref deep (default 50um, assumed)");
-  cmd->add_option("--sweep-spacing", o->sweep, "MIN:MAX:COUNT spacings (e.g. 0.25um:2um:8): one row per spacing");
+  auto* topo = cmd->add_option("--topography", o->topography,
+                               "Surface file: its profile across the lay, cut into parabolic cylinders (`geartrib surface\n"
+                               "asperities --cylinders`), replaces --layout, --height-step, --spacing and R_m");
+  add_surface_input_options(cmd, o->surface);
+  auto* sweep = cmd->add_option("--sweep-spacing", o->sweep, "MIN:MAX:COUNT spacings (e.g. 0.25um:2um:8): one row per spacing");
+  topo->excludes(sweep);
+  for (const char* geometry : {"--layout", "--height-step", "--spacing"}) topo->excludes(geometry);
   add_table_options(cmd, o->csv, o->output);
   cmd->callback([o] { run(*o); });
 }

@@ -117,7 +117,16 @@ void run(const Options& o) {
     }
     io::output_table(t, true, o.csv);
   }
-  if (!o.quiet) print_summary(r);
+  if (!o.quiet) {
+    for (const auto& [name, g] : {std::pair{"pinion", &c.pinion}, std::pair{"wheel", &c.wheel}})
+      if (g->flank.measured)
+        fmt::print("{} flank measured ({}): Ra {:.4g} um, Rq {:.4g} um, {} summits, density {:.4g} /um^2, radius {:.4g} um, "
+                   "sigma {:.4g} um\n",
+                   name, g->flank.topography_file, g->flank.measured->ra * 1e6, g->flank.measured->rq * 1e6,
+                   g->flank.measured->summits, g->flank.roughness.summit_density * 1e-12, g->flank.summit_radius * 1e6,
+                   g->flank.roughness.summit_sigma * 1e6);
+    print_summary(r);
+  }
   fmt::print("wrote {}{}\n", out.string(), o.csv.empty() ? "" : " and " + o.csv);
 }
 

@@ -8,9 +8,19 @@
 namespace geartrib::contact {
 
 void MultiAsperitySpec::validate() const {
-  if (layout.empty() || layout.find_first_not_of("HL") != std::string::npos || layout.find('H') == std::string::npos)
+  if (!profile.empty()) {
+    double top = -std::numeric_limits<double>::infinity(), low = -top;
+    for (std::size_t k = 0; k < profile.size(); ++k) {
+      const auto& a = profile[k];
+      if (!(a.tip_radius > 0.0) || !std::isfinite(a.tip_radius) || !std::isfinite(a.height) || !std::isfinite(a.centre))
+        throw std::invalid_argument("profile asperities need finite centres and heights and positive tip radii");
+      if (k > 0 && !(a.centre > profile[k - 1].centre)) throw std::invalid_argument("profile asperities must be ordered by centre");
+      top = std::max(top, a.height), low = std::min(low, a.height);
+    }
+    if (!(asperity_height > top - low)) throw std::invalid_argument("asperity height must exceed the spread of the profile's tip heights");
+  } else if (layout.empty() || layout.find_first_not_of("HL") != std::string::npos || layout.find('H') == std::string::npos)
     throw std::invalid_argument("layout must be letters H and L with at least one H (e.g. LLH, HLH, H)");
-  if (!(tip_radius > 0.0)) throw std::invalid_argument("tip radius must be positive");
+  if (profile.empty() && !(tip_radius > 0.0)) throw std::invalid_argument("tip radius must be positive");
   if (!(height_step >= 0.0)) throw std::invalid_argument("height step must be >= 0");
   if (!(spacing >= 0.0)) throw std::invalid_argument("spacing must be >= 0");
   if (!(asperity_height > height_step)) throw std::invalid_argument("asperity height must exceed the height step");
@@ -26,22 +36,38 @@ void MultiAsperitySpec::validate() const {
 
 MultiAsperityResult solve_multi_asperity(const MultiAsperitySpec& spec) {
   spec.validate();
-  const int count = static_cast<int>(spec.layout.size());
-  const double r = spec.tip_radius, base = -spec.asperity_height;
-  std::vector<double> tip(static_cast<std::size_t>(count)), centre(static_cast<std::size_t>(count));
+  const bool measured = !spec.profile.empty();
+  const int count = static_cast<int>(measured ? spec.profile.size() : spec.layout.size());
+  const double base = -spec.asperity_height;
+  // Tips relative to the highest (at 0), axes, radii and kinds.
+  std::vector<double> tip(static_cast<std::size_t>(count)), centre(tip), radius(tip);
+  std::string kind(static_cast<std::size_t>(count), 'H');
+  double top = -std::numeric_limits<double>::infinity();
+  for (const auto& a : spec.profile) top = std::max(top, a.height);
   for (int k = 0; k < count; ++k) {
-    tip[k] = spec.layout[static_cast<std::size_t>(k)] == 'H' ? 0.0 : -spec.height_step;
-    centre[k] = (k - 0.5 * (count - 1)) * spec.spacing;
+    if (measured) {
+      const auto& a = spec.profile[static_cast<std::size_t>(k)];
+      tip[k] = a.height - top;
+      centre[k] = a.centre - 0.5 * (spec.profile.front().centre + spec.profile.back().centre);
+      radius[k] = a.tip_radius;
+      kind[k] = tip[k] == 0.0 ? 'H' : 'L';
+    } else {
+      tip[k] = spec.layout[static_cast<std::size_t>(k)] == 'H' ? 0.0 : -spec.height_step;
+      centre[k] = (k - 0.5 * (count - 1)) * spec.spacing;
+      radius[k] = spec.tip_radius;
+      kind[k] = spec.layout[static_cast<std::size_t>(k)];
+    }
   }
+  const double mean_spacing = count > 1 ? (centre.back() - centre.front()) / (count - 1) : spec.spacing;
   // Beyond the outer axes: a spacing, at least 2 um (contacts at the seed's scale are ~0.2 um wide).
-  const double margin = std::max(spec.spacing, 2e-6);
+  const double margin = std::max(mean_spacing, 2e-6);
   const double left = centre.front() - margin, right = centre.back() + margin;
   HalfPlaneGrid grid{left, (right - left) / spec.elements, spec.elements};
   // Undeformed surface: the highest of the parabolas, never below the base plane; gap to the flat at the high tips.
   std::vector<double> gap0(static_cast<std::size_t>(grid.size));
   for (int i = 0; i < grid.size; ++i) {
     double y = base;
-    for (int k = 0; k < count; ++k) y = std::max(y, tip[k] - std::pow(grid.x(i) - centre[k], 2) / (2.0 * r));
+    for (int k = 0; k < count; ++k) y = std::max(y, tip[k] - std::pow(grid.x(i) - centre[k], 2) / (2.0 * radius[k]));
     gap0[static_cast<std::size_t>(i)] = -y;
   }
   BemOptions opt;
@@ -62,10 +88,10 @@ MultiAsperityResult solve_multi_asperity(const MultiAsperitySpec& spec) {
   const double nu = spec.poisson_ratio, h = grid.spacing;
   for (int k = 0; k < count; ++k) {
     AsperityLoad a;
-    a.kind = spec.layout[static_cast<std::size_t>(k)];
+    a.kind = kind[static_cast<std::size_t>(k)];
     a.centre = centre[k];
-    const double lo = k == 0 ? left : centre[k] - 0.5 * spec.spacing;
-    const double hi = k == count - 1 ? right : centre[k] + 0.5 * spec.spacing;
+    const double lo = k == 0 ? left : 0.5 * (centre[k - 1] + centre[k]);
+    const double hi = k == count - 1 ? right : 0.5 * (centre[k] + centre[k + 1]);
     double contact_lo = std::numeric_limits<double>::infinity(), contact_hi = -contact_lo;
     for (int i = 0; i < grid.size; ++i) {
       const double x = grid.x(i);
@@ -99,7 +125,7 @@ MultiAsperityResult solve_multi_asperity(const MultiAsperitySpec& spec) {
   // beyond it (second difference changing sign from negative to positive).
   const double xm = centre[static_cast<std::size_t>(count / 2)];
   const AsperityLoad& mid = out.asperities[static_cast<std::size_t>(count / 2)];
-  const double depth_max = 3.0 * std::max(spec.spacing, mid.contact_width);
+  const double depth_max = 3.0 * std::max(mean_spacing, mid.contact_width);
   const int samples = 1500;
   std::vector<double> z(samples), v(samples);
   for (int j = 0; j < samples; ++j) {

@@ -12,6 +12,13 @@
 
 namespace geartrib::contact {
 
+// One asperity of a measured profile (surface::reduce_to_cylinders): axis, tip height and radius.
+struct ProfileAsperity {
+  double centre = 0.0;      // across the lay [m]
+  double height = 0.0;      // tip height [m] (any datum; the highest tip first touches the flat)
+  double tip_radius = 0.0;  // [m]
+};
+
 struct MultiAsperitySpec {
   std::string layout = "HLH";      // one letter per asperity: H high, L low by height_step
   double tip_radius = 6.6e-6;      // R_m [m]
@@ -27,6 +34,9 @@ struct MultiAsperitySpec {
   int elements = 4096;             // boundary elements over the domain
   double reference_length = 50e-6; // displacement reference L_ref (a rigid base ~L_ref deep) [m]
   double tolerance = 1e-10;
+  // Measured asperities in order across the lay; when not empty they replace layout, tip_radius,
+  // height_step and spacing (kind 'H' marks the highest tip, 'L' the others).
+  std::vector<ProfileAsperity> profile;
   void validate() const;           // throws std::invalid_argument
 };
 

@@ -5,8 +5,10 @@
 
 #include "material/material.hpp"
 #include "surface/rough_surface.hpp"
+#include "surface/surface_statistics.hpp"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,6 +32,10 @@ struct GearPairSpec {
 struct FlankSpec {
   double summit_radius = 0.0;  // mean asperity tip radius [m]
   surface::FlankRoughness roughness;
+  // When the flank is measured ([*.flank.topography]): the file as written in the case, and the
+  // statistics of the cleaned surface the roughness above was taken from.
+  std::string topography_file;
+  std::optional<surface::SurfaceStatistics> measured;
 };
 
 struct GearSpec {

@@ -3,6 +3,7 @@
 #include "asperity/model.hpp"
 #include "gear/spur_pair.hpp"
 #include "io/toml_reader.hpp"
+#include "io/topography_files.hpp"
 
 #include <fmt/format.h>
 
@@ -23,6 +24,8 @@ double positive_quantity(TomlReader& r, std::string_view key, Dimension d) {
   return v;
 }
 
+constexpr std::size_t kFewSummits = 100;  // below this a summit statistic scatters by more than 10%
+
 GearSpec read_gear(TomlReader& r, const std::string& name) {
   GearSpec g;
   const std::string p = name + ".";
@@ -39,13 +42,50 @@ GearSpec read_gear(TomlReader& r, const std::string& name) {
   if (!std::filesystem::exists(material_path)) r.fail(p + "material", "material file not found: " + material_path.string());
   g.material = load_material(material_path);
   const std::string f = p + "flank.";
-  g.flank.summit_radius = positive_quantity(r, f + "summit_radius", Dimension::length);
   auto& rough = g.flank.roughness;
-  rough.summit_radius = g.flank.summit_radius;
-  const int forms = int(r.has(f + "ra")) + int(r.has(f + "rq")) + int(r.has(f + "summit_density")) + int(r.has(f + "m0"));
-  if (forms != 1)
-    r.fail(p + "flank", "give the roughness in exactly one form: ra, rq, summit_density + summit_sigma, or m0 + m2 + m4");
   using Form = surface::FlankRoughness::Form;
+  const int forms = int(r.has(f + "ra")) + int(r.has(f + "rq")) + int(r.has(f + "summit_density")) + int(r.has(f + "m0")) +
+                    int(r.has(f + "topography"));
+  if (forms != 1)
+    r.fail(p + "flank",
+           "give the roughness in exactly one form: ra, rq, summit_density + summit_sigma, m0 + m2 + m4, or a [" + p +
+               "flank.topography] table naming a measured surface");
+  if (r.has(f + "topography")) {
+    // A measured flank: the cleaned surface's summits give density, height sigma and radius
+    // (summit_radius, if given, overrides the measured radius: grid sampling biases it).
+    const std::string t = f + "topography.";
+    g.flank.topography_file = r.string(t + "file");
+    const auto path = r.directory() / g.flank.topography_file;
+    if (!std::filesystem::exists(path)) r.fail(t + "file", "topography file not found: " + path.string());
+    TopographyReadOptions read;
+    read.unit = r.quantity(t + "unit", Dimension::length, 1e-6);
+    require(r, t + "unit", read.unit > 0.0, "must be positive");
+    read.spacing = r.quantity(t + "spacing", Dimension::length, 0.0) / read.unit;
+    require(r, t + "spacing", read.spacing >= 0.0, "must not be negative");
+    read.resample = r.quantity(t + "resample", Dimension::length, 0.0);
+    require(r, t + "resample", read.resample >= 0.0, "must not be negative");
+    surface::CleanupOptions clean;
+    clean.form_degree = static_cast<int>(r.integer(t + "form", 2));
+    require(r, t + "form", clean.form_degree >= 0 && clean.form_degree <= 6, "polynomial degree must lie in [0, 6]");
+    clean.waviness_cutoff = r.quantity(t + "cutoff", Dimension::length, 0.0);
+    require(r, t + "cutoff", clean.waviness_cutoff >= 0.0, "must not be negative (0: no waviness filter)");
+    clean.outlier_limit = r.number(t + "outliers", 0.0);
+    require(r, t + "outliers", clean.outlier_limit == 0.0 || clean.outlier_limit >= 2.0,
+            "must be 0 (off) or at least 2 robust standard deviations");
+    clean.fill = r.boolean(t + "fill", false);
+    const surface::HeightGrid grid = load_surface(path, read, clean).grid;
+    try {
+      g.flank.measured = surface::surface_statistics(grid);
+      rough = surface::measured_roughness(*g.flank.measured);
+    } catch (const std::invalid_argument& e) {
+      r.fail(t + "file", path.string() + ": " + e.what());
+    }
+    if (r.has(f + "summit_radius")) rough.summit_radius = positive_quantity(r, f + "summit_radius", Dimension::length);
+    g.flank.summit_radius = rough.summit_radius;
+    return g;
+  }
+  g.flank.summit_radius = positive_quantity(r, f + "summit_radius", Dimension::length);
+  rough.summit_radius = g.flank.summit_radius;
   if (r.has(f + "ra")) {
     rough.form = Form::ra;
     rough.ra = positive_quantity(r, f + "ra", Dimension::length);
@@ -131,6 +171,16 @@ Case load_case(const std::filesystem::path& file) {
 
   c.pinion = read_gear(r, "pinion");
   c.wheel = read_gear(r, "wheel");
+  // Summit statistics from a few dozen summits scatter by ~1/sqrt(n): say so.
+  for (const char* name : {"pinion", "wheel"}) {
+    const GearSpec& g = std::string(name) == "pinion" ? c.pinion : c.wheel;
+    if (g.flank.measured && g.flank.measured->summits < kFewSummits) {
+      const std::string key = std::string(name) + ".flank.topography.file";
+      c.warnings.push_back(fmt::format("{}: warning: key '{}': only {} summits on the measured surface (statistics scatter "
+                                       "by ~1/sqrt(n)); measure a larger area",
+                                       r.where(key), key, g.flank.measured->summits));
+    }
+  }
 
   c.operating.pinion_torque = positive_quantity(r, "operating.pinion_torque", Dimension::torque);
   c.operating.pinion_speed = positive_quantity(r, "operating.pinion_speed", Dimension::angular_speed);

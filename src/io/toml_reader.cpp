@@ -137,6 +137,13 @@ long TomlReader::integer(std::string_view key, std::optional<long> fallback) {
   return static_cast<long>(n->as_integer()->get());
 }
 
+bool TomlReader::boolean(std::string_view key, std::optional<bool> fallback) {
+  const toml::node* n = take(key, fallback.has_value(), "true or false");
+  if (!n) return *fallback;
+  if (!n->is_boolean()) fail(key, "expected true or false");
+  return n->as_boolean()->get();
+}
+
 std::string TomlReader::string(std::string_view key, std::optional<std::string> fallback) {
   const toml::node* n = take(key, fallback.has_value(), "a string");
   if (!n) return *fallback;

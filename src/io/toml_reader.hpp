@@ -31,6 +31,7 @@ class TomlReader {
   std::vector<double> quantity_array(std::string_view key, Dimension d);
   double number(std::string_view key, std::optional<double> fallback = std::nullopt);
   long integer(std::string_view key, std::optional<long> fallback = std::nullopt);
+  bool boolean(std::string_view key, std::optional<bool> fallback = std::nullopt);
   std::string string(std::string_view key, std::optional<std::string> fallback = std::nullopt);
   std::vector<std::string> string_array(std::string_view key);
   // The file's text as read.

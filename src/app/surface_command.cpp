@@ -1,0 +1,271 @@
+// `geartrib surface`: measured topography (seed section 4) - synthetic surfaces, statistics,
+// the equivalent surface of two flanks, and the reduction to summits or parabolic cylinders.
+#include "app/commands.hpp"
+
+#include "io/table_writer.hpp"
+#include "io/topography_files.hpp"
+#include "surface/cylinder_reduction.hpp"
+#include "surface/surface_statistics.hpp"
+#include "surface/synthetic_surface.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+#include <numbers>
+
+namespace geartrib::app {
+
+namespace {
+
+double length(const std::string& option, const std::string& text) { return quantity_option(option, text, io::Dimension::length); }
+
+}  // namespace
+
+void add_surface_input_options(CLI::App* cmd, SurfaceInputOptions& o) {
+  cmd->add_option("--unit", o.unit, "Length unit of ASCII files that do not state one in '# units:' (default um)");
+  cmd->add_option("--grid-spacing", o.spacing, "Spacing of height-grid files without a '# spacing:' line (e.g. \"0.5 um\")");
+  cmd->add_option("--resample", o.resample, "Regrid at this spacing: point clouds off a lattice are binned, grids interpolated");
+  cmd->add_option("--form", o.form_degree, "Form removed: least-squares polynomial of this degree (0 none, 1 plane, default 2)")
+      ->check(CLI::Range(0, 6));
+  cmd->add_option("--cutoff", o.cutoff, "Gaussian cut-off separating waviness from roughness (e.g. \"0.25 mm\"; default: no filter)");
+  cmd->add_option("--outliers", o.outliers, "Mask points beyond K robust standard deviations (1.4826 MAD) of the form-free surface");
+  cmd->add_flag("--fill", o.fill, "Fill missing points from their neighbours (default: leave them masked)");
+}
+
+namespace {
+
+io::Table statistics_table(const surface::SurfaceStatistics& s, const surface::CleanupReport* report) {
+  io::Table t;
+  t.header = {"quantity", "value"};
+  auto row = [&](const std::string& n, double v) {
+    t.labels.push_back(n);
+    t.rows.push_back({v});
+  };
+  row("points", static_cast<double>(s.points));
+  if (report) {
+    row("missing_in_file", static_cast<double>(report->missing_in));
+    row("outliers_masked", static_cast<double>(report->outliers));
+    row("points_filled", static_cast<double>(report->filled));
+  }
+  row("missing", static_cast<double>(s.missing));
+  row("Ra_m", s.ra);
+  row("Rq_m", s.rq);
+  row("Rsk", s.rsk);
+  row("Rku", s.rku);
+  row("Rz_m", s.rz);
+  row("lay_angle_deg", s.lay_angle * 180.0 / std::numbers::pi);
+  row("m0_m2", s.m0);
+  row("m2_along_lay", s.m2_along);
+  row("m4_along_lay_1_per_m2", s.m4_along);
+  row("m2_across_lay", s.m2_across);
+  row("m4_across_lay_1_per_m2", s.m4_across);
+  row("summits", static_cast<double>(s.summits));
+  row("summit_density_1_per_m2", s.summit_density);
+  row("summit_radius_m", s.summit_radius);
+  row("summit_mean_height_m", s.summit_mean_height);
+  row("summit_sigma_m", s.summit_sigma);
+  row("mccool_summit_density_1_per_m2", s.mccool_density);
+  row("mccool_summit_radius_m", s.mccool_radius);
+  row("mccool_summit_sigma_m", s.mccool_summit_sigma);
+  return t;
+}
+
+struct GenerateOptions {
+  std::string kind = "self-affine";
+  std::string output;
+  int nx = 0, ny = 0;
+  std::string spacing, rq = "0.3 um", rolloff = "30 um", short_cutoff, wavelength = "5 um", tip_radius = "6.6 um",
+                       noise = "0 um", lay_angle = "0 deg", unit = "um";
+  double hurst = 0.8, anisotropy = 1.0;
+  std::uint64_t seed = 1;
+};
+
+void generate(const GenerateOptions& o) {
+  surface::HeightGrid g;
+  if (o.kind == "self-affine") {
+    surface::SelfAffineSpec s;
+    if (o.nx) s.nx = o.nx;
+    if (o.ny) s.ny = o.ny;
+    if (!o.spacing.empty()) s.spacing = length("--spacing", o.spacing);
+    s.rq = length("--rq", o.rq);
+    s.hurst = o.hurst;
+    s.rolloff_wavelength = length("--rolloff", o.rolloff);
+    s.cutoff_wavelength = o.short_cutoff.empty() ? 4.0 * s.spacing : length("--short-cutoff", o.short_cutoff);
+    s.anisotropy = o.anisotropy;
+    s.lay_angle = quantity_option("--lay-angle", o.lay_angle, io::Dimension::angle);
+    s.seed = o.seed;
+    g = surface::self_affine_surface(s);
+  } else {
+    surface::HobbedSpec s;
+    if (o.nx) s.nx = o.nx;
+    if (o.ny) s.ny = o.ny;
+    if (!o.spacing.empty()) s.spacing = length("--spacing", o.spacing);
+    s.wavelength = length("--wavelength", o.wavelength);
+    s.tip_radius = length("--tip-radius", o.tip_radius);
+    s.noise_rq = length("--noise", o.noise);
+    s.seed = o.seed;
+    g = surface::hobbed_surface(s);
+  }
+  io::write_topography(o.output, g, quantity_option("--unit", "1 " + o.unit, io::Dimension::length));
+}
+
+struct StatsOptions {
+  SurfaceInputOptions input;
+  std::string file;
+  bool csv = false;
+  std::string output;
+};
+
+struct EquivalentOptions {
+  SurfaceInputOptions input;
+  std::string upper, lower, output, unit = "um";
+  bool csv = false;
+};
+
+void equivalent(const EquivalentOptions& o) {
+  const io::LoadedSurface u = load_surface_reporting(o.upper, o.input), d = load_surface_reporting(o.lower, o.input);
+  surface::HeightGrid e;
+  try {
+    e = surface::equivalent_surface(u.grid, d.grid);
+  } catch (const std::invalid_argument& ex) {
+    throw std::invalid_argument(fmt::format("{} and {}: {}", o.upper, o.lower, ex.what()));
+  }
+  io::write_topography(o.output, e, quantity_option("--unit", "1 " + o.unit, io::Dimension::length));
+  io::output_table(statistics_table(surface::surface_statistics(e), nullptr), o.csv, "");
+}
+
+struct AsperityOptions {
+  SurfaceInputOptions input;
+  std::string file;
+  bool cylinders = false;
+  double prominence = 0.5, cap = 0.3;
+  bool csv = false;
+  std::string output;
+};
+
+void asperities(const AsperityOptions& o) {
+  const io::LoadedSurface in = load_surface_reporting(o.file, o.input);
+  const surface::SurfaceStatistics s = surface::surface_statistics(in.grid);
+  io::Table t;
+  if (!o.cylinders) {
+    double mean = 0.0;
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < in.grid.size(); ++k)
+      if (in.grid.valid[k]) mean += in.grid.z[k], ++n;
+    mean /= static_cast<double>(n);
+    t.header = {"x_m", "y_m", "height_m", "radius_m"};
+    for (const auto& p : surface::find_summits(in.grid, mean)) t.rows.push_back({p.x, p.y, p.height, p.radius});
+    fmt::print(stderr,
+               "{} summits: density {:.4g} /mm^2 (McCool {:.4g}), radius {:.4g} um (McCool {:.4g}), height mean {:.4g} um, "
+               "sigma {:.4g} um (McCool {:.4g})\n",
+               s.summits, s.summit_density * 1e-6, s.mccool_density * 1e-6, s.summit_radius * 1e6, s.mccool_radius * 1e6,
+               s.summit_mean_height * 1e6, s.summit_sigma * 1e6, s.mccool_summit_sigma * 1e6);
+  } else {
+    const surface::CylinderReduction r = surface::reduce_to_cylinders(in.grid, s.lay_angle, o.prominence, o.cap);
+    t.header = {"centre_m", "height_m", "tip_radius_m", "spacing_m"};
+    for (const auto& a : r.asperities) t.rows.push_back({a.centre, a.height, a.tip_radius, a.spacing});
+    fmt::print(stderr,
+               "{} cylinder asperities across the lay ({}): tip radius R_m {:.4g} +- {:.3g} um, spacing {:.4g} +- {:.3g} um, "
+               "height {:.4g} +- {:.3g} um\n",
+               r.asperities.size(), r.lay_along_y ? "lay along y, profile along x" : "lay along x, profile along y",
+               r.mean_tip_radius * 1e6, r.sd_tip_radius * 1e6, r.mean_spacing * 1e6, r.sd_spacing * 1e6, r.mean_height * 1e6,
+               r.sd_height * 1e6);
+  }
+  io::output_table(t, o.csv, o.output);
+}
+
+}  // namespace
+
+io::LoadedSurface load_surface_reporting(const std::string& file, const SurfaceInputOptions& o) {
+  io::TopographyReadOptions read;
+  read.unit = quantity_option("--unit", "1 " + o.unit, io::Dimension::length);
+  if (!o.spacing.empty()) read.spacing = length("--grid-spacing", o.spacing) / read.unit;
+  if (!o.resample.empty()) read.resample = length("--resample", o.resample);
+  surface::CleanupOptions clean;
+  clean.form_degree = o.form_degree;
+  if (!o.cutoff.empty()) clean.waviness_cutoff = length("--cutoff", o.cutoff);
+  clean.outlier_limit = o.outliers;
+  clean.fill = o.fill;
+  try {
+    clean.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("surface clean-up options: ") + e.what());
+  }
+  io::LoadedSurface s = io::load_surface(file, read, clean);
+  fmt::print(stderr, "{}: {} x {} points at {:.4g} x {:.4g} um; {} missing in the file, {} outliers masked, {} filled, {} missing\n",
+             file, s.grid.nx, s.grid.ny, s.grid.dx * 1e6, s.grid.dy * 1e6, s.cleanup.missing_in, s.cleanup.outliers,
+             s.cleanup.filled, s.cleanup.missing_out);
+  return s;
+}
+
+void add_surface_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "surface",
+      "Measured topography (seed section 4): generate synthetic surfaces, clean profiler exports, compute Ra, Rq, Rsk,\n"
+      "Rku, Rz, spectral moments along and across the lay, summits beside McCool's predictions, the equivalent surface\n"
+      "of two flanks, and the reduction to parabolic-cylinder asperities.\n"
+      "Formats by extension: .xyz/.asc point clouds (x y z, header lines skipped, 'Bad' or NaN missing), .csv/.txt/.grd\n"
+      "height grids ('# spacing: 0.5 um' and '# units: um' lines), .h5/.hdf5 (/z with attributes dx, dy in m).\n"
+      "Clean-up order: outliers masked, missing filled (--fill), polynomial form removed (--form), waviness filtered (--cutoff).");
+  cmd->require_subcommand(1);
+
+  auto g = std::make_shared<GenerateOptions>();
+  auto* gen = cmd->add_subcommand("generate", "Write a seeded synthetic surface: the test data (no measured flank ships with geartrib)");
+  gen->add_option("kind", g->kind, "self-affine (random-phase, Hurst exponent, roll-off) or hobbed (parallel parabolic ridges)")
+      ->check(CLI::IsMember({"self-affine", "hobbed"}));
+  gen->add_option("-o,--output", g->output, "Surface file to write (format by extension)")->required();
+  gen->add_option("--nx", g->nx, "Points along x (self-affine 256, hobbed 512)")->check(CLI::Range(3, 1 << 14));
+  gen->add_option("--ny", g->ny, "Points along y (self-affine 256, hobbed 64)")->check(CLI::Range(3, 1 << 14));
+  gen->add_option("--spacing", g->spacing, "Grid spacing (self-affine 0.5 um, hobbed 0.1 um)");
+  gen->add_option("--rq", g->rq, "self-affine: root-mean-square height (default 0.3 um)");
+  gen->add_option("--hurst", g->hurst, "self-affine: Hurst exponent H in (0, 1] (default 0.8)");
+  gen->add_option("--rolloff", g->rolloff, "self-affine: roll-off wavelength (default 30 um)");
+  gen->add_option("--short-cutoff", g->short_cutoff, "self-affine: shortest wavelength (default 4 spacings)");
+  gen->add_option("--anisotropy", g->anisotropy, "self-affine: correlation length ratio along/across the lay (default 1)");
+  gen->add_option("--lay-angle", g->lay_angle, "self-affine: lay direction from the x axis (default \"0 deg\")");
+  gen->add_option("--wavelength", g->wavelength, "hobbed: ridge spacing (default 5 um)");
+  gen->add_option("--tip-radius", g->tip_radius, "hobbed: ridge tip radius (default 6.6 um)");
+  gen->add_option("--noise", g->noise, "hobbed: Rq of added Gaussian noise (default 0)");
+  gen->add_option("--seed", g->seed, "Random seed (default 1)");
+  gen->add_option("--unit", g->unit, "Length unit of ASCII output (m, mm, um, nm; default um)");
+  gen->callback([g] { generate(*g); });
+
+  auto s = std::make_shared<StatsOptions>();
+  auto* st = cmd->add_subcommand("stats", "Clean a surface and print its statistics");
+  st->add_option("file", s->file, "Surface file")->required();
+  add_surface_input_options(st, s->input);
+  add_table_options(st, s->csv, s->output);
+  st->callback([s] {
+    const io::LoadedSurface in = load_surface_reporting(s->file, s->input);
+    io::output_table(statistics_table(surface::surface_statistics(in.grid), &in.cleanup), s->csv, s->output);
+  });
+
+  auto e = std::make_shared<EquivalentOptions>();
+  auto* eq = cmd->add_subcommand("equivalent",
+                                 "Equivalent rough surface y_e = y_u + y_d of two facing flanks (upper mirrored in x; grids must align):\n"
+                                 "each is cleaned, the sum written to -o and its statistics printed");
+  eq->add_option("upper", e->upper, "Upper flank surface file")->required();
+  eq->add_option("lower", e->lower, "Lower flank surface file")->required();
+  eq->add_option("-o,--output", e->output, "Equivalent surface file to write (format by extension)")->required();
+  eq->add_option("--out-unit", e->unit, "Length unit of ASCII output (default um)");
+  eq->add_flag("--csv", e->csv, "Statistics as CSV");
+  add_surface_input_options(eq, e->input);
+  eq->callback([e] { equivalent(*e); });
+
+  auto a = std::make_shared<AsperityOptions>();
+  auto* as = cmd->add_subcommand("asperities",
+                                 "Reduce a surface to asperities: its summits (eight-neighbour peaks: position, height, radius), or with\n"
+                                 "--cylinders the profile across the lay cut into parabolic cylinders (the seed's model: centre, tip\n"
+                                 "height, tip radius R_m, spacing). A summary with the distributions goes to stderr.");
+  as->add_option("file", a->file, "Surface file")->required();
+  as->add_flag("--cylinders", a->cylinders, "Parabolic-cylinder asperities across the lay instead of summits");
+  as->add_option("--prominence", a->prominence, "Cylinders: least peak prominence in units of the profile's Rq (default 0.5)")
+      ->check(CLI::Range(0.0, 100.0));
+  as->add_option("--cap", a->cap, "Cylinders: fit each parabola over the top fraction of its prominence (default 0.3)")
+      ->check(CLI::Range(0.05, 1.0));
+  add_surface_input_options(as, a->input);
+  add_table_options(as, a->csv, a->output);
+  as->callback([a] { asperities(*a); });
+}
+
+}  // namespace geartrib::app

@@ -1,0 +1,69 @@
+// A measured or generated surface: heights on a regular grid (row-major, y rows of x), with a
+// mask of valid points, SI units; and the clean-up operations of section 4 of the seed.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace geartrib::surface {
+
+struct HeightGrid {
+  int nx = 0, ny = 0;
+  double dx = 0.0, dy = 0.0;    // spacing [m]
+  std::vector<double> z;        // heights [m], z[j * nx + i] at x = i dx, y = j dy
+  std::vector<std::uint8_t> valid;  // 1 where measured, 0 where missing
+
+  double& at(int i, int j) { return z[static_cast<std::size_t>(j) * nx + i]; }
+  double at(int i, int j) const { return z[static_cast<std::size_t>(j) * nx + i]; }
+  bool ok(int i, int j) const { return valid[static_cast<std::size_t>(j) * nx + i] != 0; }
+  std::size_t size() const { return z.size(); }
+  std::size_t missing() const;
+  void validate() const;  // throws std::invalid_argument (sizes, spacing)
+};
+
+HeightGrid make_grid(int nx, int ny, double dx, double dy);
+
+// Removes the least-squares polynomial form of total degree `degree` (1: plane; 2 or more for a
+// curved flank) fitted to the valid points.
+void remove_form(HeightGrid& g, int degree);
+// Splits roughness from waviness: subtracts the areal Gaussian filter of cut-off lambda_c
+// (ISO 16610-61 weighting, alpha = sqrt(ln 2/pi)), applied separably, renormalised at the edges
+// and over missing points. Returns the waviness that was removed.
+HeightGrid remove_waviness(HeightGrid& g, double cutoff);
+// Marks points farther than k robust standard deviations (1.4826 x MAD) from the median as
+// missing; returns how many.
+std::size_t remove_outliers(HeightGrid& g, double k);
+// Fills missing points by the mean of their valid neighbours, repeated until none is left
+// (a missing region is filled from its edge inward). Throws if no point is valid.
+void fill_missing(HeightGrid& g);
+// Scattered points (x, y, z) [m] binned onto a regular grid of cell size `spacing` starting at the
+// smallest x and y: each cell holds the mean of its points (NaN z: not counted); cells without a
+// point are missing. For point clouds that are not on a lattice (stitched or rotated exports).
+HeightGrid grid_from_points(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z,
+                            double spacing);
+// Bilinear resampling onto spacing `spacing` in both directions over the same extent; a new point
+// is missing when any of its four neighbours is.
+HeightGrid resample(const HeightGrid& g, double spacing);
+
+// The clean-up pipeline of seed section 4, in this order: outliers masked, missing points filled
+// (optional), polynomial form removed, waviness split off by the Gaussian filter (optional).
+struct CleanupOptions {
+  int form_degree = 2;          // 0: none, 1: plane, 2+: polynomial (an involute flank is curved)
+  double waviness_cutoff = 0;   // Gaussian cut-off lambda_c [m]; 0: no filter
+  double outlier_limit = 0;     // k robust standard deviations; 0: keep all points
+  bool fill = false;            // fill missing points (else they stay masked)
+  void validate() const;        // throws std::invalid_argument
+};
+struct CleanupReport {
+  std::size_t missing_in = 0;   // points missing in the input
+  std::size_t outliers = 0;     // points masked as outliers
+  std::size_t filled = 0;       // points filled
+  std::size_t missing_out = 0;  // points still missing
+};
+CleanupReport clean_surface(HeightGrid& g, const CleanupOptions& o);
+
+// The equivalent rough surface of two facing flanks (seed section 4): y_e = y_u mirrored + y_d,
+// the upper grid mirrored in x so that both are seen from the same side. Grids must align.
+HeightGrid equivalent_surface(const HeightGrid& upper, const HeightGrid& lower);
+
+}  // namespace geartrib::surface

@@ -1,0 +1,80 @@
+#include "surface/synthetic_surface.hpp"
+
+#include <fftw3.h>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+
+namespace geartrib::surface {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+}
+
+HeightGrid self_affine_surface(const SelfAffineSpec& s) {
+  if (s.nx < 8 || s.ny < 8 || !(s.spacing > 0.0) || !(s.rq > 0.0)) throw std::invalid_argument("bad self-affine surface size");
+  if (!(s.hurst > 0.0 && s.hurst < 1.0)) throw std::invalid_argument("Hurst exponent must lie in (0, 1)");
+  if (!(s.cutoff_wavelength >= 2.0 * s.spacing && s.rolloff_wavelength > s.cutoff_wavelength))
+    throw std::invalid_argument("need 2 spacings <= cut-off wavelength < roll-off wavelength");
+  if (!(s.anisotropy >= 1.0)) throw std::invalid_argument("anisotropy must be >= 1");
+  const int nx = s.nx, ny = s.ny, nxh = nx / 2 + 1;
+  std::vector<std::complex<double>> spec(static_cast<std::size_t>(ny) * nxh);
+  std::mt19937_64 rng(s.seed);
+  std::uniform_real_distribution<double> phase(0.0, 2.0 * kPi);
+  const double qr = 2.0 * kPi / s.rolloff_wavelength, qs = 2.0 * kPi / s.cutoff_wavelength;
+  const double c = std::cos(s.lay_angle), sn = std::sin(s.lay_angle);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nxh; ++i) {
+      const double qx = 2.0 * kPi * i / (nx * s.spacing);
+      const double qy = 2.0 * kPi * (j <= ny / 2 ? j : j - ny) / (ny * s.spacing);
+      // Wavevector along and across the lay; the lay direction varies slowly (stretched).
+      const double q_along = qx * c + qy * sn, q_across = -qx * sn + qy * c;
+      const double q = std::hypot(s.anisotropy * q_along, q_across);
+      double psd = 0.0;
+      if (q > 0.0 && q <= qs) psd = q < qr ? 1.0 : std::pow(q / qr, -2.0 * (1.0 + s.hurst));
+      // Random phase, amplitude sqrt(C(q)): the realised spectrum is the generating one.
+      spec[static_cast<std::size_t>(j) * nxh + i] = std::sqrt(psd) * std::polar(1.0, phase(rng));
+    }
+  // Hermitian symmetry in the columns that are their own mirror (qx = 0 and, for even nx, the
+  // Nyquist column): the entry at -qy is the conjugate of that at qy, and the self-conjugate
+  // entries are real. Without it the c2r transform keeps only part of these modes' power.
+  for (int i : {0, nx % 2 == 0 ? nx / 2 : -1}) {
+    if (i < 0) continue;
+    auto at = [&](int j) -> std::complex<double>& { return spec[static_cast<std::size_t>(j) * nxh + i]; };
+    for (int j = ny / 2 + 1; j < ny; ++j) at(j) = std::conj(at(ny - j));
+    at(0) = std::abs(at(0));
+    if (ny % 2 == 0) at(ny / 2) = std::abs(at(ny / 2));
+  }
+  std::vector<double> z(static_cast<std::size_t>(nx) * ny);
+  fftw_plan plan = fftw_plan_dft_c2r_2d(ny, nx, reinterpret_cast<fftw_complex*>(spec.data()), z.data(), FFTW_ESTIMATE);
+  fftw_execute(plan);
+  fftw_destroy_plan(plan);
+  double mean = 0.0, var = 0.0;
+  for (double v : z) mean += v;
+  mean /= static_cast<double>(z.size());
+  for (double& v : z) v -= mean, var += v * v;
+  const double scale = s.rq / std::sqrt(var / static_cast<double>(z.size()));
+  HeightGrid g = make_grid(nx, ny, s.spacing, s.spacing);
+  for (std::size_t k = 0; k < z.size(); ++k) g.z[k] = z[k] * scale;
+  return g;
+}
+
+HeightGrid hobbed_surface(const HobbedSpec& s) {
+  if (s.nx < 8 || s.ny < 1 || !(s.spacing > 0.0) || !(s.wavelength > 4.0 * s.spacing) || !(s.tip_radius > 0.0))
+    throw std::invalid_argument("bad hobbed-texture parameters");
+  HeightGrid g = make_grid(s.nx, s.ny, s.spacing, s.spacing);
+  std::mt19937_64 rng(s.seed);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  for (int j = 0; j < s.ny; ++j)
+    for (int i = 0; i < s.nx; ++i) {
+      const double x = i * s.spacing;
+      const double local = std::remainder(x - 0.5 * s.wavelength, s.wavelength);  // distance to the nearest ridge axis
+      g.at(i, j) = -local * local / (2.0 * s.tip_radius) + s.noise_rq * noise(rng);
+    }
+  return g;
+}
+
+}  // namespace geartrib::surface
