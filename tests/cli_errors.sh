@@ -97,6 +97,12 @@ printf "1 2 3\n" > "$tmp/a.dat"
 check surface-unknown-format 2 "unknown topography format" -- "$bin" surface stats "$tmp/a.dat"
 check surface-misaligned 2 "same size and spacing" -- "$bin" surface equivalent "$tmp/a.h5" "$tmp/hob.xyz" -o "$tmp/x.h5"
 [[ ! -e "$tmp/x.h5" ]] && echo "ok   surface-nothing-written-on-error" || { echo "FAIL x.h5 written"; fail=1; }
+printf 'not hdf5\n' > "$tmp/text.h5"
+check surface-not-hdf5 2 "text.h5: .*not a readable HDF5 topography file" -- "$bin" surface stats "$tmp/text.h5"
+/usr/bin/python3 - "$tmp/nodx.h5" <<'PY' 2>/dev/null && check surface-hdf5-no-dx 2 "nodx.h5: .*attribute dx" -- "$bin" surface stats "$tmp/nodx.h5"
+import sys, h5py, numpy
+with h5py.File(sys.argv[1], "w") as f: f["z"] = numpy.zeros((4, 4))
+PY
 check surface-bad-outliers 2 "outlier limit" -- "$bin" surface stats "$tmp/a.h5" --outliers 1
 
 # Bad input: exit 2 with a message naming what is wrong.

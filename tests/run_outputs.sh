@@ -40,6 +40,13 @@ head -1 "$tmp/m6z30.csv" | grep -q "^s_m,roll_angle_rad" && ok csv-header || bad
 # Plots
 "$py" scripts/plot_mesh.py "$tmp/m6z30.h5" "$tmp/plots" >/dev/null && [[ -s "$tmp/plots/overview.png" ]] \
   && [[ $(ls "$tmp/plots"/*.png | wc -l) -ge 20 ]] && ok plots || bad plots
+"$bin" surface clean gears/surfaces/wheel-flank.h5 -o "$tmp/wheel.h5" --form 1 2>/dev/null \
+  && "$py" scripts/plot_surface.py "$tmp/wheel.h5" "$tmp/wheel.png" && [[ -s "$tmp/wheel.png" ]] && ok surface-plot || bad surface-plot
+"$py" - "$tmp/wheel.h5" <<'PY' && ok surface-hdf5-attributes || bad surface-hdf5-attributes
+import sys, h5py
+f = h5py.File(sys.argv[1], "r")
+assert f["z"].attrs["units"] in (b"m", "m") and f["z"].attrs["dx"] == 0.25e-6 and f.attrs["geartrib_version"]
+PY
 
 # Only what the case asks for: real area only, mu = 0 (no side contact), coupled fidelity.
 mkdir -p "$tmp/g"

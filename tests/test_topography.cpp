@@ -289,3 +289,35 @@ TEST(Topography, SpectralMomentsMatchTheGeneratingSpectrum) {
     if (anisotropy > 1.0) EXPECT_LT(angle_difference(s.lay_angle, spec.lay_angle), 2.0 * kDeg);
   }
 }
+
+TEST(Topography, ExtremeSurfacesGiveFiniteStatistics) {
+  // A flat surface: zero roughness, no summits, everything finite; the contact models refuse it.
+  HeightGrid flat = make_grid(16, 16, 1e-6, 1e-6);
+  SurfaceStatistics s = surface_statistics(flat);
+  EXPECT_EQ(s.rq, 0.0);
+  EXPECT_EQ(s.summits, 0u);
+  for (double v : {s.ra, s.rsk, s.rku, s.rz, s.lay_angle, s.m2_along, s.m4_across, s.mccool_density}) EXPECT_TRUE(std::isfinite(v));
+  EXPECT_THROW(measured_roughness(s), std::invalid_argument);
+  // Nanometre and millimetre scales: the statistics scale exactly (heights x k: Rq x k, m2 x k^2,
+  // summit radius / k; a property of the definitions).
+  SelfAffineSpec spec;
+  spec.nx = spec.ny = 64;
+  const HeightGrid g = self_affine_surface(spec);
+  const SurfaceStatistics ref = surface_statistics(g);
+  for (double k : {1e-6, 1e3}) {
+    HeightGrid h = g;
+    for (double& z : h.z) z *= k;
+    const SurfaceStatistics t = surface_statistics(h);
+    EXPECT_NEAR(t.rq / (k * ref.rq), 1.0, 1e-12);
+    EXPECT_NEAR(t.m2_across / (k * k * ref.m2_across), 1.0, 1e-12);
+    EXPECT_NEAR(t.summit_radius * k / ref.summit_radius, 1.0, 1e-12);
+    EXPECT_EQ(t.summits, ref.summits);
+  }
+  // Nearly all points missing: the statistics use the valid ones, or refuse with a clear error.
+  HeightGrid sparse = g;
+  std::fill(sparse.valid.begin(), sparse.valid.end(), 0);
+  EXPECT_THROW(surface_statistics(sparse), std::invalid_argument);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) sparse.valid[static_cast<std::size_t>(j) * sparse.nx + i] = 1;
+  EXPECT_TRUE(std::isfinite(surface_statistics(sparse).rq));
+}

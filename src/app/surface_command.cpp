@@ -218,7 +218,7 @@ void add_surface_command(CLI::App& app) {
   gen->add_option("--ny", g->ny, "Points along y (self-affine 256, hobbed 64)")->check(CLI::Range(3, 1 << 14));
   gen->add_option("--spacing", g->spacing, "Grid spacing (self-affine 0.5 um, hobbed 0.1 um)");
   gen->add_option("--rq", g->rq, "self-affine: root-mean-square height (default 0.3 um)");
-  gen->add_option("--hurst", g->hurst, "self-affine: Hurst exponent H in (0, 1] (default 0.8)");
+  gen->add_option("--hurst", g->hurst, "self-affine: Hurst exponent H in (0, 1) (default 0.8)");
   gen->add_option("--rolloff", g->rolloff, "self-affine: roll-off wavelength (default 30 um)");
   gen->add_option("--short-cutoff", g->short_cutoff, "self-affine: shortest wavelength (default 4 spacings)");
   gen->add_option("--anisotropy", g->anisotropy, "self-affine: correlation length ratio along/across the lay (default 1)");
@@ -238,6 +238,17 @@ void add_surface_command(CLI::App& app) {
   st->callback([s] {
     const io::LoadedSurface in = load_surface_reporting(s->file, s->input);
     io::output_table(statistics_table(surface::surface_statistics(in.grid), &in.cleanup), s->csv, s->output);
+  });
+
+  auto cl = std::make_shared<EquivalentOptions>();  // upper: the input; unit: of the output
+  auto* clean = cmd->add_subcommand("clean", "Clean a surface and write it (any format: also a format converter)");
+  clean->add_option("file", cl->upper, "Surface file")->required();
+  clean->add_option("-o,--output", cl->output, "Cleaned surface file to write (format by extension)")->required();
+  clean->add_option("--out-unit", cl->unit, "Length unit of ASCII output (default um)");
+  add_surface_input_options(clean, cl->input);
+  clean->callback([cl] {
+    const io::LoadedSurface in = load_surface_reporting(cl->upper, cl->input);
+    io::write_topography(cl->output, in.grid, quantity_option("--out-unit", "1 " + cl->unit, io::Dimension::length));
   });
 
   auto e = std::make_shared<EquivalentOptions>();

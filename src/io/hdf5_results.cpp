@@ -1,5 +1,6 @@
 #include "io/hdf5_results.hpp"
 
+#include "io/hdf5_handles.hpp"
 #include "io/table_writer.hpp"
 
 #include <hdf5.h>
@@ -11,40 +12,10 @@ namespace geartrib::io {
 
 namespace {
 
-// Owns an HDF5 identifier and closes it with the matching function.
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
-    if (id < 0) throw std::runtime_error("HDF5: cannot create " + what);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  ~Handle() { close_(id_); }
-  operator hid_t() const { return id_; }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
-
-void check(herr_t status, const std::string& what) {
-  if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
-}
-
-void string_attribute(hid_t obj, const std::string& name, const std::string& value) {
-  Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
-  check(H5Tset_size(type, std::max<std::size_t>(1, value.size())), "H5Tset_size");
-  check(H5Tset_cset(type, H5T_CSET_UTF8), "H5Tset_cset");
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "scalar space");
-  Handle attr(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose, "attribute " + name);
-  check(H5Awrite(attr, type, value.c_str()), "write attribute " + name);
-}
-
-void number_attribute(hid_t obj, const std::string& name, double value) {
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "scalar space");
-  Handle attr(H5Acreate2(obj, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose, "attribute " + name);
-  check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value), "write attribute " + name);
-}
+using hdf5::Handle;
+using hdf5::check;
+using hdf5::number_attribute;
+using hdf5::string_attribute;
 
 void vector_dataset(hid_t group, const std::string& name, const std::vector<double>& values, const std::string& units) {
   const hsize_t n = values.size();

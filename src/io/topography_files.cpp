@@ -1,11 +1,11 @@
 #include "io/topography_files.hpp"
 
+#include "io/hdf5_handles.hpp"
 #include "io/input_error.hpp"
 #include "io/table_writer.hpp"
 #include "io/units.hpp"
 
 #include <fmt/format.h>
-#include <hdf5.h>
 
 #include <algorithm>
 #include <charconv>
@@ -211,35 +211,28 @@ surface::HeightGrid read_grid(const std::filesystem::path& path, const Topograph
 surface::HeightGrid read_hdf5(const std::filesystem::path& path) {
   const std::string file = path.string();
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (f < 0) throw InputError(file, 0, "", "", "cannot open HDF5 topography file");
-  const hid_t d = H5Dopen2(f, "/z", H5P_DEFAULT);
-  if (d < 0) {
-    H5Fclose(f);
-    throw InputError(file, 0, "/z", "", "missing dataset /z (heights [m], ny x nx)");
-  }
-  const hid_t space = H5Dget_space(d);
+  std::vector<double> z;
   hsize_t dims[2] = {0, 0};
-  const int rank = H5Sget_simple_extent_ndims(space);
-  if (rank == 2) H5Sget_simple_extent_dims(space, dims, nullptr);
-  auto attr = [&](const char* name) {
-    double v = 0.0;
-    const hid_t a = H5Aopen(d, name, H5P_DEFAULT);
-    if (a >= 0) {
-      H5Aread(a, H5T_NATIVE_DOUBLE, &v);
-      H5Aclose(a);
-    }
-    return v;
-  };
-  const double dx = attr("dx"), dy = attr("dy");
-  std::vector<double> z(static_cast<std::size_t>(dims[0] * dims[1]));
-  const herr_t status = rank == 2 ? H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, z.data()) : -1;
-  H5Sclose(space);
-  H5Dclose(d);
-  H5Fclose(f);
-  if (status < 0) throw InputError(file, 0, "/z", "", "/z must be a 2-D float dataset");
-  if (!(dx > 0.0)) throw InputError(file, 0, "/z dx", fmt::format("{}", dx), "attribute dx (spacing [m]) must be positive");
-  surface::HeightGrid g = surface::make_grid(static_cast<int>(dims[1]), static_cast<int>(dims[0]), dx, dy > 0.0 ? dy : dx);
+  double dx = 0.0, dy = 0.0;
+  try {
+    hdf5::Handle f(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "file");
+    if (H5Lexists(f, "z", H5P_DEFAULT) <= 0) throw InputError(file, 0, "/z", "", "missing dataset /z (heights [m], ny x nx)");
+    hdf5::Handle d(H5Dopen2(f, "/z", H5P_DEFAULT), H5Dclose, "dataset /z");
+    hdf5::Handle space(H5Dget_space(d), H5Sclose, "dataspace");
+    if (H5Sget_simple_extent_ndims(space) != 2) throw InputError(file, 0, "/z", "", "/z must be a 2-D dataset (ny x nx)");
+    H5Sget_simple_extent_dims(space, dims, nullptr);
+    if (dims[1] < 2 || dims[0] < 1) throw InputError(file, 0, "/z", "", "/z needs at least 2 points along x");
+    if (!hdf5::read_number_attribute(d, "dx", dx) || !(dx > 0.0) || !std::isfinite(dx))
+      throw InputError(file, 0, "/z dx", fmt::format("{}", dx), "attribute dx (spacing [m]) must be a positive number");
+    if (!hdf5::read_number_attribute(d, "dy", dy)) dy = dx;
+    if (!(dy > 0.0) || !std::isfinite(dy)) throw InputError(file, 0, "/z dy", fmt::format("{}", dy), "attribute dy (spacing [m]) must be positive");
+    z.resize(static_cast<std::size_t>(dims[0] * dims[1]));
+    hdf5::check(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, z.data()), "read /z");
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const InputError*>(&e)) throw;
+    throw InputError(file, 0, "", "", std::string("not a readable HDF5 topography file (") + e.what() + ")");
+  }
+  surface::HeightGrid g = surface::make_grid(static_cast<int>(dims[1]), static_cast<int>(dims[0]), dx, dy);
   for (std::size_t k = 0; k < z.size(); ++k) {
     g.valid[k] = !std::isnan(z[k]);
     g.z[k] = std::isnan(z[k]) ? 0.0 : z[k];
@@ -291,26 +284,19 @@ void write_topography(const std::filesystem::path& file, const surface::HeightGr
   if (format == TopographyFormat::hdf5) {
     write_atomically(file, [&](const std::filesystem::path& tmp) {
       H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-      const hid_t f = H5Fcreate(tmp.string().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-      if (f < 0) throw std::runtime_error("cannot create " + tmp.string());
+      hdf5::Handle f(H5Fcreate(tmp.string().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, tmp.string());
+      hdf5::string_attribute(f, "geartrib_version", GEARTRIB_VERSION);
+      hdf5::string_attribute(f, "content", "surface heights z[j][i] at x = i dx, y = j dy; NaN: missing point");
       hsize_t dims[2] = {static_cast<hsize_t>(g.ny), static_cast<hsize_t>(g.nx)};
-      const hid_t space = H5Screate_simple(2, dims, nullptr);
-      const hid_t d = H5Dcreate2(f, "/z", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      hdf5::Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose, "dataspace");
+      hdf5::Handle d(H5Dcreate2(f, "/z", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose, "dataset /z");
       std::vector<double> z(g.z);
       for (std::size_t k = 0; k < z.size(); ++k)
         if (!g.valid[k]) z[k] = kNaN;
-      herr_t st = H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, z.data());
-      const hid_t scalar = H5Screate(H5S_SCALAR);
-      for (auto [name, v] : {std::pair{"dx", g.dx}, std::pair{"dy", g.dy}}) {
-        const hid_t a = H5Acreate2(d, name, H5T_IEEE_F64LE, scalar, H5P_DEFAULT, H5P_DEFAULT);
-        st = std::min(st, H5Awrite(a, H5T_NATIVE_DOUBLE, &v));
-        H5Aclose(a);
-      }
-      H5Sclose(scalar);
-      H5Dclose(d);
-      H5Sclose(space);
-      H5Fclose(f);
-      if (st < 0) throw std::runtime_error("cannot write " + tmp.string());
+      hdf5::check(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, z.data()), "write /z");
+      hdf5::string_attribute(d, "units", "m");  // of z and of the spacings dx, dy
+      hdf5::number_attribute(d, "dx", g.dx);
+      hdf5::number_attribute(d, "dy", g.dy);
     });
     return;
   }

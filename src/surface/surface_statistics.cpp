@@ -55,8 +55,9 @@ SurfaceStatistics surface_statistics(const HeightGrid& g) {
   s.ra = m1 / n;
   s.m0 = m2 / n;
   s.rq = std::sqrt(s.m0);
-  s.rsk = m3 / n / (s.m0 * s.rq);
-  s.rku = m4 / n / (s.m0 * s.m0);
+  // A perfectly flat surface has no shape to its height distribution: Rsk = Rku = 0 (not 0/0).
+  s.rsk = s.m0 > 0.0 ? m3 / n / (s.m0 * s.rq) : 0.0;
+  s.rku = s.m0 > 0.0 ? m4 / n / (s.m0 * s.m0) : 0.0;
 
   // Slope covariance (central differences where both neighbours are valid) -> lay direction.
   double sxx = 0, sxy = 0, syy = 0;

@@ -1,0 +1,31 @@
+// Small RAII layer over the HDF5 C API shared by the HDF5 writers and readers of src/io.
+#pragma once
+
+#include <hdf5.h>
+
+#include <string>
+
+namespace geartrib::io::hdf5 {
+
+// Owns an HDF5 identifier and closes it with the matching function; throws std::runtime_error
+// naming `what` when the identifier is invalid.
+class Handle {
+ public:
+  Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what);
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  ~Handle() { close_(id_); }
+  operator hid_t() const { return id_; }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+void check(herr_t status, const std::string& what);  // throws std::runtime_error when status < 0
+void string_attribute(hid_t obj, const std::string& name, const std::string& value);
+void number_attribute(hid_t obj, const std::string& name, double value);
+// Reads a scalar double attribute; false when it is absent or not numeric.
+bool read_number_attribute(hid_t obj, const std::string& name, double& value);
+
+}  // namespace geartrib::io::hdf5
