@@ -106,6 +106,11 @@ TEST(Topography, EquivalentSurfaceHasTheVarianceOfTheSum) {
       direct += std::pow(u.at(e.nx - 1 - i, j) + d.at(i, j) - dmean, 2);
     }
   EXPECT_NEAR(var / direct, 1.0, 1e-12);
+  // The mirror choices: the point-by-point sums they define.
+  const HeightGrid ey = equivalent_surface(u, d, Mirror::y), en = equivalent_surface(u, d, Mirror::none);
+  EXPECT_EQ(ey.at(3, 5), u.at(3, e.ny - 1 - 5) + d.at(3, 5));
+  EXPECT_EQ(en.at(3, 5), u.at(3, 5) + d.at(3, 5));
+  EXPECT_EQ(e.at(3, 5), u.at(e.nx - 1 - 3, 5) + d.at(3, 5));
   // Independent flanks: var(e) = Rq_u^2 + Rq_d^2 up to the sampled cross term (5%: about three
   // standard errors of the cross term for this many modes).
   EXPECT_NEAR(var / e.size() / (a.rq * a.rq + b.rq * b.rq), 1.0, 0.05);
@@ -145,6 +150,9 @@ TEST(Topography, MalformedFilesNameTheLine) {
   expect_error("all-missing.txt", "# spacing: 1 um\nNaN NaN NaN\nBad Bad Bad\nNaN NaN NaN\n", 4, "too few valid points");
   expect_error("no-spacing.txt", "1 2 3\n4 5 6\n7 8 9\n", 0, "spacing missing");
   expect_error("zero-spacing.txt", "# spacing: 0 um\n1 2 3\n", 1, "spacing must be positive");
+  expect_error("late-units.txt", "# spacing: 1\n1 2 3\n# units: nm\n4 5 6\n", 3, "must come before");
+  expect_error("one-column.txt", "# spacing: 1 um\n1\n2\n3\n", 4, "at least 2 columns");
+  expect_error("bad-unit.xyz", "# units: furlong\n0 0 1\n", 1, "unknown unit");
   expect_error("bad-point.xyz", "Wyko export\nX Y Z\n0 0 1\n1 0 2\n1 oops 3\n", 5, "malformed point");
   expect_error("irregular.xyz", "0 0 1\n1 0 2\n2.5 0 3\n0 1 1\n1 1 2\n2.5 1 3\n0 2 1\n1 2 1\n2.5 2 1\n", 1, "regular grid");
 }

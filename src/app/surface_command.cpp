@@ -118,7 +118,7 @@ struct StatsOptions {
 
 struct EquivalentOptions {
   SurfaceInputOptions input;
-  std::string upper, lower, output, unit = "um";
+  std::string upper, lower, output, unit = "um", mirror = "x";
   bool csv = false;
 };
 
@@ -126,7 +126,8 @@ void equivalent(const EquivalentOptions& o) {
   const io::LoadedSurface u = load_surface_reporting(o.upper, o.input), d = load_surface_reporting(o.lower, o.input);
   surface::HeightGrid e;
   try {
-    e = surface::equivalent_surface(u.grid, d.grid);
+    const auto mirror = o.mirror == "x" ? surface::Mirror::x : o.mirror == "y" ? surface::Mirror::y : surface::Mirror::none;
+    e = surface::equivalent_surface(u.grid, d.grid, mirror);
   } catch (const std::invalid_argument& ex) {
     throw std::invalid_argument(fmt::format("{} and {}: {}", o.upper, o.lower, ex.what()));
   }
@@ -253,12 +254,15 @@ void add_surface_command(CLI::App& app) {
 
   auto e = std::make_shared<EquivalentOptions>();
   auto* eq = cmd->add_subcommand("equivalent",
-                                 "Equivalent rough surface y_e = y_u + y_d of two facing flanks (upper mirrored in x; grids must align):\n"
+                                 "Equivalent rough surface y_e = y_u + y_d of two facing flanks (upper mirrored, in x by default; grids\n"
+                                 "must align): "
                                  "each is cleaned, the sum written to -o and its statistics printed");
   eq->add_option("upper", e->upper, "Upper flank surface file")->required();
   eq->add_option("lower", e->lower, "Lower flank surface file")->required();
   eq->add_option("-o,--output", e->output, "Equivalent surface file to write (format by extension)")->required();
   eq->add_option("--out-unit", e->unit, "Length unit of ASCII output (default um)");
+  eq->add_option("--mirror", e->mirror, "Axis the upper flank is mirrored about: x (default), y, or none (already in the lower's frame)")
+      ->check(CLI::IsMember({"x", "y", "none"}));
   eq->add_flag("--csv", e->csv, "Statistics as CSV");
   add_surface_input_options(eq, e->input);
   eq->callback([e] { equivalent(*e); });

@@ -61,6 +61,20 @@ bool comment_value(const std::string& line, const std::string& key, std::string&
   return true;
 }
 
+// A '# units: <length unit>' line: the unit of the lengths that follow it (heights, coordinates,
+// bare spacings); it must come before them. Returns false for any other line.
+bool units_line(const std::string& line, const std::string& file, int n, bool lengths_seen, double& unit) {
+  std::string value;
+  if (!comment_value(line, "units", value)) return false;
+  if (lengths_seen) throw InputError(file, n, "units", value, "the units line must come before the spacing and the data");
+  try {
+    unit = unit_factor(value, Dimension::length);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(file, n, "units", value, e.what());
+  }
+  return true;
+}
+
 void check_enough(const surface::HeightGrid& g, const std::string& file, int line) {
   if (g.size() - g.missing() < 9)
     throw InputError(file, line, "", "", fmt::format("too few valid points ({} of {}; at least 9 are needed)",
@@ -78,14 +92,7 @@ surface::HeightGrid read_xyz(const std::filesystem::path& path, const Topography
   while (std::getline(in, line)) {
     ++n;
     std::string value;
-    if (comment_value(line, "units", value)) {
-      try {
-        unit = unit_factor(value, Dimension::length);
-      } catch (const std::invalid_argument& e) {
-        throw InputError(file, n, "units", value, e.what());
-      }
-      continue;
-    }
+    if (units_line(line, file, n, first_data != 0, unit)) continue;
     if (!line.empty() && line[0] == '#') continue;
     const auto t = tokens(line);
     if (t.empty()) continue;
@@ -145,7 +152,6 @@ surface::HeightGrid read_grid(const std::filesystem::path& path, const Topograph
   std::ifstream in(path);
   if (!in) throw InputError(file, 0, "", "", "cannot open topography file");
   double unit = o.unit, dx = o.spacing * o.unit, dy = 0.0;
-  bool dx_in_file = false;
   std::vector<std::vector<double>> rows;
   std::string line;
   int n = 0, spacing_line = 0;
@@ -161,16 +167,9 @@ surface::HeightGrid read_grid(const std::filesystem::path& path, const Topograph
         throw InputError(file, n, key, value, e.what());
       }
     };
-    if (comment_value(line, "units", value)) {
-      try {
-        unit = unit_factor(value, Dimension::length);
-      } catch (const std::invalid_argument& e) {
-        throw InputError(file, n, "units", value, e.what());
-      }
-      continue;
-    }
+    if (units_line(line, file, n, !rows.empty() || spacing_line != 0, unit)) continue;
     if (comment_value(line, "spacing", value) || comment_value(line, "dx", value)) {
-      dx = length("spacing"), dx_in_file = true, spacing_line = n;
+      dx = length("spacing"), spacing_line = n;
       if (!(dx > 0.0)) throw InputError(file, n, "spacing", value, "spacing must be positive");
       continue;
     }
@@ -194,8 +193,8 @@ surface::HeightGrid read_grid(const std::filesystem::path& path, const Topograph
     rows.push_back(std::move(row));
   }
   if (rows.empty()) throw InputError(file, n, "", "", "no height rows");
-  if (!(dx > 0.0)) throw InputError(file, spacing_line, "spacing", "", "grid spacing missing: give '# spacing: <length>' or --spacing");
-  (void)dx_in_file;
+  if (!(dx > 0.0)) throw InputError(file, spacing_line, "spacing", "", "grid spacing missing: give '# spacing: <length>' or --grid-spacing");
+  if (rows.front().size() < 2) throw InputError(file, n, "", "", "a height grid needs at least 2 columns");
   surface::HeightGrid g = surface::make_grid(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), dx,
                                              dy > 0.0 ? dy : dx);
   for (int j = 0; j < g.ny; ++j)

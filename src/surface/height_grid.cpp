@@ -239,7 +239,7 @@ CleanupReport clean_surface(HeightGrid& g, const CleanupOptions& o) {
   return r;
 }
 
-HeightGrid equivalent_surface(const HeightGrid& upper, const HeightGrid& lower) {
+HeightGrid equivalent_surface(const HeightGrid& upper, const HeightGrid& lower, Mirror mirror) {
   upper.validate();
   lower.validate();
   if (upper.nx != lower.nx || upper.ny != lower.ny || std::abs(upper.dx / lower.dx - 1.0) > 1e-9 ||
@@ -248,9 +248,9 @@ HeightGrid equivalent_surface(const HeightGrid& upper, const HeightGrid& lower) 
   HeightGrid e = lower;
   for (int j = 0; j < e.ny; ++j)
     for (int i = 0; i < e.nx; ++i) {
-      const int mirrored = e.nx - 1 - i;
-      e.at(i, j) = lower.at(i, j) + upper.at(mirrored, j);
-      e.valid[static_cast<std::size_t>(j) * e.nx + i] = lower.ok(i, j) && upper.ok(mirrored, j);
+      const int iu = mirror == Mirror::x ? e.nx - 1 - i : i, ju = mirror == Mirror::y ? e.ny - 1 - j : j;
+      e.at(i, j) = lower.at(i, j) + upper.at(iu, ju);
+      e.valid[static_cast<std::size_t>(j) * e.nx + i] = lower.ok(i, j) && upper.ok(iu, ju);
     }
   return e;
 }

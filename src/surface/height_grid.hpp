@@ -62,8 +62,10 @@ struct CleanupReport {
 };
 CleanupReport clean_surface(HeightGrid& g, const CleanupOptions& o);
 
-// The equivalent rough surface of two facing flanks (seed section 4): y_e = y_u mirrored + y_d,
-// the upper grid mirrored in x so that both are seen from the same side. Grids must align.
-HeightGrid equivalent_surface(const HeightGrid& upper, const HeightGrid& lower);
+// The equivalent rough surface of two facing flanks (seed section 4): y_e = y_u mirrored + y_d.
+// A surface turned over to face the other is seen mirrored about one in-plane axis: x by
+// default; `none` when the upper export is already in the lower one's frame. Grids must align.
+enum class Mirror { x, y, none };
+HeightGrid equivalent_surface(const HeightGrid& upper, const HeightGrid& lower, Mirror mirror = Mirror::x);
 
 }  // namespace geartrib::surface

@@ -44,7 +44,7 @@ row "hobbed: mean ridge spacing [m]" 5e-6 "$(mean 4)" 0.05
 #    roughness (Gaussian weighting, alpha = sqrt(ln 2 / pi)). Profile of 80 um wavelength and
 #    1 um amplitude over 800 um, filtered at 80 um: the roughness Rq times sqrt(2) is the kept
 #    amplitude (over the whole length, the renormalised edges included: hence 5%).
-awk 'BEGIN { print "# spacing: 0.5 um"; print "# units: um"; pi = atan2(0, -1);
+awk 'BEGIN { print "# units: um"; print "# spacing: 0.5 um"; pi = atan2(0, -1);
   for (j = 0; j < 3; ++j) { line = ""; for (i = 0; i < 1601; ++i) line = line (i ? " " : "") cos(2 * pi * i * 0.5 / 80); print line } }' > "$tmp/wave.txt"
 rq="$("$bin" surface stats "$tmp/wave.txt" --form 0 --cutoff "80 um" --csv 2>/dev/null | awk -F, '$1 == "Rq_m" {print $2}')"
 row "Gaussian filter: amplitude kept at cut-off" 0.5e-6 "$(awk -v r="$rq" 'BEGIN { print r * sqrt(2) }')" 0.05
