@@ -20,6 +20,7 @@ void add_multi_asperity_command(CLI::App& app);
 void add_fit_command(CLI::App& app);
 void add_dynamics_command(CLI::App& app);
 void add_surface_command(CLI::App& app);
+void add_fem_command(CLI::App& app);
 void add_version_command(CLI::App& app);
 
 // The --csv and -o/--output options every table-printing command takes.

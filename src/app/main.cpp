@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   geartrib::app::add_dynamics_command(app);
   geartrib::app::add_fit_command(app);
   geartrib::app::add_surface_command(app);
+  geartrib::app::add_fem_command(app);
   geartrib::app::add_version_command(app);
   try {
     app.parse(argc, argv);

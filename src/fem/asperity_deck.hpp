@@ -1,0 +1,46 @@
+// Finite-element input decks (Abaqus/CalculiX format) for the single-asperity verification of
+// seed section 3: an axisymmetric paraboloid y = -r^2/(2R) pressed by a rigid flat, frictionless,
+// displacement-controlled to a list of delta* = delta/delta_c levels.
+// Units in the deck: mm, N, MPa, with R = 1 mm; the problem is self-similar in R for elastic and
+// rate-independent plastic materials, so the normalised results (F/F_c, A/A_c) hold for any R.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace geartrib::fem {
+
+enum class FemMaterial { elastic, perfectly_plastic, table };
+
+struct SingleAsperitySpec {
+  double modulus = 0.0;         // E/(1 - nu^2) of the deformable asperity = the pair's E_t (Johnson's E*) [Pa]
+  double poisson_ratio = 0.3;
+  double yield_strength = 0.0;  // S_y [Pa]
+  double critical_interference_over_radius = 0.0;  // delta_c / R [-] (Kogut-Etsion's, from the case)
+  FemMaterial material = FemMaterial::elastic;
+  std::vector<std::pair<double, double>> flow_table;  // (stress [Pa], plastic strain [-]) from S_y at 0
+  std::vector<double> delta_star;  // levels, increasing, > 0
+  // Mesh: the element size at the tip is the contact radius at the largest level over `refine`
+  // (n elements across the final contact radius), uniform to 1.6 times that radius, then growing
+  // geometrically by `growth` to a body `size` contact radii wide and deep.
+  int refine = 20;
+  double growth = 1.25;
+  double size = 30.0;
+  void validate() const;  // throws std::invalid_argument
+};
+
+struct SingleAsperityDeck {
+  std::string text;                 // the .inp deck
+  int elements = 0;                 // CAX8 elements of the asperity
+  double tip_element = 0.0;         // element size near the tip [mm]
+  double critical_interference = 0.0;  // delta_c [mm] (R = 1 mm)
+  std::vector<double> top_node_r;   // radial positions of the surface nodes, outward [mm]
+  std::vector<int> top_nodes;       // their node numbers
+  std::vector<std::pair<int, double>> node_depth;  // node -> depth below the apex (undeformed) [mm], for stresses
+  std::vector<std::pair<int, double>> node_r;      // node -> radial position [mm]
+};
+
+SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s);
+
+}  // namespace geartrib::fem

@@ -1,0 +1,202 @@
+#include "fem/ccx_results.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <numbers>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+namespace geartrib::fem {
+
+namespace {
+
+std::string run_capture(const std::string& command) {
+  std::string out;
+  FILE* p = popen(command.c_str(), "r");
+  if (!p) return out;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), static_cast<int>(buf.size()), p)) out += buf.data();
+  pclose(p);
+  return out;
+}
+
+std::string shell_quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+double field(const std::string& line, std::size_t start, std::size_t width) {
+  if (line.size() < start + width) throw std::runtime_error("frd: short line: " + line);
+  return std::stod(line.substr(start, width));
+}
+
+}  // namespace
+
+std::filesystem::path find_ccx() {
+  if (const char* env = std::getenv("GEARTRIB_CCX"); env && *env)  // an explicit choice: that file or none
+    return std::filesystem::exists(env) ? std::filesystem::path(env) : std::filesystem::path();
+  const std::string found = run_capture("command -v ccx 2>/dev/null");
+  if (found.empty()) return {};
+  return std::filesystem::path(found.substr(0, found.find_first_of("\r\n")));
+}
+
+std::string ccx_version(const std::filesystem::path& ccx) {
+  const std::string out = run_capture(shell_quoted(ccx) + " -v 2>&1");
+  std::smatch m;
+  if (std::regex_search(out, m, std::regex(R"(Version\s+([0-9.]+))"))) return "CalculiX " + m[1].str();
+  return "CalculiX (unknown version)";
+}
+
+void run_ccx(const std::filesystem::path& ccx, const std::filesystem::path& dir, const std::string& job) {
+  const std::string log = (dir / (job + ".log")).string();
+  const std::string command = "cd " + shell_quoted(dir) + " && OMP_NUM_THREADS=1 CCX_NPROC_EQUATION_SOLVER=1 " + shell_quoted(ccx) +
+                              " -i " + job + " > " + shell_quoted(log) + " 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream in(log);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  const bool failed = status != 0 || text.find("*ERROR") != std::string::npos || !std::filesystem::exists(dir / (job + ".frd"));
+  if (failed) {
+    const std::string tail = text.size() > 1500 ? text.substr(text.size() - 1500) : text;
+    throw std::runtime_error(fmt::format("ccx failed on {} (exit {}); the end of its output:\n{}", (dir / (job + ".inp")).string(),
+                                         status, tail));
+  }
+}
+
+std::vector<FrdField> read_frd(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot open " + file.string());
+  std::vector<FrdField> out;
+  std::string line;
+  double time = 0.0;
+  FrdField* current = nullptr;
+  while (std::getline(in, line)) {
+    if (line.size() >= 7 && line.compare(2, 5, "100CL") == 0) {
+      std::istringstream t(line.substr(7));
+      int set = 0;
+      t >> set >> time;
+      current = nullptr;
+    } else if (line.rfind(" -4", 0) == 0) {
+      std::istringstream t(line.substr(3));
+      FrdField f;
+      f.time = time;
+      t >> f.name;
+      out.push_back(std::move(f));
+      current = &out.back();
+    } else if (current && line.rfind(" -1", 0) == 0) {
+      const int node = static_cast<int>(field(line, 3, 10));
+      std::vector<double> v;
+      for (std::size_t c = 13; c + 12 <= line.size(); c += 12) v.push_back(field(line, c, 12));
+      current->values.emplace(node, std::move(v));
+    } else if (line.rfind(" -3", 0) == 0) {
+      current = nullptr;
+    }
+  }
+  return out;
+}
+
+std::vector<std::vector<double>> read_dat_totals(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot open " + file.string());
+  std::vector<std::vector<double>> out;
+  std::string line;
+  const std::regex head(R"(total force.*time\s+([-+0-9.eE]+))");
+  std::smatch m;
+  while (std::getline(in, line)) {
+    if (!std::regex_search(line, m, head)) continue;
+    const double t = std::stod(m[1].str());
+    std::string values;
+    while (std::getline(in, values))
+      if (values.find_first_not_of(" \t\r") != std::string::npos) break;
+    std::istringstream v(values);
+    double fx = 0, fy = 0, fz = 0;
+    v >> fx >> fy >> fz;
+    out.push_back({t, fx, fy, fz});
+  }
+  return out;
+}
+
+std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec& spec, const SingleAsperityDeck& deck,
+                                                       const std::filesystem::path& dir, const std::string& job) {
+  const double radius = 1.0, dc = deck.critical_interference;           // [mm]
+  const double e_prime = spec.modulus * 1e-6, sy = spec.yield_strength * 1e-6;  // [MPa]
+  const double fc = 4.0 / 3.0 * e_prime * std::sqrt(radius) * std::pow(dc, 1.5);  // [N]
+  const double ac = std::sqrt(radius * dc), area_c = std::numbers::pi * radius * dc;
+  const auto totals = read_dat_totals(dir / (job + ".dat"));
+  const auto fields = read_frd(dir / (job + ".frd"));
+  std::map<int, double> depth(deck.node_depth.begin(), deck.node_depth.end()), rpos(deck.node_r.begin(), deck.node_r.end());
+  std::vector<SingleAsperityResult> out;
+  for (double level : spec.delta_star) {
+    SingleAsperityResult r;
+    r.delta_star = level;
+    auto at_time = [&](const std::string& name) -> const FrdField* {
+      for (const auto& f : fields)
+        if (f.name == name && std::abs(f.time - level) <= 1e-6 * level) return &f;
+      return nullptr;
+    };
+    const FrdField* disp = at_time("DISP");
+    if (!disp) throw std::runtime_error(fmt::format("ccx wrote no displacements at delta* = {} (did the run stop early?)", level));
+    // Force: ccx expands an axisymmetric model into a 2-degree wedge; its totals are 1/180 of the whole.
+    double force = 0.0;
+    bool found = false;
+    for (const auto& t : totals)
+      if (std::abs(t[0] - level) <= 1e-6 * level) force = std::abs(t[2]) * 180.0, found = true;
+    if (!found) throw std::runtime_error(fmt::format("ccx printed no reaction at delta* = {}", level));
+    r.load_star = force / fc;
+    // Contact radius: gap of the deformed surface to the flat at y = -delta.
+    const double flat = -level * dc;
+    std::vector<double> gap;
+    for (std::size_t k = 0; k < deck.top_nodes.size(); ++k) {
+      const double r0 = deck.top_node_r[k];
+      const auto& u = disp->values.at(deck.top_nodes[k]);
+      gap.push_back(flat - (-r0 * r0 / (2.0 * radius) + u[1]));  // > 0 open, <= 0 touching (penalty penetration)
+    }
+    // The edge: after the last touching node k, the gap opens as (r - a)^(3/2) (Hertz, and the
+    // elastic rim of a plastic contact), so the two first open nodes give a = (x1 - q x2)/(1 - q),
+    // q = (g1/g2)^(2/3), kept between node k and node k+1. (Linear interpolation of the gap puts
+    // the edge at the touching node: up to an element short.)
+    // A node whose gap is below a tenth of the largest penetration counts as touching (penalty
+    // contact leaves such small gaps at the rim).
+    double a = 0.0;
+    auto x = [&](std::size_t k) { return deck.top_node_r[k] + disp->values.at(deck.top_nodes[k])[0]; };
+    const double touch = 0.1 * std::max(0.0, -*std::min_element(gap.begin(), gap.end()));
+    for (std::size_t k = 0; k + 1 < gap.size(); ++k) {
+      if (!(gap[k] <= touch && gap[k + 1] > touch)) continue;
+      a = x(k);
+      if (k + 2 < gap.size() && gap[k + 2] > gap[k + 1]) {
+        const double q = std::pow(gap[k + 1] / gap[k + 2], 2.0 / 3.0);
+        a = std::clamp((x(k + 1) - q * x(k + 2)) / (1.0 - q), x(k), x(k + 1));
+      }
+    }
+    r.contact_radius = a / ac;
+    r.area_star = std::numbers::pi * a * a / area_c;
+    r.mean_pressure_over_yield = a > 0.0 ? force / (std::numbers::pi * a * a) / sy : 0.0;
+    if (const FrdField* stress = at_time("STRESS")) {
+      for (const auto& [node, s] : stress->values) {
+        if (s.size() < 6 || !depth.count(node)) continue;
+        const double vm = std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[2] - s[0]) * (s[2] - s[0])) +
+                                    3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+        if (vm / sy > r.max_von_mises_over_yield) {
+          r.max_von_mises_over_yield = vm / sy;
+          r.max_von_mises_depth = a > 0.0 ? depth[node] / a : 0.0;
+        }
+      }
+    }
+    if (const FrdField* pe = at_time("PE")) {
+      for (const auto& [node, v] : pe->values) {
+        if (v.empty() || !(v[0] > 0.0) || !depth.count(node)) continue;
+        r.plastic_depth = std::max(r.plastic_depth, depth[node] / ac);
+        if (depth[node] == 0.0) r.plastic_surface_radius = std::max(r.plastic_surface_radius, rpos[node] / ac);
+      }
+    }
+    out.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace geartrib::fem

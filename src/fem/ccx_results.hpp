@@ -1,0 +1,53 @@
+// Running CalculiX (`ccx`) on a deck and reading its results: the reaction totals of the .dat
+// file and the nodal displacements, stresses and equivalent plastic strains of the .frd file.
+#pragma once
+
+#include "fem/asperity_deck.hpp"
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace geartrib::fem {
+
+// The ccx executable: $GEARTRIB_CCX when set (empty if that file does not exist), else ccx on
+// PATH; empty when there is none.
+std::filesystem::path find_ccx();
+// "CalculiX 2.20" or the like, from `ccx -v`.
+std::string ccx_version(const std::filesystem::path& ccx);
+
+// Runs `ccx -i <job>` in `dir` (job.inp must be there), one thread; throws std::runtime_error
+// with the tail of ccx's output when it fails or writes no results.
+void run_ccx(const std::filesystem::path& ccx, const std::filesystem::path& dir, const std::string& job);
+
+// One nodal field at one output time: node -> values.
+struct FrdField {
+  double time = 0.0;
+  std::string name;  // DISP, STRESS, PE, ...
+  std::map<int, std::vector<double>> values;
+};
+std::vector<FrdField> read_frd(const std::filesystem::path& file);
+// The "total force" lines of the .dat file for a node set: (time, fx, fy, fz).
+std::vector<std::vector<double>> read_dat_totals(const std::filesystem::path& file);
+
+// Normalised single-asperity results at each level.
+struct SingleAsperityResult {
+  double delta_star = 0.0;
+  double load_star = 0.0;            // F / F_c
+  double area_star = 0.0;            // pi a^2 / A_c
+  double contact_radius = 0.0;       // a / a_c
+  double mean_pressure_over_yield = 0.0;  // F / (pi a^2 S_y)
+  double max_von_mises_over_yield = 0.0;  // largest nodal von Mises / S_y
+  double max_von_mises_depth = 0.0;       // its depth below the apex / a
+  double plastic_depth = 0.0;        // deepest node with PEEQ > 0, / a_c (0: elastic)
+  double plastic_surface_radius = 0.0;  // outermost surface node with PEEQ > 0, / a_c
+};
+
+// Reads a finished single-asperity run (job.dat, job.frd in `dir`). F_c, A_c, a_c are the
+// Hertz values at delta_c for E_t (R = 1 mm); the contact radius is where the deformed surface
+// meets the flat, from the opening of the gap at the first two open surface nodes.
+std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec& spec, const SingleAsperityDeck& deck,
+                                                       const std::filesystem::path& dir, const std::string& job);
+
+}  // namespace geartrib::fem

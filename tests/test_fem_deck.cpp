@@ -1,0 +1,121 @@
+// CalculiX decks and result files, without running ccx: the mesh is valid (positive element
+// areas, the surface on the paraboloid), the deck respects ccx's input limits, and the .frd/.dat
+// readers read the fixed-width formats.
+#include "fem/asperity_deck.hpp"
+#include "fem/ccx_results.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+using namespace geartrib::fem;
+
+namespace {
+SingleAsperitySpec spec() {
+  SingleAsperitySpec s;
+  s.modulus = 113.19e9;
+  s.yield_strength = 418e6;
+  s.critical_interference_over_radius = 8.8e-5;
+  s.delta_star = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+  s.material = FemMaterial::perfectly_plastic;
+  s.refine = 8;
+  return s;
+}
+std::vector<std::string> lines_after(const std::string& text, const std::string& keyword) {
+  std::vector<std::string> out;
+  std::istringstream in(text.substr(text.find(keyword)));
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line) && line[0] != '*') out.push_back(line);
+  return out;
+}
+}  // namespace
+
+TEST(FemDeck, MeshIsValidAndTheSurfaceIsTheParaboloid) {
+  const SingleAsperityDeck d = single_asperity_deck(spec());
+  std::map<int, std::pair<double, double>> node;
+  for (const auto& l : lines_after(d.text, "*NODE, NSET=NASP")) {
+    int id = 0;
+    double x = 0, y = 0;
+    char c = 0;
+    std::istringstream(l) >> id >> c >> x >> c >> y;
+    node[id] = {x, y};
+  }
+  int count = 0;
+  for (const auto& l : lines_after(d.text, "*ELEMENT, TYPE=CAX8")) {
+    std::istringstream in(l);
+    std::vector<int> n;
+    int v = 0;
+    char c = 0;
+    in >> v;
+    while (in >> c >> v) n.push_back(v);
+    ASSERT_EQ(n.size(), 8u);
+    // Counter-clockwise corners: positive shoelace area (ccx: "nonpositive jacobian" otherwise).
+    double area = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const auto [x0, y0] = node.at(n[k]);
+      const auto [x1, y1] = node.at(n[(k + 1) % 4]);
+      area += x0 * y1 - x1 * y0;
+    }
+    EXPECT_GT(area, 0.0);
+    ++count;
+  }
+  EXPECT_EQ(count, d.elements);
+  for (std::size_t k = 0; k < d.top_nodes.size(); ++k) {
+    const auto [x, y] = node.at(d.top_nodes[k]);
+    EXPECT_NEAR(y, -x * x / 2.0, 1e-11 * (x * x + 1e-300));  // y = -r^2/(2R), R = 1 mm; 13 digits printed
+  }
+  // The first surface cell at the axis is tiny (its face collapses in ccx's wedge expansion).
+  EXPECT_LT(d.top_node_r[2], 0.25 * d.tip_element);
+}
+
+TEST(FemDeck, RespectsCcxInputLimits) {
+  const SingleAsperityDeck d = single_asperity_deck(spec());
+  std::istringstream in(d.text);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("**", 0) == 0 || line[0] == '*') continue;
+    std::istringstream f(line);
+    std::string field;
+    while (std::getline(f, field, ',')) EXPECT_LE(field.size(), 21u) << line;  // ccx cuts fields beyond 20 characters
+  }
+  for (const auto& l : lines_after(d.text, "*TIME POINTS")) EXPECT_LE(std::count(l.begin(), l.end(), ',') + 1, 8) << l;
+  EXPECT_EQ(lines_after(d.text, "*TIME POINTS").size(), 2u);  // 10 levels: 8 + 2
+  EXPECT_NE(d.text.find("*STEP, NLGEOM"), std::string::npos);  // plastic runs: large deformation
+  EXPECT_NE(d.text.find("*PLASTIC"), std::string::npos);
+  SingleAsperitySpec bad = spec();
+  bad.delta_star = {2, 1};
+  EXPECT_THROW(single_asperity_deck(bad), std::invalid_argument);
+  bad = spec();
+  bad.delta_star = {1e4};
+  EXPECT_THROW(single_asperity_deck(bad), std::invalid_argument);  // beyond the small-slope paraboloid
+}
+
+TEST(FemResults, ReadsFrdAndDatFormats) {
+  const auto dir = std::filesystem::temp_directory_path();
+  {
+    std::ofstream frd(dir / "geartrib-test.frd");
+    frd << "    1C\n"
+        << "  100CL  101 2.000000000         2                     0    1           1\n"
+        << " -4  DISP        4    1\n"
+        << " -5  D1          1    2    1    0\n"
+        << " -1         1 1.00000E-03-2.50000E-04 0.00000E+00\n"
+        << " -1        12-1.00000E+00 3.00000E+02 0.00000E+00\n"
+        << " -3\n";
+    std::ofstream dat(dir / "geartrib-test.dat");
+    dat << "\n total force (fx,fy,fz) for set NFLAT and time  0.2000000E+01\n\n   1.0E-05  -3.5E+00   0.0E+00\n";
+  }
+  const auto f = read_frd(dir / "geartrib-test.frd");
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].name, "DISP");
+  EXPECT_DOUBLE_EQ(f[0].time, 2.0);
+  EXPECT_DOUBLE_EQ(f[0].values.at(1)[1], -2.5e-4);  // adjacent fixed-width fields without a space
+  EXPECT_DOUBLE_EQ(f[0].values.at(12)[0], -1.0);
+  const auto t = read_dat_totals(dir / "geartrib-test.dat");
+  ASSERT_EQ(t.size(), 1u);
+  EXPECT_DOUBLE_EQ(t[0][0], 2.0);
+  EXPECT_DOUBLE_EQ(t[0][2], -3.5);
+}
