@@ -119,3 +119,15 @@ TEST(FemResults, ReadsFrdAndDatFormats) {
   EXPECT_DOUBLE_EQ(t[0][0], 2.0);
   EXPECT_DOUBLE_EQ(t[0][2], -3.5);
 }
+
+TEST(FemDeck, LevelsAreGroupedIntoRunsThatResolveTheirFirstContact) {
+  const auto runs = plan_runs({1, 2, 6, 10, 20, 50, 100});
+  ASSERT_EQ(runs.size(), 3u);  // [1, 2], [6, 10, 20], [50, 100]: each within a factor 4
+  EXPECT_EQ(runs[0], (std::vector<double>{1, 2}));
+  EXPECT_EQ(runs[1], (std::vector<double>{6, 10, 20}));
+  EXPECT_EQ(runs[2], (std::vector<double>{50, 100}));
+  SingleAsperitySpec s = spec();
+  s.delta_star = {1, 4};
+  const SingleAsperityDeck d = single_asperity_deck(s);
+  EXPECT_NEAR(d.tip_element, std::sqrt(s.critical_interference_over_radius) / s.refine, 1e-15);  // a(delta* = 1) / refine
+}

@@ -45,9 +45,20 @@ void SingleAsperitySpec::validate() const {
   if (delta_star.back() * critical_interference_over_radius > 0.05)
     throw std::invalid_argument("the largest interference exceeds 5% of R: beyond the small-slope paraboloid");
   if (refine < 4 || refine > 400) throw std::invalid_argument("refine (elements across the contact radius) must lie in [4, 400]");
+  if (std::sqrt(delta_star.back() / delta_star.front()) * refine > 400)
+    throw std::invalid_argument("levels too far apart for one mesh (more than 400 elements across the last contact): split the run");
   if (!(growth >= 1.0 && growth <= 2.0)) throw std::invalid_argument("mesh growth must lie in [1, 2]");
   if (!(size >= 5.0)) throw std::invalid_argument("body size must be at least 5 contact radii");
   if (material == FemMaterial::table && flow_table.empty()) throw std::invalid_argument("material 'table' needs a flow table");
+}
+
+std::vector<std::vector<double>> plan_runs(const std::vector<double>& levels, double ratio) {
+  std::vector<std::vector<double>> runs;
+  for (double l : levels) {
+    if (runs.empty() || l > ratio * runs.back().front()) runs.emplace_back();
+    runs.back().push_back(l);
+  }
+  return runs;
 }
 
 SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
@@ -56,7 +67,8 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
   const double radius = 1.0;  // [mm]
   d.critical_interference = s.critical_interference_over_radius * radius;
   const double a_max = std::sqrt(radius * d.critical_interference * s.delta_star.back());  // Hertz radius at the last level
-  const double h0 = a_max / s.refine;
+  const double a_min = std::sqrt(radius * d.critical_interference * s.delta_star.front());
+  const double h0 = a_min / s.refine;
   d.tip_element = h0;
   const std::vector<double> r = graded(std::min(2e-5 * radius, 0.2 * h0), h0, 1.6 * a_max, s.size * a_max, s.growth);
   const std::vector<double> depth = graded(0.0, h0, 1.6 * a_max, s.size * a_max, s.growth);
@@ -67,6 +79,9 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
   std::string& out = d.text;
   out += "** geartrib: single asperity (paraboloid y = -r^2/(2R), R = 1 mm) against a rigid flat\n";
   out += fmt::format("** units mm N MPa; delta_c = {} mm; tip element {} mm; {} x {} CAX8\n", number(d.critical_interference), number(h0), nr, nz);
+  out += "** delta* levels:";
+  for (double l : s.delta_star) out += fmt::format(" {}", l);
+  out += "\n";
   out += "*NODE, NSET=NASP\n";
   for (int j = 0; j <= 2 * nz; ++j)
     for (int i = 0; i < ni; ++i) {
@@ -138,8 +153,11 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
     out += fmt::format("{}{}", number(s.delta_star[k]), (k + 1) % 8 == 0 || k + 1 == s.delta_star.size() ? "\n" : ", ");
   const bool plastic = s.material != FemMaterial::elastic;
   out += plastic ? "*STEP, NLGEOM, INC=2000\n" : "*STEP, INC=2000\n";
-  out += fmt::format("*STATIC\n{}, {}, {}, {}\n", number(std::min(0.25, 0.25 * s.delta_star.front())), number(tmax),
-                     number(1e-6 * tmax), number(std::min(5.0, std::max(0.25, 0.5 * s.delta_star.front()))));
+  // Increments: from a quarter of the first level (at most delta* = 0.5, before first yield), at
+  // most half the first level or a fiftieth of the last, whichever is larger; ccx adapts between.
+  const double dt_max = std::max(0.5 * s.delta_star.front(), tmax / 50.0);
+  out += fmt::format("*STATIC\n{}, {}, {}, {}\n", number(std::min(0.25 * s.delta_star.front(), 0.5)), number(tmax),
+                     number(1e-6 * tmax), number(dt_max));
   out += "*BOUNDARY\nNAXIS, 1, 1, 0.\nNBOTTOM, 2, 2, 0.\nNFLAT, 1, 1, 0.\n";
   out += fmt::format("*BOUNDARY, AMPLITUDE=A\nNFLAT, 2, 2, {}\n", number(-d.critical_interference));
   out += "*NODE PRINT, NSET=NFLAT, TOTALS=ONLY, TIME POINTS=T\nRF\n";

@@ -21,12 +21,13 @@ struct SingleAsperitySpec {
   FemMaterial material = FemMaterial::elastic;
   std::vector<std::pair<double, double>> flow_table;  // (stress [Pa], plastic strain [-]) from S_y at 0
   std::vector<double> delta_star;  // levels, increasing, > 0
-  // Mesh: the element size at the tip is the contact radius at the largest level over `refine`
-  // (n elements across the final contact radius), uniform to 1.6 times that radius, then growing
-  // geometrically by `growth` to a body `size` contact radii wide and deep.
+  // Mesh: the element size at the tip is the Hertz contact radius at the smallest level over
+  // `refine` (n elements across the first contact), uniform to 1.6 times the contact radius at
+  // the largest level, then growing geometrically by `growth` to a body `size` such radii wide
+  // and deep. Levels far apart are better run in groups (plan_runs).
   int refine = 20;
   double growth = 1.25;
-  double size = 30.0;
+  double size = 60.0;
   void validate() const;  // throws std::invalid_argument
 };
 
@@ -42,5 +43,10 @@ struct SingleAsperityDeck {
 };
 
 SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s);
+
+// Splits increasing levels into runs whose largest level is at most `ratio` times the smallest
+// (ratio 4: contact radii within a factor 2), so that each run's mesh resolves its first contact
+// with `refine` elements without a needlessly fine mesh at the last.
+std::vector<std::vector<double>> plan_runs(const std::vector<double>& levels, double ratio = 4.0);
 
 }  // namespace geartrib::fem
