@@ -131,3 +131,56 @@ TEST(FemDeck, LevelsAreGroupedIntoRunsThatResolveTheirFirstContact) {
   const SingleAsperityDeck d = single_asperity_deck(s);
   EXPECT_NEAR(d.tip_element, std::sqrt(s.critical_interference_over_radius) / s.refine, 1e-15);  // a(delta* = 1) / refine
 }
+
+TEST(FemDeck, CylinderMeshIsValidAndFollowsTheProfile) {
+  CylindersSpec s;
+  for (int k = 0; k < 3; ++k) s.cylinders.push_back({(k - 1) * 0.5e-6, k == 1 ? -2e-9 : 0.0, 6.6e-6});
+  s.youngs_modulus = 206e9;
+  s.yield_strength = 418e6;
+  s.unit = 0.5797e-9;
+  s.levels = {2, 4, 6};
+  s.refine = 6;
+  const CylindersDeck d = cylinders_deck(s);
+  std::map<int, std::pair<double, double>> node(d.node_xy.begin(), d.node_xy.end());
+  int count = 0;
+  for (const auto& l : lines_after(d.text, "*ELEMENT, TYPE=CPE8")) {
+    std::istringstream in(l);
+    std::vector<int> n;
+    int v = 0;
+    char c = 0;
+    in >> v;
+    while (in >> c >> v) n.push_back(v);
+    ASSERT_EQ(n.size(), 8u);
+    double area = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const auto [x0, y0] = node.at(n[k]);
+      const auto [x1, y1] = node.at(n[(k + 1) % 4]);
+      area += x0 * y1 - x1 * y0;
+    }
+    EXPECT_GT(area, 0.0);
+    ++count;
+  }
+  EXPECT_EQ(count, d.elements);
+  // The surface is the highest of the parabolas (mm): the middle tip 2 nm low, the outer at 0.
+  for (std::size_t k = 0; k < d.top_x.size(); ++k) {
+    double y = -4e-3;
+    for (const auto& c : s.cylinders) y = std::max(y, c.tip * 1e3 - std::pow(d.top_x[k] - c.centre * 1e3, 2) / (2.0 * c.radius * 1e3));
+    EXPECT_NEAR(d.top_y[k], y, 1e-15);
+  }
+  s.levels = {10000};
+  EXPECT_THROW(cylinders_deck(s), std::invalid_argument);  // approach beyond half the asperity height
+}
+
+TEST(FemResults, ContactIntervalsPlaceTheEdgesWhereTheGapOpens) {
+  // A gap that opens as (|x| - 1)^(3/2) outside a zone of penetration: edges at -1 and 1.
+  std::vector<double> x, gap;
+  for (int i = -30; i <= 30; ++i) {
+    const double xi = 0.1 * i + 0.013;
+    x.push_back(xi);
+    gap.push_back(std::abs(xi) < 1.0 ? -1e-3 * (1.0 - xi * xi) : std::pow(std::abs(xi) - 1.0, 1.5));
+  }
+  const auto zones = contact_intervals(x, gap);
+  ASSERT_EQ(zones.size(), 1u);
+  EXPECT_NEAR(zones[0].first, -1.0, 1e-9);  // exact for the 3/2 power law
+  EXPECT_NEAR(zones[0].second, 1.0, 1e-9);
+}

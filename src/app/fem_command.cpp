@@ -4,6 +4,7 @@
 
 #include "asperity/case_setup.hpp"
 #include "asperity/critical.hpp"
+#include "asperity/cylinder.hpp"
 #include "fem/asperity_deck.hpp"
 #include "fem/ccx_results.hpp"
 #include "io/table_writer.hpp"
@@ -119,6 +120,89 @@ void single_asperity(const SingleOptions& o) {
   if (o.keep_deck.empty()) std::filesystem::remove_all(dir);
 }
 
+struct CylinderOptions {
+  std::string case_file;
+  std::string layout = "HLH";
+  double height_step = 0.0;
+  std::string spacing = "0.5um";
+  std::vector<double> approach{6.0};
+  std::string delta_pc;
+  std::string asperity_height = "4um";
+  std::string depth = "50um";
+  std::string material = "perfectly-plastic";
+  int refine = 10;
+  std::string output;
+  std::string keep_deck;
+};
+
+void three_cylinders(const CylinderOptions& o) {
+  const Case c = load_case_reporting(o.case_file);
+  const double delta_pc = o.delta_pc.empty() ? asperity::seed_critical_interference(asperity::cylinder_asperity(c))
+                                             : quantity_option("--delta-pc", o.delta_pc, io::Dimension::length);
+  const Material& m = c.pinion.material.hardness <= c.wheel.material.hardness ? c.pinion.material : c.wheel.material;
+  if (o.layout.empty() || o.layout.find_first_not_of("HL") != std::string::npos || o.layout.find('H') == std::string::npos)
+    throw std::invalid_argument("--layout must be letters H and L with at least one H (e.g. HLH, H)");
+  fem::CylindersSpec s;
+  const double spacing = quantity_option("--spacing", o.spacing, io::Dimension::length);
+  const int n = static_cast<int>(o.layout.size());
+  for (int k = 0; k < n; ++k)
+    s.cylinders.push_back({(k - 0.5 * (n - 1)) * spacing, o.layout[static_cast<std::size_t>(k)] == 'H' ? 0.0 : -o.height_step * delta_pc,
+                           c.asperity.cylinder_tip_radius});
+  s.asperity_height = quantity_option("--asperity-height", o.asperity_height, io::Dimension::length);
+  s.depth = quantity_option("--depth", o.depth, io::Dimension::length);
+  s.youngs_modulus = m.youngs_modulus;
+  s.poisson_ratio = m.poisson_ratio;
+  s.yield_strength = m.yield_strength;
+  s.material = o.material == "elastic" ? fem::FemMaterial::elastic
+               : o.material == "table" ? fem::FemMaterial::table
+                                       : fem::FemMaterial::perfectly_plastic;
+  s.flow_table.emplace_back(m.yield_strength, 0.0);
+  for (const auto& p : m.flow_curve)
+    if (p.plastic_strain > 0.0) s.flow_table.emplace_back(p.stress, p.plastic_strain);
+  s.unit = delta_pc;
+  s.levels = o.approach;
+  s.refine = o.refine;
+  const fem::CylindersDeck deck = fem::cylinders_deck(s);
+  const std::filesystem::path dir = o.keep_deck.empty() ? std::filesystem::temp_directory_path() / fmt::format("geartrib-fem-{}", getpid())
+                                                        : std::filesystem::path(o.keep_deck);
+  std::filesystem::create_directories(dir);
+  const std::string job = "cylinders";
+  io::write_file_atomically(dir / (job + ".inp"), deck.text);
+  const std::filesystem::path ccx = fem::find_ccx();
+  if (ccx.empty()) {
+    if (o.keep_deck.empty()) std::filesystem::remove_all(dir);
+    throw std::runtime_error(o.keep_deck.empty() ? "ccx (CalculiX) not found: install calculix-ccx (bash scripts/setup.sh does), "
+                                                   "or give --keep-deck DIR to write the deck only"
+                                                 : fmt::format("ccx (CalculiX) not found; the deck is in {}", dir.string()));
+  }
+  fmt::print(stderr, "ccx: {} CPE8, tip element {:.3g} nm, approach to {} x {:.4g} nm\n", deck.elements, deck.tip_element * 1e6,
+             s.levels.back(), delta_pc * 1e9);
+  const auto t0 = std::chrono::steady_clock::now();
+  fem::run_ccx(ccx, dir, job);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto results = fem::read_cylinders(s, deck, dir, job);
+  io::Table t;
+  t.header = {"asperity", "approach_over_delta_pc", "load_N_per_m", "contact_width_m", "max_surface_von_mises_Pa", "max_plastic_strain",
+              "line_load_N_per_m"};
+  for (const auto& r : results)
+    for (std::size_t k = 0; k < r.asperities.size(); ++k) {
+      const auto& a = r.asperities[k];
+      t.labels.push_back(fmt::format("{}{}", k + 1, o.layout[k]));
+      t.rows.push_back({r.level, a.load, a.contact_width, a.max_von_mises, a.max_plastic_strain, r.line_load});
+    }
+  const std::string text = fmt::format(
+      "# source: geartrib {} fem three-cylinders ({}), plane strain CPE8, rigid flat, frictionless, penalty contact\n"
+      "# geometry: layout {}, h_m = {} delta_pc, spacing {:.6g} m, R_m = {:.6g} m, asperity height {:.6g} m, depth {:.6g} m (bottom fixed)\n"
+      "# material: {}, E = {:.6g} GPa, nu = {}, S_y = {:.6g} MPa; delta_pc = {:.6g} m\n"
+      "# mesh: {} CPE8, tip element {:.4g} m; ccx time {:.1f} s\n",
+      GEARTRIB_VERSION, fem::ccx_version(ccx), o.layout, o.height_step, spacing, c.asperity.cylinder_tip_radius, s.asperity_height, s.depth,
+      o.material, m.youngs_modulus * 1e-9, m.poisson_ratio, m.yield_strength * 1e-6, delta_pc, deck.elements, deck.tip_element * 1e-3,
+      seconds) + io::format_csv(t);
+  if (o.output.empty()) std::cout << text;
+  else io::write_file_atomically(o.output, text);
+  if (o.keep_deck.empty()) std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 
 void add_fem_command(CLI::App& app) {
@@ -141,6 +225,30 @@ void add_fem_command(CLI::App& app) {
   single->add_option("-o,--output", o->output, "Write the table here (atomically) instead of stdout");
   single->add_option("--keep-deck", o->keep_deck, "Keep the deck and ccx's files in this folder (written even without ccx)");
   single->callback([o] { single_asperity(*o); });
+
+  auto c = std::make_shared<CylinderOptions>();
+  auto* cyl = cmd->add_subcommand(
+      "three-cylinders",
+      "The seed's section 6 model: parabolic cylinders (R_m from the case) on a base in plane strain, pressed by a rigid\n"
+      "flat to the approaches (in delta_pc); per asperity its load, contact width, surface von Mises and plastic strain,\n"
+      "for comparison with `geartrib multi-asperity`.");
+  cyl->add_option("--case", c->case_file, "Case file for the material and R_m (default: gears/m6z30.toml)");
+  cyl->add_option("--layout", c->layout, "H (high) and L (low) letters, e.g. HLH, LHL, or H alone (default HLH)");
+  cyl->add_option("--height-step", c->height_step, "Height difference h_m of the low asperities, in delta_pc (default 0)")
+      ->check(CLI::Range(0.0, 9.0));
+  cyl->add_option("--spacing", c->spacing, "Distance d_m between neighbouring asperity axes (default 0.5um)");
+  cyl->add_option("--approach", c->approach, "Comma-separated approaches of the flat after touching the high tips, in delta_pc (default 6)")
+      ->delimiter(',');
+  cyl->add_option("--delta-pc", c->delta_pc, "The unit of --height-step and --approach (default: the seed's formula; its tables imply 0.5797nm)");
+  cyl->add_option("--asperity-height", c->asperity_height, "High tips above the base plane (default 4um, assumed)");
+  cyl->add_option("--depth", c->depth, "Body depth below the high tips; its bottom is fixed (default 50um, the BEM's L_ref)");
+  cyl->add_option("--material", c->material, "elastic, perfectly-plastic (default) or table (the case's flow curve)")
+      ->check(CLI::IsMember({"elastic", "perfectly-plastic", "table"}));
+  cyl->add_option("--refine", c->refine, "Elements across the estimated contact half-width sqrt(2 R_m delta) (default 10)")
+      ->check(CLI::Range(4, 200));
+  cyl->add_option("-o,--output", c->output, "Write the table here (atomically) instead of stdout");
+  cyl->add_option("--keep-deck", c->keep_deck, "Keep the deck and ccx's files in this folder (written even without ccx)");
+  cyl->callback([c] { three_cylinders(*c); });
 }
 
 }  // namespace geartrib::app

@@ -1,4 +1,5 @@
 #include "fem/asperity_deck.hpp"
+#include "fem/deck_format.hpp"
 
 #include <fmt/format.h>
 
@@ -8,30 +9,6 @@
 
 namespace geartrib::fem {
 
-namespace {
-
-// Graded 1-D grid: 0, a tiny first cell `first` (an axis face that collapses in CalculiX's wedge
-// expansion must carry almost no area), uniform cells h0 to `fine`, then cells growing by
-// `growth` to `total`.
-std::vector<double> graded(double first, double h0, double fine, double total, double growth) {
-  std::vector<double> x{0.0};
-  if (first > 0.0) x.push_back(first);
-  while (x.back() + 0.5 * h0 < fine) x.push_back(x.back() + h0);
-  double h = h0;
-  while (x.back() < total) {
-    h *= growth;
-    x.push_back(x.back() + h);
-  }
-  return x;
-}
-
-std::string number(double v) { return fmt::format("{:.12e}", v); }  // 19 characters: ccx cuts fields beyond 20
-
-void write_ids(std::string& out, const std::vector<int>& ids) {
-  for (std::size_t k = 0; k < ids.size(); ++k) out += fmt::format("{}{}", ids[k], (k + 1) % 10 == 0 || k + 1 == ids.size() ? "\n" : ", ");
-}
-
-}  // namespace
 
 void SingleAsperitySpec::validate() const {
   if (!(modulus > 0.0) || !(yield_strength > 0.0) || !(poisson_ratio > 0.0 && poisson_ratio < 0.5))
@@ -70,15 +47,15 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
   const double a_min = std::sqrt(radius * d.critical_interference * s.delta_star.front());
   const double h0 = a_min / s.refine;
   d.tip_element = h0;
-  const std::vector<double> r = graded(std::min(2e-5 * radius, 0.2 * h0), h0, 1.6 * a_max, s.size * a_max, s.growth);
-  const std::vector<double> depth = graded(0.0, h0, 1.6 * a_max, s.size * a_max, s.growth);
+  const std::vector<double> r = graded_grid(std::min(2e-5 * radius, 0.2 * h0), h0, 1.6 * a_max, s.size * a_max, s.growth);
+  const std::vector<double> depth = graded_grid(0.0, h0, 1.6 * a_max, s.size * a_max, s.growth);
   const int nr = static_cast<int>(r.size()) - 1, nz = static_cast<int>(depth.size()) - 1;
   const int ni = 2 * nr + 1;  // lattice points across (corners and midsides)
   auto lattice = [](const std::vector<double>& x, int i) { return i % 2 == 0 ? x[i / 2] : 0.5 * (x[i / 2] + x[i / 2 + 1]); };
   auto id = [&](int i, int j) { return j * ni + i + 1; };  // j = 0 at the surface, downward
   std::string& out = d.text;
   out += "** geartrib: single asperity (paraboloid y = -r^2/(2R), R = 1 mm) against a rigid flat\n";
-  out += fmt::format("** units mm N MPa; delta_c = {} mm; tip element {} mm; {} x {} CAX8\n", number(d.critical_interference), number(h0), nr, nz);
+  out += fmt::format("** units mm N MPa; delta_c = {} mm; tip element {} mm; {} x {} CAX8\n", deck_number(d.critical_interference), deck_number(h0), nr, nz);
   out += "** delta* levels:";
   for (double l : s.delta_star) out += fmt::format(" {}", l);
   out += "\n";
@@ -87,7 +64,7 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
     for (int i = 0; i < ni; ++i) {
       if (i % 2 == 1 && j % 2 == 1) continue;  // element centres are not nodes of CAX8
       const double rr = lattice(r, i), dd = lattice(depth, j);
-      out += fmt::format("{}, {}, {}\n", id(i, j), number(rr), number(-rr * rr / (2.0 * radius) - dd));
+      out += fmt::format("{}, {}, {}\n", id(i, j), deck_number(rr), deck_number(-rr * rr / (2.0 * radius) - dd));
       d.node_depth.emplace_back(id(i, j), dd);
       d.node_r.emplace_back(id(i, j), rr);
       if (j == 0) d.top_nodes.push_back(id(i, j)), d.top_node_r.push_back(rr);
@@ -101,8 +78,8 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
   out += "*NODE, NSET=NFLAT\n";
   for (int row = 0; row < 2; ++row)
     for (std::size_t i = 0; i < rf.size(); ++i)
-      out += fmt::format("{}, {}, {}\n", flat0 + row * static_cast<int>(rf.size()) + static_cast<int>(i), number(rf[i]),
-                         number(row * thickness));
+      out += fmt::format("{}, {}, {}\n", flat0 + row * static_cast<int>(rf.size()) + static_cast<int>(i), deck_number(rf[i]),
+                         deck_number(row * thickness));
   out += "*ELEMENT, TYPE=CAX8, ELSET=EASP\n";
   int e = 0;
   std::vector<int> top_elements;
@@ -124,42 +101,42 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
   for (int j = 0; j <= 2 * nz; ++j) axis.push_back(id(0, j));
   for (int i = 0; i < ni; ++i) bottom.push_back(id(i, 2 * nz));
   out += "*NSET, NSET=NAXIS\n";
-  write_ids(out, axis);
+  write_id_lines(out, axis);
   out += "*NSET, NSET=NBOTTOM\n";
-  write_ids(out, bottom);
+  write_id_lines(out, bottom);
   out += "*SURFACE, NAME=SASP, TYPE=ELEMENT\n";
   for (int t : top_elements) out += fmt::format("{}, S3\n", t);
   out += "*SURFACE, NAME=SFLAT, TYPE=ELEMENT\n";
   for (int i = 0; i + 1 < nf; ++i) out += fmt::format("{}, S1\n", e + 1 + i);
   // Materials: the asperity's E = E'(1 - nu^2) so that E/(1 - nu^2) is the pair's E'.
   const double nu = s.poisson_ratio, e_mpa = s.modulus * (1.0 - nu * nu) * 1e-6, sy = s.yield_strength * 1e-6;
-  out += fmt::format("*MATERIAL, NAME=ASPERITY\n*ELASTIC\n{}, {}\n", number(e_mpa), nu);
+  out += fmt::format("*MATERIAL, NAME=ASPERITY\n*ELASTIC\n{}, {}\n", deck_number(e_mpa), nu);
   if (s.material == FemMaterial::perfectly_plastic) {
-    out += fmt::format("*PLASTIC\n{}, 0.\n", number(sy));
+    out += fmt::format("*PLASTIC\n{}, 0.\n", deck_number(sy));
   } else if (s.material == FemMaterial::table) {
     out += "*PLASTIC\n";
-    for (const auto& [stress, strain] : s.flow_table) out += fmt::format("{}, {}\n", number(stress * 1e-6), number(strain));
+    for (const auto& [stress, strain] : s.flow_table) out += fmt::format("{}, {}\n", deck_number(stress * 1e-6), deck_number(strain));
   }
-  out += fmt::format("*MATERIAL, NAME=FLAT\n*ELASTIC\n{}, {}\n", number(e_mpa), nu);
+  out += fmt::format("*MATERIAL, NAME=FLAT\n*ELASTIC\n{}, {}\n", deck_number(e_mpa), nu);
   out += "*SOLID SECTION, ELSET=EASP, MATERIAL=ASPERITY\n*SOLID SECTION, ELSET=EFLAT, MATERIAL=FLAT\n";
   // Penalty contact: penetration about 0.1% of delta_c at the first-yield pressure ~1.6 S_y.
   const double penalty = 1e3 * 1.6 * sy / d.critical_interference;
-  out += fmt::format("*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n{}\n", number(penalty));
+  out += fmt::format("*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n{}\n", deck_number(penalty));
   out += "*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE\nSASP, SFLAT\n";
   const double tmax = s.delta_star.back();
-  out += fmt::format("*AMPLITUDE, NAME=A\n0., 0., {}, {}\n", number(tmax), number(tmax));
+  out += fmt::format("*AMPLITUDE, NAME=A\n0., 0., {}, {}\n", deck_number(tmax), deck_number(tmax));
   out += "*TIME POINTS, NAME=T\n";
   for (std::size_t k = 0; k < s.delta_star.size(); ++k)  // at most 8 values per line (ccx ignores the rest)
-    out += fmt::format("{}{}", number(s.delta_star[k]), (k + 1) % 8 == 0 || k + 1 == s.delta_star.size() ? "\n" : ", ");
+    out += fmt::format("{}{}", deck_number(s.delta_star[k]), (k + 1) % 8 == 0 || k + 1 == s.delta_star.size() ? "\n" : ", ");
   const bool plastic = s.material != FemMaterial::elastic;
   out += plastic ? "*STEP, NLGEOM, INC=2000\n" : "*STEP, INC=2000\n";
   // Increments: from a quarter of the first level (at most delta* = 0.5, before first yield), at
   // most half the first level or a fiftieth of the last, whichever is larger; ccx adapts between.
   const double dt_max = std::max(0.5 * s.delta_star.front(), tmax / 50.0);
-  out += fmt::format("*STATIC\n{}, {}, {}, {}\n", number(std::min(0.25 * s.delta_star.front(), 0.5)), number(tmax),
-                     number(1e-6 * tmax), number(dt_max));
+  out += fmt::format("*STATIC\n{}, {}, {}, {}\n", deck_number(std::min(0.25 * s.delta_star.front(), 0.5)), deck_number(tmax),
+                     deck_number(1e-6 * tmax), deck_number(dt_max));
   out += "*BOUNDARY\nNAXIS, 1, 1, 0.\nNBOTTOM, 2, 2, 0.\nNFLAT, 1, 1, 0.\n";
-  out += fmt::format("*BOUNDARY, AMPLITUDE=A\nNFLAT, 2, 2, {}\n", number(-d.critical_interference));
+  out += fmt::format("*BOUNDARY, AMPLITUDE=A\nNFLAT, 2, 2, {}\n", deck_number(-d.critical_interference));
   out += "*NODE PRINT, NSET=NFLAT, TOTALS=ONLY, TIME POINTS=T\nRF\n";
   out += "*NODE FILE, TIME POINTS=T\nU\n";
   out += plastic ? "*EL FILE, TIME POINTS=T\nS, PEEQ\n" : "*EL FILE, TIME POINTS=T\nS\n";

@@ -121,6 +121,55 @@ std::vector<std::vector<double>> read_dat_totals(const std::filesystem::path& fi
   return out;
 }
 
+std::vector<DatForces> read_dat_forces(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot open " + file.string());
+  std::vector<DatForces> out;
+  std::string line;
+  const std::regex head(R"(^\s*forces \(fx,fy,fz\) for set (\S+) and time\s+([-+0-9.eE]+))");
+  std::smatch m;
+  DatForces* current = nullptr;
+  while (std::getline(in, line)) {
+    if (std::regex_search(line, m, head)) {
+      out.push_back({m[1].str(), std::stod(m[2].str()), {}});
+      current = &out.back();
+      continue;
+    }
+    if (!current) continue;
+    std::istringstream v(line);
+    int node = 0;
+    std::array<double, 3> f{};
+    if (v >> node >> f[0] >> f[1] >> f[2]) current->forces[node] = f;
+    else if (line.find_first_not_of(" \t\r") != std::string::npos) current = nullptr;
+  }
+  return out;
+}
+
+std::vector<std::pair<double, double>> contact_intervals(const std::vector<double>& x, const std::vector<double>& gap) {
+  std::vector<std::pair<double, double>> out;
+  if (gap.empty()) return out;
+  const double touch = 0.1 * std::max(0.0, -*std::min_element(gap.begin(), gap.end()));
+  auto edge = [&](std::size_t k, int dir) {  // k touching, k + dir and k + 2 dir open
+    const std::size_t k1 = k + dir, k2 = k + 2 * dir;
+    double e = x[k];
+    if (k2 < x.size() && gap[k2] > gap[k1]) {
+      const double q = std::pow(gap[k1] / gap[k2], 2.0 / 3.0);
+      e = (x[k1] - q * x[k2]) / (1.0 - q);
+      e = std::clamp(e, std::min(x[k], x[k1]), std::max(x[k], x[k1]));
+    }
+    return e;
+  };
+  for (std::size_t k = 0; k < gap.size(); ++k) {
+    if (gap[k] > touch) continue;
+    const std::size_t first = k;
+    while (k + 1 < gap.size() && gap[k + 1] <= touch) ++k;
+    const double left = first == 0 ? x[0] : edge(first, -1);
+    const double right = k + 1 == gap.size() ? x[k] : edge(k, +1);
+    out.emplace_back(left, right);
+  }
+  return out;
+}
+
 std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec& spec, const SingleAsperityDeck& deck,
                                                        const std::filesystem::path& dir, const std::string& job) {
   const double radius = 1.0, dc = deck.critical_interference;           // [mm]
@@ -156,23 +205,10 @@ std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec&
       const auto& u = disp->values.at(deck.top_nodes[k]);
       gap.push_back(flat - (-r0 * r0 / (2.0 * radius) + u[1]));  // > 0 open, <= 0 touching (penalty penetration)
     }
-    // The edge: after the last touching node k, the gap opens as (r - a)^(3/2) (Hertz, and the
-    // elastic rim of a plastic contact), so the two first open nodes give a = (x1 - q x2)/(1 - q),
-    // q = (g1/g2)^(2/3), kept between node k and node k+1. (Linear interpolation of the gap puts
-    // the edge at the touching node: up to an element short.)
-    // A node whose gap is below a tenth of the largest penetration counts as touching (penalty
-    // contact leaves such small gaps at the rim).
-    double a = 0.0;
-    auto x = [&](std::size_t k) { return deck.top_node_r[k] + disp->values.at(deck.top_nodes[k])[0]; };
-    const double touch = 0.1 * std::max(0.0, -*std::min_element(gap.begin(), gap.end()));
-    for (std::size_t k = 0; k + 1 < gap.size(); ++k) {
-      if (!(gap[k] <= touch && gap[k + 1] > touch)) continue;
-      a = x(k);
-      if (k + 2 < gap.size() && gap[k + 2] > gap[k + 1]) {
-        const double q = std::pow(gap[k + 1] / gap[k + 2], 2.0 / 3.0);
-        a = std::clamp((x(k + 1) - q * x(k + 2)) / (1.0 - q), x(k), x(k + 1));
-      }
-    }
+    std::vector<double> xs;
+    for (std::size_t k = 0; k < deck.top_nodes.size(); ++k) xs.push_back(deck.top_node_r[k] + disp->values.at(deck.top_nodes[k])[0]);
+    const auto zones = contact_intervals(xs, gap);
+    const double a = zones.empty() ? 0.0 : zones.back().second;  // outermost edge (the zone starts on the axis)
     r.contact_radius = a / ac;
     r.area_star = std::numbers::pi * a * a / area_c;
     r.mean_pressure_over_yield = a > 0.0 ? force / (std::numbers::pi * a * a) / sy : 0.0;
@@ -194,6 +230,82 @@ std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec&
         if (depth[node] == 0.0) r.plastic_surface_radius = std::max(r.plastic_surface_radius, rpos[node] / ac);
       }
     }
+    out.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace geartrib::fem
+
+namespace geartrib::fem {
+
+std::vector<CylinderLevelResult> read_cylinders(const CylindersSpec& spec, const CylindersDeck& deck, const std::filesystem::path& dir,
+                                                const std::string& job) {
+  const double mm = 1e-3;  // deck millimetres -> metres
+  const auto fields = read_frd(dir / (job + ".frd"));
+  const auto forces = read_dat_forces(dir / (job + ".dat"));
+  const std::size_t n = spec.cylinders.size();
+  // Each asperity's share runs to the midpoints between axes [mm].
+  std::vector<double> lo(n), hi(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    lo[k] = k == 0 ? -1e300 : 0.5 * (spec.cylinders[k - 1].centre + spec.cylinders[k].centre) / mm;
+    hi[k] = k + 1 == n ? 1e300 : 0.5 * (spec.cylinders[k].centre + spec.cylinders[k + 1].centre) / mm;
+  }
+  auto share = [&](double x) {
+    for (std::size_t k = 0; k < n; ++k)
+      if (x >= lo[k] && x < hi[k]) return k;
+    return n - 1;
+  };
+  std::vector<CylinderLevelResult> out;
+  for (double level : spec.levels) {
+    auto at_time = [&](const std::string& name) -> const FrdField* {
+      for (const auto& f : fields)
+        if (f.name == name && std::abs(f.time - level) <= 1e-6 * level) return &f;
+      return nullptr;
+    };
+    const FrdField* disp = at_time("DISP");
+    if (!disp) throw std::runtime_error(fmt::format("ccx wrote no displacements at level {} (did the run stop early?)", level));
+    CylinderLevelResult r;
+    r.level = level;
+    r.asperities.resize(n);
+    // Loads: the flat's nodal reactions [N per mm of length] -> N/m.
+    for (const auto& f : forces)
+      if (f.set == "NCONTACT" && std::abs(f.time - level) <= 1e-6 * level)
+        for (const auto& [node, v] : f.forces) {
+          const auto it = std::find_if(deck.flat_nodes.begin(), deck.flat_nodes.end(), [&](const auto& p) { return p.first == node; });
+          if (it == deck.flat_nodes.end()) continue;
+          r.asperities[share(it->second)].load += -v[1] * 1e3;
+          r.line_load += -v[1] * 1e3;
+        }
+    // Contact widths from the deformed surface against the flat at y = -approach.
+    const double flat = -level * spec.unit / mm;
+    std::vector<double> xs, gap;
+    for (std::size_t k = 0; k < deck.top_nodes.size(); ++k) {
+      const auto& u = disp->values.at(deck.top_nodes[k]);
+      xs.push_back(deck.top_x[k] + u[0]);
+      gap.push_back(flat - (deck.top_y[k] + u[1]));
+    }
+    for (const auto& [a, b] : contact_intervals(xs, gap)) r.asperities[share(0.5 * (a + b))].contact_width += (b - a) * mm;
+    // Stresses: largest von Mises within one contact width of each asperity's surface.
+    if (const FrdField* stress = at_time("STRESS")) {
+      for (std::size_t q = 0; q < deck.node_xy.size(); ++q) {
+        const auto& [node, xy] = deck.node_xy[q];
+        const auto it = stress->values.find(node);
+        if (it == stress->values.end() || it->second.size() < 6) continue;
+        const std::size_t k = share(xy.first);
+        if (deck.node_depth[q] > std::max(r.asperities[k].contact_width / mm, 2.0 * deck.tip_element)) continue;
+        const auto& s = it->second;
+        const double vm = std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[2] - s[0]) * (s[2] - s[0])) +
+                                    3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5])) * 1e6;
+        r.asperities[k].max_von_mises = std::max(r.asperities[k].max_von_mises, vm);
+      }
+    }
+    if (const FrdField* pe = at_time("PE"))
+      for (const auto& [node, xy] : deck.node_xy) {
+        const auto it = pe->values.find(node);
+        if (it != pe->values.end() && !it->second.empty())
+          r.asperities[share(xy.first)].max_plastic_strain = std::max(r.asperities[share(xy.first)].max_plastic_strain, it->second[0]);
+      }
     out.push_back(r);
   }
   return out;

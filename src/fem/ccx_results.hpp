@@ -3,8 +3,10 @@
 #pragma once
 
 #include "fem/asperity_deck.hpp"
+#include "fem/cylinder_deck.hpp"
 
 #include <filesystem>
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -31,6 +33,19 @@ std::vector<FrdField> read_frd(const std::filesystem::path& file);
 // The "total force" lines of the .dat file for a node set: (time, fx, fy, fz).
 std::vector<std::vector<double>> read_dat_totals(const std::filesystem::path& file);
 
+// Per-node forces printed by *NODE PRINT (no totals) for one node set at one time.
+struct DatForces {
+  std::string set;
+  double time = 0.0;
+  std::map<int, std::array<double, 3>> forces;
+};
+std::vector<DatForces> read_dat_forces(const std::filesystem::path& file);
+
+// Contact zones along a surface: the intervals of touching nodes (gap below a tenth of the
+// largest penetration), each edge placed where the gap of the first two open nodes, opening as
+// (x - edge)^(3/2), extrapolates to zero (kept between the last touching and first open node).
+std::vector<std::pair<double, double>> contact_intervals(const std::vector<double>& x, const std::vector<double>& gap);
+
 // Normalised single-asperity results at each level.
 struct SingleAsperityResult {
   double delta_star = 0.0;
@@ -49,5 +64,20 @@ struct SingleAsperityResult {
 // meets the flat, from the opening of the gap at the first two open surface nodes.
 std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec& spec, const SingleAsperityDeck& deck,
                                                        const std::filesystem::path& dir, const std::string& job);
+
+// Three-cylinder results per level and asperity (SI).
+struct CylinderLevelResult {
+  double level = 0.0;                 // approach in the spec's unit
+  double line_load = 0.0;             // total [N/m]
+  struct Asperity {
+    double load = 0.0;                // [N/m], from the flat's nodal reactions over its share
+    double contact_width = 0.0;       // [m]
+    double max_von_mises = 0.0;       // within one contact width (at least one element) of its surface [Pa]
+    double max_plastic_strain = 0.0;  // equivalent plastic strain in its share
+  };
+  std::vector<Asperity> asperities;
+};
+std::vector<CylinderLevelResult> read_cylinders(const CylindersSpec& spec, const CylindersDeck& deck, const std::filesystem::path& dir,
+                                                const std::string& job);
 
 }  // namespace geartrib::fem
