@@ -10,11 +10,15 @@ bin="$1"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 fail=0
 if ! command -v ccx >/dev/null; then echo "FAIL ccx not installed (bash scripts/setup.sh installs calculix-ccx)"; exit 1; fi
-"$bin" fem single-asperity --material elastic --delta-star 1,2 --refine 10 -o "$tmp/hertz.csv" || { echo "FAIL ccx run"; exit 1; }
+"$bin" fem single-asperity --material elastic --delta-star 1,2 --refine 10 -o "$tmp/hertz.csv" --details "$tmp/details.csv" \
+  || { echo "FAIL ccx run"; exit 1; }
 grep -q '^# source: geartrib .* fem single-asperity (CalculiX' "$tmp/hertz.csv" && echo "ok   provenance" || { echo "FAIL provenance"; fail=1; }
-/usr/bin/python3 - "$tmp/hertz.csv" <<'PY' || fail=1
+/usr/bin/python3 - "$tmp/hertz.csv" "$tmp/details.csv" <<'PY' || fail=1
 import csv, sys
 rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+details = list(csv.DictReader(l for l in open(sys.argv[2]) if not l.startswith("#")))
+for r, d in zip(rows, details):
+    r.update(d)
 assert len(rows) == 2, rows
 bad = 0
 for r in rows:
@@ -44,6 +48,9 @@ for r in rows:
     print(f"{'ok  ' if ok else 'FAIL'} cylinder approach {r['approach_over_delta_pc']} delta_pc: width {width:.5g} m, Hertz {hertz:.5g} m ({100 * err:+.2f}%)")
 sys.exit(1 if bad or len(rows) != 2 else 0)
 PY
+# The table is fit-ready: `geartrib fit` reads it (the continuous model against the elastic run).
+"$bin" fit --model continuous --data "$tmp/hertz.csv" --free area_scale --observe area_star -q -o "$tmp/fit.toml" \
+  && echo "ok   fit-reads-table" || { echo "FAIL fit-reads-table"; fail=1; }
 # Without ccx: the deck is written, the message names what is missing, exit non-zero.
 out="$(GEARTRIB_CCX=/nonexistent/ccx "$bin" fem single-asperity --delta-star 1 --keep-deck "$tmp/deck" 2>&1)"; status=$?
 if [[ $status -ne 0 && -s "$tmp/deck/single_asperity_1.inp" && "$out" == *"ccx (CalculiX) not found"* ]]; then echo "ok   deck-without-ccx"

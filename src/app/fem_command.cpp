@@ -28,6 +28,7 @@ struct SingleOptions {
   int refine = 10;
   bool convergence = false;
   std::string output;
+  std::string details;
   std::string keep_deck;
 };
 
@@ -98,12 +99,16 @@ void single_asperity(const SingleOptions& o) {
                                                  : fmt::format("ccx (CalculiX) not found; the decks are in {}", dir.string()));
   }
   for (const auto& l : convergence_lines) fmt::print(stderr, "{}\n", l.substr(2));
-  io::Table t;
-  t.header = {"delta_star", "load_star", "area_star", "mean_pressure_over_yield", "contact_radius_over_ac", "max_von_mises_over_yield",
-              "max_von_mises_depth_over_a", "plastic_depth_over_ac", "plastic_surface_radius_over_ac"};
-  for (const auto& r : rows)
-    t.rows.push_back({r.delta_star, r.load_star, r.area_star, r.mean_pressure_over_yield, r.contact_radius, r.max_von_mises_over_yield,
-                      r.max_von_mises_depth, r.plastic_depth, r.plastic_surface_radius});
+  // The reference table in `geartrib fit`'s format; the other figures go to --details.
+  io::Table t, details;
+  t.header = {"delta_star", "load_star", "area_star", "mean_pressure_over_yield"};
+  details.header = {"delta_star", "contact_radius_over_ac", "max_von_mises_over_yield", "max_von_mises_depth_over_a",
+                    "plastic_depth_over_ac", "plastic_surface_radius_over_ac"};
+  for (const auto& r : rows) {
+    t.rows.push_back({r.delta_star, r.load_star, r.area_star, r.mean_pressure_over_yield});
+    details.rows.push_back({r.delta_star, r.contact_radius, r.max_von_mises_over_yield, r.max_von_mises_depth, r.plastic_depth,
+                            r.plastic_surface_radius});
+  }
   std::string text = fmt::format(
       "# source: geartrib {} fem single-asperity ({}), axisymmetric paraboloid against a rigid flat, frictionless, penalty contact\n"
       "# material: {}, E/(1-nu^2) = {:.6g} GPa, nu = {}, S_y = {:.6g} MPa{}\n"
@@ -114,9 +119,9 @@ void single_asperity(const SingleOptions& o) {
   for (const auto& l : mesh_lines) text += l + "\n";
   for (const auto& l : convergence_lines) text += l + "\n";
   text += fmt::format("# ccx time: {:.1f} s\n", seconds);
-  text += io::format_csv(t);
-  if (o.output.empty()) std::cout << text;
-  else io::write_file_atomically(o.output, text);
+  if (o.output.empty()) std::cout << text + io::format_csv(t);
+  else io::write_file_atomically(o.output, text + io::format_csv(t));
+  if (!o.details.empty()) io::write_file_atomically(o.details, text + io::format_csv(details));
   if (o.keep_deck.empty()) std::filesystem::remove_all(dir);
 }
 
@@ -212,8 +217,8 @@ void add_fem_command(CLI::App& app) {
   auto* single = cmd->add_subcommand(
       "single-asperity",
       "Axisymmetric paraboloid of the case's equivalent radius pressed by a rigid flat, frictionless, displacement-controlled\n"
-      "to the delta* levels; prints load*, area*, mean pressure / S_y, the largest von Mises stress and its depth, and the\n"
-      "plastic zone, with provenance lines, in the reference-table format of `geartrib fit`.");
+      "to the delta* levels; prints load*, area* and mean pressure / S_y with provenance lines, in the reference-table\n"
+      "format of `geartrib fit` (--details: contact radius, largest von Mises stress and its depth, plastic zone).");
   single->add_option("--case", o->case_file, "Case file for the material and radius (default: gears/m6z30.toml)");
   single->add_option("--material", o->material, "elastic, perfectly-plastic (default) or table (the case's flow curve)")
       ->check(CLI::IsMember({"elastic", "perfectly-plastic", "table"}));
@@ -223,6 +228,8 @@ void add_fem_command(CLI::App& app) {
   single->add_flag("--convergence", o->convergence, "Also run each mesh at about 1/2 and 1/sqrt2 of the refinement and report the\n"
                                                     "changes in load* and area* (stderr and provenance lines)");
   single->add_option("-o,--output", o->output, "Write the table here (atomically) instead of stdout");
+  single->add_option("--details", o->details, "Also write the contact radius, the largest von Mises stress and its depth, and the\n"
+                                               "plastic zone's depth and surface radius per level to this CSV");
   single->add_option("--keep-deck", o->keep_deck, "Keep the deck and ccx's files in this folder (written even without ccx)");
   single->callback([o] { single_asperity(*o); });
 
