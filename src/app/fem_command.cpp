@@ -102,11 +102,11 @@ void single_asperity(const SingleOptions& o) {
   // The reference table in `geartrib fit`'s format; the other figures go to --details.
   io::Table t, details;
   t.header = {"delta_star", "load_star", "area_star", "mean_pressure_over_yield"};
-  details.header = {"delta_star", "contact_radius_over_ac", "max_von_mises_over_yield", "max_von_mises_depth_over_a",
+  details.header = {"delta_star", "contact_radius_over_ac", "max_pressure_over_yield", "max_von_mises_over_yield", "max_von_mises_depth_over_a",
                     "plastic_depth_over_ac", "plastic_surface_radius_over_ac"};
   for (const auto& r : rows) {
     t.rows.push_back({r.delta_star, r.load_star, r.area_star, r.mean_pressure_over_yield});
-    details.rows.push_back({r.delta_star, r.contact_radius, r.max_von_mises_over_yield, r.max_von_mises_depth, r.plastic_depth,
+    details.rows.push_back({r.delta_star, r.contact_radius, r.max_pressure_over_yield, r.max_von_mises_over_yield, r.max_von_mises_depth, r.plastic_depth,
                             r.plastic_surface_radius});
   }
   std::string text = fmt::format(

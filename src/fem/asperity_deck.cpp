@@ -76,6 +76,7 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
     if (rf.empty() || rf.back() < 2.0 * a_max) rf.push_back(x);
   const double thickness = 1.6 * a_max;
   out += "*NODE, NSET=NFLAT\n";
+  for (std::size_t i = 0; i < rf.size(); ++i) d.flat_nodes.emplace_back(flat0 + static_cast<int>(i), rf[i]);
   for (int row = 0; row < 2; ++row)
     for (std::size_t i = 0; i < rf.size(); ++i)
       out += fmt::format("{}, {}, {}\n", flat0 + row * static_cast<int>(rf.size()) + static_cast<int>(i), deck_number(rf[i]),
@@ -104,6 +105,10 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
   write_id_lines(out, axis);
   out += "*NSET, NSET=NBOTTOM\n";
   write_id_lines(out, bottom);
+  out += "*NSET, NSET=NCONTACT\n";
+  std::vector<int> contact_nodes;
+  for (const auto& fn : d.flat_nodes) contact_nodes.push_back(fn.first);
+  write_id_lines(out, contact_nodes);
   out += "*SURFACE, NAME=SASP, TYPE=ELEMENT\n";
   for (int t : top_elements) out += fmt::format("{}, S3\n", t);
   out += "*SURFACE, NAME=SFLAT, TYPE=ELEMENT\n";
@@ -138,6 +143,7 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
   out += "*BOUNDARY\nNAXIS, 1, 1, 0.\nNBOTTOM, 2, 2, 0.\nNFLAT, 1, 1, 0.\n";
   out += fmt::format("*BOUNDARY, AMPLITUDE=A\nNFLAT, 2, 2, {}\n", deck_number(-d.critical_interference));
   out += "*NODE PRINT, NSET=NFLAT, TOTALS=ONLY, TIME POINTS=T\nRF\n";
+  out += "*NODE PRINT, NSET=NCONTACT, TIME POINTS=T\nRF\n";
   out += "*NODE FILE, TIME POINTS=T\nU\n";
   out += plastic ? "*EL FILE, TIME POINTS=T\nS, PEEQ\n" : "*EL FILE, TIME POINTS=T\nS\n";
   out += "*END STEP\n";

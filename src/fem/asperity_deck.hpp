@@ -40,6 +40,7 @@ struct SingleAsperityDeck {
   std::vector<int> top_nodes;       // their node numbers
   std::vector<std::pair<int, double>> node_depth;  // node -> depth below the apex (undeformed) [mm], for stresses
   std::vector<std::pair<int, double>> node_r;      // node -> radial position [mm]
+  std::vector<std::pair<int, double>> flat_nodes;  // the flat's contact-face nodes and their radii [mm]
 };
 
 SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s);

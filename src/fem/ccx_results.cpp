@@ -177,6 +177,7 @@ std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec&
   const double fc = 4.0 / 3.0 * e_prime * std::sqrt(radius) * std::pow(dc, 1.5);  // [N]
   const double ac = std::sqrt(radius * dc), area_c = std::numbers::pi * radius * dc;
   const auto totals = read_dat_totals(dir / (job + ".dat"));
+  const auto forces = read_dat_forces(dir / (job + ".dat"));
   const auto fields = read_frd(dir / (job + ".frd"));
   std::map<int, double> depth(deck.node_depth.begin(), deck.node_depth.end()), rpos(deck.node_r.begin(), deck.node_r.end());
   std::vector<SingleAsperityResult> out;
@@ -212,6 +213,18 @@ std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec&
     r.contact_radius = a / ac;
     r.area_star = std::numbers::pi * a * a / area_c;
     r.mean_pressure_over_yield = a > 0.0 ? force / (std::numbers::pi * a * a) / sy : 0.0;
+    // Peak pressure: each flat node's reaction (x 180: the wedge) over its ring of the flat,
+    // between the midpoints to its neighbours; the axis node's tiny ring is left out.
+    const auto& fn = deck.flat_nodes;
+    for (const auto& f : forces)
+      if (f.set == "NCONTACT" && std::abs(f.time - level) <= 1e-6 * level)
+        for (std::size_t k = 2; k + 1 < fn.size(); ++k) {
+          const auto it = f.forces.find(fn[k].first);
+          if (it == f.forces.end()) continue;
+          const double r0 = 0.5 * (fn[k - 1].second + fn[k].second), r1 = 0.5 * (fn[k].second + fn[k + 1].second);
+          const double p = std::abs(it->second[1]) * 180.0 / (std::numbers::pi * (r1 * r1 - r0 * r0));
+          r.max_pressure_over_yield = std::max(r.max_pressure_over_yield, p / sy);
+        }
     if (const FrdField* stress = at_time("STRESS")) {
       for (const auto& [node, s] : stress->values) {
         if (s.size() < 6 || !depth.count(node)) continue;

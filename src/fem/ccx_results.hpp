@@ -53,6 +53,7 @@ struct SingleAsperityResult {
   double area_star = 0.0;            // pi a^2 / A_c
   double contact_radius = 0.0;       // a / a_c
   double mean_pressure_over_yield = 0.0;  // F / (pi a^2 S_y)
+  double max_pressure_over_yield = 0.0;   // largest nodal reaction of the flat over its ring area, / S_y (axis node excluded)
   double max_von_mises_over_yield = 0.0;  // largest nodal von Mises / S_y
   double max_von_mises_depth = 0.0;       // its depth below the apex / a
   double plastic_depth = 0.0;        // deepest node with PEEQ > 0, / a_c (0: elastic)

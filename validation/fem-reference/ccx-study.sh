@@ -7,6 +7,6 @@
 set -euo pipefail
 bin="$1"
 here="$(cd "$(dirname "$0")" && pwd)"
-"$bin" fem single-asperity --material elastic --delta-star 1,2,6,10 --refine 20 --convergence -o "$here/ccx-elastic.csv"
-"$bin" fem single-asperity --material perfectly-plastic --delta-star 1,2,6,10,20,50,100 --refine 10 -o "$here/ccx-perfectly-plastic.csv"
-"$bin" fem single-asperity --material table --delta-star 1,2,6,10,20,50,100 --refine 10 -o "$here/ccx-hardening.csv"
+"$bin" fem single-asperity --material elastic --delta-star 1,2,6,10 --refine 20 --convergence -o "$here/ccx-elastic.csv" --details "$here/ccx-elastic-details.csv"
+"$bin" fem single-asperity --material perfectly-plastic --delta-star 1,2,6,10,20,50,100 --refine 10 -o "$here/ccx-perfectly-plastic.csv" --details "$here/ccx-perfectly-plastic-details.csv"
+"$bin" fem single-asperity --material table --delta-star 1,2,6,10,20,50,100 --refine 10 -o "$here/ccx-hardening.csv" --details "$here/ccx-hardening-details.csv"
