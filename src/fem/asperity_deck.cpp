@@ -113,40 +113,21 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
   for (int t : top_elements) out += fmt::format("{}, S3\n", t);
   out += "*SURFACE, NAME=SFLAT, TYPE=ELEMENT\n";
   for (int i = 0; i + 1 < nf; ++i) out += fmt::format("{}, S1\n", e + 1 + i);
-  // Materials: the asperity's E = E'(1 - nu^2) so that E/(1 - nu^2) is the pair's E'.
-  const double nu = s.poisson_ratio, e_mpa = s.modulus * (1.0 - nu * nu) * 1e-6, sy = s.yield_strength * 1e-6;
-  out += fmt::format("*MATERIAL, NAME=ASPERITY\n*ELASTIC\n{}, {}\n", deck_number(e_mpa), nu);
-  if (s.material == FemMaterial::perfectly_plastic) {
-    out += fmt::format("*PLASTIC\n{}, 0.\n", deck_number(sy));
-  } else if (s.material == FemMaterial::table) {
-    out += "*PLASTIC\n";
-    for (const auto& [stress, strain] : s.flow_table) out += fmt::format("{}, {}\n", deck_number(stress * 1e-6), deck_number(strain));
-  }
-  out += fmt::format("*MATERIAL, NAME=FLAT\n*ELASTIC\n{}, {}\n", deck_number(e_mpa), nu);
-  out += "*SOLID SECTION, ELSET=EASP, MATERIAL=ASPERITY\n*SOLID SECTION, ELSET=EFLAT, MATERIAL=FLAT\n";
-  // Penalty contact: penetration about 0.1% of delta_c at the first-yield pressure ~1.6 S_y.
-  const double penalty = 1e3 * 1.6 * sy / d.critical_interference;
-  out += fmt::format("*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n{}\n", deck_number(penalty));
-  out += "*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE\nSASP, SFLAT\n";
-  const double tmax = s.delta_star.back();
-  out += fmt::format("*AMPLITUDE, NAME=A\n0., 0., {}, {}\n", deck_number(tmax), deck_number(tmax));
-  out += "*TIME POINTS, NAME=T\n";
-  for (std::size_t k = 0; k < s.delta_star.size(); ++k)  // at most 8 values per line (ccx ignores the rest)
-    out += fmt::format("{}{}", deck_number(s.delta_star[k]), (k + 1) % 8 == 0 || k + 1 == s.delta_star.size() ? "\n" : ", ");
-  const bool plastic = s.material != FemMaterial::elastic;
-  out += plastic ? "*STEP, NLGEOM, INC=2000\n" : "*STEP, INC=2000\n";
+  // Materials: the asperity's E = E_t (1 - nu^2), so that E/(1 - nu^2) is the pair's E_t.
+  const double nu = s.poisson_ratio, sy = s.yield_strength * 1e-6;
+  write_materials(out, "EASP", s.modulus * (1.0 - nu * nu), nu, s.material, s.yield_strength, s.flow_table, "");
+  RigidFlatStep step;
+  step.slave = "SASP";
+  step.penalty = 1e3 * 1.6 * sy / d.critical_interference;  // penetration ~0.1% of delta_c at the first-yield pressure ~1.6 S_y
+  step.levels = s.delta_star;
   // Increments: from a quarter of the first level (at most delta* = 0.5, before first yield), at
   // most half the first level or a fiftieth of the last, whichever is larger; ccx adapts between.
-  const double dt_max = std::max(0.5 * s.delta_star.front(), tmax / 50.0);
-  out += fmt::format("*STATIC\n{}, {}, {}, {}\n", deck_number(std::min(0.25 * s.delta_star.front(), 0.5)), deck_number(tmax),
-                     deck_number(1e-6 * tmax), deck_number(dt_max));
-  out += "*BOUNDARY\nNAXIS, 1, 1, 0.\nNBOTTOM, 2, 2, 0.\nNFLAT, 1, 1, 0.\n";
-  out += fmt::format("*BOUNDARY, AMPLITUDE=A\nNFLAT, 2, 2, {}\n", deck_number(-d.critical_interference));
-  out += "*NODE PRINT, NSET=NFLAT, TOTALS=ONLY, TIME POINTS=T\nRF\n";
-  out += "*NODE PRINT, NSET=NCONTACT, TIME POINTS=T\nRF\n";
-  out += "*NODE FILE, TIME POINTS=T\nU\n";
-  out += plastic ? "*EL FILE, TIME POINTS=T\nS, PEEQ\n" : "*EL FILE, TIME POINTS=T\nS\n";
-  out += "*END STEP\n";
+  step.initial_increment = std::min(0.25 * s.delta_star.front(), 0.5);
+  step.max_increment = std::max(0.5 * s.delta_star.front(), s.delta_star.back() / 50.0);
+  step.plastic = s.material != FemMaterial::elastic;
+  step.supports = "NAXIS, 1, 1, 0.\nNBOTTOM, 2, 2, 0.\n";
+  step.displacement_per_level = d.critical_interference;
+  write_rigid_flat_step(out, step);
   return d;
 }
 

@@ -5,13 +5,13 @@
 // rate-independent plastic materials, so the normalised results (F/F_c, A/A_c) hold for any R.
 #pragma once
 
+#include "fem/deck_format.hpp"
+
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace geartrib::fem {
-
-enum class FemMaterial { elastic, perfectly_plastic, table };
 
 struct SingleAsperitySpec {
   double modulus = 0.0;         // E/(1 - nu^2) of the deformable asperity = the pair's E_t (Johnson's E*) [Pa]

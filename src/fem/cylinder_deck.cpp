@@ -117,35 +117,17 @@ CylindersDeck cylinders_deck(const CylindersSpec& s) {
   for (int el : top_elements) t += fmt::format("{}, S3\n", el);
   t += "*SURFACE, NAME=SFLAT, TYPE=ELEMENT\n";
   for (int i = 0; i + 1 < nf; ++i) t += fmt::format("{}, S1\n", e + 1 + i);
-  const double e_mpa = s.youngs_modulus * 1e-6, sy = s.yield_strength * 1e-6, nu = s.poisson_ratio;
-  t += fmt::format("*MATERIAL, NAME=ASPERITY\n*ELASTIC\n{}, {}\n", deck_number(e_mpa), nu);
-  if (s.material == FemMaterial::perfectly_plastic) t += fmt::format("*PLASTIC\n{}, 0.\n", deck_number(sy));
-  if (s.material == FemMaterial::table) {
-    t += "*PLASTIC\n";
-    for (const auto& [stress, strain] : s.flow_table) t += fmt::format("{}, {}\n", deck_number(stress * 1e-6), deck_number(strain));
-  }
-  t += fmt::format("*MATERIAL, NAME=FLAT\n*ELASTIC\n{}, {}\n", deck_number(e_mpa), nu);
-  t += "*SOLID SECTION, ELSET=EBODY, MATERIAL=ASPERITY\n1.\n*SOLID SECTION, ELSET=EFLAT, MATERIAL=FLAT\n1.\n";
-  // Penalty: penetration about 0.1% of the approach at the plane-strain first-yield pressure ~1.8 S_y.
-  const double penalty = 1e3 * 1.8 * sy / approach;
-  t += fmt::format("*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n{}\n", deck_number(penalty));
-  t += "*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE\nSBODY, SFLAT\n";
-  const double tmax = s.levels.back();
-  t += fmt::format("*AMPLITUDE, NAME=A\n0., 0., {}, {}\n", deck_number(tmax), deck_number(tmax));
-  t += "*TIME POINTS, NAME=T\n";
-  for (std::size_t k = 0; k < s.levels.size(); ++k)
-    t += fmt::format("{}{}", deck_number(s.levels[k]), (k + 1) % 8 == 0 || k + 1 == s.levels.size() ? "\n" : ", ");
-  const bool plastic = s.material != FemMaterial::elastic;
-  t += plastic ? "*STEP, NLGEOM, INC=2000\n" : "*STEP, INC=2000\n";
-  t += fmt::format("*STATIC\n{}, {}, {}, {}\n", deck_number(std::min(0.1 * tmax, 0.25 * s.levels.front())), deck_number(tmax),
-                   deck_number(1e-6 * tmax), deck_number(std::max(0.5 * s.levels.front(), tmax / 20.0)));
-  t += "*BOUNDARY\nNBOTTOM, 1, 2, 0.\nNFLAT, 1, 1, 0.\n";
-  t += fmt::format("*BOUNDARY, AMPLITUDE=A\nNFLAT, 2, 2, {}\n", deck_number(-s.unit * mm));
-  t += "*NODE PRINT, NSET=NCONTACT, TIME POINTS=T\nRF\n";
-  t += "*NODE PRINT, NSET=NFLAT, TOTALS=ONLY, TIME POINTS=T\nRF\n";
-  t += "*NODE FILE, TIME POINTS=T\nU\n";
-  t += plastic ? "*EL FILE, TIME POINTS=T\nS, PEEQ\n" : "*EL FILE, TIME POINTS=T\nS\n";
-  t += "*END STEP\n";
+  write_materials(t, "EBODY", s.youngs_modulus, s.poisson_ratio, s.material, s.yield_strength, s.flow_table, "1.\n");
+  RigidFlatStep step;
+  step.slave = "SBODY";
+  step.penalty = 1e3 * 1.8 * s.yield_strength * 1e-6 / approach;  // penetration ~0.1% of the approach at ~1.8 S_y (plane-strain yield)
+  step.levels = s.levels;
+  step.initial_increment = std::min(0.1 * s.levels.back(), 0.25 * s.levels.front());
+  step.max_increment = std::max(0.5 * s.levels.front(), s.levels.back() / 20.0);
+  step.plastic = s.material != FemMaterial::elastic;
+  step.supports = "NBOTTOM, 1, 2, 0.\n";
+  step.displacement_per_level = s.unit * mm;
+  write_rigid_flat_step(t, step);
   return d;
 }
 

@@ -22,4 +22,38 @@ void write_id_lines(std::string& out, const std::vector<int>& ids) {
   for (std::size_t k = 0; k < ids.size(); ++k) out += fmt::format("{}{}", ids[k], (k + 1) % 10 == 0 || k + 1 == ids.size() ? "\n" : ", ");
 }
 
+void write_materials(std::string& out, const std::string& body_set, double youngs_modulus, double poisson_ratio, FemMaterial material,
+                     double yield_strength, const std::vector<std::pair<double, double>>& flow_table, const std::string& section_line) {
+  const std::string elastic = fmt::format("*ELASTIC\n{}, {}\n", deck_number(youngs_modulus * 1e-6), poisson_ratio);
+  out += "*MATERIAL, NAME=ASPERITY\n" + elastic;
+  if (material == FemMaterial::perfectly_plastic) out += fmt::format("*PLASTIC\n{}, 0.\n", deck_number(yield_strength * 1e-6));
+  if (material == FemMaterial::table) {
+    out += "*PLASTIC\n";
+    for (const auto& [stress, strain] : flow_table) out += fmt::format("{}, {}\n", deck_number(stress * 1e-6), deck_number(strain));
+  }
+  out += "*MATERIAL, NAME=FLAT\n" + elastic;
+  out += "*SOLID SECTION, ELSET=" + body_set + ", MATERIAL=ASPERITY\n" + section_line;
+  out += "*SOLID SECTION, ELSET=EFLAT, MATERIAL=FLAT\n" + section_line;
+}
+
+void write_rigid_flat_step(std::string& out, const RigidFlatStep& s) {
+  out += fmt::format("*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n{}\n", deck_number(s.penalty));
+  out += "*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE\n" + s.slave + ", SFLAT\n";
+  const double tmax = s.levels.back();
+  out += fmt::format("*AMPLITUDE, NAME=A\n0., 0., {}, {}\n", deck_number(tmax), deck_number(tmax));
+  out += "*TIME POINTS, NAME=T\n";
+  for (std::size_t k = 0; k < s.levels.size(); ++k)  // at most 8 values per line (ccx ignores the rest)
+    out += fmt::format("{}{}", deck_number(s.levels[k]), (k + 1) % 8 == 0 || k + 1 == s.levels.size() ? "\n" : ", ");
+  out += s.plastic ? "*STEP, NLGEOM, INC=2000\n" : "*STEP, INC=2000\n";
+  out += fmt::format("*STATIC\n{}, {}, {}, {}\n", deck_number(s.initial_increment), deck_number(tmax), deck_number(1e-6 * tmax),
+                     deck_number(s.max_increment));
+  out += "*BOUNDARY\n" + s.supports + "NFLAT, 1, 1, 0.\n";
+  out += fmt::format("*BOUNDARY, AMPLITUDE=A\nNFLAT, 2, 2, {}\n", deck_number(-s.displacement_per_level));
+  out += "*NODE PRINT, NSET=NFLAT, TOTALS=ONLY, TIME POINTS=T\nRF\n";
+  out += "*NODE PRINT, NSET=NCONTACT, TIME POINTS=T\nRF\n";
+  out += "*NODE FILE, TIME POINTS=T\nU\n";
+  out += s.plastic ? "*EL FILE, TIME POINTS=T\nS, PEEQ\n" : "*EL FILE, TIME POINTS=T\nS\n";
+  out += "*END STEP\n";
+}
+
 }  // namespace geartrib::fem
