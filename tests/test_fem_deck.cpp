@@ -82,8 +82,15 @@ TEST(FemDeck, RespectsCcxInputLimits) {
     std::string field;
     while (std::getline(f, field, ',')) EXPECT_LE(field.size(), 21u) << line;  // ccx cuts fields beyond 20 characters
   }
-  for (const auto& l : lines_after(d.text, "*TIME POINTS")) EXPECT_LE(std::count(l.begin(), l.end(), ',') + 1, 8) << l;
-  EXPECT_EQ(lines_after(d.text, "*TIME POINTS").size(), 2u);  // 10 levels: 8 + 2
+  // One step per level (ccx 2.20 can stall on *TIME POINTS); NLGEOM from the first step.
+  auto count = [&](const std::string& what) {
+    std::size_t n = 0;
+    for (auto p = d.text.find(what); p != std::string::npos; p = d.text.find(what, p + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("*STEP"), 10u);
+  EXPECT_EQ(count("*STEP, NLGEOM"), 1u);
+  EXPECT_EQ(count("*TIME POINTS"), 0u);
   EXPECT_NE(d.text.find("*STEP, NLGEOM"), std::string::npos);  // plastic runs: large deformation
   EXPECT_NE(d.text.find("*PLASTIC"), std::string::npos);
   SingleAsperitySpec bad = spec();

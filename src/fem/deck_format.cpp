@@ -39,21 +39,25 @@ void write_materials(std::string& out, const std::string& body_set, double young
 void write_rigid_flat_step(std::string& out, const RigidFlatStep& s) {
   out += fmt::format("*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n{}\n", deck_number(s.penalty));
   out += "*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE\n" + s.slave + ", SFLAT\n";
-  const double tmax = s.levels.back();
-  out += fmt::format("*AMPLITUDE, NAME=A\n0., 0., {}, {}\n", deck_number(tmax), deck_number(tmax));
-  out += "*TIME POINTS, NAME=T\n";
-  for (std::size_t k = 0; k < s.levels.size(); ++k)  // at most 8 values per line (ccx ignores the rest)
-    out += fmt::format("{}{}", deck_number(s.levels[k]), (k + 1) % 8 == 0 || k + 1 == s.levels.size() ? "\n" : ", ");
-  out += s.plastic ? "*STEP, NLGEOM, INC=2000\n" : "*STEP, INC=2000\n";
-  out += fmt::format("*STATIC\n{}, {}, {}, {}\n", deck_number(s.initial_increment), deck_number(tmax), deck_number(1e-6 * tmax),
-                     deck_number(s.max_increment));
-  out += "*BOUNDARY\n" + s.supports + "NFLAT, 1, 1, 0.\n";
-  out += fmt::format("*BOUNDARY, AMPLITUDE=A\nNFLAT, 2, 2, {}\n", deck_number(-s.displacement_per_level));
-  out += "*NODE PRINT, NSET=NFLAT, TOTALS=ONLY, TIME POINTS=T\nRF\n";
-  out += "*NODE PRINT, NSET=NCONTACT, TIME POINTS=T\nRF\n";
-  out += "*NODE FILE, TIME POINTS=T\nU\n";
-  out += s.plastic ? "*EL FILE, TIME POINTS=T\nS, PEEQ\n" : "*EL FILE, TIME POINTS=T\nS\n";
-  out += "*END STEP\n";
+  // One step per level, the flat ramped from the previous level to this one; results are written
+  // at every increment and read at each step's end (total time = level). (*TIME POINTS within
+  // one step can stall ccx 2.20: an increment landing a rounding error short of a time point is
+  // cut to zero and never converges.)
+  double previous = 0.0;
+  for (std::size_t k = 0; k < s.levels.size(); ++k) {
+    const double span = s.levels[k] - previous;
+    out += k == 0 && s.plastic ? "*STEP, NLGEOM, INC=2000\n" : "*STEP, INC=2000\n";
+    out += fmt::format("*STATIC\n{}, {}, {}, {}\n", deck_number(std::min(span, k == 0 ? s.initial_increment : 0.25 * span)),
+                       deck_number(span), deck_number(1e-6 * span), deck_number(std::min(span, s.max_increment)));
+    if (k == 0) out += "*BOUNDARY\n" + s.supports + "NFLAT, 1, 1, 0.\n";
+    out += fmt::format("*BOUNDARY\nNFLAT, 2, 2, {}\n", deck_number(-s.displacement_per_level * s.levels[k]));
+    out += "*NODE PRINT, NSET=NFLAT, TOTALS=ONLY\nRF\n";
+    out += "*NODE PRINT, NSET=NCONTACT\nRF\n";
+    out += "*NODE FILE\nU\n";
+    out += s.plastic ? "*EL FILE\nS, PEEQ\n" : "*EL FILE\nS\n";
+    out += "*END STEP\n";
+    previous = s.levels[k];
+  }
 }
 
 }  // namespace geartrib::fem

@@ -27,10 +27,10 @@ void write_id_lines(std::string& out, const std::vector<int>& ids);
 void write_materials(std::string& out, const std::string& body_set, double youngs_modulus, double poisson_ratio, FemMaterial material,
                      double yield_strength, const std::vector<std::pair<double, double>>& flow_table, const std::string& section_line);
 
-// The rigid flat's frictionless penalty contact with the `slave` surface (master SFLAT), the
-// amplitude whose time is the level, the output time points, and one static step: `supports`
-// (*BOUNDARY lines), the flat (NFLAT) moved down by `displacement_per_level` x level, reactions
-// of NFLAT (totals) and of NCONTACT (per node), U, S and, for plastic runs, PEEQ.
+// The rigid flat's frictionless penalty contact with the `slave` surface (master SFLAT) and one
+// static step per level (total time = level): `supports` (*BOUNDARY lines), the flat (NFLAT)
+// moved down to `displacement_per_level` x level, reactions of NFLAT (totals) and of NCONTACT
+// (per node), U, S and, for plastic runs, PEEQ at every increment.
 struct RigidFlatStep {
   std::string slave;
   double penalty = 0.0;                  // [MPa/mm]
