@@ -191,3 +191,14 @@ TEST(FemResults, ContactIntervalsPlaceTheEdgesWhereTheGapOpens) {
   EXPECT_NEAR(zones[0].first, -1.0, 1e-9);  // exact for the 3/2 power law
   EXPECT_NEAR(zones[0].second, 1.0, 1e-9);
 }
+
+TEST(FemResults, ARimNodeBarelyOpenIsSkipped) {
+  // As in a penalty contact: the node just inside the true edge shows a tiny positive gap; the
+  // edge comes from the next two nodes, which follow the 3/2 law from the true edge at 1.
+  const std::vector<double> x{0.0, 0.5, 0.95, 1.1, 1.3};
+  std::vector<double> gap{-1e-3, -8e-4, 1e-6};
+  for (double xi : {1.1, 1.3}) gap.push_back(std::pow(xi - 1.0, 1.5));
+  const auto zones = contact_intervals(x, gap);
+  ASSERT_EQ(zones.size(), 1u);
+  EXPECT_NEAR(zones[0].second, 1.0, 1e-9);
+}

@@ -149,8 +149,12 @@ std::vector<std::pair<double, double>> contact_intervals(const std::vector<doubl
   std::vector<std::pair<double, double>> out;
   if (gap.empty()) return out;
   const double touch = 0.1 * std::max(0.0, -*std::min_element(gap.begin(), gap.end()));
-  auto edge = [&](std::size_t k, int dir) {  // k touching, k + dir and k + 2 dir open
-    const std::size_t k1 = k + dir, k2 = k + 2 * dir;
+  auto edge = [&](std::size_t k, int dir) {  // k touching; open nodes follow in direction dir
+    // Open nodes on the rim whose gap is below a tenth of the next one's lie within the
+    // discretisation of the edge (penalty contact, element-wise integration): skip them.
+    std::size_t k1 = k + dir;
+    while (k1 + 2 * dir < x.size() && gap[k1] < 0.1 * gap[k1 + dir]) k1 += dir;
+    const std::size_t k2 = k1 + dir;
     double e = x[k];
     if (k2 < x.size() && gap[k2] > gap[k1]) {
       const double q = std::pow(gap[k1] / gap[k2], 2.0 / 3.0);

@@ -43,7 +43,9 @@ std::vector<DatForces> read_dat_forces(const std::filesystem::path& file);
 
 // Contact zones along a surface: the intervals of touching nodes (gap below a tenth of the
 // largest penetration), each edge placed where the gap of the first two open nodes, opening as
-// (x - edge)^(3/2), extrapolates to zero (kept between the last touching and first open node).
+// (x - edge)^(3/2), extrapolates to zero (kept between the last touching node and the first open
+// node used). Open nodes whose gap is below a tenth of the next one's are taken as on the rim
+// (within the discretisation of the edge) and skipped.
 std::vector<std::pair<double, double>> contact_intervals(const std::vector<double>& x, const std::vector<double>& gap);
 
 // Normalised single-asperity results at each level.
