@@ -27,6 +27,7 @@ struct SingleOptions {
   std::vector<double> delta_star{1, 2, 6, 10};
   int refine = 10;
   bool convergence = false;
+  bool reuse = false;
   std::string output;
   std::string details;
   std::string keep_deck;
@@ -74,7 +75,9 @@ void single_asperity(const SingleOptions& o) {
       fmt::print(stderr, "ccx run {}: delta* {} to {}, {} CAX8, tip element {:.3g} a_c (first contact / {})\n", job_index, levels.front(),
                  levels.back(), deck.elements, deck.tip_element / std::sqrt(deck.critical_interference), refine);
       const auto t0 = std::chrono::steady_clock::now();
-      fem::run_ccx(ccx, dir, job);
+      // --reuse: results of an identical deck already in --keep-deck DIR are read, not rerun.
+      const bool reused = o.reuse && std::filesystem::exists(dir / (job + ".frd")) && std::filesystem::exists(dir / (job + ".dat"));
+      if (!reused) fem::run_ccx(ccx, dir, job);
       seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       by_refinement.push_back(fem::read_single_asperity(run, deck, dir, job));
       if (refine == o.refine)
@@ -230,7 +233,9 @@ void add_fem_command(CLI::App& app) {
   single->add_option("-o,--output", o->output, "Write the table here (atomically) instead of stdout");
   single->add_option("--details", o->details, "Also write the contact radius, the largest von Mises stress and its depth, and the\n"
                                                "plastic zone's depth and surface radius per level to this CSV");
-  single->add_option("--keep-deck", o->keep_deck, "Keep the deck and ccx's files in this folder (written even without ccx)");
+  auto* keep = single->add_option("--keep-deck", o->keep_deck, "Keep the deck and ccx's files in this folder (written even without ccx)");
+  single->add_flag("--reuse", o->reuse, "Read the results already in the --keep-deck folder instead of rerunning ccx (same decks)")
+      ->needs(keep);
   single->callback([o] { single_asperity(*o); });
 
   auto c = std::make_shared<CylinderOptions>();

@@ -145,10 +145,11 @@ std::vector<DatForces> read_dat_forces(const std::filesystem::path& file) {
   return out;
 }
 
-std::vector<std::pair<double, double>> contact_intervals(const std::vector<double>& x, const std::vector<double>& gap) {
+std::vector<std::pair<double, double>> contact_intervals(const std::vector<double>& x, const std::vector<double>& gap,
+                                                         double min_touch) {
   std::vector<std::pair<double, double>> out;
   if (gap.empty()) return out;
-  const double touch = 0.1 * std::max(0.0, -*std::min_element(gap.begin(), gap.end()));
+  const double touch = std::max(min_touch, 0.1 * std::max(0.0, -*std::min_element(gap.begin(), gap.end())));
   auto edge = [&](std::size_t k, int dir) {  // k touching; open nodes follow in direction dir
     // Open nodes on the rim whose gap is below a tenth of the next one's lie within the
     // discretisation of the edge (penalty contact, element-wise integration): skip them.
@@ -212,7 +213,7 @@ std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec&
     }
     std::vector<double> xs;
     for (std::size_t k = 0; k < deck.top_nodes.size(); ++k) xs.push_back(deck.top_node_r[k] + disp->values.at(deck.top_nodes[k])[0]);
-    const auto zones = contact_intervals(xs, gap);
+    const auto zones = contact_intervals(xs, gap, 1e-3 * level * dc);
     const double a = zones.empty() ? 0.0 : zones.back().second;  // outermost edge (the zone starts on the axis)
     r.contact_radius = a / ac;
     r.area_star = std::numbers::pi * a * a / area_c;
@@ -302,7 +303,7 @@ std::vector<CylinderLevelResult> read_cylinders(const CylindersSpec& spec, const
       xs.push_back(deck.top_x[k] + u[0]);
       gap.push_back(flat - (deck.top_y[k] + u[1]));
     }
-    for (const auto& [a, b] : contact_intervals(xs, gap)) r.asperities[share(0.5 * (a + b))].contact_width += (b - a) * mm;
+    for (const auto& [a, b] : contact_intervals(xs, gap, -1e-3 * flat)) r.asperities[share(0.5 * (a + b))].contact_width += (b - a) * mm;
     // Stresses: largest von Mises within one contact width of each asperity's surface.
     if (const FrdField* stress = at_time("STRESS")) {
       for (std::size_t q = 0; q < deck.node_xy.size(); ++q) {

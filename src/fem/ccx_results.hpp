@@ -46,7 +46,10 @@ std::vector<DatForces> read_dat_forces(const std::filesystem::path& file);
 // (x - edge)^(3/2), extrapolates to zero (kept between the last touching node and the first open
 // node used). Open nodes whose gap is below a tenth of the next one's are taken as on the rim
 // (within the discretisation of the edge) and skipped.
-std::vector<std::pair<double, double>> contact_intervals(const std::vector<double>& x, const std::vector<double>& gap);
+// `min_touch`: gaps below it count as touching too (1e-3 of the interference: a plastic contact
+// meets the flat tangentially, leaving a band of near-zero gaps at its rim).
+std::vector<std::pair<double, double>> contact_intervals(const std::vector<double>& x, const std::vector<double>& gap,
+                                                         double min_touch = 0.0);
 
 // Normalised single-asperity results at each level.
 struct SingleAsperityResult {
