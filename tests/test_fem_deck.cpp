@@ -32,6 +32,30 @@ std::vector<std::string> lines_after(const std::string& text, const std::string&
   while (std::getline(in, line) && line[0] != '*') out.push_back(line);
   return out;
 }
+// Every 8-node element under `keyword` has counter-clockwise corners (positive shoelace area;
+// ccx stops with "nonpositive jacobian" otherwise); returns how many elements there are.
+int check_element_areas(const std::string& text, const std::string& keyword, const std::map<int, std::pair<double, double>>& node) {
+  int count = 0;
+  for (const auto& l : lines_after(text, keyword)) {
+    std::istringstream in(l);
+    std::vector<int> n;
+    int v = 0;
+    char c = 0;
+    in >> v;
+    while (in >> c >> v) n.push_back(v);
+    EXPECT_EQ(n.size(), 8u);
+    if (n.size() != 8u) continue;
+    double area = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const auto [x0, y0] = node.at(n[k]);
+      const auto [x1, y1] = node.at(n[(k + 1) % 4]);
+      area += x0 * y1 - x1 * y0;
+    }
+    EXPECT_GT(area, 0.0);
+    ++count;
+  }
+  return count;
+}
 }  // namespace
 
 TEST(FemDeck, MeshIsValidAndTheSurfaceIsTheParaboloid) {
@@ -44,25 +68,7 @@ TEST(FemDeck, MeshIsValidAndTheSurfaceIsTheParaboloid) {
     std::istringstream(l) >> id >> c >> x >> c >> y;
     node[id] = {x, y};
   }
-  int count = 0;
-  for (const auto& l : lines_after(d.text, "*ELEMENT, TYPE=CAX8")) {
-    std::istringstream in(l);
-    std::vector<int> n;
-    int v = 0;
-    char c = 0;
-    in >> v;
-    while (in >> c >> v) n.push_back(v);
-    ASSERT_EQ(n.size(), 8u);
-    // Counter-clockwise corners: positive shoelace area (ccx: "nonpositive jacobian" otherwise).
-    double area = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      const auto [x0, y0] = node.at(n[k]);
-      const auto [x1, y1] = node.at(n[(k + 1) % 4]);
-      area += x0 * y1 - x1 * y0;
-    }
-    EXPECT_GT(area, 0.0);
-    ++count;
-  }
+  const int count = check_element_areas(d.text, "*ELEMENT, TYPE=CAX8", node);
   EXPECT_EQ(count, d.elements);
   for (std::size_t k = 0; k < d.top_nodes.size(); ++k) {
     const auto [x, y] = node.at(d.top_nodes[k]);
@@ -149,24 +155,7 @@ TEST(FemDeck, CylinderMeshIsValidAndFollowsTheProfile) {
   s.refine = 6;
   const CylindersDeck d = cylinders_deck(s);
   std::map<int, std::pair<double, double>> node(d.node_xy.begin(), d.node_xy.end());
-  int count = 0;
-  for (const auto& l : lines_after(d.text, "*ELEMENT, TYPE=CPE8")) {
-    std::istringstream in(l);
-    std::vector<int> n;
-    int v = 0;
-    char c = 0;
-    in >> v;
-    while (in >> c >> v) n.push_back(v);
-    ASSERT_EQ(n.size(), 8u);
-    double area = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      const auto [x0, y0] = node.at(n[k]);
-      const auto [x1, y1] = node.at(n[(k + 1) % 4]);
-      area += x0 * y1 - x1 * y0;
-    }
-    EXPECT_GT(area, 0.0);
-    ++count;
-  }
+  const int count = check_element_areas(d.text, "*ELEMENT, TYPE=CPE8", node);
   EXPECT_EQ(count, d.elements);
   // The surface is the highest of the parabolas (mm): the middle tip 2 nm low, the outer at 0.
   for (std::size_t k = 0; k < d.top_x.size(); ++k) {
