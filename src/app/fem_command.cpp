@@ -195,8 +195,7 @@ void three_cylinders(const CylinderOptions& o) {
   for (const auto& r : results)
     for (std::size_t k = 0; k < r.asperities.size(); ++k) {
       const auto& a = r.asperities[k];
-      t.labels.push_back(fmt::format("{}{}", k + 1, o.layout[k]));
-      t.rows.push_back({r.level, a.load, a.contact_width, a.max_von_mises, a.max_plastic_strain, r.line_load});
+      t.add_row(fmt::format("{}{}", k + 1, o.layout[k]), {r.level, a.load, a.contact_width, a.max_von_mises, a.max_plastic_strain, r.line_load});
     }
   const std::string text = fmt::format(
       "# source: geartrib {} fem three-cylinders ({}), plane strain CPE8, rigid flat, frictionless, penalty contact\n"

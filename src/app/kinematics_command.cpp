@@ -53,41 +53,37 @@ void run_summary(const Options& o, const Case& c, const gear::GearMesh& mesh) {
   const double to_n_per_m_um = 1e-6;  // N/m per m width -> N/(m um)
   io::Table t;
   t.header = {"name", "value"};
-  auto row = [&](const std::string& name, double v) {
-    t.labels.push_back(name);
-    t.rows.push_back({v});
-  };
-  row("reference_center_distance_m", pair.reference_center_distance());
-  row("center_distance_m", pair.center_distance());
-  row("operating_pressure_angle_rad", pair.operating_pressure_angle());
-  row("operating_pressure_angle_deg", pair.operating_pressure_angle() * 180.0 / std::numbers::pi);
+  t.add_row("reference_center_distance_m", {pair.reference_center_distance()});
+  t.add_row("center_distance_m", {pair.center_distance()});
+  t.add_row("operating_pressure_angle_rad", {pair.operating_pressure_angle()});
+  t.add_row("operating_pressure_angle_deg", {pair.operating_pressure_angle() * 180.0 / std::numbers::pi});
   for (int i = 0; i < 2; ++i) {
     const auto& g = pair.gear(i);
     const std::string n = i == 0 ? "pinion" : "wheel";
-    row(n + "_base_radius_m", g.base_radius);
-    row(n + "_tip_radius_m", g.tip_radius);
-    row(n + "_root_radius_m", g.root_radius);
-    row(n + "_operating_pitch_radius_m", g.operating_pitch_radius);
-    row(n + "_fillet_foundation_in_fit_range", gear::fillet_foundation_in_range(g) ? 1.0 : 0.0);
+    t.add_row(n + "_base_radius_m", {g.base_radius});
+    t.add_row(n + "_tip_radius_m", {g.tip_radius});
+    t.add_row(n + "_root_radius_m", {g.root_radius});
+    t.add_row(n + "_operating_pitch_radius_m", {g.operating_pitch_radius});
+    t.add_row(n + "_fillet_foundation_in_fit_range", {gear::fillet_foundation_in_range(g) ? 1.0 : 0.0});
   }
-  row("line_of_action_T1T2_m", p.line_length);
-  row("s_A_m", p.a);
-  row("s_B_m", p.b);
-  row("s_C_m", p.c);
-  row("s_D_m", p.d);
-  row("s_E_m", p.e);
-  row("base_pitch_m", p.base_pitch);
-  row("length_of_contact_m", p.length);
-  row("contact_ratio", p.contact_ratio);
-  row("normal_force_N", mesh.normal_force());
-  row("pinion_speed_rad_per_s", mesh.pinion_speed());
-  row("mean_mesh_stiffness_N_per_m", k.mean);
-  row("min_mesh_stiffness_N_per_m", k.min);
-  row("max_mesh_stiffness_N_per_m", k.max);
-  row("mean_mesh_stiffness_per_width_N_per_m_um", k.mean / b * to_n_per_m_um);
-  row("iso_c_prime_N_per_m_um", iso.single * to_n_per_m_um);
-  row("iso_c_gamma_alpha_N_per_m_um", iso.mesh * to_n_per_m_um);
-  row("mean_mesh_stiffness_over_iso_c_gamma_alpha", k.mean / (iso.mesh * b));
+  t.add_row("line_of_action_T1T2_m", {p.line_length});
+  t.add_row("s_A_m", {p.a});
+  t.add_row("s_B_m", {p.b});
+  t.add_row("s_C_m", {p.c});
+  t.add_row("s_D_m", {p.d});
+  t.add_row("s_E_m", {p.e});
+  t.add_row("base_pitch_m", {p.base_pitch});
+  t.add_row("length_of_contact_m", {p.length});
+  t.add_row("contact_ratio", {p.contact_ratio});
+  t.add_row("normal_force_N", {mesh.normal_force()});
+  t.add_row("pinion_speed_rad_per_s", {mesh.pinion_speed()});
+  t.add_row("mean_mesh_stiffness_N_per_m", {k.mean});
+  t.add_row("min_mesh_stiffness_N_per_m", {k.min});
+  t.add_row("max_mesh_stiffness_N_per_m", {k.max});
+  t.add_row("mean_mesh_stiffness_per_width_N_per_m_um", {k.mean / b * to_n_per_m_um});
+  t.add_row("iso_c_prime_N_per_m_um", {iso.single * to_n_per_m_um});
+  t.add_row("iso_c_gamma_alpha_N_per_m_um", {iso.mesh * to_n_per_m_um});
+  t.add_row("mean_mesh_stiffness_over_iso_c_gamma_alpha", {k.mean / (iso.mesh * b)});
   io::output_table(t, o.csv, o.output);
 }
 
@@ -114,8 +110,7 @@ void run(const Options& o) {
     const gear::FlankGeometry f = pair.flank(s);
     const gear::FlankKinematics k = pair.kinematics(s, mesh.pinion_speed());
     const gear::PairLoad single = mesh.analysis().pair_load(s, mesh.normal_force() / pair.spec().face_width);
-    t.labels.push_back(label);
-    t.rows.push_back({s, f.roll_parameter, f.radius_pinion, f.radius_wheel, f.radius_equivalent, own->share,
+    t.add_row(label, {s, f.roll_parameter, f.radius_pinion, f.radius_wheel, f.radius_equivalent, own->share,
                       own->line_load, own->hertz_peak, own->hertz_half_width, single.hertz_peak, k.rolling_pinion,
                       k.rolling_wheel, k.entrainment, k.sliding, k.slide_to_roll, k.specific_sliding_pinion,
                       k.specific_sliding_wheel, own->stiffness, m.mesh_stiffness, static_cast<double>(m.pairs.size())});

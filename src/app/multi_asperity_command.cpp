@@ -115,28 +115,23 @@ void run(const Options& o) {
               "max_deformation_m", "centre_m"};
   for (std::size_t k = 0; k < r.asperities.size(); ++k) {
     const auto& a = r.asperities[k];
-    t.labels.push_back(fmt::format("{}{}", k + 1, a.kind));
-    t.rows.push_back({a.load, a.contact_width, a.max_pressure, a.max_surface_von_mises, a.max_deformation, a.centre});
+    t.add_row(fmt::format("{}{}", k + 1, a.kind), {a.load, a.contact_width, a.max_pressure, a.max_surface_von_mises, a.max_deformation, a.centre});
   }
   io::Table totals;
   totals.header = {"name", "value"};
-  auto row = [&](const std::string& n, double v) {
-    totals.labels.push_back(n);
-    totals.rows.push_back({v});
-  };
-  row("total_contact_area_m2", r.total_contact_area);
+  totals.add_row("total_contact_area_m2", {r.total_contact_area});
   for (std::size_t k = 0; k < r.midpoint_von_mises.size(); ++k)
-    row(fmt::format("midpoint_von_mises_{}_{}_Pa", k + 1, k + 2), r.midpoint_von_mises[k]);
-  row("inflection_depth_m", r.inflection_depth);
-  row("inflection_von_mises_Pa", r.inflection_von_mises);
-  row("approach_m", r.approach);
-  row("approach_over_delta_pc", r.approach / delta_pc);
-  row("line_load_N_per_m", r.line_load);
-  row("delta_pc_m", delta_pc);
-  row("elements", static_cast<double>(r.grid.size));
-  row("element_width_m", r.grid.spacing);
-  row("iterations", static_cast<double>(r.iterations));
-  row("complementarity_error", r.complementarity_error);
+    totals.add_row(fmt::format("midpoint_von_mises_{}_{}_Pa", k + 1, k + 2), {r.midpoint_von_mises[k]});
+  totals.add_row("inflection_depth_m", {r.inflection_depth});
+  totals.add_row("inflection_von_mises_Pa", {r.inflection_von_mises});
+  totals.add_row("approach_m", {r.approach});
+  totals.add_row("approach_over_delta_pc", {r.approach / delta_pc});
+  totals.add_row("line_load_N_per_m", {r.line_load});
+  totals.add_row("delta_pc_m", {delta_pc});
+  totals.add_row("elements", {static_cast<double>(r.grid.size)});
+  totals.add_row("element_width_m", {r.grid.spacing});
+  totals.add_row("iterations", {static_cast<double>(r.iterations)});
+  totals.add_row("complementarity_error", {r.complementarity_error});
   const std::string text = (o.csv ? io::format_csv(t) : io::format_text(t)) + "\n" +
                            (o.csv ? io::format_csv(totals) : io::format_text(totals));
   if (o.output.empty()) std::cout << text;

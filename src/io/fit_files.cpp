@@ -1,6 +1,7 @@
 #include "io/fit_files.hpp"
 
 #include "io/input_error.hpp"
+#include "io/text_lines.hpp"
 
 #include <fmt/format.h>
 
@@ -13,19 +14,6 @@
 namespace geartrib::io {
 
 namespace {
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string cell;
-  while (std::getline(ss, cell, ',')) out.push_back(trim(cell));
-  if (!line.empty() && line.back() == ',') out.emplace_back();
-  return out;
-}
 std::string identifier(std::string s) {
   for (char& c : s)
     if (c == '-') c = '_';
@@ -52,11 +40,10 @@ fit::FitData read_fit_data(const std::filesystem::path& file) {
     const std::string s = trim(line);
     if (s.empty()) continue;
     if (s.front() == '#') {
-      const auto colon = s.find(':');
-      if (colon != std::string::npos) d.provenance.emplace_back(trim(s.substr(1, colon - 1)), trim(s.substr(colon + 1)));
+      if (auto entry = comment_entry(s)) d.provenance.push_back(std::move(*entry));
       continue;
     }
-    const auto cells = split(s);
+    const auto cells = split_csv(s);
     if (!header) {
       header = true;
       if (cells.empty() || cells[0] != "delta_star") throw InputError(d.name, n, cells.empty() ? "" : cells[0], "", "the first column must be delta_star");

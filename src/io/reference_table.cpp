@@ -1,6 +1,7 @@
 #include "io/reference_table.hpp"
 
 #include "io/input_error.hpp"
+#include "io/text_lines.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -8,22 +9,6 @@
 #include <sstream>
 
 namespace geartrib::io {
-
-namespace {
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string cell;
-  while (std::getline(ss, cell, ',')) out.push_back(trim(cell));
-  return out;
-}
-}  // namespace
 
 ReferenceTable read_reference_table(const std::filesystem::path& file,
                                     const std::function<Dimension(const std::string&)>& dimension_of) {
@@ -40,12 +25,10 @@ ReferenceTable read_reference_table(const std::filesystem::path& file,
     const std::string s = trim(line);
     if (s.empty()) continue;
     if (s.front() == '#') {
-      const auto colon = s.find(':');
-      if (colon != std::string::npos)
-        t.provenance.emplace_back(trim(s.substr(1, colon - 1)), trim(s.substr(colon + 1)));
+      if (auto entry = comment_entry(s)) t.provenance.push_back(std::move(*entry));
       continue;
     }
-    const auto cells = split(s);
+    const auto cells = split_csv(s);
     if (!header_seen) {
       header_seen = true;
       if (cells.size() < 2) throw InputError(t.file, n, "", s, "header needs an input column and at least one quantity");

@@ -14,6 +14,11 @@ struct Table {
   std::vector<std::string> header;
   std::vector<std::vector<double>> rows;
   std::vector<std::string> labels;
+  // A labelled row (name/value summaries, per-asperity rows).
+  void add_row(std::string label, std::vector<double> values) {
+    labels.push_back(std::move(label));
+    rows.push_back(std::move(values));
+  }
 };
 
 // CSV: header line, then rows with full precision (%.10g). Text: right-aligned columns (%.6g).

@@ -2,6 +2,7 @@
 
 #include "io/hdf5_handles.hpp"
 #include "io/input_error.hpp"
+#include "io/text_lines.hpp"
 #include "io/table_writer.hpp"
 #include "io/units.hpp"
 
@@ -46,18 +47,11 @@ bool parse(const std::string& t, double& v) {
   return ec == std::errc{} && end == t.data() + t.size() && std::isfinite(v);
 }
 
-// '# key: value' comment lines of an ASCII file.
+// The value of a '# key: value' comment line with this key.
 bool comment_value(const std::string& line, const std::string& key, std::string& value) {
-  if (line.empty() || line[0] != '#') return false;
-  const auto colon = line.find(':');
-  if (colon == std::string::npos) return false;
-  std::string k = line.substr(1, colon - 1);
-  k.erase(0, k.find_first_not_of(" \t"));
-  k.erase(k.find_last_not_of(" \t") + 1);
-  if (k != key) return false;
-  value = line.substr(colon + 1);
-  value.erase(0, value.find_first_not_of(" \t"));
-  value.erase(value.find_last_not_of(" \t\r") + 1);
+  const auto entry = comment_entry(line);
+  if (!entry || entry->first != key) return false;
+  value = entry->second;
   return true;
 }
 

@@ -1,4 +1,5 @@
 #include "solvers/cvode_integrator.hpp"
+#include "solvers/sundials_owned.hpp"
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
@@ -28,11 +29,6 @@ int rhs(realtype t, N_Vector y, N_Vector ydot, void* user) {
   return 0;
 }
 
-template <class T, class D>
-std::unique_ptr<T, D> owned(T* p, D d) {
-  if (!p) throw std::runtime_error("SUNDIALS allocation failed");
-  return std::unique_ptr<T, D>(p, d);
-}
 }  // namespace
 
 long CvodeIntegrator::integrate(const OdeSystem& system, double t0, double t1, std::vector<double>& y,

@@ -1,4 +1,5 @@
 #include "solvers/kinsol_solver.hpp"
+#include "solvers/sundials_owned.hpp"
 
 #include <kinsol/kinsol.h>
 #include <nvector/nvector_serial.h>
@@ -44,11 +45,6 @@ int jacobian(N_Vector y, N_Vector, SUNMatrix jac, void* data, N_Vector, N_Vector
   return 0;
 }
 
-template <class T, class D>
-std::unique_ptr<T, D> owned(T* p, D d) {
-  if (!p) throw std::runtime_error("SUNDIALS allocation failed");
-  return std::unique_ptr<T, D>(p, d);
-}
 
 }  // namespace
 
