@@ -21,6 +21,29 @@ namespace geartrib::app {
 
 namespace {
 
+// Where a run's decks and ccx's files go: --keep-deck DIR, else a temporary folder removed when
+// the run completes (left in place when ccx fails, for the deck and ccx's log its message names).
+struct FemFolder {
+  std::filesystem::path dir;
+  bool temporary = false;
+  explicit FemFolder(const std::string& keep_deck)
+      : dir(keep_deck.empty() ? std::filesystem::temp_directory_path() / fmt::format("geartrib-fem-{}", getpid())
+                              : std::filesystem::path(keep_deck)),
+        temporary(keep_deck.empty()) {
+    std::filesystem::create_directories(dir);
+  }
+  void done() const {
+    if (temporary) std::filesystem::remove_all(dir);
+  }
+  // Without ccx: the decks stay only when the user asked to keep them.
+  [[noreturn]] void missing_ccx() const {
+    done();
+    throw std::runtime_error(temporary ? "ccx (CalculiX) not found: install calculix-ccx (bash scripts/setup.sh does), "
+                                         "or give --keep-deck DIR to write the decks only"
+                                       : fmt::format("ccx (CalculiX) not found; the decks are in {}", dir.string()));
+  }
+};
+
 struct SingleOptions {
   std::string case_file;
   std::string material = "perfectly-plastic";
@@ -50,9 +73,8 @@ void single_asperity(const SingleOptions& o) {
   s.flow_table.emplace_back(soft.yield_strength, 0.0);
   for (const auto& p : soft.flow_curve)
     if (p.plastic_strain > 0.0) s.flow_table.emplace_back(p.stress, p.plastic_strain);
-  const std::filesystem::path dir = o.keep_deck.empty() ? std::filesystem::temp_directory_path() / fmt::format("geartrib-fem-{}", getpid())
-                                                        : std::filesystem::path(o.keep_deck);
-  std::filesystem::create_directories(dir);
+  const FemFolder folder(o.keep_deck);
+  const std::filesystem::path& dir = folder.dir;
   const std::filesystem::path ccx = fem::find_ccx();
   // Levels in runs whose meshes resolve their first contact (plan_runs); with --convergence each
   // run also at about 1/2 and 1/sqrt2 of the refinement.
@@ -95,12 +117,7 @@ void single_asperity(const SingleOptions& o) {
             100.0 * (by_refinement[k][i].load_star / by_refinement[k - 1][i].load_star - 1.0),
             100.0 * (by_refinement[k][i].area_star / by_refinement[k - 1][i].area_star - 1.0)));
   }
-  if (ccx.empty()) {
-    if (o.keep_deck.empty()) std::filesystem::remove_all(dir);
-    throw std::runtime_error(o.keep_deck.empty() ? "ccx (CalculiX) not found: install calculix-ccx (bash scripts/setup.sh does), "
-                                                   "or give --keep-deck DIR to write the decks only"
-                                                 : fmt::format("ccx (CalculiX) not found; the decks are in {}", dir.string()));
-  }
+  if (ccx.empty()) folder.missing_ccx();
   for (const auto& l : convergence_lines) fmt::print(stderr, "{}\n", l.substr(2));
   // The reference table in `geartrib fit`'s format; the other figures go to --details.
   io::Table t, details;
@@ -125,7 +142,7 @@ void single_asperity(const SingleOptions& o) {
   if (o.output.empty()) std::cout << text + io::format_csv(t);
   else io::write_file_atomically(o.output, text + io::format_csv(t));
   if (!o.details.empty()) io::write_file_atomically(o.details, text + io::format_csv(details));
-  if (o.keep_deck.empty()) std::filesystem::remove_all(dir);
+  folder.done();
 }
 
 struct CylinderOptions {
@@ -171,18 +188,12 @@ void three_cylinders(const CylinderOptions& o) {
   s.levels = o.approach;
   s.refine = o.refine;
   const fem::CylindersDeck deck = fem::cylinders_deck(s);
-  const std::filesystem::path dir = o.keep_deck.empty() ? std::filesystem::temp_directory_path() / fmt::format("geartrib-fem-{}", getpid())
-                                                        : std::filesystem::path(o.keep_deck);
-  std::filesystem::create_directories(dir);
+  const FemFolder folder(o.keep_deck);
+  const std::filesystem::path& dir = folder.dir;
   const std::string job = "cylinders";
   io::write_file_atomically(dir / (job + ".inp"), deck.text);
   const std::filesystem::path ccx = fem::find_ccx();
-  if (ccx.empty()) {
-    if (o.keep_deck.empty()) std::filesystem::remove_all(dir);
-    throw std::runtime_error(o.keep_deck.empty() ? "ccx (CalculiX) not found: install calculix-ccx (bash scripts/setup.sh does), "
-                                                   "or give --keep-deck DIR to write the deck only"
-                                                 : fmt::format("ccx (CalculiX) not found; the deck is in {}", dir.string()));
-  }
+  if (ccx.empty()) folder.missing_ccx();
   fmt::print(stderr, "ccx: {} CPE8, tip element {:.3g} nm, approach to {} x {:.4g} nm\n", deck.elements, deck.tip_element * 1e6,
              s.levels.back(), delta_pc * 1e9);
   const auto t0 = std::chrono::steady_clock::now();
@@ -207,7 +218,7 @@ void three_cylinders(const CylinderOptions& o) {
       seconds) + io::format_csv(t);
   if (o.output.empty()) std::cout << text;
   else io::write_file_atomically(o.output, text);
-  if (o.keep_deck.empty()) std::filesystem::remove_all(dir);
+  folder.done();
 }
 
 }  // namespace

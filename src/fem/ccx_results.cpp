@@ -29,6 +29,12 @@ std::string run_capture(const std::string& command) {
 
 std::string shell_quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
+// Von Mises stress of ccx's stress components (xx, yy, zz, xy, yz, zx).
+double von_mises(const std::vector<double>& s) {
+  return std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[2] - s[0]) * (s[2] - s[0])) +
+                   3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+}
+
 double field(const std::string& line, std::size_t start, std::size_t width) {
   if (line.size() < start + width) throw std::runtime_error("frd: short line: " + line);
   return std::stod(line.substr(start, width));
@@ -233,8 +239,7 @@ std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec&
     if (const FrdField* stress = at_time("STRESS")) {
       for (const auto& [node, s] : stress->values) {
         if (s.size() < 6 || !depth.count(node)) continue;
-        const double vm = std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[2] - s[0]) * (s[2] - s[0])) +
-                                    3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+        const double vm = von_mises(s);
         if (vm / sy > r.max_von_mises_over_yield) {
           r.max_von_mises_over_yield = vm / sy;
           r.max_von_mises_depth = a > 0.0 ? depth[node] / a : 0.0;
@@ -313,8 +318,7 @@ std::vector<CylinderLevelResult> read_cylinders(const CylindersSpec& spec, const
         const std::size_t k = share(xy.first);
         if (deck.node_depth[q] > std::max(r.asperities[k].contact_width / mm, 2.0 * deck.tip_element)) continue;
         const auto& s = it->second;
-        const double vm = std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[2] - s[0]) * (s[2] - s[0])) +
-                                    3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5])) * 1e6;
+        const double vm = von_mises(s) * 1e6;
         r.asperities[k].max_von_mises = std::max(r.asperities[k].max_von_mises, vm);
       }
     }
