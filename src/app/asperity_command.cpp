@@ -205,7 +205,7 @@ void run(const Options& o) {
   const std::string model_name = o.model.empty() ? c.asperity.model : o.model;
   const auto model = asperity::make_case_model(c, model_name);
   const double mu = o.mu.value_or(c.friction_coefficient);
-  if (!(mu >= 0.0 && mu < 1.0)) throw std::invalid_argument("--mu must lie in [0, 1)");
+  if (!(mu >= 0.0 && mu <= 1.0)) throw std::invalid_argument("--mu must lie in [0, 1]");
   const asperity::ContactPair pair = asperity::contact_pair(c);
 
   if (o.list_constants) return print_constants(*model);

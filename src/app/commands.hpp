@@ -4,12 +4,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include "contact/mesh_contact.hpp"
 #include "core/case.hpp"
 #include "io/topography_files.hpp"
 #include "io/units.hpp"
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace geartrib::app {
 
@@ -21,6 +23,8 @@ void add_fit_command(CLI::App& app);
 void add_dynamics_command(CLI::App& app);
 void add_surface_command(CLI::App& app);
 void add_fem_command(CLI::App& app);
+void add_sweep_command(CLI::App& app);
+void add_tradeoff_command(CLI::App& app);
 void add_version_command(CLI::App& app);
 
 // The --csv and -o/--output options every table-printing command takes.
@@ -45,7 +49,12 @@ io::LoadedSurface load_surface_reporting(const std::string& file, const SurfaceI
 
 // gears/m6z30.toml in the working directory, else in the source tree the tool was built from.
 std::filesystem::path default_case_file();
-// Loads the case (the default one when `file` is empty), printing its warnings to stderr.
-Case load_case_reporting(const std::string& file);
+// Loads the case (the default one when `file` is empty) with the command line's key=value
+// changes (io::CaseChange), printing its warnings to stderr.
+Case load_case_reporting(const std::string& file, const std::vector<std::string>& changes = {});
+// The mesh cycle of a case as the case asks for it (KINSOL when coupled, the case's integrator
+// when it asks for dynamics); throws std::runtime_error on a non-finite output. Thread-safe.
+contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress = {},
+                                          int positions = 0);
 
 }  // namespace geartrib::app

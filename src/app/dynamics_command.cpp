@@ -98,7 +98,7 @@ void add_dynamics_command(CLI::App& app) {
       "loss (and back-flank contact with a backlash). At one speed: the periodic steady cycle (deflection,\n"
       "static transmission error, mesh force, each pair's dynamic load). Over a sweep: the dynamic factor\n"
       "(peak mesh force over F, and over the model's quasi-static peak) against speed; plot it with\n"
-      "scripts/plot_sweep.py.");
+      "scripts/plot_speed_sweep.py.");
   cmd->add_option("case", o->case_file, "Case file (default: gears/m6z30.toml)");
   cmd->add_option("--integrator", o->integrator, "cvode (SUNDIALS BDF) or odeint (Boost Dormand-Prince 5(4))")
       ->check(CLI::IsMember({"cvode", "odeint"}));

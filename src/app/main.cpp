@@ -24,6 +24,8 @@ int main(int argc, char** argv) {
   geartrib::app::add_fit_command(app);
   geartrib::app::add_surface_command(app);
   geartrib::app::add_fem_command(app);
+  geartrib::app::add_sweep_command(app);
+  geartrib::app::add_tradeoff_command(app);
   geartrib::app::add_version_command(app);
   try {
     app.parse(argc, argv);

@@ -1,17 +1,13 @@
 // `geartrib run`: the main job. Rough-surface contact at every position of one tooth pair's
 // path A -> E, written to HDF5 (and CSV), with a summary of each quantity's extremes.
 #include "app/commands.hpp"
+#include "app/progress_bar.hpp"
 
 #include "contact/mesh_contact.hpp"
-#include "gear/gear_mesh.hpp"
 #include "io/hdf5_results.hpp"
 #include "io/table_writer.hpp"
-#include "solvers/integrators.hpp"
-#include "solvers/kinsol_solver.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -28,27 +24,8 @@ struct Options {
   std::string csv;
   std::optional<int> positions;
   std::string fidelity;
+  std::vector<std::string> changes;
   bool quiet = false;
-};
-
-// A one-line progress bar on a terminal's stderr; silent otherwise.
-class ProgressBar {
- public:
-  explicit ProgressBar(bool enabled) : enabled_(enabled && ::isatty(STDERR_FILENO)) {}
-  void operator()(int done, int total) {
-    if (!enabled_) return;
-    const int width = 40, filled = width * done / total;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const double eta = done > 0 ? elapsed * (total - done) / done : 0.0;
-    std::fprintf(stderr, "\r[%s%s] %d/%d positions  %.1f s  eta %.1f s", std::string(filled, '#').c_str(),
-                 std::string(width - filled, '.').c_str(), done, total, elapsed, eta);
-    if (done == total) std::fprintf(stderr, "\n");
-    std::fflush(stderr);
-  }
-
- private:
-  bool enabled_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 // The named point within half a step of s, or "".
@@ -85,20 +62,11 @@ void print_summary(const contact::MeshContactResult& r) {
 }
 
 void run(const Options& o) {
-  Case c = load_case_reporting(o.case_file);
+  Case c = load_case_reporting(o.case_file, o.changes);
   if (!o.fidelity.empty()) c.contact.coupled = o.fidelity == "coupled";
-  const gear::GearMesh mesh(c);
-  const solvers::KinsolSolver kinsol;
-  const std::unique_ptr<OdeIntegrator> integrator =
-      c.dynamics.engine != "none" ? solvers::make_integrator(c.dynamics.engine) : nullptr;
-  ProgressBar bar(!o.quiet);
-  const contact::MeshContactResult r = contact::run_mesh_contact(
-      c, mesh, c.contact.coupled ? &kinsol : nullptr, [&](int done, int total) { bar(done, total); },
-      o.positions.value_or(0), integrator.get());
-  for (const auto* group : {&r.mesh, &r.contact})
-    for (const auto& q : *group)
-      for (double v : q.values)
-        if (!std::isfinite(v)) throw std::runtime_error("non-finite value in " + q.name);
+  ProgressBar bar(!o.quiet, "positions");
+  const contact::MeshContactResult r =
+      run_mesh_cycle(c, [&](int done, int total) { bar(done, total); }, o.positions.value_or(0));
 
   const std::string case_file = o.case_file.empty() ? default_case_file().string() : o.case_file;
   const std::filesystem::path out = o.output.empty()
@@ -150,6 +118,9 @@ void add_run_command(CLI::App& app) {
       ->check(CLI::Range(2, 100000));
   cmd->add_option("--fidelity", o->fidelity, "uncoupled or coupled (default: the case's contact.fidelity)")
       ->check(CLI::IsMember({"uncoupled", "coupled"}));
+  cmd->add_option("--set", o->changes,
+                  "Change a case key for this run: key=value, repeatable (a dotted key such as gear_pair.module=5mm,\n"
+                  "or an alias: module, face_width, rq, torque, ...; see `geartrib sweep --help`)");
   cmd->add_flag("-q,--quiet", o->quiet, "No progress bar and no summary");
   cmd->callback([o] { run(*o); });
 }

@@ -132,6 +132,7 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   r.asperity_model = std::string(model->name());
   GreenwoodWilliamsonOptions gwo;
   gwo.height_points = cs.height_points;
+  gwo.table_points_per_sigma = cs.table_points;
   gwo.plastic = cs.plastic_fraction;
   double p_max = 0.0;
   for (double p : p0) p_max = std::max(p_max, p);

@@ -87,6 +87,7 @@ struct ContactSettings {
   int positions = 201;           // along A -> E of one tooth pair
   int strip_points = 64;         // uncoupled quadrature across the strip
   int height_points = 128;       // GW quadrature over summit heights
+  int table_points = 32;         // GW pressure-separation table points per summit sigma
   int coupled_nodes = 128;       // coupled pressure elements
 };
 

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -142,8 +143,77 @@ Material load_material(const std::filesystem::path& file) {
   return m;
 }
 
-Case load_case(const std::filesystem::path& file) {
+const std::vector<CaseAlias>& case_aliases() {
+  static const std::vector<CaseAlias> aliases = {
+      {"module", {"gear_pair.module"}},
+      {"face_width", {"gear_pair.face_width"}},
+      {"pressure_angle", {"gear_pair.pressure_angle"}},
+      {"center_distance", {"gear_pair.center_distance"}},
+      {"teeth", {"pinion.teeth", "wheel.teeth"}},
+      {"z1", {"pinion.teeth"}},
+      {"z2", {"wheel.teeth"}},
+      {"x1", {"pinion.profile_shift"}},
+      {"x2", {"wheel.profile_shift"}},
+      {"torque", {"operating.pinion_torque"}},
+      {"speed", {"operating.pinion_speed"}},
+      {"mu", {"friction.mu"}},
+      {"ra", {"pinion.flank.ra", "wheel.flank.ra"}},
+      {"rq", {"pinion.flank.rq", "wheel.flank.rq"}},
+      {"summit_radius", {"pinion.flank.summit_radius", "wheel.flank.summit_radius"}},
+      {"material", {"pinion.material", "wheel.material"}},
+      {"model", {"asperity.model"}},
+      {"fidelity", {"contact.fidelity"}},
+      {"positions", {"contact.positions"}},
+      {"strip_points", {"contact.strip_points"}},
+      {"height_points", {"contact.height_points"}},
+      {"coupled_nodes", {"contact.coupled_nodes"}},
+      {"table_points", {"contact.table_points"}},
+      {"load_sharing", {"mesh.load_sharing"}},
+      {"dynamics", {"mesh.dynamics"}},
+      {"rtol", {"dynamics.relative_tolerance"}},
+      {"damping", {"dynamics.damping_ratio"}},
+  };
+  return aliases;
+}
+
+CaseChange parse_case_change(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+    throw std::invalid_argument("'" + text + "': expected key=value (a dotted case key or an alias such as module=4mm)");
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+namespace {
+// The roughness forms of a flank and their keys (read_gear takes exactly one form).
+const std::vector<std::vector<std::string>>& roughness_forms() {
+  static const std::vector<std::vector<std::string>> forms = {
+      {"ra"}, {"rq"}, {"summit_density", "summit_sigma"}, {"m0", "m2", "m4"}, {"topography"}};
+  return forms;
+}
+
+void apply_change(TomlReader& r, const std::string& key, const std::string& value) {
+  // pinion.flank.rq = ... replaces the flank's other roughness forms.
+  for (const char* gear : {"pinion.flank.", "wheel.flank."}) {
+    const std::string flank(gear);
+    if (key.rfind(flank, 0) != 0) continue;
+    const std::string leaf = key.substr(flank.size(), key.find('.', flank.size()) - flank.size());
+    for (const auto& form : roughness_forms())
+      if (std::find(form.begin(), form.end(), leaf) == form.end())
+        for (const auto& k : form) r.erase(flank + k);
+  }
+  r.set(key, value);
+}
+}  // namespace
+
+Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>& changes) {
   TomlReader r(file);
+  for (const CaseChange& ch : changes) {
+    const auto alias = std::find_if(case_aliases().begin(), case_aliases().end(),
+                                    [&](const CaseAlias& a) { return ch.key == a.name; });
+    if (alias == case_aliases().end()) apply_change(r, ch.key, ch.value);
+    else
+      for (const char* k : alias->keys) apply_change(r, k, ch.value);
+  }
   Case c;
   c.title = r.string("title");
   c.source = r.string("source");
@@ -237,12 +307,14 @@ Case load_case(const std::filesystem::path& file) {
     require(r, "contact.strip_points", ct.strip_points >= 8 && ct.strip_points <= 100000, "must lie in [8, 100000]");
     ct.height_points = static_cast<int>(r.integer("contact.height_points", 128));
     require(r, "contact.height_points", ct.height_points >= 8 && ct.height_points <= 100000, "must lie in [8, 100000]");
+    ct.table_points = static_cast<int>(r.integer("contact.table_points", 32));
+    require(r, "contact.table_points", ct.table_points >= 4 && ct.table_points <= 10000, "must lie in [4, 10000]");
     ct.coupled_nodes = static_cast<int>(r.integer("contact.coupled_nodes", 128));
     require(r, "contact.coupled_nodes", ct.coupled_nodes >= 16 && ct.coupled_nodes <= 4000, "must lie in [16, 4000]");
   }
 
   c.friction_coefficient = r.number("friction.mu");
-  require(r, "friction.mu", c.friction_coefficient >= 0.0 && c.friction_coefficient < 1.0, "must lie in [0, 1)");
+  require(r, "friction.mu", c.friction_coefficient >= 0.0 && c.friction_coefficient <= 1.0, "must lie in [0, 1]");
 
   auto& a = c.asperity;
   a.model = r.string("asperity.model", std::string("continuous"));
@@ -293,6 +365,7 @@ Case load_case(const std::filesystem::path& file) {
 
   r.check_all_used();
   c.source_text = r.text();
+  for (const CaseChange& ch : changes) c.source_text += "\n# --set " + ch.key + "=" + ch.value;
   if (c.pinion.flank.roughness.form != c.wheel.flank.roughness.form)
     r.fail("wheel.flank", "give both flanks' roughness in the same form as the pinion's");
 

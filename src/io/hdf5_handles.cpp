@@ -40,4 +40,96 @@ bool read_number_attribute(hid_t obj, const std::string& name, double& value) {
   return ok;
 }
 
+bool read_string_attribute(hid_t obj, const std::string& name, std::string& value) {
+  if (H5Aexists(obj, name.c_str()) <= 0) return false;
+  Handle a(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose, "attribute " + name);
+  Handle type(H5Aget_type(a), H5Tclose, "attribute type");
+  if (H5Tget_class(type) != H5T_STRING || H5Tis_variable_str(type) > 0) return false;
+  const std::size_t size = H5Tget_size(type);
+  std::string buffer(size, '\0');
+  if (H5Aread(a, type, buffer.data()) < 0) return false;
+  value = buffer.substr(0, buffer.find('\0'));
+  return true;
+}
+
+namespace {
+// A new UTF-8 string type of `size` bytes (H5T_VARIABLE: variable length), for a Handle to own.
+hid_t utf8_type(std::size_t size) {
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  if (type >= 0 && (H5Tset_size(type, size) < 0 || H5Tset_cset(type, H5T_CSET_UTF8) < 0)) {
+    H5Tclose(type);
+    return -1;
+  }
+  return type;
+}
+}  // namespace
+
+void number_dataset(hid_t group, const std::string& name, const std::vector<double>& values, const std::string& units) {
+  const hsize_t n = values.size();
+  Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "dataspace");
+  Handle set(H5Dcreate2(group, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
+             "dataset " + name);
+  if (n > 0) check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + name);
+  string_attribute(set, "units", units);
+}
+
+void string_dataset(hid_t group, const std::string& name, const std::string& value) {
+  Handle type(utf8_type(std::max<std::size_t>(1, value.size())), H5Tclose, "string type");
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "scalar space");
+  Handle set(H5Dcreate2(group, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose, "dataset " + name);
+  check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, value.c_str()), "write " + name);
+}
+
+void strings_dataset(hid_t group, const std::string& name, const std::vector<std::string>& values) {
+  std::vector<const char*> pointers;
+  for (const auto& v : values) pointers.push_back(v.c_str());
+  const hsize_t n = values.size();
+  Handle type(utf8_type(H5T_VARIABLE), H5Tclose, "string type");
+  Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "dataspace");
+  Handle set(H5Dcreate2(group, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose, "dataset " + name);
+  if (n > 0) check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "write " + name);
+}
+
+bool is_string_dataset(hid_t group, const std::string& name) {
+  Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
+  Handle type(H5Dget_type(set), H5Tclose, "type of " + name);
+  return H5Tget_class(type) == H5T_STRING;
+}
+
+std::vector<double> read_numbers(hid_t group, const std::string& name) {
+  Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
+  Handle space(H5Dget_space(set), H5Sclose, "dataspace of " + name);
+  if (H5Sget_simple_extent_ndims(space) != 1) throw std::runtime_error("HDF5: " + name + " is not a 1-D dataset");
+  hsize_t n = 0;
+  H5Sget_simple_extent_dims(space, &n, nullptr);
+  std::vector<double> out(n);
+  if (n > 0) check(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), "read " + name);
+  return out;
+}
+
+std::string read_string(hid_t group, const std::string& name) {
+  Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
+  Handle type(H5Dget_type(set), H5Tclose, "type of " + name);
+  if (H5Tget_class(type) != H5T_STRING || H5Tis_variable_str(type) > 0)
+    throw std::runtime_error("HDF5: " + name + " is not a fixed-length string");
+  std::string buffer(H5Tget_size(type), '\0');
+  check(H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()), "read " + name);
+  return buffer.substr(0, buffer.find('\0'));
+}
+
+std::vector<std::string> read_strings(hid_t group, const std::string& name) {
+  Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
+  Handle space(H5Dget_space(set), H5Sclose, "dataspace of " + name);
+  hsize_t n = 0;
+  if (H5Sget_simple_extent_ndims(space) != 1) throw std::runtime_error("HDF5: " + name + " is not a 1-D dataset");
+  H5Sget_simple_extent_dims(space, &n, nullptr);
+  Handle type(utf8_type(H5T_VARIABLE), H5Tclose, "string type");
+  std::vector<char*> pointers(n, nullptr);
+  if (n > 0) check(H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "read " + name);
+  std::vector<std::string> out;
+  for (char* p : pointers) out.emplace_back(p ? p : "");
+  if (n > 0) H5Dvlen_reclaim(type, space, H5P_DEFAULT, pointers.data());
+  return out;
+}
+
 }  // namespace geartrib::io::hdf5

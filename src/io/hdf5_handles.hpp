@@ -4,6 +4,7 @@
 #include <hdf5.h>
 
 #include <string>
+#include <vector>
 
 namespace geartrib::io::hdf5 {
 
@@ -27,5 +28,18 @@ void string_attribute(hid_t obj, const std::string& name, const std::string& val
 void number_attribute(hid_t obj, const std::string& name, double value);
 // Reads a scalar double attribute; false when it is absent or not numeric.
 bool read_number_attribute(hid_t obj, const std::string& name, double& value);
+// Reads a string attribute; false when it is absent or not a string.
+bool read_string_attribute(hid_t obj, const std::string& name, std::string& value);
+
+// Datasets: 1-D float64 with attribute "units"; one UTF-8 string (scalar); 1-D UTF-8 strings.
+void number_dataset(hid_t group, const std::string& name, const std::vector<double>& values, const std::string& units);
+void string_dataset(hid_t group, const std::string& name, const std::string& value);
+void strings_dataset(hid_t group, const std::string& name, const std::vector<std::string>& values);
+// Readers of the same; throw std::runtime_error naming the dataset when it is missing or of
+// another kind.
+std::vector<double> read_numbers(hid_t group, const std::string& name);
+std::string read_string(hid_t group, const std::string& name);
+std::vector<std::string> read_strings(hid_t group, const std::string& name);
+bool is_string_dataset(hid_t group, const std::string& name);
 
 }  // namespace geartrib::io::hdf5

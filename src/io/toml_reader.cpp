@@ -24,6 +24,45 @@ TomlReader::TomlReader(const std::filesystem::path& file) : file_(file.string())
   }
 }
 
+void TomlReader::set(std::string_view key, const std::string& value_text) {
+  const std::string where = file_ + " (--set " + std::string(key) + "=" + value_text + ")";
+  if (key.empty() || key.front() == '.' || key.back() == '.' || key.find("..") != std::string_view::npos)
+    throw InputError(where, 0, std::string(key), value_text, "expected a dotted key such as gear_pair.module");
+  // The value: a TOML value when it parses as one, else the text as a string ("4mm").
+  toml::table parsed;
+  bool is_toml = false;
+  try {
+    parsed = toml::parse("v = " + value_text);
+    is_toml = parsed.contains("v") && parsed.size() == 1;
+  } catch (const toml::parse_error&) {
+  }
+  toml::table* t = &root_;
+  std::string_view rest = key;
+  std::string prefix;
+  while (true) {
+    const auto dot = rest.find('.');
+    const std::string part(rest.substr(0, dot));
+    if (dot == std::string_view::npos) {
+      if (is_toml) t->insert_or_assign(part, *parsed.get("v"));
+      else t->insert_or_assign(part, value_text);
+      break;
+    }
+    prefix += (prefix.empty() ? "" : ".") + part;
+    toml::node* n = t->get(part);
+    if (!n) n = &t->insert_or_assign(part, toml::table{}).first->second;
+    if (!n->is_table()) throw InputError(where, 0, prefix, "", "is a value, not a table: cannot set " + std::string(key));
+    t = n->as_table();
+    rest.remove_prefix(dot + 1);
+  }
+  changed_[std::string(key)] = value_text;
+}
+
+void TomlReader::erase(std::string_view key) {
+  const auto dot = key.rfind('.');
+  toml::node* parent = dot == std::string_view::npos ? &root_ : root_.at_path(key.substr(0, dot)).node();
+  if (parent && parent->is_table()) parent->as_table()->erase(std::string(key.substr(dot == std::string_view::npos ? 0 : dot + 1)));
+}
+
 const toml::node* TomlReader::find(std::string_view key) const {
   return root_.at_path(key).node();
 }
@@ -63,6 +102,11 @@ std::string TomlReader::where(std::string_view key) const {
 }
 
 void TomlReader::fail(std::string_view key, const std::string& rule) const {
+  // A key changed on the command line (or inside a changed table) is named by its --set.
+  for (const auto& [k, v] : changed_)
+    if (key == k || (key.size() > k.size() && key.substr(0, k.size()) == k && key[k.size()] == '.') ||
+        (k.size() > key.size() && std::string_view(k).substr(0, key.size()) == key && k[key.size()] == '.'))
+      throw InputError(file_ + " (--set " + k + "=" + v + ")", 0, std::string(key), value_text(key), rule);
   throw InputError(file_, line_of(key), std::string(key), value_text(key), rule);
 }
 
@@ -182,6 +226,7 @@ void TomlReader::check_all_used() const {
       if (const toml::table* sub = v.as_table()) {
         self(self, *sub, path);
       } else if (!used_.contains(path)) {
+        if (changed_.contains(path)) fail(path, "unknown key (misspelt, or not used by this version)");
         throw InputError(file_, static_cast<int>(v.source().begin.line), path, value_text(path),
                          "unknown key (misspelt, or not used by this version)");
       }

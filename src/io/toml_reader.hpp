@@ -9,6 +9,7 @@
 #include <toml++/toml.h>
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -20,6 +21,13 @@ namespace geartrib::io {
 class TomlReader {
  public:
   explicit TomlReader(const std::filesystem::path& file);
+
+  // Command-line changes, applied before reading: `set` gives a dotted key a value typed as on
+  // the command line (TOML syntax if it parses as a TOML value: 30, 0.1, true, "x"; otherwise the
+  // text as a string: 4mm, kogut-etsion), creating tables as needed; `erase` removes a key.
+  // Errors about a changed key name "--set key=value" instead of a line.
+  void set(std::string_view key, const std::string& value_text);
+  void erase(std::string_view key);
 
   const std::string& file() const { return file_; }
   std::filesystem::path directory() const { return std::filesystem::path(file_).parent_path(); }
@@ -59,6 +67,7 @@ class TomlReader {
   std::string text_;
   toml::table root_;
   std::set<std::string, std::less<>> used_;
+  std::map<std::string, std::string, std::less<>> changed_;  // key -> value text from the command line
 };
 
 }  // namespace geartrib::io

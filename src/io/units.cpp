@@ -115,4 +115,34 @@ double parse_quantity(std::string_view text, Dimension d) {
   return value * unit_factor(unit, d);
 }
 
+std::optional<AnyQuantity> parse_any_quantity(std::string_view text) {
+  const std::string_view t = trim(text);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+  if (ec != std::errc{} || end == t.data() || !std::isfinite(value)) return std::nullopt;
+  const std::string_view unit = trim(t.substr(static_cast<std::size_t>(end - t.data())));
+  if (unit.empty()) return AnyQuantity{value, Dimension::dimensionless};
+  for (const auto& u : kUnits)
+    if (u.symbol == unit) return AnyQuantity{value * u.to_si, u.dimension};
+  return std::nullopt;
+}
+
+std::string_view si_symbol(Dimension d) {
+  switch (d) {
+    case Dimension::dimensionless: return "1";
+    case Dimension::length: return "m";
+    case Dimension::area: return "m^2";
+    case Dimension::areal_density: return "1/m^2";
+    case Dimension::pressure: return "Pa";
+    case Dimension::force: return "N";
+    case Dimension::torque: return "N m";
+    case Dimension::angle: return "rad";
+    case Dimension::angular_speed: return "rad/s";
+    case Dimension::density: return "kg/m^3";
+    case Dimension::speed: return "m/s";
+    case Dimension::inertia: return "kg m^2";
+  }
+  return "1";
+}
+
 }  // namespace geartrib::io

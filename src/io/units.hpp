@@ -2,6 +2,7 @@
 // "<number> <unit>" ("206 GPa", "6 mm", "1.65 um"). Converted to SI once, at input.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -20,5 +21,15 @@ double unit_factor(std::string_view unit, Dimension d);
 // Parses "<number> <unit>" (space optional) or a bare number (SI) into SI; throws
 // std::invalid_argument with the rule broken.
 double parse_quantity(std::string_view text, Dimension d);
+
+// A number with any unit of the table ("4mm" -> 0.004, length), for values whose dimension the
+// caller does not know (sweep axes); a bare number is dimensionless. nullopt for other text.
+struct AnyQuantity {
+  double si = 0.0;
+  Dimension dimension = Dimension::dimensionless;
+};
+std::optional<AnyQuantity> parse_any_quantity(std::string_view text);
+// The SI unit of a dimension as written in output files ("m", "Pa", "rad/s", "1").
+std::string_view si_symbol(Dimension d);
 
 }  // namespace geartrib::io

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Plot a `geartrib dynamics --speed-sweep ... --csv` table: the dynamic factor against speed.
 
-Usage: scripts/plot_sweep.py SWEEP.csv OUT.png [NATURAL_FREQUENCY_HZ]
+Usage: scripts/plot_speed_sweep.py SWEEP.csv OUT.png [NATURAL_FREQUENCY_HZ]
 
 Draws the dynamic factor (peak mesh force over F) and its ratio to the quasi-static peak against
 the mesh frequency (bottom axis) and pinion speed (top axis), shading speeds where contact was

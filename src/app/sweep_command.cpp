@@ -1,0 +1,294 @@
+// `geartrib sweep`: what-if studies. One mesh-cycle run per point of a factorial (or zipped) set
+// of case changes, in parallel on threads, each point summarised by every mesh-cycle quantity's
+// minimum, mean and maximum along A -> E. Points that fail (impossible geometry, a solver that
+// does not converge) are reported in their row and the sweep goes on. `--shard i/n` runs a share
+// of the points; `--merge` joins the shards' files into the file the whole sweep would write.
+#include "app/commands.hpp"
+#include "app/progress_bar.hpp"
+
+#include "io/column_table.hpp"
+#include "io/input_error.hpp"
+#include "io/sweep_plan.hpp"
+#include "io/table_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <iostream>
+#include <mutex>
+#include <thread>
+
+namespace geartrib::app {
+
+namespace {
+
+struct Options {
+  std::string case_file;
+  std::vector<std::string> sets;
+  bool zip = false;
+  std::string shard;
+  int threads = 0;
+  std::string output;
+  std::string csv;
+  std::vector<std::string> merge;
+  bool quiet = false;
+};
+
+// One quantity of one point: its extremes and its mean along the path.
+struct Summary {
+  std::string name, unit;
+  double min = 0.0, mean = 0.0, max = 0.0;
+};
+
+struct PointResult {
+  std::size_t index = 0;
+  bool ok = false;
+  std::string message;  // the error, or the loader's warnings
+  double seconds = 0.0;
+  double contact_ratio = 0.0;
+  double plasticity_index = 0.0;
+  std::vector<Summary> quantities;
+};
+
+// The mean along A -> E: trapezoidal rule over the evenly spaced positions.
+double path_mean(const std::vector<double>& v) {
+  if (v.size() < 2) return v.empty() ? 0.0 : v.front();
+  double sum = 0.5 * (v.front() + v.back());
+  for (std::size_t i = 1; i + 1 < v.size(); ++i) sum += v[i];
+  return sum / static_cast<double>(v.size() - 1);
+}
+
+PointResult run_point(const std::filesystem::path& case_file, const std::vector<io::CaseChange>& changes, std::size_t index) {
+  PointResult p;
+  p.index = index;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const Case c = io::load_case(case_file, changes);
+    for (const auto& w : c.warnings) p.message += (p.message.empty() ? "" : "; ") + w;
+    const contact::MeshContactResult r = run_mesh_cycle(c);
+    p.contact_ratio = r.path.contact_ratio;
+    p.plasticity_index = r.plasticity_index;
+    for (const auto* group : {&r.mesh, &r.contact})
+      for (const auto& q : *group) {
+        if (q.name == "s_m" || q.name == "roll_angle_rad") continue;  // the path itself
+        const auto [lo, hi] = std::minmax_element(q.values.begin(), q.values.end());
+        p.quantities.push_back({q.name, q.unit, *lo, path_mean(q.values), *hi});
+      }
+    p.ok = true;
+  } catch (const std::exception& e) {
+    p.message = e.what();
+  }
+  p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return p;
+}
+
+// The table: point index, the swept values (numeric with their SI unit when every value of the
+// axis is a quantity of one unit, else text), status, message, then the summaries.
+io::ColumnTable point_table(const io::SweepPlan& plan, const std::vector<PointResult>& points) {
+  io::ColumnTable t;
+  io::Column index{"point", "1", false, {}, {}};
+  for (const auto& p : points) index.numbers.push_back(static_cast<double>(p.index));
+  t.columns.push_back(std::move(index));
+  for (std::size_t k = 0; k < plan.axes.size(); ++k) {
+    const auto& axis = plan.axes[k];
+    std::vector<std::optional<io::SiValue>> si;
+    for (const auto& v : axis.values) si.push_back(io::si_quantity(v));
+    const bool numeric = std::all_of(si.begin(), si.end(), [&](const auto& s) { return s && s->unit == si.front()->unit; });
+    io::Column col{axis.key, numeric ? si.front()->unit : "", !numeric, {}, {}};
+    for (const auto& p : points) {
+      const std::string value = plan.point(p.index)[k].value;
+      if (numeric) col.numbers.push_back(io::si_quantity(value)->value);
+      else col.texts.push_back(value);
+    }
+    t.columns.push_back(std::move(col));
+  }
+  io::Column status{"status", "", true, {}, {}}, message{"message", "", true, {}, {}};
+  io::Column seconds{"seconds", "s", false, {}, {}}, ratio{"contact_ratio", "1", false, {}, {}},
+      psi{"plasticity_index", "1", false, {}, {}};
+  for (const auto& p : points) {
+    status.texts.push_back(p.ok ? "ok" : "error");
+    message.texts.push_back(p.message);
+    seconds.numbers.push_back(p.seconds);
+    ratio.numbers.push_back(p.ok ? p.contact_ratio : std::nan(""));
+    psi.numbers.push_back(p.ok ? p.plasticity_index : std::nan(""));
+  }
+  for (auto* c : {&status, &message, &seconds, &ratio, &psi}) t.columns.push_back(std::move(*c));
+  // Quantities in order of first appearance (a swept key may add one, e.g. mesh.dynamics).
+  std::vector<std::pair<std::string, std::string>> names;
+  for (const auto& p : points)
+    for (const auto& q : p.quantities)
+      if (std::none_of(names.begin(), names.end(), [&](const auto& n) { return n.first == q.name; }))
+        names.emplace_back(q.name, q.unit);
+  for (const auto& [name, unit] : names) {
+    io::Column lo{name + "_min", unit, false, {}, {}}, mean{name + "_mean", unit, false, {}, {}},
+        hi{name + "_max", unit, false, {}, {}};
+    for (const auto& p : points) {
+      const auto q = std::find_if(p.quantities.begin(), p.quantities.end(), [&](const Summary& s) { return s.name == name; });
+      lo.numbers.push_back(q != p.quantities.end() ? q->min : std::nan(""));
+      mean.numbers.push_back(q != p.quantities.end() ? q->mean : std::nan(""));
+      hi.numbers.push_back(q != p.quantities.end() ? q->max : std::nan(""));
+    }
+    for (auto* c : {&lo, &mean, &hi}) t.columns.push_back(std::move(*c));
+  }
+  return t;
+}
+
+std::string signature(const std::string& scene, const std::string& plan) {
+  return fmt::format("{:016x}", std::hash<std::string>{}(scene + '\n' + plan));
+}
+
+void write_outputs(const io::ColumnTableFile& f, const Options& o) {
+  io::write_column_table_hdf5(o.output.empty() ? "sweep.h5" : o.output, f);
+  if (!o.csv.empty()) io::write_file_atomically(o.csv, io::format_csv(f.table));
+}
+
+void print_summary(const io::ColumnTable& t, const std::string& output) {
+  const io::Column* status = t.find("status");
+  const auto failed = static_cast<std::size_t>(std::count(status->texts.begin(), status->texts.end(), "error"));
+  fmt::print("wrote {} ({} points, {} failed)\n", output, t.rows(), failed);
+  const io::Column* message = t.find("message");
+  for (std::size_t i = 0; i < t.rows(); ++i)
+    if (status->texts[i] == "error")
+      fmt::print("  point {}: {}\n", static_cast<long>(t.find("point")->numbers[i]), message->texts[i]);
+}
+
+void merge(const Options& o) {
+  std::vector<io::ColumnTableFile> files;
+  for (const auto& m : o.merge) files.push_back(io::read_column_table_hdf5(m));
+  const auto& first = files.front();
+  const std::size_t total = std::stoul(first.attributes.at("points_total"));
+  std::vector<bool> seen(total, false);
+  std::vector<bool> shard_seen(std::stoul(first.attributes.at("shard_count")), false);
+  io::ColumnTableFile out;
+  out.scene = first.scene;
+  out.attributes = first.attributes;
+  out.attributes["shard"] = "0/1";
+  out.attributes["shard_count"] = "1";
+  std::vector<std::pair<std::size_t, std::pair<std::size_t, std::size_t>>> order;  // point -> (file, row)
+  for (std::size_t f = 0; f < files.size(); ++f) {
+    const auto& a = files[f].attributes;
+    if (a.at("signature") != first.attributes.at("signature") || a.at("shard_count") != first.attributes.at("shard_count"))
+      throw std::invalid_argument(o.merge[f] + ": from another sweep (case, --set or --zip differ) than " + o.merge.front());
+    const std::size_t shard = std::stoul(a.at("shard").substr(0, a.at("shard").find('/')));
+    if (shard_seen[shard]) throw std::invalid_argument(o.merge[f] + ": shard " + a.at("shard") + " given twice");
+    shard_seen[shard] = true;
+    const auto& idx = files[f].table.find("point")->numbers;
+    for (std::size_t r = 0; r < idx.size(); ++r) {
+      const auto i = static_cast<std::size_t>(idx[r]);
+      if (i >= total || seen[i]) throw std::invalid_argument(fmt::format("{}: point {} out of range or twice", o.merge[f], i));
+      seen[i] = true;
+      order.push_back({i, {f, r}});
+    }
+  }
+  for (std::size_t s = 0; s < shard_seen.size(); ++s)
+    if (!shard_seen[s]) throw std::invalid_argument(fmt::format("--merge: shard {}/{} is missing", s, shard_seen.size()));
+  std::sort(order.begin(), order.end());
+  // Columns: the union in order of first appearance (shards may lack a quantity all their points lacked).
+  for (const auto& f : files)
+    for (const auto& c : f.table.columns)
+      if (!out.table.find(c.name)) out.table.columns.push_back({c.name, c.unit, c.text, {}, {}});
+  for (const auto& [point, at] : order) {
+    const auto& src = files[at.first].table;
+    for (auto& c : out.table.columns) {
+      const io::Column* s = src.find(c.name);
+      if (c.text) c.texts.push_back(s ? s->texts[at.second] : "");
+      else c.numbers.push_back(s ? s->numbers[at.second] : std::nan(""));
+    }
+  }
+  write_outputs(out, o);
+  if (!o.quiet) print_summary(out.table, o.output.empty() ? "sweep.h5" : o.output);
+}
+
+void run(const Options& o) {
+  if (!o.merge.empty()) {
+    if (!o.sets.empty() || !o.shard.empty()) throw std::invalid_argument("--merge takes only shard files, -o and --csv");
+    merge(o);
+    return;
+  }
+  io::SweepPlan plan;
+  plan.zip = o.zip;
+  for (const auto& s : o.sets) plan.axes.push_back(io::parse_sweep_axis(s));
+  plan.validate();
+  const io::Shard shard = o.shard.empty() ? io::Shard{} : io::parse_shard(o.shard);
+  const std::filesystem::path case_file = o.case_file.empty() ? default_case_file() : std::filesystem::path(o.case_file);
+  // The base case must load: an error there is the user's, not a point's.
+  const Case base = load_case_reporting(case_file.string());
+
+  std::vector<std::size_t> mine;
+  for (std::size_t i = 0; i < plan.size(); ++i)
+    if (shard.owns(i)) mine.push_back(i);
+  const int threads = std::max(1, std::min<int>(o.threads > 0 ? o.threads : static_cast<int>(std::thread::hardware_concurrency()),
+                                                static_cast<int>(mine.size())));
+  if (!o.quiet)
+    std::cerr << fmt::format("sweep: {} points ({}), {} in this shard {}/{}, {} threads\n", plan.size(), plan.describe(),
+                             mine.size(), shard.index, shard.count, threads);
+  std::vector<PointResult> results(mine.size());
+  std::atomic<std::size_t> next{0}, done{0};
+  ProgressBar bar(!o.quiet, "points");
+  std::vector<std::jthread> pool;
+  for (int t = 0; t < threads; ++t)
+    pool.emplace_back([&] {
+      for (std::size_t k; (k = next.fetch_add(1)) < mine.size();) {
+        results[k] = run_point(case_file, plan.point(mine[k]), mine[k]);
+        bar(static_cast<int>(done.fetch_add(1) + 1), static_cast<int>(mine.size()));
+      }
+    });
+  pool.clear();  // joins
+
+  io::ColumnTableFile f;
+  f.table = point_table(plan, results);
+  f.scene = base.source_text;
+  f.attributes = {{"version", GEARTRIB_VERSION},
+                  {"case_file", case_file.string()},
+                  {"sets", plan.describe()},
+                  {"points_total", std::to_string(plan.size())},
+                  {"shard", fmt::format("{}/{}", shard.index, shard.count)},
+                  {"shard_count", std::to_string(shard.count)},
+                  {"signature", signature(base.source_text, plan.describe())},
+                  {"mean", "trapezoidal mean over the evenly spaced positions A -> E"}};
+  write_outputs(f, o);
+  if (!o.quiet) print_summary(f.table, o.output.empty() ? "sweep.h5" : o.output);
+}
+
+}  // namespace
+
+void add_sweep_command(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  std::string aliases;
+  for (const auto& a : io::case_aliases()) {
+    aliases += fmt::format("  {:<15}", a.name);
+    for (std::size_t i = 0; i < a.keys.size(); ++i) aliases += (i ? ", " : "") + std::string(a.keys[i]);
+    aliases += "\n";
+  }
+  auto* cmd = app.add_subcommand(
+      "sweep",
+      "What-if sweeps: one mesh-cycle run (as `geartrib run`) per point, in parallel on threads.\n"
+      "Each --set is an axis: key=v1,v2,v3 or key=lo:hi:n (n evenly spaced values, same unit at both ends).\n"
+      "The points are the full factorial (first --set slowest) or, with --zip, the i-th value of each.\n"
+      "Keys are the case file's dotted keys (gear_pair.module, pinion.flank.ra, contact.height_points, ...)\n"
+      "or these aliases:\n" +
+          aliases +
+          "Setting one roughness form of a flank (ra, rq, ...) replaces the flank's other form.\n"
+          "Output (HDF5 /points with units, /sweep, /scene; --csv): one row per point with the swept values,\n"
+          "status and message (a point whose geometry or solve fails is reported there; the sweep goes on),\n"
+          "contact ratio, plasticity index, and each quantity of `geartrib run` as _min, _mean, _max along\n"
+          "A -> E. scripts/plot_design_sweep.py draws one quantity against one or two swept keys.\n"
+          "Larger than one machine: run `--shard i/n` (0 <= i < n; points with index % n == i) as n jobs of a\n"
+          "scheduler array or MPI launcher, each with its own -o, then `geartrib sweep --merge shard*.h5 -o all.h5`.");
+  cmd->add_option("case", o->case_file, "Case file (default: gears/m6z30.toml)");
+  cmd->add_option("--set", o->sets, "An axis: key=v1,v2,... or key=lo:hi:n (repeatable)");
+  cmd->add_flag("--zip", o->zip, "Points are the i-th values of all axes (equal lengths) instead of the factorial");
+  cmd->add_option("--shard", o->shard, "Run only points with index % n == i: i/n with 0 <= i < n");
+  cmd->add_option("--threads", o->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  cmd->add_option("-o,--output", o->output, "HDF5 file (default: sweep.h5)");
+  cmd->add_option("--csv", o->csv, "Also write the table as CSV to this file");
+  cmd->add_option("--merge", o->merge, "Join shard files (all shards of one sweep) into -o instead of running")
+      ->check(CLI::ExistingFile);
+  cmd->add_flag("-q,--quiet", o->quiet, "No progress bar and no summary");
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace geartrib::app

@@ -1,0 +1,288 @@
+// `geartrib tradeoff`: what each fidelity knob of the mesh cycle costs in time and in accuracy.
+// For every knob, each setting is run with the other knobs at the case's own settings, timed,
+// and compared with the same knob's highest setting (its reference) on the main outputs: the
+// real-area ratio, the plastic area fraction and the highest asperity's von Mises stress along
+// A -> E. Then the case as given and the recommended combination (each knob's cheapest setting
+// within the tolerance of its reference) are compared with all knobs at their highest settings.
+#include "app/commands.hpp"
+
+#include "io/case_file.hpp"
+#include "io/column_table.hpp"
+#include "io/table_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+namespace geartrib::app {
+
+namespace {
+
+struct Options {
+  std::string case_file;
+  bool csv = false;
+  std::string output;
+  double tolerance = 0.01;
+  double min_time = 0.3;
+  std::vector<std::string> knobs;
+  bool quiet = false;
+};
+
+struct Setting {
+  std::string label;
+  std::vector<io::CaseChange> changes;
+};
+
+// A knob's settings from cheapest to most faithful; the last is its reference. `physics`: the
+// settings are different models (or, for the integrator, not used by the case): reported, not
+// part of the recommended combination nor of the all-highest reference.
+struct Knob {
+  std::string name;
+  std::vector<Setting> settings;
+  bool physics = false;
+};
+
+std::vector<Knob> knobs_of(const Case& c) {
+  auto ladder = [](const std::string& name, const std::string& key, std::vector<int> values) {
+    Knob k{name, {}, false};
+    for (int v : values) k.settings.push_back({std::to_string(v), {{key, std::to_string(v)}}});
+    return k;
+  };
+  std::vector<Knob> out;
+  out.push_back(ladder("positions", "contact.positions", {11, 21, 41, 81, 101, 201, 401, 801}));
+  out.push_back(ladder("height_points", "contact.height_points", {8, 16, 32, 64, 128, 256, 512, 1024}));
+  out.push_back(ladder("table_points", "contact.table_points", {4, 8, 16, 32, 64, 128, 256}));
+  out.push_back(ladder("strip_points", "contact.strip_points", {8, 16, 32, 64, 128, 256, 512}));
+  Knob fidelity{"fidelity", {{"uncoupled", {{"contact.fidelity", "uncoupled"}}}}, false};
+  for (int n : {32, 64, 128, 256})
+    fidelity.settings.push_back({fmt::format("coupled {}", n), {{"contact.fidelity", "coupled"}, {"contact.coupled_nodes", std::to_string(n)}}});
+  out.push_back(fidelity);
+  // Static load sharing against the steady dynamic cycle: a physics choice, reported.
+  out.push_back({"dynamics",
+                 {{"none (static)", {{"mesh.dynamics", "none"}}},
+                  {"cvode 1e-12", {{"mesh.dynamics", "cvode"}, {"dynamics.relative_tolerance", "1e-12"}}}},
+                 true});
+  // The integrator and its tolerance for the dynamic cycle (recommended when the case asks for dynamics).
+  Knob integrator{"integrator", {}, c.dynamics.engine == "none"};
+  for (const char* engine : {"odeint", "cvode"})
+    for (const char* rtol : {"1e-4", "1e-6", "1e-8", "1e-10"})
+      integrator.settings.push_back({fmt::format("{} {}", engine, rtol), {{"mesh.dynamics", engine}, {"dynamics.relative_tolerance", rtol}}});
+  integrator.settings.push_back({"cvode 1e-12", {{"mesh.dynamics", "cvode"}, {"dynamics.relative_tolerance", "1e-12"}}});
+  out.push_back(integrator);
+  // The asperity models, the case's own last (the reference).
+  Knob model{"asperity_model", {}, true};
+  for (const char* m : {"hertz", "ceb", "zmc", "kogut-etsion", "jackson-green", "continuous"})
+    if (m != c.asperity.model) model.settings.push_back({m, {{"asperity.model", m}}});
+  model.settings.push_back({c.asperity.model, {{"asperity.model", c.asperity.model}}});
+  out.push_back(model);
+  return out;
+}
+
+// The outputs compared, as named in the mesh-cycle result.
+constexpr const char* kOutputs[] = {"real_area_ratio", "plastic_area_fraction", "max_asperity_von_mises_Pa"};
+
+struct Curves {
+  std::vector<double> s;
+  std::vector<std::vector<double>> outputs;  // per kOutputs
+};
+
+struct Timed {
+  double seconds = 0.0;
+  Curves curves;
+};
+
+Timed run_timed(const std::filesystem::path& case_file, const std::vector<io::CaseChange>& changes, double min_time) {
+  const Case c = io::load_case(case_file, changes);
+  Timed t;
+  t.seconds = 1e300;
+  double total = 0.0;
+  for (int repeat = 0; repeat < 5 && (repeat == 0 || total < min_time); ++repeat) {
+    const auto start = std::chrono::steady_clock::now();
+    const contact::MeshContactResult r = run_mesh_cycle(c);
+    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    t.seconds = std::min(t.seconds, dt);  // the least disturbed of the repeats
+    total += dt;
+    if (repeat == 0) {
+      t.curves.s = r.find("s_m")->values;
+      for (const char* name : kOutputs) {
+        const contact::Series* q = r.find(name);
+        if (!q) throw std::invalid_argument(std::string("tradeoff needs the case's contact outputs to include ") + name);
+        t.curves.outputs.push_back(q->values);
+      }
+    }
+  }
+  return t;
+}
+
+// The error of one output against the reference, relative to the reference's largest magnitude:
+// the largest difference of the path's minimum, mean and maximum (what a sweep reports; coarse
+// positions miss extremes between samples), and where the positions coincide also the largest
+// pointwise difference.
+double curve_error(const std::vector<double>& s, const std::vector<double>& v, const std::vector<double>& s_ref,
+                   const std::vector<double>& ref) {
+  double scale = 0.0;
+  for (double x : ref) scale = std::max(scale, std::abs(x));
+  auto mean = [](const std::vector<double>& x) {  // trapezoidal, evenly spaced positions
+    double sum = 0.5 * (x.front() + x.back());
+    for (std::size_t i = 1; i + 1 < x.size(); ++i) sum += x[i];
+    return sum / static_cast<double>(x.size() - 1);
+  };
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  const auto [lo_ref, hi_ref] = std::minmax_element(ref.begin(), ref.end());
+  double worst = std::max({std::abs(*lo - *lo_ref), std::abs(*hi - *hi_ref), std::abs(mean(v) - mean(ref))});
+  if (s == s_ref)
+    for (std::size_t i = 0; i < v.size(); ++i) worst = std::max(worst, std::abs(v[i] - ref[i]));
+  return scale > 0.0 ? worst / scale : worst;
+}
+
+struct Row {
+  std::string knob, setting;
+  double seconds = 0.0;
+  double errors[3] = {0.0, 0.0, 0.0};
+  bool reference = false, recommended = false;
+  double worst() const { return std::max({errors[0], errors[1], errors[2]}); }
+};
+
+Row compare(const std::string& knob, const std::string& setting, const Timed& t, const Timed& ref) {
+  Row r{knob, setting, t.seconds, {}, false, false};
+  for (std::size_t k = 0; k < 3; ++k)
+    r.errors[k] = curve_error(t.curves.s, t.curves.outputs[k], ref.curves.s, ref.curves.outputs[k]);
+  return r;
+}
+
+std::string shell_quoted(const std::string& s) {
+  std::string q = "'";
+  for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return q + "'";
+}
+
+void run(const Options& o) {
+  std::vector<std::string> physics;
+  auto physics_knob = [&](const std::string& name) { return std::find(physics.begin(), physics.end(), name) != physics.end(); };
+  const std::filesystem::path case_file = o.case_file.empty() ? default_case_file() : std::filesystem::path(o.case_file);
+  const Case base = load_case_reporting(case_file.string());
+  std::vector<Knob> knobs = knobs_of(base);
+  for (const Knob& k : knobs)
+    if (k.physics) physics.push_back(k.name);
+  if (!o.knobs.empty()) {
+    std::erase_if(knobs, [&](const Knob& k) { return std::find(o.knobs.begin(), o.knobs.end(), k.name) == o.knobs.end(); });
+    if (knobs.empty()) throw std::invalid_argument("--knob: none of the names is a knob (see --help)");
+  }
+  std::vector<Row> rows;
+  std::vector<io::CaseChange> recommended, highest;
+  for (const Knob& k : knobs) {
+    if (!o.quiet) std::cerr << "tradeoff: " << k.name << " (" << k.settings.size() << " settings)\n";
+    const Timed ref = run_timed(case_file, k.settings.back().changes, o.min_time);
+    std::vector<Row> mine;
+    for (std::size_t i = 0; i + 1 < k.settings.size(); ++i)
+      mine.push_back(compare(k.name, k.settings[i].label, run_timed(case_file, k.settings[i].changes, o.min_time), ref));
+    mine.push_back(compare(k.name, k.settings.back().label, ref, ref));
+    mine.back().reference = true;
+    // The cheapest setting within the tolerance of the reference; times within 5% of the fastest
+    // such setting are ties (timer noise), won by the lower setting of the ladder.
+    double fastest = mine.back().seconds;
+    for (const Row& r : mine)
+      if (r.worst() <= o.tolerance) fastest = std::min(fastest, r.seconds);
+    std::size_t best = 0;
+    while (!(mine[best].worst() <= o.tolerance && mine[best].seconds <= 1.05 * fastest)) ++best;
+    if (!k.physics) mine[best].recommended = true;
+    if (!k.physics) {
+      recommended.insert(recommended.end(), k.settings[best].changes.begin(), k.settings[best].changes.end());
+      highest.insert(highest.end(), k.settings.back().changes.begin(), k.settings.back().changes.end());
+    }
+    rows.insert(rows.end(), mine.begin(), mine.end());
+  }
+  // Later knobs' changes win where keys repeat (the coupled fidelity makes strip_points moot).
+  if (!o.quiet) std::cerr << "tradeoff: the case as given and the recommended combination against all knobs highest\n";
+  const Timed all_highest = run_timed(case_file, highest, o.min_time);
+  rows.push_back(compare("combined", "case as given", run_timed(case_file, {}, o.min_time), all_highest));
+  rows.push_back(compare("combined", "recommended", run_timed(case_file, recommended, o.min_time), all_highest));
+  rows.push_back(compare("combined", "all highest", all_highest, all_highest));
+  rows.back().reference = true;
+
+  io::ColumnTable t;
+  t.columns = {{"knob", "", true, {}, {}},           {"setting", "", true, {}, {}},
+               {"time_s", "s", false, {}, {}},        {"error_real_area", "1", false, {}, {}},
+               {"error_plastic_fraction", "1", false, {}, {}}, {"error_peak_stress", "1", false, {}, {}},
+               {"note", "", true, {}, {}}};
+  for (const Row& r : rows) {
+    t.columns[0].texts.push_back(r.knob);
+    t.columns[1].texts.push_back(r.setting);
+    t.columns[2].numbers.push_back(r.seconds);
+    for (int k = 0; k < 3; ++k) t.columns[3 + k].numbers.push_back(r.errors[k]);
+    t.columns[6].texts.push_back(r.reference ? (r.recommended ? "reference, recommended" : "reference")
+                                             : (r.recommended ? "recommended" : ""));
+  }
+  const bool png = o.output.size() > 4 && o.output.substr(o.output.size() - 4) == ".png";
+  if (o.csv && !png) {
+    const std::string text = io::format_csv(t);
+    if (o.output.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
+    else io::write_file_atomically(o.output, text);
+  } else {
+    std::string text = fmt::format("{:<15} {:<16} {:>10} {:>16} {:>22} {:>17}  {}\n", "knob", "setting", "time_s",
+                                   "error_real_area", "error_plastic_fraction", "error_peak_stress", "note");
+    for (std::size_t i = 0; i < t.rows(); ++i)
+      text += fmt::format("{:<15} {:<16} {:>10.4g} {:>16.3g} {:>22.3g} {:>17.3g}  {}\n", t.columns[0].texts[i], t.columns[1].texts[i],
+                          t.columns[2].numbers[i], t.columns[3].numbers[i], t.columns[4].numbers[i], t.columns[5].numbers[i],
+                          t.columns[6].texts[i]);
+    std::string advice = fmt::format("\nRecommended (cheapest within {:g}% of each knob's reference on all three outputs):", 100 * o.tolerance);
+    for (const Row& r : rows)
+      if (r.recommended && r.knob != "combined" && !physics_knob(r.knob)) advice += fmt::format(" {} = {};", r.knob, r.setting);
+    text += advice + "\n";
+    if (png || o.output.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
+    else io::write_file_atomically(o.output, text);
+  }
+  if (png) {
+    // The Pareto plot by scripts/plot_tradeoff.py from the CSV table (matplotlib).
+    const std::filesystem::path csv = o.output.substr(0, o.output.size() - 4) + ".csv";
+    io::write_file_atomically(csv, io::format_csv(t));
+    const std::filesystem::path script = std::filesystem::path(GEARTRIB_SOURCE_DIR) / "scripts/plot_tradeoff.py";
+    // Debian's interpreter, where python3-matplotlib installs (a PATH python3 may lack it).
+    const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+    const std::string command = python + " " + shell_quoted(script.string()) + " " + shell_quoted(csv.string()) + " " +
+                                shell_quoted(o.output) + fmt::format(" {:g}", o.tolerance);
+    if (std::system(command.c_str()) != 0)
+      throw std::runtime_error("plotting failed (" + command + "); the table is in " + csv.string() +
+                               " (needs python3 with matplotlib: apt-get install python3-matplotlib)");
+    fmt::print("wrote {} and {}\n", csv.string(), o.output);
+  }
+}
+
+}  // namespace
+
+void add_tradeoff_command(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  auto* cmd = app.add_subcommand(
+      "tradeoff",
+      "The speed/accuracy trade of the mesh cycle, measured on a case. Knobs: positions along A -> E,\n"
+      "height_points (summit-height quadrature), table_points (pressure-separation table per sigma),\n"
+      "strip_points (uncoupled quadrature across the Hertz strip), fidelity (uncoupled, coupled with N\n"
+      "nodes), integrator (odeint/cvode and tolerance of the dynamic cycle; recommended only when the case\n"
+      "asks for dynamics); reported as physics choices, not recommended: dynamics (static against the\n"
+      "dynamic cycle) and asperity_model. Each setting runs with the other knobs as the case has them and\n"
+      "is compared with the knob's highest setting on the real-area ratio, the plastic area fraction and\n"
+      "the highest asperity's von Mises stress: the largest difference of the path's minimum, mean and\n"
+      "maximum and, where the positions coincide, of any position, relative to the reference's largest\n"
+      "value. Time: the fastest of up to 5 runs (at least --min-time in all).\n"
+      "Then the case as given and the recommended combination against all knobs at their highest.\n"
+      "The boundary-element grid is not part of the mesh cycle: its trade is in `geartrib_bench\n"
+      "--benchmark_filter=multi_asperity` (README).");
+  cmd->add_option("case", o->case_file, "Case file (default: gears/m6z30.toml)");
+  cmd->add_flag("--csv", o->csv, "CSV instead of aligned columns");
+  cmd->add_option("-o,--output", o->output,
+                  "Write the table here; a .png name draws the Pareto plot (time against error) with\n"
+                  "scripts/plot_tradeoff.py and writes the table beside it as .csv");
+  cmd->add_option("--tolerance", o->tolerance, "Relative error a recommended setting may have (default 0.01)")
+      ->check(CLI::Range(1e-9, 1.0));
+  cmd->add_option("--min-time", o->min_time, "Repeat each run until this much time [s] is spent (default 0.3)")
+      ->check(CLI::Range(0.0, 1e4));
+  cmd->add_option("--knob", o->knobs, "Only these knobs (repeatable)");
+  cmd->add_flag("-q,--quiet", o->quiet, "No progress lines");
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace geartrib::app

@@ -1,0 +1,128 @@
+#include "io/sweep_plan.hpp"
+
+#include "io/text_lines.hpp"
+#include "io/units.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+namespace geartrib::io {
+
+namespace {
+
+// "40mm" -> (40, "mm"); throws when the text does not start with a number.
+std::pair<double, std::string> number_and_unit(const std::string& text, const std::string& whole) {
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc{} || end == text.data() || !std::isfinite(v))
+    throw std::invalid_argument("'" + whole + "': range ends must be numbers with an optional unit, got '" + text + "'");
+  return {v, trim(std::string(end, text.data() + text.size()))};
+}
+
+bool is_integer_text(const std::string& t) {
+  return !t.empty() && t.find_first_not_of("+-0123456789") == std::string::npos;
+}
+
+}  // namespace
+
+SweepAxis parse_sweep_axis(const std::string& text) {
+  const CaseChange c = parse_case_change(text);
+  SweepAxis axis{c.key, {}};
+  const std::vector<std::string> parts = split_csv(c.value);
+  if (parts.size() == 1 && std::count(c.value.begin(), c.value.end(), ':') == 2) {
+    const auto a = c.value.find(':'), b = c.value.rfind(':');
+    const std::string lo = trim(c.value.substr(0, a)), hi = trim(c.value.substr(a + 1, b - a - 1));
+    const std::string count = trim(c.value.substr(b + 1));
+    long n = 0;
+    const auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), n);
+    if (ec != std::errc{} || end != count.data() + count.size() || n < 2 || n > 100000)
+      throw std::invalid_argument("'" + text + "': lo:hi:n needs an integer count n in [2, 100000], got '" + count + "'");
+    const auto [v0, u0] = number_and_unit(lo, text);
+    const auto [v1, u1] = number_and_unit(hi, text);
+    if (u0 != u1) throw std::invalid_argument("'" + text + "': both range ends need the same unit ('" + u0 + "', '" + u1 + "')");
+    const bool integers = is_integer_text(lo) && is_integer_text(hi) &&
+                          std::fmod(std::abs(v1 - v0), static_cast<double>(n - 1)) == 0.0;
+    for (long i = 0; i < n; ++i) {
+      const double v = v0 + (v1 - v0) * static_cast<double>(i) / static_cast<double>(n - 1);
+      axis.values.push_back(integers ? fmt::format("{}", std::llround(v)) : fmt::format("{:.10g}{}", v, u0));
+    }
+    return axis;
+  }
+  for (const auto& p : parts) {
+    const std::string v = trim(p);
+    if (v.empty()) throw std::invalid_argument("'" + text + "': empty value in the list");
+    axis.values.push_back(v);
+  }
+  return axis;
+}
+
+void SweepPlan::validate() const {
+  if (axes.empty()) throw std::invalid_argument("a sweep needs at least one --set key=values");
+  std::set<std::string> keys;
+  for (const auto& a : axes) {
+    if (!keys.insert(a.key).second) throw std::invalid_argument("--set " + a.key + " given twice");
+    if (zip && a.values.size() != 1 && a.values.size() != size())
+      throw std::invalid_argument(fmt::format("--zip: --set {} has {} values, another axis {}: zipped axes need equal lengths "
+                                              "(or one value, used at every point)",
+                                              a.key, a.values.size(), size()));
+  }
+}
+
+std::size_t SweepPlan::size() const {
+  if (axes.empty()) return 0;
+  if (zip) {
+    std::size_t n = 1;
+    for (const auto& a : axes) n = std::max(n, a.values.size());
+    return n;
+  }
+  std::size_t n = 1;
+  for (const auto& a : axes) n *= a.values.size();
+  return n;
+}
+
+std::vector<CaseChange> SweepPlan::point(std::size_t i) const {
+  if (i >= size()) throw std::out_of_range("sweep point index");
+  std::vector<CaseChange> out(axes.size());
+  for (std::size_t k = axes.size(); k-- > 0;) {  // last axis fastest
+    const auto& a = axes[k];
+    const std::size_t j = zip ? (a.values.size() == 1 ? 0 : i) : i % a.values.size();
+    if (!zip) i /= a.values.size();
+    out[k] = {a.key, a.values[j]};
+  }
+  return out;
+}
+
+std::string SweepPlan::describe() const {
+  std::string s;
+  for (const auto& a : axes) {
+    s += (s.empty() ? "" : ";") + a.key + "=";
+    for (std::size_t j = 0; j < a.values.size(); ++j) s += (j ? "," : "") + a.values[j];
+  }
+  return s + (zip ? " (zip)" : " (factorial)");
+}
+
+Shard parse_shard(const std::string& text) {
+  const auto slash = text.find('/');
+  Shard s;
+  auto parse = [&](std::string_view t, std::size_t& v) {
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    return ec == std::errc{} && end == t.data() + t.size() && !t.empty();
+  };
+  if (slash == std::string::npos || !parse(std::string_view(text).substr(0, slash), s.index) ||
+      !parse(std::string_view(text).substr(slash + 1), s.count) || s.count == 0 || s.index >= s.count)
+    throw std::invalid_argument("--shard '" + text + "': expected i/n with 0 <= i < n (e.g. 0/4 .. 3/4)");
+  return s;
+}
+
+std::optional<SiValue> si_quantity(const std::string& text) {
+  const auto q = parse_any_quantity(text);
+  if (!q) return std::nullopt;
+  return SiValue{q->si, std::string(si_symbol(q->dimension))};
+}
+
+}  // namespace geartrib::io

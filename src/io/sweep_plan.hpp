@@ -1,0 +1,53 @@
+// The points of a what-if sweep (`geartrib sweep`): each `--set key=values` is an axis, the
+// points are their full factorial (the first axis varying slowest) or, zipped, the i-th value of
+// every axis. Values stay text (applied to the case as io::CaseChange, converted there, once).
+#pragma once
+
+#include "io/case_file.hpp"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace geartrib::io {
+
+struct SweepAxis {
+  std::string key;                  // case key or alias
+  std::vector<std::string> values;  // as applied: "4mm", "30", "kogut-etsion"
+};
+
+// "key=v1,v2,v3" or "key=lo:hi:n" (n >= 2 evenly spaced values, lo and hi in the same unit:
+// "40mm:80mm:5" -> 40mm, 50mm, ..., 80mm; integer ends with integer steps stay integers).
+// Throws std::invalid_argument naming the text and the rule broken.
+SweepAxis parse_sweep_axis(const std::string& text);
+
+struct SweepPlan {
+  std::vector<SweepAxis> axes;
+  bool zip = false;
+  void validate() const;  // at least one axis, no key twice, zipped axes of equal length (or one value)
+  std::size_t size() const;
+  // The changes of point i (0 <= i < size()).
+  std::vector<CaseChange> point(std::size_t i) const;
+  // The axes as given, one "key=v1,v2" per axis, ';' separated (stored with the results).
+  std::string describe() const;
+};
+
+// A share of the points for one process: `--shard i/n` takes points with index % n == i
+// (0 <= i < n), round robin so that slow regions of the sweep spread over the shards.
+struct Shard {
+  std::size_t index = 0;
+  std::size_t count = 1;
+  bool owns(std::size_t point) const { return point % count == index; }
+};
+Shard parse_shard(const std::string& text);  // "i/n"; throws std::invalid_argument
+
+// The SI value of a swept value when it is a number or a quantity of the unit table ("4mm" ->
+// 0.004), with the SI unit; nullopt for text (model names, file names).
+struct SiValue {
+  double value = 0.0;
+  std::string unit;
+};
+std::optional<SiValue> si_quantity(const std::string& text);
+
+}  // namespace geartrib::io

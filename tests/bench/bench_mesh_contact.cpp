@@ -1,0 +1,104 @@
+// The mesh cycle's hot kernels on the seed's case, so that regressions show: the summit-height
+// quadrature at one separation, the pressure-separation table, the separation inversion, one
+// strip (uncoupled, coupled), the highest asperity's stresses, and the whole cycle as `geartrib
+// run` does it. Run: ./build/tests/geartrib_bench --benchmark_filter='gw_|strip_|cycle'
+#include "asperity/case_setup.hpp"
+#include "contact/greenwood_williamson.hpp"
+#include "contact/mesh_contact.hpp"
+#include "contact/rough_line_contact.hpp"
+#include "gear/gear_mesh.hpp"
+#include "io/case_file.hpp"
+#include "solvers/kinsol_solver.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+
+using namespace geartrib;
+
+namespace {
+struct Setup {
+  Case c = io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30.toml");
+  gear::GearMesh mesh{c};
+  surface::EquivalentSurface surface = surface::equivalent_surface(c.pinion.flank.roughness, c.wheel.flank.roughness,
+                                                                   c.roughness.distribution, c.roughness.eta_sigma_beta);
+  asperity::ContactPair pair = asperity::contact_pair(c);
+  std::unique_ptr<asperity::AsperityModel> model = asperity::make_case_model(c, c.asperity.model);
+  double line_load = mesh.normal_force() / c.gear_pair.face_width;  // the whole load on one pair
+  double radius = mesh.pair().flank(mesh.pair().path().c).radius_equivalent;
+  std::unique_ptr<contact::GreenwoodWilliamson> gw = table(contact::GreenwoodWilliamsonOptions{});
+  std::unique_ptr<contact::GreenwoodWilliamson> table(const contact::GreenwoodWilliamsonOptions& o) const {
+    return std::make_unique<contact::GreenwoodWilliamson>(surface, *model, pair, 3e9, o);
+  }
+};
+const Setup& setup() {
+  static const Setup s;
+  return s;
+}
+
+void gw_quadrature(benchmark::State& state) {
+  contact::GreenwoodWilliamsonOptions o;
+  o.height_points = static_cast<int>(state.range(0));
+  const auto gw = setup().table(o);
+  const double d = gw->separation_for_pressure(1e8);
+  for (auto _ : state) benchmark::DoNotOptimize(gw->at_separation(d));
+}
+
+void gw_table(benchmark::State& state) {
+  contact::GreenwoodWilliamsonOptions o;
+  o.table_points_per_sigma = static_cast<int>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(setup().table(o));
+}
+
+void gw_separation_inversion(benchmark::State& state) {
+  const auto& gw = *setup().gw;
+  double p = 1e6;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(gw.separation_for_pressure(p));
+    p = p < 2e9 ? p * 1.3 : 1e6;
+  }
+}
+
+void strip_uncoupled(benchmark::State& state) {
+  const Setup& s = setup();
+  contact::StripOptions o;
+  o.strip_points = static_cast<int>(state.range(0));
+  const contact::RoughLineContact strip(*s.gw, s.mesh.composite_modulus(), s.c.gear_pair.face_width, o, nullptr);
+  for (auto _ : state) benchmark::DoNotOptimize(strip.solve(s.line_load, s.radius));
+}
+
+void strip_coupled(benchmark::State& state) {
+  const Setup& s = setup();
+  contact::StripOptions o;
+  o.fidelity = contact::StripFidelity::coupled;
+  o.coupled_nodes = static_cast<int>(state.range(0));
+  const solvers::KinsolSolver kinsol;
+  const contact::RoughLineContact strip(*s.gw, s.mesh.composite_modulus(), s.c.gear_pair.face_width, o, &kinsol);
+  for (auto _ : state) benchmark::DoNotOptimize(strip.solve(s.line_load, s.radius));
+}
+
+void strip_highest_asperity(benchmark::State& state) {
+  const Setup& s = setup();
+  const contact::RoughLineContact strip(*s.gw, s.mesh.composite_modulus(), s.c.gear_pair.face_width, {}, nullptr);
+  const contact::StripResult r = strip.solve(s.line_load, s.radius);
+  const auto side = asperity::side_contact_geometry(s.c.pinion.flank.summit_radius, s.c.wheel.flank.summit_radius,
+                                                    s.c.friction_coefficient);
+  for (auto _ : state) benchmark::DoNotOptimize(contact::highest_asperity(*s.gw, r, s.c.gear_pair.face_width, &side));
+}
+
+void cycle(benchmark::State& state) {
+  Case c = setup().c;
+  c.contact.coupled = state.range(0) == 1;
+  const solvers::KinsolSolver kinsol;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(contact::run_mesh_contact(c, setup().mesh, c.contact.coupled ? &kinsol : nullptr));
+}
+}  // namespace
+
+BENCHMARK(gw_quadrature)->RangeMultiplier(4)->Range(16, 1024)->Unit(benchmark::kMicrosecond);
+BENCHMARK(gw_table)->RangeMultiplier(4)->Range(4, 256)->Unit(benchmark::kMillisecond);
+BENCHMARK(gw_separation_inversion);
+BENCHMARK(strip_uncoupled)->RangeMultiplier(4)->Range(8, 512)->Unit(benchmark::kMicrosecond);
+BENCHMARK(strip_coupled)->RangeMultiplier(2)->Range(32, 256)->Unit(benchmark::kMillisecond);
+BENCHMARK(strip_highest_asperity)->Unit(benchmark::kMicrosecond);
+BENCHMARK(cycle)->Arg(0)->Arg(1)->ArgName("coupled")->Unit(benchmark::kMillisecond);

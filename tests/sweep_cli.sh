@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# `geartrib sweep`: a small factorial in parallel, the same sweep in two shards merged back to the
+# identical table, a point with impossible geometry reported while the sweep goes on, the trends
+# physics requires, and clear errors for bad sweep input.
+# Usage: sweep_cli.sh path/to/geartrib   (run from the source tree; needs python3-h5py)
+set -u
+bin="$1"
+fail=0
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+check() {  # check NAME EXPECTED_STATUS PATTERN -- command...
+  local name="$1" want="$2" pattern="$3"; shift 4
+  local out status
+  out="$("$@" 2>&1)"; status=$?
+  if [[ $status -ne $want ]]; then echo "FAIL $name: exit $status, expected $want"; echo "$out" | head -5; fail=1; return; fi
+  if [[ -n "$pattern" ]] && ! grep -qE -- "$pattern" <<<"$out"; then echo "FAIL $name: output lacks /$pattern/"; echo "$out" | head -5; fail=1; return; fi
+  echo "ok   $name"
+}
+# 2 x 2 x 2 points, 21 positions each (fast); the same plan below in shards.
+plan=(--set module=4mm,8mm --set face_width=40mm:80mm:2 --set rq=0.01um,0.8um --set positions=21)
+check full 0 "8 points, 0 failed" -- "$bin" sweep "${plan[@]}" --threads 2 -o "$tmp/full.h5" --csv "$tmp/full.csv"
+check shard0 0 "4 points" -- "$bin" sweep "${plan[@]}" --shard 0/2 -o "$tmp/s0.h5"
+check shard1 0 "4 points" -- "$bin" sweep "${plan[@]}" --shard 1/2 -o "$tmp/s1.h5"
+check merge 0 "8 points" -- "$bin" sweep --merge "$tmp/s1.h5" "$tmp/s0.h5" -o "$tmp/merged.h5" --csv "$tmp/merged.csv"
+check merge-missing-shard 2 "shard 1/2 is missing" -- "$bin" sweep --merge "$tmp/s0.h5" -o "$tmp/bad.h5"
+check merge-twice 2 "given twice" -- "$bin" sweep --merge "$tmp/s0.h5" "$tmp/s0.h5" -o "$tmp/bad.h5"
+"$bin" sweep -q --set module=4mm,5mm --set positions=21 --shard 1/2 -o "$tmp/other.h5" >/dev/null 2>&1
+check merge-other-sweep 2 "from another sweep" -- "$bin" sweep --merge "$tmp/s0.h5" "$tmp/other.h5" -o "$tmp/bad.h5"
+[[ ! -e "$tmp/bad.h5" ]] && echo "ok   nothing-written-on-error" || { echo "FAIL bad.h5 written"; fail=1; }
+
+# Merged equals unsharded (all columns but the timing), and the trends physics requires.
+/usr/bin/python3 - "$tmp/full.csv" "$tmp/merged.csv" "$tmp/full.h5" <<'PY' || fail=1
+import csv, sys
+import h5py
+def read(p):
+    rows = list(csv.DictReader(l for l in open(p) if not l.startswith("#")))
+    return [{k: v for k, v in r.items() if k != "seconds"} for r in rows]
+full, merged = read(sys.argv[1]), read(sys.argv[2])
+assert full == merged, "merged shards differ from the unsharded sweep"
+print("ok   merged-equals-unsharded")
+with h5py.File(sys.argv[3]) as f:
+    p = f["points"]
+    assert p["module"].attrs["units"] in (b"m", "m"), p["module"].attrs["units"]
+    assert p["hertz_p0_Pa_max"].attrs["units"] in (b"Pa", "Pa")
+    assert "version" in f["sweep"].attrs and "sets" in f["sweep"].attrs
+    assert b"[gear_pair]" in f["scene"][()] if isinstance(f["scene"][()], bytes) else "[gear_pair]" in f["scene"][()]
+    m, b, rq = p["module"][()], p["face_width"][()], p["rq"][()]
+    p0, area, plastic = p["hertz_p0_Pa_max"][()], p["real_area_ratio_min"][()], p["plastic_area_fraction_min"][()]
+    idx = {(m[i], b[i], rq[i]): i for i in range(len(m))}
+    for (mi, bi, ri), i in idx.items():
+        if mi == 0.004: assert p0[idx[(0.008, bi, ri)]] < p0[i], "larger module must lower the Hertz pressure"
+        if bi == 0.04: assert p0[idx[(mi, 0.08, ri)]] < p0[i], "wider face must lower the Hertz pressure"
+        if ri == 1e-8:
+            assert area[idx[(mi, bi, 8e-7)]] < area[i], "rougher must lower the real-area ratio"
+            assert plastic[idx[(mi, bi, 8e-7)]] > plastic[i], "rougher must raise the plastic fraction"
+print("ok   trends-and-units")
+PY
+
+# A point whose geometry is impossible is reported in its row; the others run.
+check bad-point-reported 0 "1 failed" -- "$bin" sweep --set x1=0,1.5 --set positions=21 -o "$tmp/x.h5" --csv "$tmp/x.csv"
+grep -q "tip interference" "$tmp/x.csv" && echo "ok   bad-point-message" || { echo "FAIL bad-point-message"; fail=1; }
+check zip 0 "2 points" -- "$bin" sweep --zip --set z1=29,31 --set z2=31,29 --set positions=21 -o "$tmp/z.h5"
+
+# Bad sweep input: exit 2, nothing written.
+check no-set 2 "at least one --set" -- "$bin" sweep -o "$tmp/bad.h5"
+check no-equals 2 "expected key=value" -- "$bin" sweep --set module -o "$tmp/bad.h5"
+check bad-range 2 "same unit" -- "$bin" sweep --set face_width=40mm:0.08m:3 -o "$tmp/bad.h5"
+check bad-count 2 "integer count" -- "$bin" sweep --set face_width=40mm:80mm:x -o "$tmp/bad.h5"
+check zip-lengths 2 "equal lengths" -- "$bin" sweep --zip --set z1=20,30 --set z2=30,31,32 -o "$tmp/bad.h5"
+check bad-shard 2 "0 <= i < n" -- "$bin" sweep --set z1=20,30 --shard 2/2 -o "$tmp/bad.h5"
+check same-key-twice 2 "given twice" -- "$bin" sweep --set z1=20 --set z1=30 -o "$tmp/bad.h5"
+check unknown-key 0 "unknown key" -- "$bin" sweep --set gear_pair.modul=5mm -o "$tmp/u.h5" --csv "$tmp/u.csv"
+check run-set 2 "--set gear_pair.module=-5mm" -- "$bin" run -q --set module=-5mm -o "$tmp/bad.h5"
+check run-set-integer 2 "expected an integer" -- "$bin" run -q --set pinion.teeth=30.5 -o "$tmp/bad.h5"
+[[ ! -e "$tmp/bad.h5" ]] && echo "ok   nothing-written-on-bad-input" || { echo "FAIL bad.h5 written"; fail=1; }
+exit $fail

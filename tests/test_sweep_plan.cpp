@@ -1,0 +1,106 @@
+// Sweep plans and case changes: axis parsing (lists, ranges with units), the factorial's order,
+// zipping, shards that partition the points, SI values of swept text, and changes to a case
+// (aliases, roughness forms replaced, errors naming the --set).
+#include "io/input_error.hpp"
+#include "io/sweep_plan.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace geartrib;
+
+TEST(SweepPlan, AxesFromListsAndRanges) {
+  EXPECT_EQ(io::parse_sweep_axis("module=4mm,6mm, 8mm").values, (std::vector<std::string>{"4mm", "6mm", "8mm"}));
+  EXPECT_EQ(io::parse_sweep_axis("face_width=40mm:80mm:5").values,
+            (std::vector<std::string>{"40mm", "50mm", "60mm", "70mm", "80mm"}));
+  EXPECT_EQ(io::parse_sweep_axis("teeth=20:40:3").values, (std::vector<std::string>{"20", "30", "40"}));  // integers stay integers
+  EXPECT_EQ(io::parse_sweep_axis("x1=0:1:3").values, (std::vector<std::string>{"0", "0.5", "1"}));
+  EXPECT_EQ(io::parse_sweep_axis("model=kogut-etsion,jackson-green").key, "model");
+  EXPECT_THROW(io::parse_sweep_axis("module"), std::invalid_argument);
+  EXPECT_THROW(io::parse_sweep_axis("face_width=40mm:0.08m:3"), std::invalid_argument);  // units differ
+  EXPECT_THROW(io::parse_sweep_axis("face_width=40mm:80mm:1"), std::invalid_argument);   // n < 2
+  EXPECT_THROW(io::parse_sweep_axis("module=4mm,,6mm"), std::invalid_argument);
+}
+
+TEST(SweepPlan, FactorialFirstAxisSlowestAndZip) {
+  io::SweepPlan p;
+  p.axes = {io::parse_sweep_axis("a=1,2"), io::parse_sweep_axis("b=x,y,z")};
+  p.validate();
+  ASSERT_EQ(p.size(), 6u);
+  EXPECT_EQ(p.point(0)[0].value, "1");
+  EXPECT_EQ(p.point(0)[1].value, "x");
+  EXPECT_EQ(p.point(2)[1].value, "z");
+  EXPECT_EQ(p.point(3)[0].value, "2");
+  EXPECT_EQ(p.point(3)[1].value, "x");
+  std::set<std::pair<std::string, std::string>> all;
+  for (std::size_t i = 0; i < p.size(); ++i) all.insert({p.point(i)[0].value, p.point(i)[1].value});
+  EXPECT_EQ(all.size(), 6u);  // every combination once
+  p.zip = true;
+  EXPECT_THROW(p.validate(), std::invalid_argument);  // 2 and 3 values
+  p.axes = {io::parse_sweep_axis("a=1,2,3"), io::parse_sweep_axis("b=x,y,z"), io::parse_sweep_axis("c=fixed")};
+  p.validate();
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_EQ(p.point(2)[0].value, "3");
+  EXPECT_EQ(p.point(2)[1].value, "z");
+  EXPECT_EQ(p.point(2)[2].value, "fixed");  // a one-value axis at every point
+  p.axes.push_back(io::parse_sweep_axis("a=4,5,6"));
+  EXPECT_THROW(p.validate(), std::invalid_argument);  // a key twice
+}
+
+TEST(SweepPlan, ShardsPartitionThePoints) {
+  for (std::size_t n : {1u, 2u, 3u, 7u}) {
+    std::vector<int> owners(20, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const io::Shard s = io::parse_shard(std::to_string(i) + "/" + std::to_string(n));
+      for (std::size_t k = 0; k < owners.size(); ++k) owners[k] += s.owns(k);
+    }
+    for (int o : owners) EXPECT_EQ(o, 1) << n;
+  }
+  for (const char* bad : {"2/2", "1", "a/3", "0/0", "-1/2", "1/2x"}) EXPECT_THROW(io::parse_shard(bad), std::invalid_argument) << bad;
+}
+
+TEST(SweepPlan, SiValuesOfSweptText) {
+  EXPECT_DOUBLE_EQ(io::si_quantity("4mm")->value, 0.004);
+  EXPECT_EQ(io::si_quantity("4mm")->unit, "m");
+  EXPECT_DOUBLE_EQ(io::si_quantity("0.2 um")->value, 2e-7);
+  EXPECT_DOUBLE_EQ(io::si_quantity("1000 rpm")->value, 1000 * 2 * 3.14159265358979323846 / 60);
+  EXPECT_EQ(io::si_quantity("1000 rpm")->unit, "rad/s");
+  EXPECT_EQ(io::si_quantity("30")->unit, "1");
+  EXPECT_FALSE(io::si_quantity("kogut-etsion"));
+  EXPECT_FALSE(io::si_quantity("4 furlongs"));
+}
+
+TEST(CaseChanges, AliasesSetKeysAndReplaceRoughnessForms) {
+  const auto file = test::source_dir() / "gears/m6z30.toml";
+  const Case c = io::load_case(file, {{"module", "5mm"}, {"rq", "0.4um"}, {"z1", "25"}, {"model", "kogut-etsion"}});
+  EXPECT_DOUBLE_EQ(c.gear_pair.module, 0.005);
+  EXPECT_EQ(c.pinion.teeth, 25);
+  EXPECT_EQ(c.wheel.teeth, 30);
+  EXPECT_EQ(c.asperity.model, "kogut-etsion");
+  // The case gives ra; rq replaces it on both flanks (exactly one form per flank).
+  EXPECT_EQ(c.pinion.flank.roughness.form, surface::FlankRoughness::Form::rq);
+  EXPECT_EQ(c.wheel.flank.roughness.form, surface::FlankRoughness::Form::rq);
+  EXPECT_NE(c.source_text.find("# --set rq=0.4um"), std::string::npos);  // provenance kept with the results
+  const Case same = io::load_case(file, {{"gear_pair.module", "5 mm"}});
+  EXPECT_DOUBLE_EQ(same.gear_pair.module, 0.005);
+}
+
+TEST(CaseChanges, ErrorsNameTheSet) {
+  const auto file = test::source_dir() / "gears/m6z30.toml";
+  auto message = [&](std::vector<io::CaseChange> changes) {
+    try {
+      io::load_case(file, changes);
+    } catch (const io::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message({{"module", "-5mm"}}).find("(--set gear_pair.module=-5mm)"), std::string::npos);
+  EXPECT_NE(message({{"gear_pair.modul", "5mm"}}).find("unknown key"), std::string::npos);
+  EXPECT_NE(message({{"teeth", "30.5"}}).find("expected an integer"), std::string::npos);
+  EXPECT_NE(message({{"gear_pair.module.x", "1"}}).find("is a value, not a table"), std::string::npos);
+  EXPECT_NE(message({{"mu", "1.5"}}).find("must lie in [0, 1]"), std::string::npos);
+  EXPECT_THROW(io::parse_case_change("module"), std::invalid_argument);
+}
