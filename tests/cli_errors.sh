@@ -3,17 +3,7 @@
 # Usage: cli_errors.sh path/to/geartrib   (run from the source tree)
 set -u
 bin="$1"
-fail=0
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-check() {  # check NAME EXPECTED_STATUS PATTERN -- command...
-  local name="$1" want="$2" pattern="$3"; shift 4
-  local out status
-  out="$("$@" 2>&1)"; status=$?
-  if [[ $status -ne $want ]]; then echo "FAIL $name: exit $status, expected $want"; echo "$out" | head -5; fail=1; return; fi
-  if [[ -n "$pattern" ]] && ! grep -qE -- "$pattern" <<<"$out"; then echo "FAIL $name: output lacks /$pattern/"; echo "$out" | head -5; fail=1; return; fi
-  echo "ok   $name"
-}
+source "$(dirname "$0")/cli_support.sh"
 
 # The required CSV columns, in order.
 header="delta_star,delta_m,load_N,load_star,area_m2,area_star,contact_radius_m,plastic_radius_m,mean_pressure_Pa,max_pressure_Pa,plastic_fraction,max_von_mises_Pa,von_mises_depth_m"

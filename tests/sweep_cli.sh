@@ -5,17 +5,7 @@
 # Usage: sweep_cli.sh path/to/geartrib   (run from the source tree; needs python3-h5py)
 set -u
 bin="$1"
-fail=0
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-check() {  # check NAME EXPECTED_STATUS PATTERN -- command...
-  local name="$1" want="$2" pattern="$3"; shift 4
-  local out status
-  out="$("$@" 2>&1)"; status=$?
-  if [[ $status -ne $want ]]; then echo "FAIL $name: exit $status, expected $want"; echo "$out" | head -5; fail=1; return; fi
-  if [[ -n "$pattern" ]] && ! grep -qE -- "$pattern" <<<"$out"; then echo "FAIL $name: output lacks /$pattern/"; echo "$out" | head -5; fail=1; return; fi
-  echo "ok   $name"
-}
+source "$(dirname "$0")/cli_support.sh"
 # 2 x 2 x 2 points, 21 positions each (fast); the same plan below in shards.
 plan=(--set module=4mm,8mm --set face_width=40mm:80mm:2 --set rq=0.01um,0.8um --set positions=21)
 check full 0 "8 points, 0 failed" -- "$bin" sweep "${plan[@]}" --threads 2 -o "$tmp/full.h5" --csv "$tmp/full.csv"

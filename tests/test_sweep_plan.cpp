@@ -1,6 +1,7 @@
 // Sweep plans and case changes: axis parsing (lists, ranges with units), the factorial's order,
 // zipping, shards that partition the points, SI values of swept text, and changes to a case
 // (aliases, roughness forms replaced, errors naming the --set).
+#include "contact/mesh_contact.hpp"
 #include "io/input_error.hpp"
 #include "io/sweep_plan.hpp"
 #include "test_support.hpp"
@@ -103,4 +104,12 @@ TEST(CaseChanges, ErrorsNameTheSet) {
   EXPECT_NE(message({{"gear_pair.module.x", "1"}}).find("is a value, not a table"), std::string::npos);
   EXPECT_NE(message({{"mu", "1.5"}}).find("must lie in [0, 1]"), std::string::npos);
   EXPECT_THROW(io::parse_case_change("module"), std::invalid_argument);
+}
+
+// The sweep's _mean along the path: the trapezoidal rule, exact for a linear series.
+TEST(SweepSummary, PathMeanIsTrapezoidal) {
+  EXPECT_DOUBLE_EQ(contact::path_mean({2.0, 4.0, 6.0, 8.0}), 5.0);       // linear: the midpoint value
+  EXPECT_DOUBLE_EQ(contact::path_mean({1.0, 1.0, 1.0}), 1.0);
+  EXPECT_DOUBLE_EQ(contact::path_mean({0.0, 1.0, 0.0}), 0.5);            // a hat: (0/2 + 1 + 0/2)/2
+  EXPECT_DOUBLE_EQ(contact::path_mean({3.0}), 3.0);
 }

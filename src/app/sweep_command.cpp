@@ -53,14 +53,6 @@ struct PointResult {
   std::vector<Summary> quantities;
 };
 
-// The mean along A -> E: trapezoidal rule over the evenly spaced positions.
-double path_mean(const std::vector<double>& v) {
-  if (v.size() < 2) return v.empty() ? 0.0 : v.front();
-  double sum = 0.5 * (v.front() + v.back());
-  for (std::size_t i = 1; i + 1 < v.size(); ++i) sum += v[i];
-  return sum / static_cast<double>(v.size() - 1);
-}
-
 PointResult run_point(const std::filesystem::path& case_file, const std::vector<io::CaseChange>& changes, std::size_t index) {
   PointResult p;
   p.index = index;
@@ -75,7 +67,7 @@ PointResult run_point(const std::filesystem::path& case_file, const std::vector<
       for (const auto& q : *group) {
         if (q.name == "s_m" || q.name == "roll_angle_rad") continue;  // the path itself
         const auto [lo, hi] = std::minmax_element(q.values.begin(), q.values.end());
-        p.quantities.push_back({q.name, q.unit, *lo, path_mean(q.values), *hi});
+        p.quantities.push_back({q.name, q.unit, *lo, contact::path_mean(q.values), *hi});
       }
     p.ok = true;
   } catch (const std::exception& e) {

@@ -126,14 +126,9 @@ double curve_error(const std::vector<double>& s, const std::vector<double>& v, c
                    const std::vector<double>& ref) {
   double scale = 0.0;
   for (double x : ref) scale = std::max(scale, std::abs(x));
-  auto mean = [](const std::vector<double>& x) {  // trapezoidal, evenly spaced positions
-    double sum = 0.5 * (x.front() + x.back());
-    for (std::size_t i = 1; i + 1 < x.size(); ++i) sum += x[i];
-    return sum / static_cast<double>(x.size() - 1);
-  };
   const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
   const auto [lo_ref, hi_ref] = std::minmax_element(ref.begin(), ref.end());
-  double worst = std::max({std::abs(*lo - *lo_ref), std::abs(*hi - *hi_ref), std::abs(mean(v) - mean(ref))});
+  double worst = std::max({std::abs(*lo - *lo_ref), std::abs(*hi - *hi_ref), std::abs(contact::path_mean(v) - contact::path_mean(ref))});
   if (s == s_ref)
     for (std::size_t i = 0; i < v.size(); ++i) worst = std::max(worst, std::abs(v[i] - ref[i]));
   return scale > 0.0 ? worst / scale : worst;

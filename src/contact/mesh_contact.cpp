@@ -19,6 +19,13 @@ const Series* MeshContactResult::find(const std::string& name) const {
   return nullptr;
 }
 
+double path_mean(const std::vector<double>& v) {
+  if (v.size() < 2) return v.empty() ? 0.0 : v.front();
+  double sum = 0.5 * (v.front() + v.back());
+  for (std::size_t i = 1; i + 1 < v.size(); ++i) sum += v[i];
+  return sum / static_cast<double>(v.size() - 1);
+}
+
 namespace {
 class Stopwatch {
  public:

@@ -21,6 +21,9 @@ struct Series {
   std::vector<double> values;
 };
 
+// The mean of a series along A -> E: trapezoidal rule over the evenly spaced positions.
+double path_mean(const std::vector<double>& values);
+
 struct StageTiming {
   std::string name;
   double seconds = 0.0;
