@@ -228,3 +228,16 @@ TEST(Extremes, SpeedsFromOneRpmToThreeTimesResonance) {
     if (f < 1e-3) EXPECT_NEAR(s.dynamic_factor_quasi_static, 1.0, 0.02) << "1 rpm";  // quasi-static limit
   }
 }
+
+// A real area beyond the nominal one is reported, not passed silently: Jackson-Green's area law
+// extrapolated to the seed surface's delta* ~ 1e4 gives real-area ratios of 1.8-3.6; the
+// continuous model stays below 0.4 and raises no warning.
+TEST(Extremes, RealAreaAboveNominalIsWarned) {
+  const auto jg = cycle(changed({{"model", "jackson-green"}}));
+  EXPECT_GT(max_of(jg, "real_area_ratio"), 1.0);
+  ASSERT_EQ(jg.warnings.size(), 1u);
+  EXPECT_NE(jg.warnings.front().find("jackson-green"), std::string::npos);
+  const auto seed = cycle(test::seed_case());
+  EXPECT_LT(max_of(seed, "real_area_ratio"), 1.0);
+  EXPECT_TRUE(seed.warnings.empty());
+}

@@ -85,6 +85,7 @@ void run(const Options& o) {
     }
     io::output_table(t, true, o.csv);
   }
+  for (const auto& w : r.warnings) std::cerr << "warning: " << w << '\n';
   if (!o.quiet) {
     for (const auto& [name, g] : {std::pair{"pinion", &c.pinion}, std::pair{"wheel", &c.wheel}})
       if (g->flank.measured)

@@ -61,6 +61,7 @@ PointResult run_point(const std::filesystem::path& case_file, const std::vector<
     const Case c = io::load_case(case_file, changes);
     for (const auto& w : c.warnings) p.message += (p.message.empty() ? "" : "; ") + w;
     const contact::MeshContactResult r = run_mesh_cycle(c);
+    for (const auto& w : r.warnings) p.message += (p.message.empty() ? "warning: " : "; warning: ") + w;
     p.contact_ratio = r.path.contact_ratio;
     p.plasticity_index = r.plasticity_index;
     for (const auto* group : {&r.mesh, &r.contact})

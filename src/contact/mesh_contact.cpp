@@ -6,6 +6,7 @@
 #include "contact/greenwood_williamson.hpp"
 #include "contact/rough_line_contact.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -175,6 +176,18 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
       hw.push_back(st.contact_half_width);
       sep.push_back(st.min_separation);
     }
+  }
+  if (cs.real_area) {
+    // Greenwood-Williamson sums independent summits; a real area beyond the nominal one means the
+    // summation (or the asperity model's area law, extrapolated) has left its validity.
+    const auto& a = r.find("real_area_ratio")->values;
+    const auto worst = std::max_element(a.begin(), a.end());
+    if (*worst > 1.0)
+      r.warnings.push_back("real-area ratio " + std::to_string(*worst) + " > 1 at s = " +
+                           std::to_string(s_m[static_cast<std::size_t>(worst - a.begin())] * 1e3) + " mm (" +
+                           std::to_string(std::count_if(a.begin(), a.end(), [](double x) { return x > 1.0; })) +
+                           " positions): the summits' areas overlap; the " + r.asperity_model +
+                           " model's area law is outside its fitted range here");
   }
   if (cs.plastic_fraction) {
     auto& pa = add(r.contact, "plastic_area_fraction", "1");

@@ -38,6 +38,8 @@ struct MeshContactResult {
   gear::PathOfContact path;
   std::string asperity_model;
   std::string fidelity;
+  // Findings that make a result doubtful (e.g. a real area larger than the nominal one).
+  std::vector<std::string> warnings;
   const Series* find(const std::string& name) const;  // in mesh, then contact; nullptr if absent
 };
 

@@ -58,6 +58,7 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
     }
     hdf5::number_dataset(meta, "stage_seconds", seconds, "s");
     hdf5::strings_dataset(meta, "stage_names", names);
+    hdf5::strings_dataset(meta, "warnings", r.warnings);
   }
 }
 

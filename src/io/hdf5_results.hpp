@@ -3,7 +3,8 @@
 //   /mesh attributes                s_A_m .. s_E_m, base_pitch_m, contact_ratio
 //   /scene                          the case file's text as run (string), attribute "file"
 //   /meta                           attributes version, asperity_model, fidelity, equivalent
-//                                   surface; datasets stage_names, stage_seconds (units "s")
+//                                   surface; datasets stage_names, stage_seconds (units "s"),
+//                                   warnings (findings that make the result doubtful)
 // Written to a temporary name in the same folder and renamed when complete.
 #pragma once
 
