@@ -225,7 +225,9 @@ TEST(Extremes, SpeedsFromOneRpmToThreeTimesResonance) {
     const gear::SteadyCycle s = dyn.steady_cycle(*integrator, f * resonance);
     for (double v : s.force) ASSERT_TRUE(std::isfinite(v)) << f;
     EXPECT_TRUE(std::isfinite(s.dynamic_factor) && s.dynamic_factor > 0.0) << f;
-    if (f < 1e-3) EXPECT_NEAR(s.dynamic_factor_quasi_static, 1.0, 0.02) << "1 rpm";  // quasi-static limit
+    if (f < 1e-3) {
+      EXPECT_NEAR(s.dynamic_factor_quasi_static, 1.0, 0.02) << "1 rpm";  // quasi-static limit
+    }
   }
 }
 

@@ -18,7 +18,6 @@ struct TianCompliance {
   double bending, shear, axial;
 };
 TianCompliance tian(double a1, double a2, double e, double nu, double b, int n = 20000) {
-  const double g = e / (2.0 * (1.0 + nu));
   TianCompliance c{0, 0, 0};
   const double h = (a2 + a1) / n;
   for (int i = 0; i <= n; ++i) {

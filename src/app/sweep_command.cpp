@@ -252,7 +252,7 @@ void add_sweep_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   std::string aliases;
   for (const auto& a : io::case_aliases()) {
-    aliases += fmt::format("  {:<15}", a.name);
+    aliases += fmt::format("  {:<16}", a.name);
     for (std::size_t i = 0; i < a.keys.size(); ++i) aliases += (i ? ", " : "") + std::string(a.keys[i]);
     aliases += "\n";
   }
