@@ -6,6 +6,7 @@ Usage: validation/fem-reference/compare_ccx.py path/to/geartrib
 Reads ccx-perfectly-plastic.csv and ccx-hardening.csv (with their -details.csv), written by
 ccx-study.sh, and prints Markdown tables:
   1. elastic-perfectly-plastic F* and A* beside Kogut-Etsion 2002 and Jackson-Green 2005;
+     1b. the same on the finer meshes (ccx-perfectly-plastic-fine-*.csv) with their convergence;
   2. the continuous model refitted (geartrib fit) to the hardening runs: constants and residuals;
   3. the seed's claim (section 3): contact radius and peak contact pressure of the model within 5%
      of the FEM at delta* = 2, 6, 7, 10, with the default and the refitted constants.
@@ -57,6 +58,34 @@ def main(argv):
         fk, fj = float(ke[d]["load_star"]), float(jg[d]["load_star"])
         ak, aj = float(ke[d]["area_star"]), float(jg[d]["area_star"])
         print(f"| {d:g} | {f:.4g} | {fk:.4g} ({pct(fk, f)}) | {fj:.4g} ({pct(fj, f)}) | {a:.4g} | {ak:.4g} ({pct(ak, a)}) | {aj:.4g} ({pct(aj, a)}) |")
+
+    # 1b. The same on finer meshes (20 elements across), with their convergence study.
+    fine = [os.path.join(HERE, n) for n in ("ccx-perfectly-plastic-fine-6-10-20.csv", "ccx-perfectly-plastic-fine-50-100.csv")]
+    fine = [p for p in fine if os.path.exists(p)]
+    if fine:
+        rows = [r for p in fine for r in table(p)]
+        levels = [float(r["delta_star"]) for r in rows]
+        ke, jg = model(bin_, "kogut-etsion", levels), model(bin_, "jackson-green", levels)
+        coarse = {float(r["delta_star"]): r for r in pp}
+        print("\n### 1b. The same at 20 elements across each run's first contact radius\n")
+        print("| delta* | F* ccx | (10 across) | F* KE 2002 | F* JG 2005 | A* ccx | (10 across) | A* KE 2002 | A* JG 2005 |")
+        print("|---|---|---|---|---|---|---|---|---|")
+        for r in rows:
+            d = float(r["delta_star"])
+            f, a = float(r["load_star"]), float(r["area_star"])
+            fk, fj = float(ke[d]["load_star"]), float(jg[d]["load_star"])
+            ak, aj = float(ke[d]["area_star"]), float(jg[d]["area_star"])
+            c = coarse.get(d)
+            fc = f"{float(c['load_star']):.4g}" if c else ""
+            ac = f"{float(c['area_star']):.4g}" if c else ""
+            print(f"| {d:g} | {f:.4g} | {fc} | {fk:.4g} ({pct(fk, f)}) | {fj:.4g} ({pct(fj, f)}) | {a:.4g} | {ac} | "
+                  f"{ak:.4g} ({pct(ak, a)}) | {aj:.4g} ({pct(aj, a)}) |")
+        print("\nConvergence (each run's provenance):\n")
+        for p in fine:
+            with open(p) as f:
+                for line in f:
+                    if line.startswith("# convergence") or line.startswith("# mesh"):
+                        print("    " + line[2:].rstrip())
 
     # 2. Refit the continuous closure to the hardening runs (load and area).
     hard_csv = os.path.join(HERE, "ccx-hardening.csv")
