@@ -41,45 +41,41 @@ def pct(a, b):
     return f"{100 * (a / b - 1):+.1f}%"
 
 
+def beside_laws(bin_, rows, coarse=None):
+    """A Markdown table of F* and A* beside Kogut-Etsion and Jackson-Green (and, when given, the
+    coarse mesh's values at the same levels)."""
+    levels = [float(r["delta_star"]) for r in rows]
+    ke, jg = model(bin_, "kogut-etsion", levels), model(bin_, "jackson-green", levels)
+    extra = " (10 across) |" if coarse is not None else ""
+    print(f"| delta* | F* ccx |{extra} F* KE 2002 | F* JG 2005 | A* ccx |{extra} A* KE 2002 | A* JG 2005 |")
+    print("|---|---|" + ("---|" if coarse is not None else "") + "---|---|---|" + ("---|" if coarse is not None else "") + "---|---|")
+    for r in rows:
+        d = float(r["delta_star"])
+        f, a = float(r["load_star"]), float(r["area_star"])
+        fk, fj = float(ke[d]["load_star"]), float(jg[d]["load_star"])
+        ak, aj = float(ke[d]["area_star"]), float(jg[d]["area_star"])
+        c = coarse.get(d) if coarse is not None else None
+        fc = (f" {float(c['load_star']):.4g} |" if c else " |") if coarse is not None else ""
+        ac = (f" {float(c['area_star']):.4g} |" if c else " |") if coarse is not None else ""
+        print(f"| {d:g} | {f:.4g} |{fc} {fk:.4g} ({pct(fk, f)}) | {fj:.4g} ({pct(fj, f)}) | {a:.4g} |{ac} "
+              f"{ak:.4g} ({pct(ak, a)}) | {aj:.4g} ({pct(aj, a)}) |")
+
+
 def main(argv):
     if len(argv) != 2:
         print(__doc__.strip(), file=sys.stderr)
         return 2
     bin_ = os.path.abspath(argv[1])
     pp = table(os.path.join(HERE, "ccx-perfectly-plastic.csv"))
-    levels = [float(r["delta_star"]) for r in pp]
-    ke, jg = model(bin_, "kogut-etsion", levels), model(bin_, "jackson-green", levels)
     print("### 1. Elastic-perfectly-plastic sphere: CalculiX beside the published laws\n")
-    print("| delta* | F* ccx | F* KE 2002 | F* JG 2005 | A* ccx | A* KE 2002 | A* JG 2005 |")
-    print("|---|---|---|---|---|---|---|")
-    for r in pp:
-        d = float(r["delta_star"])
-        f, a = float(r["load_star"]), float(r["area_star"])
-        fk, fj = float(ke[d]["load_star"]), float(jg[d]["load_star"])
-        ak, aj = float(ke[d]["area_star"]), float(jg[d]["area_star"])
-        print(f"| {d:g} | {f:.4g} | {fk:.4g} ({pct(fk, f)}) | {fj:.4g} ({pct(fj, f)}) | {a:.4g} | {ak:.4g} ({pct(ak, a)}) | {aj:.4g} ({pct(aj, a)}) |")
+    beside_laws(bin_, pp)
 
     # 1b. The same on finer meshes (20 elements across), with their convergence study.
     fine = [os.path.join(HERE, n) for n in ("ccx-perfectly-plastic-fine-6-10-20.csv", "ccx-perfectly-plastic-fine-50-100.csv")]
     fine = [p for p in fine if os.path.exists(p)]
     if fine:
-        rows = [r for p in fine for r in table(p)]
-        levels = [float(r["delta_star"]) for r in rows]
-        ke, jg = model(bin_, "kogut-etsion", levels), model(bin_, "jackson-green", levels)
-        coarse = {float(r["delta_star"]): r for r in pp}
         print("\n### 1b. The same at 20 elements across each run's first contact radius\n")
-        print("| delta* | F* ccx | (10 across) | F* KE 2002 | F* JG 2005 | A* ccx | (10 across) | A* KE 2002 | A* JG 2005 |")
-        print("|---|---|---|---|---|---|---|---|---|")
-        for r in rows:
-            d = float(r["delta_star"])
-            f, a = float(r["load_star"]), float(r["area_star"])
-            fk, fj = float(ke[d]["load_star"]), float(jg[d]["load_star"])
-            ak, aj = float(ke[d]["area_star"]), float(jg[d]["area_star"])
-            c = coarse.get(d)
-            fc = f"{float(c['load_star']):.4g}" if c else ""
-            ac = f"{float(c['area_star']):.4g}" if c else ""
-            print(f"| {d:g} | {f:.4g} | {fc} | {fk:.4g} ({pct(fk, f)}) | {fj:.4g} ({pct(fj, f)}) | {a:.4g} | {ac} | "
-                  f"{ak:.4g} ({pct(ak, a)}) | {aj:.4g} ({pct(aj, a)}) |")
+        beside_laws(bin_, [r for p in fine for r in table(p)], {float(r["delta_star"]): r for r in pp})
         print("\nConvergence (each run's provenance):\n")
         for p in fine:
             with open(p) as f:
