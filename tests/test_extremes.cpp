@@ -243,3 +243,20 @@ TEST(Extremes, RealAreaAboveNominalIsWarned) {
   EXPECT_LT(max_of(seed, "real_area_ratio"), 1.0);
   EXPECT_TRUE(seed.warnings.empty());
 }
+
+// The fidelity knobs at their extremes: the coarsest settings the case accepts and very fine
+// ones give finite cycles, and the coarsest stay near the defaults (the trade is measured by
+// `geartrib tradeoff`; here only that nothing breaks: 5% is far above the 0.02% the knobs cost
+// on this fully plastic case).
+TEST(Extremes, FidelityKnobsAtTheirLimits) {
+  const auto base = cycle(test::seed_case(), 21);
+  const auto coarse = cycle(changed({{"height_points", "8"}, {"table_points", "4"}, {"strip_points", "8"}}), 21);
+  const auto fine = cycle(changed({{"height_points", "2048"}, {"table_points", "1024"}, {"strip_points", "4096"}}), 21);
+  const auto two = cycle(test::seed_case(), 2);  // A and E only
+  const auto coupled = cycle(changed({{"fidelity", "coupled"}, {"coupled_nodes", "16"}}), 5);
+  for (const auto* r : {&coarse, &fine, &two, &coupled}) expect_finite(*r, "knob limits");
+  for (const char* q : {"real_area_ratio", "plastic_area_fraction", "max_asperity_von_mises_Pa"}) {
+    EXPECT_NEAR(max_of(coarse, q) / max_of(base, q), 1.0, 0.05) << q;
+    EXPECT_NEAR(max_of(fine, q) / max_of(base, q), 1.0, 0.05) << q;
+  }
+}
