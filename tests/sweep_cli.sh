@@ -13,6 +13,8 @@ check shard0 0 "4 points" -- "$bin" sweep "${plan[@]}" --shard 0/2 -o "$tmp/s0.h
 check shard1 0 "4 points" -- "$bin" sweep "${plan[@]}" --shard 1/2 -o "$tmp/s1.h5"
 check merge 0 "8 points" -- "$bin" sweep --merge "$tmp/s1.h5" "$tmp/s0.h5" -o "$tmp/merged.h5" --csv "$tmp/merged.csv"
 check merge-missing-shard 2 "shard 1/2 is missing" -- "$bin" sweep --merge "$tmp/s0.h5" -o "$tmp/bad.h5"
+"$bin" run -q --set positions=5 -o "$tmp/run.h5" >/dev/null
+check merge-not-a-sweep 2 "not a readable geartrib sweep file" -- "$bin" sweep --merge "$tmp/run.h5" -o "$tmp/bad.h5"
 check merge-twice 2 "given twice" -- "$bin" sweep --merge "$tmp/s0.h5" "$tmp/s0.h5" -o "$tmp/bad.h5"
 "$bin" sweep -q --set module=4mm,5mm --set positions=21 --shard 1/2 -o "$tmp/other.h5" >/dev/null 2>&1
 check merge-other-sweep 2 "from another sweep" -- "$bin" sweep --merge "$tmp/s0.h5" "$tmp/other.h5" -o "$tmp/bad.h5"

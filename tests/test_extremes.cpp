@@ -49,8 +49,7 @@ contact::MeshContactResult cycle(const Case& c, int positions = 21) {
 // The seed's rough surface and pair with the table sized for `max_pressure`.
 struct Strip {
   explicit Strip(const Case& c, double max_pressure)
-      : surface(surface::equivalent_surface(c.pinion.flank.roughness, c.wheel.flank.roughness, c.roughness.distribution,
-                                            c.roughness.eta_sigma_beta)),
+      : surface(contact::case_equivalent_surface(c)),
         pair(asperity::contact_pair(c)),
         model(asperity::make_case_model(c, c.asperity.model)),
         gw(surface, *model, pair, max_pressure, {}),

@@ -150,7 +150,13 @@ void print_summary(const io::ColumnTable& t, const std::string& output) {
 
 void merge(const Options& o) {
   std::vector<io::ColumnTableFile> files;
-  for (const auto& m : o.merge) files.push_back(io::read_column_table_hdf5(m));
+  for (const auto& m : o.merge) {
+    files.push_back(io::read_column_table_hdf5(m));
+    for (const char* key : {"points_total", "shard", "shard_count", "signature"})
+      if (!files.back().attributes.contains(key))
+        throw std::invalid_argument(m + ": not a geartrib sweep shard (no /sweep attribute " + key + ")");
+    if (!files.back().table.find("point")) throw std::invalid_argument(m + ": not a geartrib sweep shard (no /points/point)");
+  }
   const auto& first = files.front();
   const std::size_t total = std::stoul(first.attributes.at("points_total"));
   std::vector<bool> seen(total, false);

@@ -6,6 +6,7 @@
 // within the tolerance of its reference) are compared with all knobs at their highest settings.
 #include "app/commands.hpp"
 
+#include "fem/ccx_results.hpp"
 #include "io/case_file.hpp"
 #include "io/column_table.hpp"
 #include "io/table_writer.hpp"
@@ -149,20 +150,10 @@ Row compare(const std::string& knob, const std::string& setting, const Timed& t,
   return r;
 }
 
-std::string shell_quoted(const std::string& s) {
-  std::string q = "'";
-  for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  return q + "'";
-}
-
 void run(const Options& o) {
-  std::vector<std::string> physics;
-  auto physics_knob = [&](const std::string& name) { return std::find(physics.begin(), physics.end(), name) != physics.end(); };
   const std::filesystem::path case_file = o.case_file.empty() ? default_case_file() : std::filesystem::path(o.case_file);
   const Case base = load_case_reporting(case_file.string());
   std::vector<Knob> knobs = knobs_of(base);
-  for (const Knob& k : knobs)
-    if (k.physics) physics.push_back(k.name);
   if (!o.knobs.empty()) {
     std::erase_if(knobs, [&](const Knob& k) { return std::find(o.knobs.begin(), o.knobs.end(), k.name) == o.knobs.end(); });
     if (knobs.empty()) throw std::invalid_argument("--knob: none of the names is a knob (see --help)");
@@ -226,7 +217,7 @@ void run(const Options& o) {
                           t.columns[6].texts[i]);
     std::string advice = fmt::format("\nRecommended (cheapest within {:g}% of each knob's reference on all three outputs):", 100 * o.tolerance);
     for (const Row& r : rows)
-      if (r.recommended && r.knob != "combined" && !physics_knob(r.knob)) advice += fmt::format(" {} = {};", r.knob, r.setting);
+      if (r.recommended && r.knob != "combined") advice += fmt::format(" {} = {};", r.knob, r.setting);
     text += advice + "\n";
     if (png || o.output.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
     else io::write_file_atomically(o.output, text);
@@ -238,8 +229,8 @@ void run(const Options& o) {
     const std::filesystem::path script = std::filesystem::path(GEARTRIB_SOURCE_DIR) / "scripts/plot_tradeoff.py";
     // Debian's interpreter, where python3-matplotlib installs (a PATH python3 may lack it).
     const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    const std::string command = python + " " + shell_quoted(script.string()) + " " + shell_quoted(csv.string()) + " " +
-                                shell_quoted(o.output) + fmt::format(" {:g}", o.tolerance);
+    const std::string command = python + " " + fem::shell_quoted(script.string()) + " " + fem::shell_quoted(csv.string()) + " " +
+                                fem::shell_quoted(o.output) + fmt::format(" {:g}", o.tolerance);
     if (std::system(command.c_str()) != 0)
       throw std::runtime_error("plotting failed (" + command + "); the table is in " + csv.string() +
                                " (needs python3 with matplotlib: apt-get install python3-matplotlib)");

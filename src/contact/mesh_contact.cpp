@@ -20,6 +20,11 @@ const Series* MeshContactResult::find(const std::string& name) const {
   return nullptr;
 }
 
+surface::EquivalentSurface case_equivalent_surface(const Case& c) {
+  return surface::equivalent_surface(c.pinion.flank.roughness, c.wheel.flank.roughness, c.roughness.distribution,
+                                     c.roughness.eta_sigma_beta);
+}
+
 double path_mean(const std::vector<double>& v) {
   if (v.size() < 2) return v.empty() ? 0.0 : v.front();
   double sum = 0.5 * (v.front() + v.back());
@@ -132,8 +137,7 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   }
 
   // Stage 2: the equivalent surface and its pressure-separation table (built once).
-  r.surface = surface::equivalent_surface(c.pinion.flank.roughness, c.wheel.flank.roughness, c.roughness.distribution,
-                                          c.roughness.eta_sigma_beta);
+  r.surface = case_equivalent_surface(c);
   const asperity::ContactPair pair = asperity::contact_pair(c);
   r.plasticity_index = surface::plasticity_index(r.surface, pair.modulus, pair.hardness);
   const auto model = asperity::make_case_model(c, c.asperity.model);

@@ -27,8 +27,6 @@ std::string run_capture(const std::string& command) {
   return out;
 }
 
-std::string shell_quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
-
 // Von Mises stress of ccx's stress components (xx, yy, zz, xy, yz, zx).
 double von_mises(const std::vector<double>& s) {
   return std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[2] - s[0]) * (s[2] - s[0])) +
@@ -42,6 +40,12 @@ double field(const std::string& line, std::size_t start, std::size_t width) {
 
 }  // namespace
 
+std::string shell_quoted(const std::string& s) {
+  std::string q = "'";
+  for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return q + "'";
+}
+
 std::filesystem::path find_ccx() {
   if (const char* env = std::getenv("GEARTRIB_CCX"); env && *env)  // an explicit choice: that file or none
     return std::filesystem::exists(env) ? std::filesystem::path(env) : std::filesystem::path();
@@ -51,7 +55,7 @@ std::filesystem::path find_ccx() {
 }
 
 std::string ccx_version(const std::filesystem::path& ccx) {
-  const std::string out = run_capture(shell_quoted(ccx) + " -v 2>&1");
+  const std::string out = run_capture(shell_quoted(ccx.string()) + " -v 2>&1");
   std::smatch m;
   if (std::regex_search(out, m, std::regex(R"(Version\s+([0-9.]+))"))) return "CalculiX " + m[1].str();
   return "CalculiX (unknown version)";
@@ -59,7 +63,7 @@ std::string ccx_version(const std::filesystem::path& ccx) {
 
 void run_ccx(const std::filesystem::path& ccx, const std::filesystem::path& dir, const std::string& job) {
   const std::string log = (dir / (job + ".log")).string();
-  const std::string command = "cd " + shell_quoted(dir) + " && OMP_NUM_THREADS=1 CCX_NPROC_EQUATION_SOLVER=1 " + shell_quoted(ccx) +
+  const std::string command = "cd " + shell_quoted(dir.string()) + " && OMP_NUM_THREADS=1 CCX_NPROC_EQUATION_SOLVER=1 " + shell_quoted(ccx.string()) +
                               " -i " + job + " > " + shell_quoted(log) + " 2>&1";
   const int status = std::system(command.c_str());
   std::ifstream in(log);

@@ -13,6 +13,10 @@
 
 namespace geartrib::fem {
 
+// `s` as one single-quoted word for /bin/sh (embedded quotes escaped), for commands run through
+// std::system or popen.
+std::string shell_quoted(const std::string& s);
+
 // The ccx executable: $GEARTRIB_CCX when set (empty if that file does not exist), else ccx on
 // PATH; empty when there is none.
 std::filesystem::path find_ccx();

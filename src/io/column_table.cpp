@@ -1,6 +1,7 @@
 #include "io/column_table.hpp"
 
 #include "io/hdf5_handles.hpp"
+#include "io/input_error.hpp"
 #include "io/table_writer.hpp"
 
 #include <fmt/format.h>
@@ -37,9 +38,15 @@ std::string csv_cell(const std::string& s) {
 std::string format_csv(const ColumnTable& t) {
   t.validate();
   std::string out = "# units:";
-  for (std::size_t i = 0; i < t.columns.size(); ++i) out += (i ? "," : " ") + t.columns[i].unit;
+  for (std::size_t i = 0; i < t.columns.size(); ++i) {
+    out += i ? "," : " ";
+    out += t.columns[i].unit;
+  }
   out += '\n';
-  for (std::size_t i = 0; i < t.columns.size(); ++i) out += (i ? "," : "") + csv_cell(t.columns[i].name);
+  for (std::size_t i = 0; i < t.columns.size(); ++i) {
+    out += i ? "," : "";
+    out += csv_cell(t.columns[i].name);
+  }
   out += '\n';
   for (std::size_t r = 0; r < t.rows(); ++r) {
     for (std::size_t i = 0; i < t.columns.size(); ++i) {
@@ -112,7 +119,7 @@ ColumnTableFile read_column_table_hdf5(const std::filesystem::path& path) {
     f.scene = hdf5::read_string(file, "/scene");
     f.table.validate();
   } catch (const std::exception& e) {
-    throw std::runtime_error(path.string() + ": not a readable geartrib sweep file (" + e.what() + ")");
+    throw InputError(path.string(), 0, "", "", std::string("not a readable geartrib sweep file (") + e.what() + ")");
   }
   return f;
 }

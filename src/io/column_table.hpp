@@ -39,7 +39,7 @@ struct ColumnTableFile {
   std::string scene;
 };
 void write_column_table_hdf5(const std::filesystem::path& path, const ColumnTableFile& f);
-// Throws std::runtime_error naming the file when it is not such a file.
+// Throws InputError naming the file when it is not such a file.
 ColumnTableFile read_column_table_hdf5(const std::filesystem::path& path);
 
 }  // namespace geartrib::io

@@ -20,8 +20,7 @@ namespace {
 struct Setup {
   Case c = io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30.toml");
   gear::GearMesh mesh{c};
-  surface::EquivalentSurface surface = surface::equivalent_surface(c.pinion.flank.roughness, c.wheel.flank.roughness,
-                                                                   c.roughness.distribution, c.roughness.eta_sigma_beta);
+  surface::EquivalentSurface surface = contact::case_equivalent_surface(c);
   asperity::ContactPair pair = asperity::contact_pair(c);
   std::unique_ptr<asperity::AsperityModel> model = asperity::make_case_model(c, c.asperity.model);
   double line_load = mesh.normal_force() / c.gear_pair.face_width;  // the whole load on one pair
