@@ -52,11 +52,11 @@ def main(argv):
         points = [(p, f["mesh"].attrs[f"s_{p}_m"] * 1e3) for p in "ABCDE"]
         title = f"{text(f['meta'].attrs['asperity_model'])}, {text(f['meta'].attrs['fidelity'])} strip"
         series = {}
-        for group in ("mesh", "contact"):
+        for group in ("mesh", "contact", "contact/validity"):
             if group not in f:
                 continue
             for name, data in f[group].items():
-                if name != "s_m":
+                if name != "s_m" and isinstance(data, h5py.Dataset):
                     series[(group, name)] = (data[()], text(data.attrs["units"]))
     written = []
     for (group, name), (values, units) in series.items():
@@ -68,7 +68,7 @@ def main(argv):
         ax.set_ylabel(f"{name} [{units}]")
         ax.grid(True, alpha=0.3)
         fig.tight_layout()
-        out = os.path.join(outdir, f"{group}_{name}.png")
+        out = os.path.join(outdir, f"{group.replace('/', '_')}_{name}.png")
         fig.savefig(out)
         plt.close(fig)
         written.append(out)

@@ -35,6 +35,10 @@ check multi-columns 0 "^asperity,load_N_per_m,contact_width_m,max_pressure_Pa,ma
   "$bin" multi-asperity --layout LHL --height-step 1 --spacing 0.5um --delta-pc 0.5797nm --elements 2048 --csv
 check multi-totals 0 "^inflection_depth_m," -- "$bin" multi-asperity --layout HLH --delta-pc 0.5797nm --elements 2048 --csv
 check multi-single 0 "^1H," -- "$bin" multi-asperity --layout H --delta-pc 0.5797nm --elements 2048 --csv
+# The boundary elements' modulus is named: composite E_t = 113.19 GPa by default, E/(1 - nu^2) = 226.37 GPa on request.
+check multi-composite 0 "^modulus_composite_Pa,1.1318" -- "$bin" multi-asperity --layout H --delta-pc 0.5797nm --elements 2048 --csv
+check multi-single-body 0 "^modulus_single_body_Pa,2.2637" -- "$bin" multi-asperity --layout H --modulus single-body --delta-pc 0.5797nm --elements 2048 --csv
+check multi-bad-modulus 2 "modulus" -- "$bin" multi-asperity --modulus rigid
 check multi-load 0 "line_load_N_per_m +150" -- "$bin" multi-asperity --layout HHH --load 150 --delta-pc 0.5797nm --elements 2048
 check multi-sweep 0 "^2e-06," -- "$bin" multi-asperity --layout HHH --sweep-spacing 0.5um:2um:4 --delta-pc 0.5797nm --elements 2048 --csv
 check multi-bad-layout 2 "layout must be letters H and L" -- "$bin" multi-asperity --layout LXL

@@ -2,7 +2,7 @@
 # CalculiX end to end on coarse meshes (CTest label `fem`, about 50 s): an elastic single-asperity run
 # at delta* = 1 and 2 with 10 elements across the first contact radius reproduces Hertz,
 # F* = delta*^(3/2) and a/a_c = delta*^(1/2), within 2% (the figure; this mesh gives
-# 0.2-0.9%);
+# 0.2-0.9%), with no yielded share of the contact area at the surface;
 # and without ccx the deck is still written and the message says what is missing.
 # Usage: fem_smoke.sh path/to/geartrib   (from the source tree)
 set -u
@@ -31,6 +31,13 @@ for r in rows:
         ok = abs(err) <= 0.02
         bad += not ok
         print(f"{'ok  ' if ok else 'FAIL'} delta*={d:g} {name} {got:.5g} Hertz {want:.5g} ({100 * err:+.2f}%)")
+    # Elastic: no yielded share of the contact area at the surface, in the details and in the fit
+    # table (with its standard deviation, which a zero observation needs in `geartrib fit`).
+    share, detail, inner, sd = (float(r[k]) for k in ("plastic_area_fraction", "plastic_surface_area_fraction",
+                                                       "plastic_surface_inner_radius_over_ac", "sd_plastic_area_fraction"))
+    ok = share == 0.0 and detail == 0.0 and inner == 0.0 and 0.02 <= sd <= 0.2
+    bad += not ok
+    print(f"{'ok  ' if ok else 'FAIL'} delta*={d:g} surface yielded share {share:g} (details {detail:g}, inner radius {inner:g}, sd {sd:g})")
 sys.exit(1 if bad else 0)
 PY
 # A single parabolic cylinder in plane strain (R_m 6.6 um, 206 GPa): the contact width against

@@ -33,7 +33,22 @@ assert f["meta/stage_seconds"].shape == (len(names),)
 # The load shares of the tracked pair go 1/3 -> 1 -> 1/3 (ISO)
 share = f["mesh/load_share"][()]
 assert abs(share[0] - 1 / 3) < 1e-12 and abs(share[-1] - 1 / 3) < 1e-12 and abs(share.max() - 1) < 1e-12
+# Where the models hold: per position with units, flags 0/1, one verdict with the counts.
+v = f["contact/validity"]
+for n in ["plasticity_index", "separation_over_summit_sigma", "max_delta_star", "max_interference_over_summit_radius",
+          "max_contact_radius_over_summit_radius", "max_contact_radius_over_half_summit_spacing"]:
+    assert v[n].shape == (201,) and np.all(np.isfinite(v[n][()])) and v[n].attrs["units"] in (b"1", "1"), n
+for n in ["beyond_fitted_range", "beyond_paraboloid", "fully_plastic_limit", "summits_interact", "deep_separation"]:
+    flags = v["flag_" + n][()]
+    assert set(np.unique(flags)) <= {0.0, 1.0}, n
+    assert v.attrs["positions_" + n] == flags.sum(), n
+regime = v.attrs["regime"]
+assert (regime.decode() if isinstance(regime, bytes) else regime) == "fully plastic"
+verdict = v.attrs["verdict"]
+assert "201 of 201 positions beyond continuous" in (verdict.decode() if isinstance(verdict, bytes) else verdict)
 PY
+"$bin" run -o "$tmp/v.h5" --positions 11 2>/dev/null | grep -c "^Validity: fully plastic regime" | grep -qx 1 \
+  && ok verdict-printed-once || bad verdict-printed-once
 head -1 "$tmp/m6z30.csv" | grep -q "^s_m,roll_angle_rad" && ok csv-header || bad csv-header
 [[ $(wc -l < "$tmp/m6z30.csv") -eq 202 ]] && ok csv-rows || bad csv-rows
 

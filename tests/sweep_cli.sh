@@ -46,6 +46,17 @@ with h5py.File(sys.argv[3]) as f:
             assert area[idx[(mi, bi, 8e-7)]] < area[i], "rougher must lower the real-area ratio"
             assert plastic[idx[(mi, bi, 8e-7)]] > plastic[i], "rougher must raise the plastic fraction"
 print("ok   trends-and-units")
+with h5py.File(sys.argv[3]) as f:
+    p = f["points"]
+    # The validity verdict per point: regime and the flags' position counts (21 positions each).
+    regime = [r.decode() if isinstance(r, bytes) else r for r in p["regime"][()]]
+    assert set(regime) <= {"elastic", "elastic-plastic", "fully plastic"}, regime
+    beyond = p["positions_beyond_fitted_range"][()]
+    assert all(0 <= n <= 21 for n in beyond), beyond
+    for (mi, bi, ri), i in idx.items():
+        if ri == 8e-7: assert regime[i] == "fully plastic" and beyond[i] == 21, (regime[i], beyond[i])
+    assert all(len(v) > 0 for v in p["validity"][()])
+print("ok   validity-per-point")
 PY
 
 # A point whose geometry is impossible is reported in its row; the others run.

@@ -98,17 +98,23 @@ TEST(PressureProfile, LoadIsTheIntegralOfThePressure) {
   EXPECT_DOUBLE_EQ(uniform_profile(1.0, 3.0).load(), 3.0 * kPi);     // uniform: pi a^2 p
 }
 
-TEST(PressureProfile, ReconstructionKeepsTheMeanPressure) {
-  const double py = 1.0, h = 1.733;  // p_y = k H with k = 0.577
-  for (double pm : {0.3, 2.0 / 3.0, 0.8, 1.0, 1.4, 1.7, 1.733, 2.5}) {
-    const PressureProfile p = profile_from_mean_pressure(1.0, pm, py, h);
-    EXPECT_NEAR(p.load() / kPi, pm, 1e-12) << pm;  // identity: same load on the same area
-    EXPECT_GE(p.plastic_fraction(), 0.0);
-    EXPECT_LE(p.plastic_fraction(), 1.0);
+TEST(PressureProfile, TwoZoneProfileCarriesTheMeanPressureContinuously) {
+  // Identity: pi a^2 p_core (2 + phi)/3 = F, and the pressure is continuous at r_p:
+  // p_e sqrt(1 - phi) = p_core. Limits: phi = 0 Hertz (p0 = 3/2 p_m), phi = 1 uniform.
+  for (double phi : {0.0, 1e-9, 0.1, 0.5, 0.9, 1.0 - 1e-9, 1.0}) {
+    for (double pm : {0.3, 1.0, 2.5}) {
+      const PressureProfile p = two_zone_profile(1.0, pm, phi);
+      EXPECT_NEAR(p.load() / kPi, pm, 1e-12 * pm) << phi;
+      EXPECT_NEAR(p.plastic_fraction(), phi, 1e-15) << phi;
+      if (phi > 0.0 && phi < 1.0) EXPECT_NEAR(p.annulus_peak * std::sqrt(1.0 - phi) / p.core_pressure, 1.0, 1e-12) << phi;
+      EXPECT_LE(p.max_pressure(), 1.5 * pm * (1.0 + 1e-12));  // never above the Hertz peak of the same mean
+      EXPECT_GE(p.max_pressure(), pm * (1.0 - 1e-12));        // never below the uniform one
+    }
   }
-  EXPECT_EQ(profile_from_mean_pressure(1.0, 0.5, py, h).core_radius, 0.0);           // Hertz below 2/3 p_y
-  EXPECT_DOUBLE_EQ(profile_from_mean_pressure(1.0, 0.5, py, h).max_pressure(), 0.75);  // p0 = 1.5 p_m
-  EXPECT_DOUBLE_EQ(profile_from_mean_pressure(1.0, h, py, h).plastic_fraction(), 1.0);  // uniform at H
+  EXPECT_EQ(two_zone_profile(1.0, 0.5, 0.0).core_radius, 0.0);
+  EXPECT_DOUBLE_EQ(two_zone_profile(1.0, 0.5, 0.0).max_pressure(), 0.75);  // p0 = 1.5 p_m
+  EXPECT_DOUBLE_EQ(two_zone_profile(1.0, 0.5, 1.0).max_pressure(), 0.5);   // uniform
+  EXPECT_DOUBLE_EQ(two_zone_profile(1.0, 0.5, 2.0).plastic_fraction(), 1.0);  // share clamped to [0, 1]
 }
 
 TEST(PressureProfile, VonMisesMaximumOfHertzProfile) {

@@ -30,15 +30,23 @@ TEST(ContinuousModel, ElasticAnnulusShareIsHertzAtZeroCore) {
   EXPECT_NEAR(hertz.load() / hertz_load(ra * ra / p.radius, p.radius, p.modulus), 1.0, 1e-12);
 }
 
-TEST(ContinuousModel, LawEqualsItsPressureProfile) {
-  // Identity: F from the dimensionless law equals the integral of the model's own two-zone profile.
+TEST(ContinuousModel, PressureContinuousAtThePlasticCore) {
+  // The seed's claim, kept: the core pressure sigma_rp equals the annulus pressure at r_p, and
+  // the law's load (F* = 3 A* m/(2 k)) is the integral of that profile.
   const auto m = make_asperity_model("continuous");
   const ContactPair p = test::seed_pair();
-  const Critical c = m->critical(p);
+  const double k = ceb_pressure_factor(p.poisson_ratio);
   for (double d : {1.5, 3.0, 6.0, 20.0, 300.0, 1e5}) {
-    const AsperityState s = m->evaluate(p, d * c.interference, Detail::load_area);
-    const PressureProfile prof = m->profile(d, p, c, s.load, s.area);
+    const AsperityState s = m->evaluate(p, d * m->critical(p).interference, Detail::profile);
+    const PressureProfile prof = m->profile(s.plastic_fraction, s.load, s.area);
+    const auto cl = ContinuousLaw::closure(d, m->constants().data(), k);
     EXPECT_NEAR(prof.load() / s.load, 1.0, 1e-10) << d;
+    EXPECT_NEAR(s.mean_pressure / (cl.mean_pressure * p.hardness), 1.0, 1e-10) << d;
+    if (cl.plastic_fraction > 0.0)  // sigma_rp = 3 p_m/(2 + phi)
+      EXPECT_NEAR(prof.core_pressure / (3.0 * s.mean_pressure / (2.0 + cl.plastic_fraction)), 1.0, 1e-10) << d;
+    const double rho = prof.core_radius / prof.contact_radius;
+    if (rho > 0.0 && rho < 1.0)
+      EXPECT_NEAR(prof.annulus_peak * std::sqrt(1.0 - rho * rho) / prof.core_pressure, 1.0, 1e-10) << d;
   }
 }
 
@@ -53,12 +61,14 @@ TEST(ContinuousModel, HertzBelowFirstYield) {
 }
 
 TEST(ContinuousModel, ContinuousAtBreakpoints) {
-  // Relative jump below 1e-6 across delta* = 1 (the only breakpoint) and 6 (the Kogut-Etsion
-  // one the model must not reproduce), probing +-1e-10: the smooth slope contributes ~1e-10.
+  // Relative jump below 1e-6 across delta* = 1 and the surface-yield onset (its breakpoints) and
+  // 6 (the Kogut-Etsion one the model must not reproduce), probing +-1e-10: the smooth slope
+  // contributes ~1e-10.
   const auto m = make_asperity_model("continuous");
   const ContactPair p = test::seed_pair();
   const double dc = m->critical(p).interference;
-  for (double d : {1.0, 6.0}) {
+  const double onset = m->constant("plastic_onset");
+  for (double d : {1.0, onset, 6.0}) {
     const AsperityState lo = m->evaluate(p, (d - 1e-10) * dc, Detail::load_area);
     const AsperityState hi = m->evaluate(p, (d + 1e-10) * dc, Detail::load_area);
     EXPECT_LT(std::abs(hi.load / lo.load - 1.0), 1e-6) << d;
@@ -114,8 +124,8 @@ TEST(ContinuousModel, PeakPressureNeverExceedsHardness) {
   const ContactPair p = test::seed_pair();
   const double dc = m->critical(p).interference;
   for (double d : test::log_space(1e-3, 1e6, 600)) {
-    const AsperityState s = m->evaluate(p, d * dc, Detail::load_area);
-    const PressureProfile prof = m->profile(d, p, m->critical(p), s.load, s.area);
+    const AsperityState s = m->evaluate(p, d * dc, Detail::profile);
+    const PressureProfile prof = m->profile(s.plastic_fraction, s.load, s.area);
     EXPECT_LE(prof.max_pressure(), p.hardness * (1.0 + 1e-12)) << d;
   }
 }
@@ -124,7 +134,10 @@ TEST(ContinuousModel, ConstantsChangeTheCurve) {
   auto m = make_asperity_model("continuous");
   const ContactPair p = test::seed_pair();
   const double before = m->star(10.0, p).load;
-  m->set_constant("plastic_scale", 30.0);  // a later plastic core: closer to Hertz, more load
-  EXPECT_GT(m->star(10.0, p).load, before);
-  EXPECT_THROW(m->set_constant("plastic_exponent", 0.5), std::invalid_argument);  // below 1: peak unbounded
+  m->set_constant("pressure_scale", 30.0);  // a later rise of the mean pressure: less load
+  EXPECT_LT(m->star(10.0, p).load, before);
+  m->set_constant("plastic_scale", 30.0);  // a later plastic core: less yielded surface, same load
+  EXPECT_LT(m->star(10.0, p).plastic, 0.5);
+  EXPECT_THROW(m->set_constant("plastic_exponent", 0.1), std::invalid_argument);  // outside [0.2, 20]
+  EXPECT_THROW(m->set_constant("plastic_onset", 0.5), std::invalid_argument);     // the surface cannot yield before delta_c
 }

@@ -191,3 +191,47 @@ TEST(FemResults, ARimNodeBarelyOpenIsSkipped) {
   ASSERT_EQ(zones.size(), 1u);
   EXPECT_NEAR(zones[0].second, 1.0, 1e-9);
 }
+
+TEST(FemResults, SurfaceYieldShareIsTheYieldedAreaOverTheContactDisc) {
+  // Surface nodes at (k + 1/2) h: the midpoints between them, where a yielded/unyielded boundary
+  // is placed, fall on multiples of h, so boundaries at 0.5 a and the edge a = 1 are exact.
+  const double a = 1.0, h = 0.01;
+  std::vector<double> r;
+  for (int k = 0; k < 200; ++k) r.push_back((k + 0.5) * h);  // out to 2 a: nodes beyond the edge do not count
+  auto share = [&](auto yielded_at) {
+    std::vector<bool> y;
+    for (double x : r) y.push_back(yielded_at(x));
+    return surface_yield_share(r, y, a);
+  };
+  EXPECT_NEAR(share([](double) { return true; }), 1.0, 1e-12);                            // the whole disc
+  EXPECT_NEAR(share([](double x) { return x > 0.5; }), 0.75, 1e-12);                      // annulus 0.5 a..a
+  EXPECT_NEAR(share([](double x) { return x > 0.5 && x < 1.5; }), 0.75, 1e-12);           // yield beyond a ignored
+  EXPECT_NEAR(share([](double x) { return x < 0.5; }), 0.25, 1e-12);                      // a core disc
+  EXPECT_NEAR(share([](double x) { return x > 0.3 && x < 0.6; }), 0.36 - 0.09, 1e-12);  // a ring inside
+  EXPECT_EQ(share([](double) { return false; }), 0.0);                                    // nothing
+  EXPECT_EQ(share([](double x) { return x > 1.0; }), 0.0);                                // only outside the contact
+  // The contact edge inside a node's ring: that ring is cut at a (0.995 a: a node at 0.995, its ring 0.99..1.0).
+  std::vector<bool> all(r.size(), true);
+  EXPECT_NEAR(surface_yield_share(r, all, 0.993), 1.0, 1e-12);
+  std::vector<bool> last(r.size(), false);
+  last[99] = true;  // the node at 0.995 owns 0.99..1.00
+  EXPECT_NEAR(surface_yield_share(r, last, 0.993), (0.993 * 0.993 - 0.99 * 0.99) / (0.993 * 0.993), 1e-12);
+  // An uneven mesh with a node on the axis: an annulus from 0.5 a is found within one ring.
+  std::vector<double> q{0.0};
+  while (q.back() < 1.5) q.push_back(q.back() + 0.013 + 0.02 * q.back());
+  std::vector<bool> outer;
+  for (double x : q) outer.push_back(x >= 0.5);
+  EXPECT_NEAR(surface_yield_share(q, outer, a), 0.75, 2.0 * 0.5 * 0.03);
+  EXPECT_EQ(surface_yield_share(q, outer, 0.0), 0.0);  // no contact
+  EXPECT_THROW(surface_yield_share(q, std::vector<bool>(3, true), a), std::invalid_argument);
+}
+
+TEST(FemResults, SurfaceYieldedNodesDropOneNodeFlipsOfTheExtrapolatedStrain) {
+  // As ccx's nodal PE along a surface: zero, a yielded run with one node extrapolated negative
+  // inside it, zero, and one stray positive node; 1e-7 is below the threshold.
+  const std::vector<double> peeq{0, 1e-7, 0, 3e-6, 5e-5, -1.4e-3, 1.6e-3, 2e-4, 0, 0, 4e-6, 0, 0};
+  const std::vector<bool> want{false, false, false, true, true, true, true, true, false, false, false, false, false};
+  EXPECT_EQ(surface_yielded_nodes(peeq), want);
+  EXPECT_EQ(surface_yielded_nodes({2e-6, 0, 0, 2e-6}), (std::vector<bool>{true, false, false, true}));  // end nodes as they are
+  EXPECT_TRUE(surface_yielded_nodes({}).empty());
+}

@@ -121,21 +121,27 @@ void single_asperity(const SingleOptions& o) {
   for (const auto& l : convergence_lines) fmt::print(stderr, "{}\n", l.substr(2));
   // The reference table in `geartrib fit`'s format; the other figures go to --details.
   io::Table t, details;
-  t.header = {"delta_star", "load_star", "area_star", "mean_pressure_over_yield"};
+  t.header = {"delta_star", "load_star", "area_star", "mean_pressure_over_yield", "plastic_area_fraction", "sd_plastic_area_fraction"};
   details.header = {"delta_star", "contact_radius_over_ac", "max_pressure_over_yield", "max_von_mises_over_yield", "max_von_mises_depth_over_a",
-                    "plastic_depth_over_ac", "plastic_surface_radius_over_ac"};
+                    "plastic_depth_over_ac", "plastic_surface_radius_over_ac", "plastic_surface_area_fraction",
+                    "plastic_surface_inner_radius_over_ac"};
   for (const auto& r : rows) {
-    t.rows.push_back({r.delta_star, r.load_star, r.area_star, r.mean_pressure_over_yield});
+    t.rows.push_back({r.delta_star, r.load_star, r.area_star, r.mean_pressure_over_yield, r.plastic_surface_area_fraction,
+                      r.plastic_surface_area_fraction_sd});
     details.rows.push_back({r.delta_star, r.contact_radius, r.max_pressure_over_yield, r.max_von_mises_over_yield, r.max_von_mises_depth, r.plastic_depth,
-                            r.plastic_surface_radius});
+                            r.plastic_surface_radius, r.plastic_surface_area_fraction, r.plastic_surface_inner_radius});
   }
   std::string text = fmt::format(
       "# source: geartrib {} fem single-asperity ({}), axisymmetric paraboloid against a rigid flat, frictionless, penalty contact\n"
       "# material: {}, E/(1-nu^2) = {:.6g} GPa, nu = {}, S_y = {:.6g} MPa{}\n"
       "# normalisation: Kogut-Etsion delta_c = (pi K H/(2 E_t))^2 R, F_c and A_c = Hertz at delta_c; "
-      "contact radius from the opening gap of the surface nodes\n",
+      "contact radius from the opening gap of the surface nodes\n"
+      "# plastic_area_fraction: the yielded share of the contact disc at the surface, integral over r <= a of (a deformed surface node "
+      "has yielded: the median of its and its neighbours' nodal PEEQ > {:g}; each node stands for the ring between the midpoints to "
+      "its neighbours) 2 pi r dr / (pi a^2); sd_plastic_area_fraction = half the share of the surface element containing r = a, "
+      "at least 0.02\n",
       GEARTRIB_VERSION, fem::ccx_version(ccx), o.material, s.modulus * 1e-9, s.poisson_ratio, s.yield_strength * 1e-6,
-      o.material == "table" ? fmt::format(", flow table of {} points", s.flow_table.size()) : std::string());
+      o.material == "table" ? fmt::format(", flow table of {} points", s.flow_table.size()) : std::string(), fem::surface_yield_threshold);
   for (const auto& l : mesh_lines) text += l + "\n";
   for (const auto& l : convergence_lines) text += l + "\n";
   text += fmt::format("# ccx time: {:.1f} s\n", seconds);
@@ -231,7 +237,8 @@ void add_fem_command(CLI::App& app) {
       "single-asperity",
       "Axisymmetric paraboloid of the case's equivalent radius pressed by a rigid flat, frictionless, displacement-controlled\n"
       "to the delta* levels; prints load*, area* and mean pressure / S_y with provenance lines, in the reference-table\n"
-      "format of `geartrib fit` (--details: contact radius, largest von Mises stress and its depth, plastic zone).");
+      "format of `geartrib fit`, with the yielded share of the contact area at the surface (--details: contact radius,\n"
+      "largest von Mises stress and its depth, plastic zone).");
   single->add_option("--case", o->case_file, "Case file for the material and radius (default: gears/m6z30.toml)");
   single->add_option("--material", o->material, "elastic, perfectly-plastic (default) or table (the case's flow curve)")
       ->check(CLI::IsMember({"elastic", "perfectly-plastic", "table"}));
@@ -242,7 +249,7 @@ void add_fem_command(CLI::App& app) {
                                                     "changes in load* and area* (stderr and provenance lines)");
   single->add_option("-o,--output", o->output, "Write the table here (atomically) instead of stdout");
   single->add_option("--details", o->details, "Also write the contact radius, the largest von Mises stress and its depth, and the\n"
-                                               "plastic zone's depth and surface radius per level to this CSV");
+                                               "plastic zone's depth, surface radius, surface yielded share and inner radius per level to this CSV");
   auto* keep = single->add_option("--keep-deck", o->keep_deck, "Keep the deck and ccx's files in this folder (written even without ccx)");
   single->add_flag("--reuse", o->reuse, "Read the results already in the --keep-deck folder instead of rerunning ccx (same decks)")
       ->needs(keep);

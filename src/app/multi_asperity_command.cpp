@@ -38,6 +38,7 @@ struct Options {
   std::string delta_pc;
   int elements = 16384;
   std::string cap = "hardness";
+  std::string modulus = "composite";
   std::string reference_depth;
   std::string sweep;
   std::string topography;
@@ -56,7 +57,11 @@ contact::MultiAsperitySpec make_spec(const Options& o, const Case& c, double del
   s.asperity_height = length_option("--asperity-height", o.asperity_height);
   s.approach = o.approach * delta_pc;
   s.line_load = o.load;
-  s.modulus = m.youngs_modulus / (1.0 - m.poisson_ratio * m.poisson_ratio);
+  // composite: E_t of the two flanks against a rigid flat, the equivalent-surface convention of
+  // the seed's sections 4-5 (consistent with delta_pc and the half-widths); single-body:
+  // E/(1 - nu^2) of the softer body against a rigid flat, as the CalculiX three-cylinder model.
+  s.modulus = o.modulus == "composite" ? composite_modulus(c.pinion.material, c.wheel.material)
+                                       : m.youngs_modulus / (1.0 - m.poisson_ratio * m.poisson_ratio);
   s.poisson_ratio = m.poisson_ratio;
   if (o.cap == "hardness") s.pressure_cap = m.hardness;
   else if (o.cap == "yield") s.pressure_cap = (2.0 + std::numbers::pi) * m.yield_strength / std::sqrt(3.0);  // Prandtl punch
@@ -109,7 +114,8 @@ void run(const Options& o) {
     io::output_table(t, o.csv, o.output);
     return;
   }
-  const auto r = contact::solve_multi_asperity(make_spec(o, c, delta_pc));
+  const contact::MultiAsperitySpec spec = make_spec(o, c, delta_pc);
+  const auto r = contact::solve_multi_asperity(spec);
   io::Table t;
   t.header = {"asperity", "load_N_per_m", "contact_width_m", "max_pressure_Pa", "max_surface_von_mises_Pa",
               "max_deformation_m", "centre_m"};
@@ -128,6 +134,7 @@ void run(const Options& o) {
   totals.add_row("approach_over_delta_pc", {r.approach / delta_pc});
   totals.add_row("line_load_N_per_m", {r.line_load});
   totals.add_row("delta_pc_m", {delta_pc});
+  totals.add_row(o.modulus == "composite" ? "modulus_composite_Pa" : "modulus_single_body_Pa", {spec.modulus});
   totals.add_row("elements", {static_cast<double>(r.grid.size)});
   totals.add_row("element_width_m", {r.grid.spacing});
   totals.add_row("iterations", {static_cast<double>(r.iterations)});
@@ -146,7 +153,7 @@ void add_multi_asperity_command(CLI::App& app) {
       "multi-asperity",
       "Parallel parabolic-cylinder asperities y = -x^2/(2 R_m) (the case's asperity.cylinder R_m) on a base\n"
       "plane, pressed by a rigid flat (seed sections 5-7), by plane-strain boundary elements with an\n"
-      "elastic-perfectly-plastic pressure cap. Height step and approach in units of the seed's delta_pc.\n"
+      "elastic-perfectly-plastic pressure cap and the composite modulus E_t (--modulus). Height step and approach in units of the seed's delta_pc.\n"
       "Prints per asperity its load, contact width, peak pressure, surface von Mises stress and\n"
       "largest deformation, then the total contact area (10 um long cylinders), the von Mises stress at the\n"
       "surface midway between neighbours and the inflection point of the von Mises profile below the middle\n"
@@ -166,6 +173,10 @@ void add_multi_asperity_command(CLI::App& app) {
   cmd->add_option("--elements", o->elements, "Boundary elements over the domain (default 16384)")->check(CLI::Range(64, 1 << 22));
   cmd->add_option("--pressure-cap", o->cap, "hardness (H), yield (Prandtl punch (2+pi) S_y/sqrt3) or none (elastic)")
       ->check(CLI::IsMember({"hardness", "yield", "none"}));
+  cmd->add_option("--modulus", o->modulus,
+                  "composite (default: E_t of both flanks on a rigid flat, the seed's equivalent surface, consistent\n"
+                  "with delta_pc) or single-body (E/(1 - nu^2) of the softer body, as the CalculiX three-cylinder model)")
+      ->check(CLI::IsMember({"composite", "single-body"}));
   cmd->add_option("--reference-depth", o->reference_depth, "Displacement reference L_ref: a rigid base ~L_ref deep (default 50um, assumed)");
   auto* topo = cmd->add_option("--topography", o->topography,
                                "Surface file: its profile across the lay, cut into parabolic cylinders (`geartrib surface\n"

@@ -75,17 +75,18 @@ void run(const Options& o) {
   io::write_mesh_contact_hdf5(out, r, case_file, c.source_text);
   if (!o.csv.empty()) {
     io::Table t;
-    for (const auto* group : {&r.mesh, &r.contact})
+    for (const auto* group : {&r.mesh, &r.contact, &r.validity})
       for (const auto& q : *group) t.header.push_back(q.name);
     for (std::size_t i = 0; i < r.mesh.front().values.size(); ++i) {
       std::vector<double> row;
-      for (const auto* group : {&r.mesh, &r.contact})
+      for (const auto* group : {&r.mesh, &r.contact, &r.validity})
         for (const auto& q : *group) row.push_back(q.values[i]);
       t.rows.push_back(std::move(row));
     }
     io::output_table(t, true, o.csv);
   }
   for (const auto& w : r.warnings) std::cerr << "warning: " << w << '\n';
+  if (!r.verdict.empty()) fmt::print("Validity: {}\n", r.verdict);
   if (!o.quiet) {
     for (const auto& [name, g] : {std::pair{"pinion", &c.pinion}, std::pair{"wheel", &c.wheel}})
       if (g->flank.measured)

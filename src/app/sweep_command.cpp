@@ -50,6 +50,9 @@ struct PointResult {
   double seconds = 0.0;
   double contact_ratio = 0.0;
   double plasticity_index = 0.0;
+  std::string regime;   // the run's validity verdict, in one word
+  std::string verdict;  // and in full
+  std::vector<contact::MeshContactResult::FlagCount> flag_counts;  // positions per validity flag
   std::vector<Summary> quantities;
 };
 
@@ -64,9 +67,13 @@ PointResult run_point(const std::filesystem::path& case_file, const std::vector<
     for (const auto& w : r.warnings) p.message += (p.message.empty() ? "warning: " : "; warning: ") + w;
     p.contact_ratio = r.path.contact_ratio;
     p.plasticity_index = r.plasticity_index;
-    for (const auto* group : {&r.mesh, &r.contact})
+    p.regime = r.regime;
+    p.verdict = r.verdict;
+    p.flag_counts = r.flag_counts;
+    for (const auto* group : {&r.mesh, &r.contact, &r.validity})
       for (const auto& q : *group) {
         if (q.name == "s_m" || q.name == "roll_angle_rad") continue;  // the path itself
+        if (q.name.rfind("flag_", 0) == 0 || q.name == "plasticity_index") continue;  // counted below / a column
         const auto [lo, hi] = std::minmax_element(q.values.begin(), q.values.end());
         p.quantities.push_back({q.name, q.unit, *lo, contact::path_mean(q.values), *hi});
       }
@@ -109,6 +116,26 @@ io::ColumnTable point_table(const io::SweepPlan& plan, const std::vector<PointRe
     psi.numbers.push_back(p.ok ? p.plasticity_index : std::nan(""));
   }
   for (auto* c : {&status, &message, &seconds, &ratio, &psi}) t.columns.push_back(std::move(*c));
+  // The validity verdict and, per flag, at how many positions it is set.
+  io::Column regime{"regime", "", true, {}, {}}, verdict{"validity", "", true, {}, {}};
+  for (const auto& p : points) {
+    regime.texts.push_back(p.ok ? p.regime : "");
+    verdict.texts.push_back(p.ok ? p.verdict : "");
+  }
+  t.columns.push_back(std::move(regime));
+  t.columns.push_back(std::move(verdict));
+  std::vector<std::string> flags;
+  for (const auto& p : points)
+    for (const auto& f : p.flag_counts)
+      if (std::find(flags.begin(), flags.end(), f.name) == flags.end()) flags.push_back(f.name);
+  for (const auto& name : flags) {
+    io::Column col{"positions_" + name, "1", false, {}, {}};
+    for (const auto& p : points) {
+      const auto f = std::find_if(p.flag_counts.begin(), p.flag_counts.end(), [&](const auto& x) { return x.name == name; });
+      col.numbers.push_back(p.ok && f != p.flag_counts.end() ? f->positions : std::nan(""));
+    }
+    t.columns.push_back(std::move(col));
+  }
   // Quantities in order of first appearance (a swept key may add one, e.g. mesh.dynamics).
   std::vector<std::pair<std::string, std::string>> names;
   for (const auto& p : points)

@@ -10,6 +10,8 @@
 #include "asperity/critical.hpp"
 
 #include <array>
+#include <limits>
+#include <vector>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -23,8 +25,38 @@ namespace geartrib::asperity {
 
 template <class T>
 struct Star {
-  T load;  // F* = F / F_c
-  T area;  // A* = A / A_c
+  T load;     // F* = F / F_c
+  T area;     // A* = A / A_c
+  T plastic;  // share of the contact area whose surface has yielded (0..1)
+};
+
+// Share of the contact area whose surface has yielded, at delta* = d:
+//   phi_s = 0 for d <= d_0,  phi_s = 1/(1 + (c/(d - d_0))^n) beyond,
+// the closure of the continuous model's plastic core, fitted to the project's CalculiX runs
+// (validation/fem-reference: yielded share of the contact disc at the surface, perfectly plastic
+// 45 steel, delta* 1-100). The published laws, which give no plastic zone of their own, use it
+// with the fitted defaults (their documented profile: ContactPair-independent, by delta*).
+template <class T>
+T surface_yield_share(const T& d, const T& onset, const T& scale, const T& exponent) {
+  using std::pow;
+  if (!(d > onset)) return T(0.0);
+  return 1.0 / (1.0 + pow(scale / (d - onset), exponent));
+}
+template <class T>
+T published_surface_yield_share(const T& d) {
+  return surface_yield_share(d, T(fitted::continuous_plastic_onset), T(fitted::continuous_plastic_scale),
+                             T(fitted::continuous_plastic_exponent));
+}
+
+// Where a law was built for (its stated range): the largest delta* its fit or derivation covers
+// (infinity: defined at every interference), the contact radius over the summit radius up to which
+// the paraboloid tip it assumes stays one (at a/R = 0.5 a sphere's cap is 7% deeper than the
+// paraboloid's, R - sqrt(R^2 - a^2) against a^2/(2R)), and whether, past either, the model
+// switches to the fully plastic limit (models.cpp) instead of extrapolating the law.
+struct LawRange {
+  double fitted_delta_star_max;
+  double contact_radius_over_radius_max = 0.5;
+  bool switch_to_fully_plastic = false;
 };
 
 // A named model constant: default value, admissible range (inclusive) and meaning.
@@ -42,6 +74,9 @@ struct HertzLaw {
   static constexpr std::string_view name = "hertz";
   static constexpr std::string_view citation = "Hertz (1882); Johnson, Contact Mechanics (1985) ch. 4";
   static constexpr std::array<ConstantSpec, 0> constants{};
+  // Elastic reference: holds up to first yield only; beyond it the run flags every contact.
+  static LawRange range(const double*) { return {1.0, 0.5, false}; }
+  static void breakpoints(const double*, std::vector<double>&) {}
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
     return T(ceb_pressure_factor(p.poisson_ratio) * p.hardness);
@@ -49,7 +84,7 @@ struct HertzLaw {
   template <class T>
   static Star<T> star(const T& d, const T*, const ContactPair&) {
     using std::pow;
-    return {pow(d, 1.5), d};
+    return {pow(d, 1.5), d, T(0.0)};
   }
 };
 
@@ -61,6 +96,9 @@ struct CebLaw {
   static constexpr std::string_view name = "ceb";
   static constexpr std::string_view citation = "Chang, Etsion & Bogy, J. Tribol. 109 (1987) 257";
   static constexpr std::array<ConstantSpec, 0> constants{};
+  // Volume conservation holds at any interference; its plastic pressure stays k H (< H).
+  static LawRange range(const double*) { return {std::numeric_limits<double>::infinity(), 0.5, false}; }
+  static void breakpoints(const double*, std::vector<double>& out) { out.insert(out.end(), {1.0, fitted::continuous_plastic_onset}); }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
     return T(ceb_pressure_factor(p.poisson_ratio) * p.hardness);
@@ -68,9 +106,9 @@ struct CebLaw {
   template <class T>
   static Star<T> star(const T& d, const T*, const ContactPair&) {
     using std::pow;
-    if (d <= 1.0) return {pow(d, 1.5), d};
+    if (d <= 1.0) return {pow(d, 1.5), d, T(0.0)};
     const T area = 2.0 * d - 1.0;
-    return {1.5 * area, area};  // F/F_c = (k H A) / ((2/3) k H A_c)
+    return {1.5 * area, area, published_surface_yield_share(d)};  // F/F_c = (k H A) / ((2/3) k H A_c)
   }
 };
 
@@ -79,7 +117,9 @@ struct CebLaw {
 //   1 <= d <= 6:   F* = 1.03 d^1.425, A* = 0.93 d^1.136
 //   6 <= d <= 110: F* = 1.40 d^1.263, A* = 0.94 d^1.146
 //   d > 110: fully plastic, F = 2 pi R delta H (F* = 3 d / k), A = 2 pi R delta (A* = 2 d).
-// As published it jumps at d = 1 (area down by 7%), 6 and 110.
+// As published it jumps at d = 1 (area down by 7%), 6 and 110. The law below keeps the published
+// branches; the model (models.cpp) replaces the jump at 110 by the continuous switch to the fully
+// plastic limit that every law with a fitted range uses.
 struct KogutEtsionLaw {
   static constexpr std::string_view name = "kogut-etsion";
   static constexpr std::string_view citation = "Kogut & Etsion, J. Appl. Mech. 69 (2002) 657";
@@ -95,6 +135,10 @@ struct KogutEtsionLaw {
       {"surface_yield", 6.0, 1.0, 100.0, "delta* where the plastic zone reaches the surface"},
       {"fully_plastic", 110.0, 2.0, 1000.0, "delta* of fully plastic contact"},
   }};
+  // Fitted 1 <= delta* <= 110 (the constant fully_plastic); the model switches to the fully
+  // plastic limit there.
+  static LawRange range(const double* c) { return {c[9], 0.5, true}; }
+  static void breakpoints(const double* c, std::vector<double>& out) { out.insert(out.end(), {1.0, c[8], c[9], fitted::continuous_plastic_onset}); }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
     return T(ceb_pressure_factor(p.poisson_ratio) * p.hardness);
@@ -102,10 +146,11 @@ struct KogutEtsionLaw {
   template <class T>
   static Star<T> star(const T& d, const T* c, const ContactPair& p) {
     using std::pow;
-    if (d <= 1.0) return {pow(d, 1.5), d};
-    if (d <= c[8]) return {c[0] * pow(d, c[1]), c[2] * pow(d, c[3])};
-    if (d <= c[9]) return {c[4] * pow(d, c[5]), c[6] * pow(d, c[7])};
-    return {3.0 * d / ceb_pressure_factor(p.poisson_ratio), 2.0 * d};
+    if (d <= 1.0) return {pow(d, 1.5), d, T(0.0)};
+    const T share = published_surface_yield_share(d);
+    if (d <= c[8]) return {c[0] * pow(d, c[1]), c[2] * pow(d, c[3]), share};
+    if (d <= c[9]) return {c[4] * pow(d, c[5]), c[6] * pow(d, c[7]), share};
+    return {3.0 * d / ceb_pressure_factor(p.poisson_ratio), 2.0 * d, share};
   }
 };
 
@@ -126,6 +171,11 @@ struct JacksonGreenLaw {
       {"area_coefficient", 0.14, 0.01, 1.0, "B = coefficient exp(slope S_y/E)"},
       {"area_slope", 23.0, 0.0, 100.0, "B = coefficient exp(slope S_y/E)"},
   }};
+  // Jackson & Green's finite-element runs and fits cover 0 < delta* <= 110; beyond it the area
+  // law, extrapolated, outgrows the fully plastic 2 pi R delta and the mean pressure falls far
+  // below the hardness, so the model switches to the fully plastic limit there.
+  static LawRange range(const double*) { return {110.0, 0.5, true}; }
+  static void breakpoints(const double* c, std::vector<double>& out) { out.insert(out.end(), {c[0], fitted::continuous_plastic_onset}); }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
     return T(jackson_green_yield_factor(p.poisson_ratio) * p.yield_strength);
@@ -133,7 +183,7 @@ struct JacksonGreenLaw {
   template <class T>
   static Star<T> star(const T& d, const T* c, const ContactPair& p) {
     using std::exp, std::pow, std::sqrt;
-    if (d <= c[0]) return {pow(d, 1.5), d};
+    if (d <= c[0]) return {pow(d, 1.5), d, published_surface_yield_share(d)};
     const double cy = jackson_green_yield_factor(p.poisson_ratio);
     const double sqrt_dc_over_r = std::numbers::pi * cy * p.yield_strength / (2.0 * p.modulus);
     const T b = c[4] * exp(c[5] * (p.yield_strength / p.youngs_modulus));
@@ -142,7 +192,7 @@ struct JacksonGreenLaw {
     const T hg = c[1] * (1.0 - exp(-c[2] * pow(a_over_r, -c[3])));
     const T load = exp(-0.25 * pow(d, 5.0 / 12.0)) * pow(d, 1.5) +
                    4.0 * hg / cy * (1.0 - exp(-pow(d, 5.0 / 9.0) / 25.0)) * d;
-    return {load, area};
+    return {load, area, published_surface_yield_share(d)};
   }
 };
 
@@ -158,6 +208,9 @@ struct ZmcLaw {
       {"mean_pressure_factor", 0.6, 0.1, 1.0, "K: Hertz mean pressure K H at first yield"},
       {"fully_plastic", 54.0, 2.0, 1000.0, "delta_2/delta_1, onset of fully plastic flow"},
   }};
+  // Defined at every interference: fully plastic (p = H, A = 2 pi R delta) from delta_2 on.
+  static LawRange range(const double*) { return {std::numeric_limits<double>::infinity(), 0.5, false}; }
+  static void breakpoints(const double* c, std::vector<double>& out) { out.insert(out.end(), {1.0, c[1], fitted::continuous_plastic_onset}); }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T* c) {
     return 1.5 * c[0] * p.hardness;
@@ -165,40 +218,48 @@ struct ZmcLaw {
   template <class T>
   static Star<T> star(const T& d, const T* c, const ContactPair&) {
     using std::log, std::pow;
-    if (d <= 1.0) return {pow(d, 1.5), d};
+    if (d <= 1.0) return {pow(d, 1.5), d, T(0.0)};
     const T& k = c[0];
-    if (d >= c[1]) return {2.0 * d / k, 2.0 * d};  // F_c = K H A_c
+    const T share = published_surface_yield_share(d);
+    if (d >= c[1]) return {2.0 * d / k, 2.0 * d, share};  // F_c = K H A_c
     const T x = (d - 1.0) / (c[1] - 1.0);
     const T area = d * (1.0 + 3.0 * x * x - 2.0 * x * x * x);
     const T pm_over_h = 1.0 - (1.0 - k) * log(c[1] / d) / log(c[1]);
-    return {area * pm_over_h / k, area};
+    return {area * pm_over_h / k, area, share};
   }
 };
 
 // ---------------------------------------------------------------------------------------------
-// The seed's continuous elastic-plastic model (section 2), re-derived (ERRATA). Load carried by
-// an elastic annulus with the Hertz-type pressure p_e sqrt(1 - r^2/r_a^2), p_e = 2 E_t r_a/(pi R),
-// and a plastic core of radius r_p at sigma_rp:
-//   F = 4 E_t (r_a^2 - r_p^2)^(3/2) / (3 R) + pi r_p^2 sigma_rp,
-// which is Hertz at r_p = 0 and 2 pi R delta H when r_p = r_a, r_a^2 = 2 R delta, sigma_rp = H.
+// The seed's continuous elastic-plastic model (section 2), re-derived (ERRATA): a plastic core
+// r < r_p at a uniform pressure sigma_rp and an elastic annulus carrying the Hertz-type pressure
+// p_e sqrt(1 - r^2/r_a^2), continuous at r_p as the seed states (p_e sqrt(1 - phi) = sigma_rp).
 // The closure the seed omits (x = delta* - 1 > 0):
-//   r_a^2 = R delta g,  g = 1 + x^na/(da^na + x^na)             (1 -> 2)
-//   (r_p/r_a)^2 = phi = x^np/(dp^np + x^np)                      (0 -> 1)
-//   sigma_rp/H = s = k + (1 - k) x^ns/(ds^ns + x^ns)             (k -> 1)
-// so F* = (d g)^(3/2) (1 - phi)^(3/2) + 3/(2k) d g phi s and A* = d g. Defaults: the Ceres fit to
-// the Kogut-Etsion 2002 and Jackson-Green 2005 FEM-based curves written by
-// validation/fem-reference/refit-continuous.sh into continuous_defaults.hpp (one source).
+//   r_a^2 = R delta g,  g = 1 + x^na/(da^na + x^na)                         (1 -> 2)
+//   p_m/H = m = 2k/3 + (1 - 2k/3) x^ns/(ds^ns + x^ns)                         (Hertz 2kH/3 -> H)
+//   (r_p/r_a)^2 = phi = surface_yield_share(delta*, d0, dp, np)             (0 -> 1)
+// so F* = 3 A* m/(2 k), A* = delta* g: Hertz at delta* = 1 and 2 pi R delta H when g = 2, m = 1;
+// and sigma_rp = 3 p_m/(2 + phi) (two_zone_profile). phi is the yielded share of the contact area
+// at the surface. (The seed's printed annulus amplitude p_e = 2 E_t r_a/(pi R) cannot be
+// continuous at r_p with a core that matches the surface yield: README, "departs from the seed".)
+// Defaults: validation/fem-reference/refit-continuous.sh writes continuous_defaults.hpp (one
+// source): phi fitted to the project's CalculiX surface-yield share, g and m to the Kogut-Etsion
+// 2002 and Jackson-Green 2005 FEM-based load and area.
 struct ContinuousLaw {
   static constexpr std::string_view name = "continuous";
-  static constexpr std::string_view citation = "seed section 2, closure re-derived (ERRATA); defaults fitted to KE 2002 / JG 2005";
-  static constexpr std::array<ConstantSpec, 6> constants{{
+  static constexpr std::string_view citation = "seed section 2, closure re-derived (ERRATA); area and load fitted to KE 2002 / JG 2005, plastic core to the project's CalculiX surface yield";
+  static constexpr std::array<ConstantSpec, 7> constants{{
       {"area_scale", fitted::continuous_area_scale, 0.1, 1e4, "da: delta* - 1 at which r_a^2 is halfway from R delta to 2 R delta"},
       {"area_exponent", fitted::continuous_area_exponent, 0.2, 5.0, "na: steepness of the contact-radius growth"},
-      {"plastic_scale", fitted::continuous_plastic_scale, 0.01, 1e4, "dp: delta* - 1 at which half the contact area is plastic"},
-      {"plastic_exponent", fitted::continuous_plastic_exponent, 1.0, 5.0, "np: steepness of the plastic-core growth (>= 1 keeps the peak pressure bounded)"},
-      {"pressure_scale", fitted::continuous_pressure_scale, 0.01, 1e4, "ds: delta* - 1 at which sigma_rp is halfway from k H to H"},
-      {"pressure_exponent", fitted::continuous_pressure_exponent, 0.2, 5.0, "ns: steepness of the core-pressure growth"},
+      {"plastic_onset", fitted::continuous_plastic_onset, 1.0, 100.0, "d0: delta* at which the surface first yields"},
+      {"plastic_scale", fitted::continuous_plastic_scale, 0.01, 1e4, "dp: delta* - d0 at which half the contact area has yielded at the surface"},
+      {"plastic_exponent", fitted::continuous_plastic_exponent, 0.2, 20.0, "np: steepness of the surface-yield growth"},
+      {"pressure_scale", fitted::continuous_pressure_scale, 0.01, 1e4, "ds: delta* - 1 at which the mean pressure is halfway from 2 k H/3 to H"},
+      {"pressure_exponent", fitted::continuous_pressure_exponent, 0.2, 5.0, "ns: steepness of the mean-pressure growth"},
   }};
+  // Fitted to the KE/JG curves up to delta* = 110 (and KE's fully plastic branch beyond); the
+  // closure reaches the fully plastic limit by itself (g -> 2, s -> 1, phi -> 1), so no switch.
+  static LawRange range(const double*) { return {110.0, 0.5, false}; }
+  static void breakpoints(const double* c, std::vector<double>& out) { out.insert(out.end(), {1.0, c[2]}); }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
     return T(ceb_pressure_factor(p.poisson_ratio) * p.hardness);
@@ -206,11 +267,10 @@ struct ContinuousLaw {
   template <class T>
   struct Closure {
     T area_factor;       // g = r_a^2 / (R delta)
-    T plastic_fraction;  // phi = (r_p/r_a)^2
-    T elastic_fraction;  // 1 - phi, computed without cancellation
-    T core_pressure;     // s = sigma_rp / H
+    T plastic_fraction;  // phi = (r_p/r_a)^2, the yielded share at the surface
+    T mean_pressure;     // m = p_m / H
   };
-  // x/(c + x) in the power form x^n/(c^n + x^n) = 1/(1 + (c/x)^n), stable for large x.
+  // x^n/(c^n + x^n) in the form 1/(1 + (c/x)^n), stable for large x.
   template <class T>
   static T rise(const T& x, const T& scale, const T& exponent) {
     using std::pow;
@@ -218,21 +278,18 @@ struct ContinuousLaw {
   }
   template <class T>
   static Closure<T> closure(const T& d, const T* c, double k) {
-    using std::pow;
     const T x = d - 1.0;  // > 0: callers handle d <= 1 as Hertz
-    const T tp = pow(x / c[2], c[3]);
-    return {1.0 + rise(x, c[0], c[1]), tp / (1.0 + tp), 1.0 / (1.0 + tp), k + (1.0 - k) * rise(x, c[4], c[5])};
+    const double hertz = 2.0 * k / 3.0;  // Hertz mean pressure at first yield over H
+    return {1.0 + rise(x, c[0], c[1]), surface_yield_share(d, c[2], c[3], c[4]), hertz + (1.0 - hertz) * rise(x, c[5], c[6])};
   }
   template <class T>
   static Star<T> star(const T& d, const T* c, const ContactPair& p) {
     using std::pow;
-    if (d <= 1.0) return {pow(d, 1.5), d};
+    if (d <= 1.0) return {pow(d, 1.5), d, T(0.0)};
     const double k = ceb_pressure_factor(p.poisson_ratio);
     const Closure<T> cl = closure(d, c, k);
     const T area = d * cl.area_factor;
-    const T elastic = pow(area * cl.elastic_fraction, 1.5);
-    const T plastic = 1.5 / k * area * cl.plastic_fraction * cl.core_pressure;
-    return {elastic + plastic, area};
+    return {1.5 * area * cl.mean_pressure / k, area, cl.plastic_fraction};
   }
 };
 

@@ -28,9 +28,12 @@ struct AsperityState {
   double plastic_radius = 0.0;    // r_p, radius of the plastic core of the pressure profile [m]
   double mean_pressure = 0.0;     // F/A [Pa]
   double max_pressure = 0.0;      // peak contact pressure [Pa]
-  double plastic_fraction = 0.0;  // plastic share of the contact area (r_p/a)^2
+  double plastic_fraction = 0.0;  // share of the contact area whose surface has yielded, (r_p/a)^2
   double max_von_mises = 0.0;     // largest von Mises stress of the elastic field on the axis [Pa]
   double von_mises_depth = 0.0;   // its depth [m]
+  bool beyond_fitted_range = false;  // delta* past the law's fitted range (LawRange)
+  bool beyond_paraboloid = false;    // contact radius past the law's a/R limit
+  bool fully_plastic_limit = false;  // the switch to the fully plastic limit governs the answer
 };
 
 // What to compute: the load and area only (cheap); also the pressure profile (peak pressure,
@@ -54,19 +57,35 @@ class AsperityModel {
   virtual double yield_peak_pressure(const ContactPair& pair) const = 0;
   Critical critical(const ContactPair& pair) const { return hertz_critical(pair, yield_peak_pressure(pair)); }
 
-  // Dimensionless law at delta* = delta/delta_c.
-  virtual Star<double> star(double delta_star, const ContactPair& pair) const = 0;
+  // The law as published (or fitted), at delta* = delta/delta_c, without the switch below.
+  virtual Star<double> law_star(double delta_star, const ContactPair& pair) const = 0;
+  // The range the law was built for.
+  virtual LawRange range() const = 0;
+  // delta* where the law jumps or kinks (unsorted; the switch point included).
+  std::vector<double> breakpoints(const ContactPair& pair) const;
 
-  // Contact pressure profile at delta*, given the law's load and area. The default
-  // reconstructs it from the mean pressure (profile_from_mean_pressure); models with a
-  // profile of their own override it.
-  virtual PressureProfile profile(double delta_star, const ContactPair& pair, const Critical& crit,
-                                  double load, double area) const;
+  // delta* from which the fully plastic limit takes over (infinity for laws that need no switch):
+  // the smaller of the fitted range's end and the delta* at which the fully plastic contact
+  // radius sqrt(2 R delta) reaches the range's a/R limit.
+  double switch_delta_star(const ContactPair& pair) const;
+  double switch_delta_star(const ContactPair& pair, const Critical& crit) const;
+  // The model's answer at delta*: the law inside its range; past switch_delta_star, continuously
+  // onto the fully plastic limit A = 2 pi R delta, F = H A (H the pair's hardness):
+  //   X(d) = X_fp(d) r^(d_s/d),  r = X_law(d_s)/X_fp(d_s),
+  // for load and area, equal to the law at d_s and tending to the limit; monotone when ln r < 1
+  // (d ln X/d ln d = 1 - (d_s/d) ln r). The plastic share stays the law's.
+  Star<double> star(double delta_star, const ContactPair& pair) const;
+  Star<double> star(double delta_star, const ContactPair& pair, double switch_delta_star) const;
+  // Contact pressure profile: the two-zone profile with the model's plastic share
+  // (two_zone_profile), Hertz for phi = 0.
+  PressureProfile profile(double plastic_share, double load, double area) const;
 
   // Full evaluation at an interference delta >= 0 [m].
   AsperityState evaluate(const ContactPair& pair, double delta, Detail detail = Detail::full) const;
 
  protected:
+  virtual void law_breakpoints(std::vector<double>& out) const = 0;
+
   std::vector<double> constants_;
 };
 

@@ -1,8 +1,9 @@
-// The registered models: each wraps one law of laws.hpp; Hertz, CEB and the continuous model
-// also define their own pressure profiles.
+// The registered models: each wraps one law of laws.hpp; every model's pressure profile is the
+// two-zone profile with its plastic share (pressure_profile.hpp).
 #include "asperity/model.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -34,10 +35,43 @@ void AsperityModel::set_constant(std::string_view name, double value) {
                               "' (known: " + (known.empty() ? "none" : known) + ")");
 }
 
-PressureProfile AsperityModel::profile(double, const ContactPair& pair, const Critical& crit, double load,
-                                       double area) const {
+double AsperityModel::switch_delta_star(const ContactPair& pair) const {
+  return switch_delta_star(pair, critical(pair));
+}
+
+double AsperityModel::switch_delta_star(const ContactPair& pair, const Critical& crit) const {
+  const LawRange r = range();
+  if (!r.switch_to_fully_plastic) return std::numeric_limits<double>::infinity();
+  // a^2 = 2 R delta = (lim R)^2  =>  delta/R = lim^2/2, and delta_c/R = (pi p_y/(2 E_t))^2.
+  const double dc_over_r = crit.interference / pair.radius;
+  return std::min(r.fitted_delta_star_max, 0.5 * r.contact_radius_over_radius_max * r.contact_radius_over_radius_max / dc_over_r);
+}
+
+std::vector<double> AsperityModel::breakpoints(const ContactPair& pair) const {
+  std::vector<double> out;
+  law_breakpoints(out);
+  const double ds = switch_delta_star(pair);
+  if (std::isfinite(ds)) out.push_back(ds);
+  return out;
+}
+
+Star<double> AsperityModel::star(double d, const ContactPair& pair) const {
+  return star(d, pair, switch_delta_star(pair));
+}
+
+Star<double> AsperityModel::star(double d, const ContactPair& pair, double ds) const {
+  if (!(d > ds)) return law_star(d, pair);
+  // Fully plastic limit in the law's normalisation: A* = 2 d, F* = H A/F_c = 3 d H/p_y (F_c = 2/3 p_y A_c).
+  const double load_per_d = 3.0 * pair.hardness / yield_peak_pressure(pair);
+  const Star<double> at = law_star(ds, pair);
+  const double decay = ds / d;
+  return {load_per_d * d * std::pow(at.load / (load_per_d * ds), decay), 2.0 * d * std::pow(at.area / (2.0 * ds), decay),
+          law_star(d, pair).plastic};
+}
+
+PressureProfile AsperityModel::profile(double plastic_share, double load, double area) const {
   const double a = std::sqrt(area / std::numbers::pi);
-  return profile_from_mean_pressure(a, area > 0.0 ? load / area : 0.0, crit.peak_pressure, pair.hardness);
+  return two_zone_profile(a, area > 0.0 ? load / area : 0.0, plastic_share);
 }
 
 AsperityState AsperityModel::evaluate(const ContactPair& pair, double delta, Detail detail) const {
@@ -47,7 +81,8 @@ AsperityState AsperityModel::evaluate(const ContactPair& pair, double delta, Det
   AsperityState s;
   s.delta = delta;
   s.delta_star = delta / crit.interference;
-  const Star<double> st = star(s.delta_star, pair);
+  const double ds = switch_delta_star(pair, crit);
+  const Star<double> st = star(s.delta_star, pair, ds);
   s.load_star = st.load;
   s.area_star = st.area;
   s.load = st.load * crit.load;
@@ -55,10 +90,14 @@ AsperityState AsperityModel::evaluate(const ContactPair& pair, double delta, Det
   s.contact_radius = std::sqrt(s.area / std::numbers::pi);
   // Mean pressure -> 0 as delta -> 0 (Hertz p_m ~ sqrt(delta)).
   s.mean_pressure = s.area > 0.0 ? s.load / s.area : 0.0;
+  s.plastic_fraction = std::clamp(st.plastic, 0.0, 1.0);
+  const LawRange r = range();
+  s.beyond_fitted_range = s.delta_star > r.fitted_delta_star_max;
+  s.beyond_paraboloid = s.contact_radius > r.contact_radius_over_radius_max * pair.radius;
+  s.fully_plastic_limit = s.delta_star > ds;
   if (detail == Detail::load_area) return s;
-  const PressureProfile prof = profile(s.delta_star, pair, crit, s.load, s.area);
+  const PressureProfile prof = profile(s.plastic_fraction, s.load, s.area);
   s.plastic_radius = prof.core_radius;
-  s.plastic_fraction = prof.plastic_fraction();
   s.max_pressure = prof.max_pressure();
   if (detail == Detail::profile) return s;
   const VonMisesMaximum vm = prof.von_mises_maximum(pair.poisson_ratio);
@@ -70,7 +109,7 @@ AsperityState AsperityModel::evaluate(const ContactPair& pair, double delta, Det
 namespace {
 
 template <class Law>
-class LawModel : public AsperityModel {
+class LawModel final : public AsperityModel {
  public:
   LawModel() {
     for (const auto& c : Law::constants) constants_.push_back(c.value);
@@ -81,60 +120,13 @@ class LawModel : public AsperityModel {
   double yield_peak_pressure(const ContactPair& pair) const override {
     return Law::template yield_peak_pressure<double>(pair, constants_.data());
   }
-  Star<double> star(double d, const ContactPair& pair) const override {
+  Star<double> law_star(double d, const ContactPair& pair) const override {
     return Law::star(d, constants_.data(), pair);
   }
-};
+  LawRange range() const override { return Law::range(constants_.data()); }
 
-class HertzModel final : public LawModel<HertzLaw> {
- public:
-  PressureProfile profile(double, const ContactPair&, const Critical&, double load, double area) const override {
-    const double a = std::sqrt(area / std::numbers::pi);
-    return hertz_profile(a, area > 0.0 ? 1.5 * load / area : 0.0);
-  }
-};
-
-class CebModel final : public LawModel<CebLaw> {
- public:
-  PressureProfile profile(double d, const ContactPair&, const Critical&, double load, double area) const override {
-    const double a = std::sqrt(area / std::numbers::pi);
-    const double pm = area > 0.0 ? load / area : 0.0;
-    return d <= 1.0 ? hertz_profile(a, 1.5 * pm) : uniform_profile(a, pm);  // CEB: uniform k H once plastic
-  }
-};
-
-class ContinuousModel final : public LawModel<ContinuousLaw> {
- public:
-  PressureProfile profile(double d, const ContactPair& pair, const Critical&, double load,
-                          double area) const override {
-    const double a = std::sqrt(area / std::numbers::pi);
-    if (d <= 1.0) return hertz_profile(a, area > 0.0 ? 1.5 * load / area : 0.0);
-    const auto cl = ContinuousLaw::closure(d, constants_.data(), ceb_pressure_factor(pair.poisson_ratio));
-    PressureProfile p;
-    p.contact_radius = a;
-    p.core_radius = a * std::sqrt(cl.plastic_fraction);
-    p.core_pressure = cl.core_pressure * pair.hardness;
-    p.annulus_peak = hertz_peak_pressure(a, pair.radius, pair.modulus);  // p_e = 2 E_t r_a/(pi R)
-    return p;
-  }
-};
-
-// The model class of each law: the default, or one that defines its own pressure profile.
-template <class Law>
-struct ModelFor {
-  using type = LawModel<Law>;
-};
-template <>
-struct ModelFor<HertzLaw> {
-  using type = HertzModel;
-};
-template <>
-struct ModelFor<CebLaw> {
-  using type = CebModel;
-};
-template <>
-struct ModelFor<ContinuousLaw> {
-  using type = ContinuousModel;
+ protected:
+  void law_breakpoints(std::vector<double>& out) const override { Law::breakpoints(constants_.data(), out); }
 };
 
 constexpr auto kNames = std::apply([](auto... laws) { return std::array{decltype(laws)::name...}; }, LawList{});
@@ -145,7 +137,7 @@ std::span<const std::string_view> asperity_model_names() { return kNames; }
 
 std::unique_ptr<AsperityModel> make_asperity_model(std::string_view name) {
   return visit_law(name, [](auto tag) -> std::unique_ptr<AsperityModel> {
-    return std::make_unique<typename ModelFor<typename decltype(tag)::type>::type>();
+    return std::make_unique<LawModel<typename decltype(tag)::type>>();
   });
 }
 

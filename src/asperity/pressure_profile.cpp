@@ -81,29 +81,12 @@ PressureProfile uniform_profile(double contact_radius, double pressure) {
   return {contact_radius, contact_radius, pressure, 0.0};
 }
 
-PressureProfile profile_from_mean_pressure(double contact_radius, double mean_pressure,
-                                           double yield_peak_pressure, double hardness) {
-  const double py = yield_peak_pressure;
-  // Up to the first-yield mean pressure (with a rounding margin, so a model evaluated exactly at
-  // its delta_c reports no plastic core): the Hertz profile.
-  if (mean_pressure <= 2.0 * py / 3.0 * (1.0 + 1e-12)) return hertz_profile(contact_radius, 1.5 * mean_pressure);
-  if (mean_pressure >= hardness) return uniform_profile(contact_radius, mean_pressure);
-  // Solve (p_y + D phi)(2 + phi) = 3 p_m for phi in (0, 1), D = H - p_y.
-  const double d = hardness - py;
-  double phi;
-  if (d <= 1e-12 * hardness) {
-    phi = (3.0 * mean_pressure - 2.0 * py) / py;
-  } else {
-    const double b = py + 2.0 * d;
-    const double c = 2.0 * py - 3.0 * mean_pressure;  // < 0
-    phi = -2.0 * c / (b + std::sqrt(b * b - 4.0 * d * c));  // stable root of d phi^2 + b phi + c
-  }
-  phi = std::clamp(phi, 0.0, 1.0);
-  const double core = py + d * phi;
-  const double rho = std::sqrt(phi);
-  PressureProfile p{contact_radius, rho * contact_radius, core, 0.0};
-  p.annulus_peak = phi < 1.0 ? core / std::sqrt(1.0 - phi) : 0.0;
-  return p;
+PressureProfile two_zone_profile(double contact_radius, double mean_pressure, double plastic_share) {
+  const double phi = std::clamp(plastic_share, 0.0, 1.0);
+  if (phi == 0.0) return hertz_profile(contact_radius, 1.5 * mean_pressure);
+  if (phi == 1.0) return uniform_profile(contact_radius, mean_pressure);
+  const double core = 3.0 * mean_pressure / (2.0 + phi);
+  return {contact_radius, std::sqrt(phi) * contact_radius, core, core / std::sqrt(1.0 - phi)};
 }
 
 }  // namespace geartrib::asperity

@@ -37,12 +37,12 @@ struct PressureProfile {
 PressureProfile hertz_profile(double contact_radius, double peak_pressure);
 PressureProfile uniform_profile(double contact_radius, double pressure);
 
-// Profile of a model that publishes only its load and contact area. The pressure is taken
-// continuous at r_p, with the core at p_core = p_y + (H - p_y) phi, phi = (r_p/a)^2, rising from
-// the first-yield Hertz peak p_y to the hardness H; the mean pressure of that profile,
-// p_core (2 + phi)/3, is matched to the model's F/A. Mean pressures up to 2 p_y/3 give the Hertz
-// profile (phi = 0), at or above H the uniform one (phi = 1).
-PressureProfile profile_from_mean_pressure(double contact_radius, double mean_pressure,
-                                           double yield_peak_pressure, double hardness);
+// The two-zone profile with a given plastic share phi = (r_p/a)^2 (the yielded share of the
+// contact area at the surface) carrying the mean pressure p_m, continuous at r_p:
+//   p_core = 3 p_m/(2 + phi),  p_e = p_core/sqrt(1 - phi),
+// since F = pi a^2 p_core (2 + phi)/3 for such a profile. phi = 0: Hertz (p0 = 3/2 p_m);
+// phi = 1: uniform p_m. The continuous model's own profile and the documented profile of the
+// published models (their F/A with the FEM-calibrated surface-yield share) are both this one.
+PressureProfile two_zone_profile(double contact_radius, double mean_pressure, double plastic_share);
 
 }  // namespace geartrib::asperity

@@ -38,6 +38,10 @@ GreenwoodWilliamson::GreenwoodWilliamson(const surface::EquivalentSurface& surfa
   options_.validate();
   if (!(max_pressure > 0.0 && std::isfinite(max_pressure))) throw std::invalid_argument("max_pressure must be positive");
   delta_c_ = model_.critical(pair_).interference;
+  for (double b : model_.breakpoints(pair_))
+    if (std::isfinite(b) && b > 0.0) breaks_.push_back(b * delta_c_);
+  std::sort(breaks_.begin(), breaks_.end());
+  breaks_.erase(std::unique(breaks_.begin(), breaks_.end()), breaks_.end());
   const double s = surface_.summit_sigma;
   if (surface_.distribution == surface::HeightDistribution::gaussian) {
     z_low_ = -8.5 * s;  // phi(8.5 sigma) / phi(0) = 2e-16
@@ -70,25 +74,36 @@ SurfaceContact GreenwoodWilliamson::at_separation(double d) const {
   c.separation = d;
   const double z0 = std::max(d, z_low_);
   if (z0 >= z_high_) return c;
-  // Interference u = z - d from u0 to u1, with u = v^2 so that the Hertzian u^3/2 onset is smooth.
+  // Interference u = z - d from u0 to u1, with u = v^2 so that the Hertzian u^3/2 onset is smooth;
+  // composite Gauss-Legendre in v with panel ends at the model's breakpoints (its jumps and kinks),
+  // the panels shared among the segments by length, at least one each.
   const double v0 = std::sqrt(z0 - d), v1 = std::sqrt(z_high_ - d);
+  std::vector<double> ends{v0};
+  for (double b : breaks_)
+    if (b > z0 - d && b < z_high_ - d) ends.push_back(std::sqrt(b));
+  ends.push_back(v1);
   const int panels = options_.height_points / kGaussPoints;
-  const double h = (v1 - v0) / panels;
   const double eta = surface_.summit_density;
-  const asperity::Detail detail = options_.plastic ? asperity::Detail::profile : asperity::Detail::load_area;
-  for (int k = 0; k < panels; ++k) {
-    const double a = v0 + k * h;
-    for (std::size_t i = 0; i < Gauss::abscissa().size(); ++i) {
-      for (int sign : {-1, 1}) {
-        if (i == 0 && sign == 1 && kGaussPoints % 2 == 1) continue;  // the centre point once
-        const double v = a + 0.5 * h * (1.0 + sign * Gauss::abscissa()[i]);
-        const double w = 0.5 * h * Gauss::weights()[i] * 2.0 * v;  // du = 2 v dv
-        const double u = v * v;
-        const double phi = density(d + u) * w * eta;
-        const asperity::AsperityState st = model_.evaluate(pair_, u, detail);
-        c.nominal_pressure += st.load * phi;
-        c.real_area_ratio += st.area * phi;
-        if (options_.plastic) c.plastic_area_ratio += st.area * st.plastic_fraction * phi;
+  const asperity::Detail detail = asperity::Detail::load_area;  // load, area and the plastic share
+  for (std::size_t seg = 0; seg + 1 < ends.size(); ++seg) {
+    const double length = ends[seg + 1] - ends[seg];
+    if (!(length > 0.0)) continue;
+    const int n = std::max(1, static_cast<int>(std::lround(panels * length / (v1 - v0))));
+    const double h = length / n;
+    for (int k = 0; k < n; ++k) {
+      const double a = ends[seg] + k * h;
+      for (std::size_t i = 0; i < Gauss::abscissa().size(); ++i) {
+        for (int sign : {-1, 1}) {
+          if (i == 0 && sign == 1 && kGaussPoints % 2 == 1) continue;  // the centre point once
+          const double v = a + 0.5 * h * (1.0 + sign * Gauss::abscissa()[i]);
+          const double w = 0.5 * h * Gauss::weights()[i] * 2.0 * v;  // du = 2 v dv
+          const double u = v * v;
+          const double phi = density(d + u) * w * eta;
+          const asperity::AsperityState st = model_.evaluate(pair_, u, detail);
+          c.nominal_pressure += st.load * phi;
+          c.real_area_ratio += st.area * phi;
+          if (options_.plastic) c.plastic_area_ratio += st.area * st.plastic_fraction * phi;
+        }
       }
     }
   }

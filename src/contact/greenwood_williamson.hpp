@@ -22,9 +22,9 @@ struct SurfaceContact {
 };
 
 struct GreenwoodWilliamsonOptions {
-  int height_points = 128;    // quadrature points over the summit heights in contact
+  int height_points = 128;    // quadrature points over the summit heights in contact (panel ends also at the model's breakpoints)
   int table_points_per_sigma = 32;  // separation table resolution
-  bool plastic = true;        // tabulate the plastic area and contacts (needs the pressure profile)
+  bool plastic = true;        // tabulate the plastic area
   void validate() const;
 };
 
@@ -64,6 +64,7 @@ class GreenwoodWilliamson {
   GreenwoodWilliamsonOptions options_;
   double delta_c_;
   double z_low_, z_high_;  // support of phi used in the quadrature
+  std::vector<double> breaks_;  // interferences where the model jumps or kinks [m], ascending
   double step_;            // table spacing in d [m]
   std::vector<SurfaceContact> table_;  // decreasing d from z_high_: table_[k].separation = z_high_ - k step
 };

@@ -5,6 +5,7 @@
 #include "gear/mesh_dynamics.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/rough_line_contact.hpp"
+#include "contact/validity.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -14,7 +15,7 @@
 namespace geartrib::contact {
 
 const Series* MeshContactResult::find(const std::string& name) const {
-  for (const auto* group : {&mesh, &contact})
+  for (const auto* group : {&mesh, &contact, &validity})
     for (const auto& s : *group)
       if (s.name == name) return &s;
   return nullptr;
@@ -200,6 +201,52 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
       pa.push_back(st.plastic_area_fraction);
       pc.push_back(st.plastic_contact_fraction);
     }
+  }
+
+  // Where the answer holds: per position, and one verdict for the run (cheap: one law
+  // evaluation per position).
+  {
+    r.validity.reserve(kMaxSeries);
+    std::vector<PositionValidity> pv;
+    for (const auto& st : strips) pv.push_back(position_validity(gw, st, mesh.pair().spec().face_width));
+    auto& psi = add(r.validity, "plasticity_index", "1");
+    auto& sep = add(r.validity, "separation_over_summit_sigma", "1");
+    auto& ds = add(r.validity, "max_delta_star", "1");
+    auto& dr = add(r.validity, "max_interference_over_summit_radius", "1");
+    auto& ar = add(r.validity, "max_contact_radius_over_summit_radius", "1");
+    auto& as = add(r.validity, "max_contact_radius_over_half_summit_spacing", "1");
+    auto& f1 = add(r.validity, "flag_beyond_fitted_range", "1");
+    auto& f2 = add(r.validity, "flag_beyond_paraboloid", "1");
+    auto& f3 = add(r.validity, "flag_fully_plastic_limit", "1");
+    auto& f4 = add(r.validity, "flag_summits_interact", "1");
+    auto& f5 = add(r.validity, "flag_deep_separation", "1");
+    for (const auto& v : pv) {
+      psi.push_back(r.plasticity_index);
+      sep.push_back(v.separation_over_sigma);
+      ds.push_back(v.max_delta_star);
+      dr.push_back(v.max_interference_over_radius);
+      ar.push_back(v.max_contact_radius_over_radius);
+      as.push_back(v.max_contact_radius_over_half_spacing);
+      f1.push_back(v.beyond_fitted_range);
+      f2.push_back(v.beyond_paraboloid);
+      f3.push_back(v.fully_plastic_limit);
+      f4.push_back(v.summits_interact);
+      f5.push_back(v.deep_separation);
+    }
+    auto values = [&](const char* name) {
+      const Series* s = r.find(name);
+      return s ? s->values : std::vector<double>{};
+    };
+    const ValidityVerdict verdict =
+        validity_verdict(pv, r.plasticity_index, gw,
+                         {values("plastic_area_fraction"), values("plastic_contact_fraction"), values("mean_real_pressure_Pa")});
+    r.regime = verdict.regime;
+    r.verdict = verdict.text;
+    r.flag_counts = {{"beyond_fitted_range", verdict.beyond_fitted_range},
+                     {"beyond_paraboloid", verdict.beyond_paraboloid},
+                     {"fully_plastic_limit", verdict.fully_plastic_limit},
+                     {"summits_interact", verdict.summits_interact},
+                     {"deep_separation", verdict.deep_separation}};
   }
 
   // Stage 4 (if asked): the highest asperity's stresses, in side contact when mu > 0.

@@ -35,6 +35,14 @@ struct StageTiming {
 struct MeshContactResult {
   std::vector<Series> mesh;     // kinematics and loading: s_m, load_share, hertz_p0_Pa, ...
   std::vector<Series> contact;  // rough contact: real_area_ratio, plastic_area_fraction, ...
+  std::vector<Series> validity; // where the models hold: separation_over_sigma, flags, ... (validity.hpp)
+  std::string regime;           // "elastic", "elastic-plastic" or "fully plastic"
+  std::string verdict;          // one paragraph: the regime and every validity rule broken, and where
+  struct FlagCount {
+    std::string name;
+    int positions = 0;
+  };
+  std::vector<FlagCount> flag_counts;  // positions where each validity flag is set
   std::vector<StageTiming> stages;
   surface::EquivalentSurface surface;
   double plasticity_index = 0.0;
@@ -43,7 +51,7 @@ struct MeshContactResult {
   std::string fidelity;
   // Findings that make a result doubtful (e.g. a real area larger than the nominal one).
   std::vector<std::string> warnings;
-  const Series* find(const std::string& name) const;  // in mesh, then contact; nullptr if absent
+  const Series* find(const std::string& name) const;  // in mesh, contact, then validity; nullptr if absent
 };
 
 // progress(done, total) is called after each position. positions <= 0: the case's number.

@@ -28,7 +28,7 @@ struct MultiAsperitySpec {
   double length = 10e-6;           // cylinder length, for the contact areas [m]
   double approach = 0.0;           // approach of the flat after it touches the high tips [m] (if no load)
   std::optional<double> line_load; // load control [N/m]
-  double modulus = 0.0;            // plane-strain E* = E/(1 - nu^2) of the asperities (rigid flat) [Pa]
+  double modulus = 0.0;            // plane-strain modulus against a rigid flat [Pa]: E_t (composite) or E/(1 - nu^2) (one body)
   double poisson_ratio = 0.3;
   double pressure_cap = 0.0;       // [Pa]; infinity for elastic
   int elements = 4096;             // boundary elements over the domain

@@ -67,7 +67,33 @@ struct SingleAsperityResult {
   double max_von_mises_depth = 0.0;       // its depth below the apex / a
   double plastic_depth = 0.0;        // deepest node with PEEQ > 0, / a_c (0: elastic)
   double plastic_surface_radius = 0.0;  // outermost surface node with PEEQ > 0, / a_c
+  // The yielded share of the contact disc at the surface (surface_yield_share of the
+  // surface_yielded_nodes, deformed radii): 0..1; its standard deviation from the mesh, and the
+  // innermost yielded surface node (deformed) / a_c (0 if none or from the axis), which shows an annulus.
+  double plastic_surface_area_fraction = 0.0;
+  double plastic_surface_area_fraction_sd = 0.0;
+  double plastic_surface_inner_radius = 0.0;
 };
+
+// A surface node counts as yielded when its equivalent plastic strain exceeds this (1e-6: 1/4000
+// of the yield strain S_y/E ~ 4e-3 of the project's steel, above the 5-digit print of zero).
+inline constexpr double surface_yield_threshold = 1e-6;
+
+// Which surface nodes have yielded, from ccx's nodal PE along the surface (outward): the median
+// of each node's value and its two neighbours' (the end nodes their own) above `threshold`.
+// ccx extrapolates PEEQ from the integration points to the nodes; where it varies steeply within
+// an element single nodes come out negative (down to -1.5e-3 inside the yielded zone at
+// delta* = 20) or spuriously positive. The median drops such one-node flips and keeps the
+// boundaries of any run of two or more nodes in place.
+std::vector<bool> surface_yielded_nodes(const std::vector<double>& peeq, double threshold = surface_yield_threshold);
+
+// The yielded share of a contact disc of radius `contact_radius`: the integral of the yielded
+// indicator times 2 pi r dr over 0 <= r <= contact_radius, divided by pi contact_radius^2. Each
+// surface node stands for the ring between the midpoints to its neighbours (the first from the
+// axis, the last outward without end), so a yielded/unyielded boundary lies halfway between the
+// two nodes, and the ring that contains the contact edge is cut there. `radius` increasing and
+// as long as `yielded`; 0 when contact_radius <= 0. The yielded set may be an annulus or several.
+double surface_yield_share(const std::vector<double>& radius, const std::vector<bool>& yielded, double contact_radius);
 
 // Reads a finished single-asperity run (job.dat, job.frd in `dir`). F_c, A_c, a_c are the
 // Hertz values at delta_c for E_t (R = 1 mm); the contact radius is where the deformed surface

@@ -9,7 +9,9 @@
 
 namespace geartrib::fit {
 
-enum class Observable { load_star, area_star, mean_pressure_over_yield };
+// plastic_area_fraction: the yielded share of the contact area at the surface (0..1), as
+// `geartrib fem single-asperity` writes it.
+enum class Observable { load_star, area_star, mean_pressure_over_yield, plastic_area_fraction };
 std::string_view to_string(Observable o);
 Observable parse_observable(std::string_view name);  // throws std::invalid_argument
 

@@ -18,15 +18,17 @@ std::string_view to_string(Observable o) {
     case Observable::load_star: return "load_star";
     case Observable::area_star: return "area_star";
     case Observable::mean_pressure_over_yield: return "mean_pressure_over_yield";
+    case Observable::plastic_area_fraction: return "plastic_area_fraction";
   }
   return "?";
 }
 
 Observable parse_observable(std::string_view name) {
-  for (auto o : {Observable::load_star, Observable::area_star, Observable::mean_pressure_over_yield})
+  for (auto o : {Observable::load_star, Observable::area_star, Observable::mean_pressure_over_yield,
+                 Observable::plastic_area_fraction})
     if (to_string(o) == name) return o;
   throw std::invalid_argument("unknown observed quantity '" + std::string(name) +
-                              "' (known: load_star, area_star, mean_pressure_over_yield)");
+                              "' (known: load_star, area_star, mean_pressure_over_yield, plastic_area_fraction)");
 }
 
 const ObservedColumn* FitData::column(Observable o) const {
@@ -70,6 +72,7 @@ struct RowResidualFunctor {
       switch (terms[i].what) {
         case Observable::load_star: value = s.load; break;
         case Observable::area_star: value = s.area; break;
+        case Observable::plastic_area_fraction: value = s.plastic; break;
         default:  // F/A over S_y with F_c/A_c = 2/3 p_y
           value = s.load / s.area * (2.0 / 3.0) * Law::yield_peak_pressure(*pair, c.data()) / pair->yield_strength;
       }
@@ -245,9 +248,11 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
     for (std::size_t i = 0; i < p.terms.size(); ++i) {
       const Term& t = p.terms[i];
       const double model_value = t.observed + res[i] * t.scale / t.weight;
-      const double rel = model_value / t.observed - 1.0;
+      // A zero observation (e.g. no yielded surface) has no relative residual: NaN, left out of the rms.
+      const double rel = t.observed != 0.0 ? model_value / t.observed - 1.0 : std::nan("");
       result.residuals.push_back({p.data->name, p.data->line[p.row], p.data->delta_star[p.row], t.what, t.observed, model_value, rel});
       const std::size_t j = static_cast<std::size_t>(std::find(observe.begin(), observe.end(), t.what) - observe.begin());
+      if (std::isnan(rel)) continue;
       sum[j] += rel * rel;
       ++count[j];
     }
@@ -259,7 +264,7 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
       double s2 = 0.0;
       int c = 0;
       for (const auto& x : result.residuals)
-        if (x.data == d.name && x.what == o) s2 += x.relative * x.relative, ++c;
+        if (x.data == d.name && x.what == o && !std::isnan(x.relative)) s2 += x.relative * x.relative, ++c;
       if (c) result.rms_by_data.push_back({d.name, o, std::sqrt(s2 / c)});
     }
   return result;
@@ -281,6 +286,7 @@ double model_observable(const asperity::AsperityModel& model, const asperity::Co
   switch (what) {
     case Observable::load_star: return s.load;
     case Observable::area_star: return s.area;
+    case Observable::plastic_area_fraction: return s.plastic;
     default: return s.load / s.area * (2.0 / 3.0) * model.yield_peak_pressure(pair) / pair.yield_strength;
   }
 }

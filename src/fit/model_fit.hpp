@@ -41,7 +41,7 @@ struct RowResidual {
   Observable what = Observable::load_star;
   double observed = 0.0;
   double model = 0.0;
-  double relative = 0.0;  // model/observed - 1
+  double relative = 0.0;  // model/observed - 1 (NaN for a zero observation)
 };
 
 struct FitResult {

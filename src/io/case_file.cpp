@@ -85,8 +85,14 @@ GearSpec read_gear(TomlReader& r, const std::string& name) {
     g.flank.summit_radius = rough.summit_radius;
     return g;
   }
-  g.flank.summit_radius = positive_quantity(r, f + "summit_radius", Dimension::length);
-  rough.summit_radius = g.flank.summit_radius;
+  if (r.has(f + "m0")) {
+    // McCool's relations give the summit radius from the moments: one description per flank.
+    if (r.has(f + "summit_radius"))
+      r.fail(f + "summit_radius", "the spectral moments m0, m2, m4 give the summit radius (McCool 1986); remove summit_radius");
+  } else {
+    g.flank.summit_radius = positive_quantity(r, f + "summit_radius", Dimension::length);
+    rough.summit_radius = g.flank.summit_radius;
+  }
   if (r.has(f + "ra")) {
     rough.form = Form::ra;
     rough.ra = positive_quantity(r, f + "ra", Dimension::length);
@@ -118,8 +124,14 @@ Material load_material(const std::filesystem::path& file) {
   require(r, "poisson_ratio", m.poisson_ratio > 0.0 && m.poisson_ratio < 0.5, "Poisson's ratio must lie in (0, 0.5)");
   m.yield_strength = positive_quantity(r, "yield_strength", Dimension::pressure);
   require(r, "yield_strength", m.yield_strength < m.youngs_modulus, "yield strength must be below Young's modulus");
-  m.hardness = r.quantity("hardness", Dimension::pressure, kTaborHardnessRatio * m.yield_strength);
-  require(r, "hardness", m.hardness >= m.yield_strength, "hardness must be at least the yield strength");
+  // hardness: a pressure (measured), "tabor-yield" (2.8 S_y, the default) or "flow-curve"
+  // (2.8 x the flow stress at Tabor's representative strain 0.08, needs [flow_curve]).
+  if (r.is_string("hardness") && (r.string("hardness") == "tabor-yield" || r.string("hardness") == "flow-curve"))
+    m.hardness_rule = r.string("hardness");
+  else if (r.has("hardness"))
+    m.hardness_rule = "given";
+  if (m.hardness_rule == "given") m.hardness = r.quantity("hardness", Dimension::pressure);
+  else m.hardness = kTaborHardnessRatio * m.yield_strength;
   m.density = positive_quantity(r, "density", Dimension::density);
   if (r.has("flow_curve")) {
     r.string("flow_curve.source");
@@ -138,6 +150,11 @@ Material load_material(const std::filesystem::path& file) {
       require(r, "flow_curve.stress", stress[i] >= stress[i - 1], "must not decrease (entry " + std::to_string(i) + ")");
     }
   }
+  if (m.hardness_rule == "flow-curve") {
+    if (m.flow_curve.empty()) r.fail("hardness", "\"flow-curve\" needs a [flow_curve] table");
+    m.hardness = tabor_flow_curve_hardness(m);
+  }
+  require(r, "hardness", m.hardness >= m.yield_strength, "hardness must be at least the yield strength");
   r.check_all_used();
   m.validate();
   return m;
@@ -197,9 +214,13 @@ void apply_change(TomlReader& r, const std::string& key, const std::string& valu
     const std::string flank(gear);
     if (key.rfind(flank, 0) != 0) continue;
     const std::string leaf = key.substr(flank.size(), key.find('.', flank.size()) - flank.size());
-    for (const auto& form : roughness_forms())
-      if (std::find(form.begin(), form.end(), leaf) == form.end())
+    auto in = [&](const std::vector<std::string>& form) { return std::find(form.begin(), form.end(), leaf) != form.end(); };
+    const auto& forms = roughness_forms();
+    if (std::none_of(forms.begin(), forms.end(), in)) continue;  // e.g. summit_radius: not a roughness form
+    for (const auto& form : forms)
+      if (!in(form))
         for (const auto& k : form) r.erase(flank + k);
+    if (leaf == "m0" || leaf == "m2" || leaf == "m4") r.erase(flank + "summit_radius");  // the moments give it
   }
   r.set(key, value);
 }
@@ -368,6 +389,10 @@ Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>&
   for (const CaseChange& ch : changes) c.source_text += "\n# --set " + ch.key + "=" + ch.value;
   if (c.pinion.flank.roughness.form != c.wheel.flank.roughness.form)
     r.fail("wheel.flank", "give both flanks' roughness in the same form as the pinion's");
+  // One radius per run: the flanks' radii consistent with the equivalent surface (spectral: McCool's).
+  const auto [r1, r2] = surface::flank_summit_radii(c.pinion.flank.roughness, c.wheel.flank.roughness);
+  c.pinion.flank.summit_radius = c.pinion.flank.roughness.summit_radius = r1;
+  c.wheel.flank.summit_radius = c.wheel.flank.roughness.summit_radius = r2;
 
   // The pair must exist: an impossible geometry is an error at the key to change; findings
   // such as undercut are kept as located warnings.

@@ -2,8 +2,8 @@
 //
 // Reference data: '# key: value' provenance lines, then a header whose first column is
 // delta_star and whose other columns are observed quantities (load_star, area_star,
-// mean_pressure_over_yield), optional sd_<quantity> standard deviations and an optional per-row
-// weight. An empty cell is a missing observation; "nan" or "inf" are errors.
+// mean_pressure_over_yield, plastic_area_fraction), optional sd_<quantity> standard deviations
+// and an optional per-row weight. An empty cell is a missing observation; "nan" or "inf" are errors.
 #pragma once
 
 #include "fit/model_fit.hpp"

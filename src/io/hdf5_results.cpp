@@ -34,6 +34,14 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
   {
     Handle contact(H5Gcreate2(file, "/contact", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /contact");
     for (const auto& s : r.contact) hdf5::number_dataset(contact, s.name, s.values, s.unit);
+    if (!r.validity.empty()) {
+      Handle validity(H5Gcreate2(contact, "validity", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                      "group /contact/validity");
+      for (const auto& s : r.validity) hdf5::number_dataset(validity, s.name, s.values, s.unit);
+      string_attribute(validity, "regime", r.regime);
+      string_attribute(validity, "verdict", r.verdict);
+      for (const auto& f : r.flag_counts) number_attribute(validity, "positions_" + f.name, f.positions);
+    }
   }
   {
     hdf5::string_dataset(file, "/scene", case_text);

@@ -42,4 +42,8 @@ double composite_modulus(const Material& a, const Material& b) {
                 (1.0 - b.poisson_ratio * b.poisson_ratio) / b.youngs_modulus);
 }
 
+double tabor_flow_curve_hardness(const Material& m) {
+  return kTaborHardnessRatio * m.flow_stress(kTaborRepresentativeStrain);
+}
+
 }  // namespace geartrib

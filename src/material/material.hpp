@@ -18,6 +18,7 @@ struct Material {
   double poisson_ratio = 0.0;    // nu [-], in (0, 0.5)
   double yield_strength = 0.0;   // sigma_s / S_y [Pa]
   double hardness = 0.0;         // H [Pa]; Tabor's H = 2.8 S_y unless measured (seed section 2)
+  std::string hardness_rule = "tabor-yield";  // "tabor-yield" (2.8 S_y), "flow-curve" or "given"
   double density = 0.0;          // [kg/m^3]
   std::vector<FlowPoint> flow_curve;  // plastic part of the stress-strain curve (seed section 6)
 
@@ -33,6 +34,12 @@ struct Material {
 
 // Tabor's hardness-yield ratio used by the seed (H = 2.8 sigma_s, section 2).
 inline constexpr double kTaborHardnessRatio = 2.8;
+// Tabor (The Hardness of Metals, 1951): a work-hardening metal's indentation hardness is about
+// 2.8 times its flow stress at a representative plastic strain of about 0.08 (Vickers pyramid;
+// for a ball 0.2 a/D). The representative strain geartrib takes for hardness = "flow-curve".
+inline constexpr double kTaborRepresentativeStrain = 0.08;
+// H = 2.8 sigma_f(0.08) from the flow curve (Tabor); S_y-based 2.8 S_y without one.
+double tabor_flow_curve_hardness(const Material& m);
 
 // Composite (contact) modulus 1/E_t = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (seed section 1;
 // Johnson's E*). For two 45-steel bodies: E/(2(1 - nu^2)) = 113.19 GPa.

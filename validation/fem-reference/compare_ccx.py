@@ -9,7 +9,10 @@ ccx-study.sh, and prints Markdown tables:
      1b. the same on the finer meshes (ccx-perfectly-plastic-fine-*.csv) with their convergence;
   2. the continuous model refitted (geartrib fit) to the hardening runs: constants and residuals;
   3. the seed's claim (section 3): contact radius and peak contact pressure of the model within 5%
-     of the FEM at delta* = 2, 6, 7, 10, with the default and the refitted constants.
+     of the FEM at delta* = 2, 6, 7, 10, with the default and the refitted constants;
+  4. the yielded share of the contact area at the surface (the -details.csv columns
+     plastic_surface_area_fraction, plastic_surface_inner_radius_over_ac and, for the outer edge,
+     plastic_surface_radius_over_ac), perfectly plastic and hardening side by side.
 Normalisation: Kogut-Etsion's delta_c, F_c, A_c for the case's pair (Jackson-Green's own delta_c
 differs by 0.08% for nu = 0.3). Exit status 0; the tables are the result.
 """
@@ -89,7 +92,7 @@ def main(argv):
         fragment = os.path.join(tmp, "refit.toml")
         report = os.path.join(tmp, "report.txt")
         subprocess.run([bin_, "fit", "--model", "continuous", "--data", hard_csv,
-                        "--free", "area_scale,area_exponent,plastic_scale,pressure_scale,pressure_exponent",
+                        "--free", "area_scale,area_exponent,pressure_scale,pressure_exponent",
                         "--observe", "load_star,area_star", "-q", "-o", fragment, "--report", report],
                        check=True, cwd=ROOT)
         with open(fragment) as f:
@@ -131,6 +134,25 @@ def main(argv):
                   f"| {fp:.4g} | {cells[0][1]:.4g} ({pct(cells[0][1], fp)}) | {cells[1][1]:.4g} ({pct(cells[1][1], fp)}) |")
         for name, w in worst.items():
             print(f"\nLargest difference, {name} constants: {100 * w:.1f}% ({'within' if w <= 0.05 else 'NOT within'} the seed's 5%)")
+
+    # 4. The yielded share of the contact area at the surface (an annulus when inner > 0).
+    print("\n### 4. Yielded share of the contact area at the surface\n")
+    print("| delta* | a/a_c pp | share pp | yielded r/a_c pp | a/a_c hard | share hard | yielded r/a_c hard |")
+    print("|---|---|---|---|---|---|---|")
+    mats = [{float(r["delta_star"]): r for r in table(os.path.join(HERE, f"ccx-{m}-details.csv"))}
+            for m in ("perfectly-plastic", "hardening")]
+    for d in sorted(set(mats[0]) | set(mats[1])):
+        cells = []
+        for m in mats:
+            r = m.get(d)
+            if r is None or "plastic_surface_area_fraction" not in r:
+                cells.append("| | |")
+                continue
+            share, inner = float(r["plastic_surface_area_fraction"]), float(r["plastic_surface_inner_radius_over_ac"])
+            outer = float(r["plastic_surface_radius_over_ac"])
+            ring = f"{inner:.3g}-{outer:.3g}" if share > 0 else "none"
+            cells.append(f"{float(r['contact_radius_over_ac']):.4g} | {share:.3f} | {ring} |")
+        print(f"| {d:g} | " + " ".join(cells))
     return 0
 
 
