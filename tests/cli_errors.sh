@@ -13,6 +13,10 @@ rows=$("$bin" asperity --range 1e-3:1e4:200 --csv | wc -l)
 [[ $rows -eq 201 ]] && echo "ok   range-count" || { echo "FAIL range-count: $rows lines"; fail=1; }
 check side 0 "theta_deg" -- "$bin" asperity --contact side --mu 0.1 --delta-star 2 --csv
 check summary 0 "113.19 GPa" -- "$bin" asperity --summary
+# Each model states its range and what answers past it.
+check law-range 0 "range: delta\* <= 110, contact radius <= 0.5 x the summit radius; past it: continuous switch" -- "$bin" asperity --model jackson-green --constants
+# Issue 14: the continuous model has no yielded surface at delta* = 2 (the CalculiX runs show none).
+check no-surface-yield-at-2 0 "^2,.*,0.00201" -- "$bin" asperity --model continuous --delta-star 2 --csv
 check help 0 "delta\*" -- "$bin" asperity --help
 check version 0 "SUNDIALS" -- "$bin" version
 

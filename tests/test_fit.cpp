@@ -126,7 +126,7 @@ TEST(Fit, ContinuousDefaultsAreTheFitsOutput) {
       read({"validation/fem-reference/kogut-etsion-2002.csv", "validation/fem-reference/jackson-green-2005.csv"}), opt);
   for (const auto& c : r2.constants) EXPECT_NEAR(c.value / defaults->constant(c.name), 1.0, 1e-6) << c.name;
   // ... and it fits both FEM-based laws to a few percent (rms 1-3%), and the surface-yield share
-  // within 1.5 of each row's sd (0.07-0.1: half a surface element; the largest misfit, 0.14 at
+  // within 1.7 of each row's sd (0.07-0.1: half a surface element; the largest misfit, 0.14 at
   // delta* 5 and 6, sits where two CalculiX meshes meet: 0.36 on one, 0.77 on the other).
   for (const auto& x : r2.rms_by_data) EXPECT_LT(x.rms, 0.035) << x.data << " " << to_string(x.what);
   for (const auto& x : r1.residuals) EXPECT_LT(std::abs(x.model - x.observed), 0.15) << x.delta_star;

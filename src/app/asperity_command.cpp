@@ -167,6 +167,9 @@ void print_constants(const asperity::AsperityModel& m) {
   for (std::size_t i = 0; i < specs.size(); ++i)
     fmt::print("  {:<22} = {:<8.6g} [{:g}, {:g}]  {}\n", specs[i].name, m.constants()[i], specs[i].lower,
                specs[i].upper, specs[i].meaning);
+  const asperity::LawRange r = m.range();
+  fmt::print("range: delta* <= {:g}, contact radius <= {:g} x the summit radius; past it: {}\n", r.fitted_delta_star_max,
+             r.contact_radius_over_radius_max, r.past_range);
 }
 
 void run_compare(const Options& o, const asperity::AsperityModel& m, const asperity::ContactPair& p) {

@@ -57,6 +57,7 @@ struct LawRange {
   double fitted_delta_star_max;
   double contact_radius_over_radius_max = 0.5;
   bool switch_to_fully_plastic = false;
+  std::string_view past_range = "";  // what answers past the range, for the user
 };
 
 // A named model constant: default value, admissible range (inclusive) and meaning.
@@ -75,7 +76,7 @@ struct HertzLaw {
   static constexpr std::string_view citation = "Hertz (1882); Johnson, Contact Mechanics (1985) ch. 4";
   static constexpr std::array<ConstantSpec, 0> constants{};
   // Elastic reference: holds up to first yield only; beyond it the run flags every contact.
-  static LawRange range(const double*) { return {1.0, 0.5, false}; }
+  static LawRange range(const double*) { return {1.0, 0.5, false, "flagged only: the elastic reference"}; }
   static void breakpoints(const double*, std::vector<double>&) {}
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
@@ -97,7 +98,7 @@ struct CebLaw {
   static constexpr std::string_view citation = "Chang, Etsion & Bogy, J. Tribol. 109 (1987) 257";
   static constexpr std::array<ConstantSpec, 0> constants{};
   // Volume conservation holds at any interference; its plastic pressure stays k H (< H).
-  static LawRange range(const double*) { return {std::numeric_limits<double>::infinity(), 0.5, false}; }
+  static LawRange range(const double*) { return {std::numeric_limits<double>::infinity(), 0.5, false, "defined at every interference (plastic pressure k H)"}; }
   static void breakpoints(const double*, std::vector<double>& out) { out.insert(out.end(), {1.0, fitted::continuous_plastic_onset}); }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
@@ -133,11 +134,11 @@ struct KogutEtsionLaw {
       {"area_coefficient_2", 0.94, 0.1, 10.0, "A* coefficient for 6 <= delta* <= 110"},
       {"area_exponent_2", 1.146, 0.5, 2.0, "A* exponent for 6 <= delta* <= 110"},
       {"surface_yield", 6.0, 1.0, 100.0, "delta* where the plastic zone reaches the surface"},
-      {"fully_plastic", 110.0, 2.0, 1000.0, "delta* of fully plastic contact"},
+      {"fully_plastic", 110.0, 2.0, 1000.0, "delta* of fully plastic contact (the end of the fitted range: the continuous switch to the fully plastic limit starts here)"},
   }};
   // Fitted 1 <= delta* <= 110 (the constant fully_plastic); the model switches to the fully
   // plastic limit there.
-  static LawRange range(const double* c) { return {c[9], 0.5, true}; }
+  static LawRange range(const double* c) { return {c[9], 0.5, true, "continuous switch to the fully plastic limit"}; }
   static void breakpoints(const double* c, std::vector<double>& out) { out.insert(out.end(), {1.0, c[8], c[9], fitted::continuous_plastic_onset}); }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
@@ -174,7 +175,7 @@ struct JacksonGreenLaw {
   // Jackson & Green's finite-element runs and fits cover 0 < delta* <= 110; beyond it the area
   // law, extrapolated, outgrows the fully plastic 2 pi R delta and the mean pressure falls far
   // below the hardness, so the model switches to the fully plastic limit there.
-  static LawRange range(const double*) { return {110.0, 0.5, true}; }
+  static LawRange range(const double*) { return {110.0, 0.5, true, "continuous switch to the fully plastic limit"}; }
   static void breakpoints(const double* c, std::vector<double>& out) { out.insert(out.end(), {c[0], fitted::continuous_plastic_onset}); }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
@@ -209,7 +210,7 @@ struct ZmcLaw {
       {"fully_plastic", 54.0, 2.0, 1000.0, "delta_2/delta_1, onset of fully plastic flow"},
   }};
   // Defined at every interference: fully plastic (p = H, A = 2 pi R delta) from delta_2 on.
-  static LawRange range(const double*) { return {std::numeric_limits<double>::infinity(), 0.5, false}; }
+  static LawRange range(const double*) { return {std::numeric_limits<double>::infinity(), 0.5, false, "defined at every interference (fully plastic from delta_2)"}; }
   static void breakpoints(const double* c, std::vector<double>& out) { out.insert(out.end(), {1.0, c[1], fitted::continuous_plastic_onset}); }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T* c) {
@@ -258,7 +259,7 @@ struct ContinuousLaw {
   }};
   // Fitted to the KE/JG curves up to delta* = 110 (and KE's fully plastic branch beyond); the
   // closure reaches the fully plastic limit by itself (g -> 2, s -> 1, phi -> 1), so no switch.
-  static LawRange range(const double*) { return {110.0, 0.5, false}; }
+  static LawRange range(const double*) { return {110.0, 0.5, false, "flagged only: the closure reaches the fully plastic limit itself"}; }
   static void breakpoints(const double* c, std::vector<double>& out) { out.insert(out.end(), {1.0, c[2]}); }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {

@@ -57,6 +57,7 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
     number_attribute(meta, "summit_radius_m", r.surface.summit_radius);
     number_attribute(meta, "summit_sigma_m", r.surface.summit_sigma);
     number_attribute(meta, "surface_sigma_m", r.surface.surface_sigma);
+    number_attribute(meta, "summit_mean_height_m", r.surface.summit_mean_height);
     number_attribute(meta, "plasticity_index", r.plasticity_index);
     std::vector<double> seconds;
     std::vector<std::string> names;
