@@ -4,7 +4,8 @@
 Usage: validation/seed-section7/compare.py path/to/geartrib [--elements N]
 
 Runs `geartrib multi-asperity` for every configuration of the seed's tables at the scale the
-seed's own deformation table implies (delta_pc = 3.478 nm / 6 = 0.5797 nm; see README.md), and
+seed's own deformation table implies (delta_pc = 3.478 nm / 6 = 0.5797 nm; see README.md) with
+the single-body modulus E/(1 - nu^2) (the seed's FEM presses one steel body with a rigid flat), and
 prints, for each table, the values side by side, the ratios, and whether the orderings and
 trends agree. Reference data, not a target: the exit status is 0 whenever the runs succeed.
 """
@@ -23,7 +24,7 @@ def read(name):
 
 
 def run(binary, elements, *args):
-    out = subprocess.run([binary, "multi-asperity", "--delta-pc", DELTA_PC, "--elements", str(elements), "--csv", *args],
+    out = subprocess.run([binary, "multi-asperity", "--modulus", "single-body", "--delta-pc", DELTA_PC, "--elements", str(elements), "--csv", *args],
                          check=True, capture_output=True, text=True).stdout
     blocks = [b for b in out.strip().split("\n\n")]
     rows = list(csv.DictReader(blocks[0].splitlines()))
@@ -32,7 +33,7 @@ def run(binary, elements, *args):
 
 
 def sweep(binary, elements, *args):
-    out = subprocess.run([binary, "multi-asperity", "--delta-pc", DELTA_PC, "--elements", str(elements), "--csv", *args],
+    out = subprocess.run([binary, "multi-asperity", "--modulus", "single-body", "--delta-pc", DELTA_PC, "--elements", str(elements), "--csv", *args],
                          check=True, capture_output=True, text=True).stdout
     return list(csv.DictReader(out.splitlines()))
 
