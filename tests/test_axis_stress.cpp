@@ -106,7 +106,9 @@ TEST(PressureProfile, TwoZoneProfileCarriesTheMeanPressureContinuously) {
       const PressureProfile p = two_zone_profile(1.0, pm, phi);
       EXPECT_NEAR(p.load() / kPi, pm, 1e-12 * pm) << phi;
       EXPECT_NEAR(p.plastic_fraction(), phi, 1e-15) << phi;
-      if (phi > 0.0 && phi < 1.0) EXPECT_NEAR(p.annulus_peak * std::sqrt(1.0 - phi) / p.core_pressure, 1.0, 1e-12) << phi;
+      if (phi > 0.0 && phi < 1.0) {
+        EXPECT_NEAR(p.annulus_peak * std::sqrt(1.0 - phi) / p.core_pressure, 1.0, 1e-12) << phi;
+      }
       EXPECT_LE(p.max_pressure(), 1.5 * pm * (1.0 + 1e-12));  // never above the Hertz peak of the same mean
       EXPECT_GE(p.max_pressure(), pm * (1.0 - 1e-12));        // never below the uniform one
     }

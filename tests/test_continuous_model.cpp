@@ -42,11 +42,13 @@ TEST(ContinuousModel, PressureContinuousAtThePlasticCore) {
     const auto cl = ContinuousLaw::closure(d, m->constants().data(), k);
     EXPECT_NEAR(prof.load() / s.load, 1.0, 1e-10) << d;
     EXPECT_NEAR(s.mean_pressure / (cl.mean_pressure * p.hardness), 1.0, 1e-10) << d;
-    if (cl.plastic_fraction > 0.0)  // sigma_rp = 3 p_m/(2 + phi)
+    if (cl.plastic_fraction > 0.0) {  // sigma_rp = 3 p_m/(2 + phi)
       EXPECT_NEAR(prof.core_pressure / (3.0 * s.mean_pressure / (2.0 + cl.plastic_fraction)), 1.0, 1e-10) << d;
+    }
     const double rho = prof.core_radius / prof.contact_radius;
-    if (rho > 0.0 && rho < 1.0)
+    if (rho > 0.0 && rho < 1.0) {
       EXPECT_NEAR(prof.annulus_peak * std::sqrt(1.0 - rho * rho) / prof.core_pressure, 1.0, 1e-10) << d;
+    }
   }
 }
 

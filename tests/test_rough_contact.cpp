@@ -157,7 +157,7 @@ TEST(RoughLineContact, CoupledTendsToHertzAsRoughnessVanishes) {
 TEST(EquivalentSurface, FromRaAndSummitRadii) {
   // The seed's flanks: Ra 0.8 um each -> Rq = sqrt(pi/2) Ra = 1.00265 um; composite
   // sqrt(2) x 1.00265 = 1.41796 um; beta = 1.65 x 1.75/3.4 = 0.849265 um; eta = 0.05/(sigma_s beta).
-  // McCool at the bandwidth the GW product implies: alpha = 2412.8 x 0.05^2 + 0.8968 = 6.9288,
+  // McCool at the bandwidth the GW product implies: alpha = 768 pi x 0.05^2 + 0.8968 = 6.9287,
   // sigma_s = sqrt(1 - 0.8968/alpha) sigma = 0.93306 sigma, mean summit height
   // 4 sigma/sqrt(pi alpha) = 0.85737 sigma.
   surface::FlankRoughness a, b;
@@ -168,7 +168,7 @@ TEST(EquivalentSurface, FromRaAndSummitRadii) {
   EXPECT_NEAR(s.surface_sigma, std::sqrt(2.0) * std::sqrt(kPi / 2.0) * 0.8e-6, 1e-18);
   EXPECT_NEAR(s.summit_radius, 1.65e-6 * 1.75e-6 / 3.4e-6, 1e-18);
   EXPECT_NEAR(s.eta_sigma_beta(), 0.05, 1e-15);
-  const double alpha = 2412.8 * 0.0025 + 0.8968;
+  const double alpha = 768.0 * kPi * 0.0025 + 0.8968;
   EXPECT_NEAR(s.summit_sigma / s.surface_sigma, std::sqrt(1.0 - 0.8968 / alpha), 1e-12);
   EXPECT_NEAR(s.summit_mean_height / s.surface_sigma, 4.0 / std::sqrt(kPi * alpha), 1e-12);
   // The same surface through the summits form gives back the same statistics (one description).
@@ -178,8 +178,8 @@ TEST(EquivalentSurface, FromRaAndSummitRadii) {
   c.summit_density = d.summit_density = s.summit_density;
   c.summit_sigma = d.summit_sigma = s.summit_sigma / std::sqrt(2.0);
   const auto t = surface::equivalent_surface(c, d, surface::HeightDistribution::gaussian);
-  EXPECT_NEAR(t.surface_sigma / s.surface_sigma, 1.0, 1e-4);  // 2412.8 is rounded to 5 digits
-  EXPECT_NEAR(t.summit_mean_height / s.summit_mean_height, 1.0, 1e-4);
+  EXPECT_NEAR(t.surface_sigma / s.surface_sigma, 1.0, 1e-12);  // identity up to rounding
+  EXPECT_NEAR(t.summit_mean_height / s.summit_mean_height, 1.0, 1e-12);
   // Plasticity index (E_t/H) sqrt(sigma_s/beta) = 96.71 x 1.2922 x 0.93306^(1/2) = 120.71.
   EXPECT_NEAR(surface::plasticity_index(s, 113.19e9, 1.1704e9), 120.71, 0.01);
 }

@@ -294,7 +294,9 @@ TEST(Topography, SpectralMomentsMatchTheGeneratingSpectrum) {
     EXPECT_NEAR(s.m4_along / (m0 * a4 / w0), 1.0, 0.05) << anisotropy;
     EXPECT_NEAR(s.m2_across / (m0 * c2 / w0), 1.0, 0.05) << anisotropy;
     EXPECT_NEAR(s.m4_across / (m0 * c4 / w0), 1.0, 0.05) << anisotropy;
-    if (anisotropy > 1.0) EXPECT_LT(angle_difference(s.lay_angle, spec.lay_angle), 2.0 * kDeg);
+    if (anisotropy > 1.0) {
+      EXPECT_LT(angle_difference(s.lay_angle, spec.lay_angle), 2.0 * kDeg);
+    }
   }
 }
 

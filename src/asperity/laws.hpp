@@ -258,7 +258,7 @@ struct ContinuousLaw {
       {"pressure_exponent", fitted::continuous_pressure_exponent, 0.2, 5.0, "ns: steepness of the mean-pressure growth"},
   }};
   // Fitted to the KE/JG curves up to delta* = 110 (and KE's fully plastic branch beyond); the
-  // closure reaches the fully plastic limit by itself (g -> 2, s -> 1, phi -> 1), so no switch.
+  // closure reaches the fully plastic limit by itself (g -> 2, m -> 1, phi -> 1), so no switch.
   static LawRange range(const double*) { return {110.0, 0.5, false, "flagged only: the closure reaches the fully plastic limit itself"}; }
   static void breakpoints(const double* c, std::vector<double>& out) { out.insert(out.end(), {1.0, c[2]}); }
   template <class T>

@@ -36,8 +36,8 @@ struct AsperityState {
   bool fully_plastic_limit = false;  // the switch to the fully plastic limit governs the answer
 };
 
-// What to compute: the load and area only (cheap); also the pressure profile (peak pressure,
-// plastic core and share: cheap); or also the von Mises maximum (a quadrature: ~0.3 ms).
+// What to compute: the load, area and plastic share only (cheap); also the pressure profile
+// (peak pressure, plastic core radius: cheap); or also the von Mises maximum (a quadrature: ~0.3 ms).
 enum class Detail { load_area, profile, full };
 
 class AsperityModel {

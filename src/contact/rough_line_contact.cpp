@@ -197,12 +197,15 @@ StripResult RoughLineContact::coupled(double w, double radius) const {
   throw std::runtime_error("coupled rough line contact: the pressure does not vanish within the solution domain");
 }
 
+double highest_asperity_interference(const GreenwoodWilliamson& gw, const StripResult& strip, double face_width) {
+  if (strip.line_load <= 0.0) return 0.0;
+  return gw.highest_summit(2.0 * strip.hertz_half_width * face_width) - strip.min_separation;
+}
+
 HighestAsperity highest_asperity(const GreenwoodWilliamson& gw, const StripResult& strip, double face_width,
                                  const asperity::SideContactGeometry* side) {
   HighestAsperity h;
-  if (strip.line_load <= 0.0) return h;
-  const double zone = 2.0 * strip.hertz_half_width * face_width;
-  const double delta = gw.highest_summit(zone) - strip.min_separation;
+  const double delta = highest_asperity_interference(gw, strip, face_width);
   if (delta <= 0.0) return h;
   h.interference = delta;
   const asperity::AsperityState s =

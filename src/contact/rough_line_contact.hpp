@@ -73,5 +73,8 @@ struct HighestAsperity {
 };
 HighestAsperity highest_asperity(const GreenwoodWilliamson& gw, const StripResult& strip, double face_width,
                                  const asperity::SideContactGeometry* side = nullptr);
+// Its interference [m] (<= 0: it does not touch): the highest summit of the strip's nominal area
+// 2b x face width, pressed by the separation at the strip's centre.
+double highest_asperity_interference(const GreenwoodWilliamson& gw, const StripResult& strip, double face_width);
 
 }  // namespace geartrib::contact

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace geartrib::contact {
 
@@ -12,9 +13,10 @@ PositionValidity position_validity(const GreenwoodWilliamson& gw, const StripRes
   PositionValidity v;
   const auto& s = gw.surface();
   v.separation_over_sigma = strip.min_separation / s.summit_sigma;
-  v.deep_separation = strip.line_load > 0.0 && v.separation_over_sigma < rules.deep_separation_over_sigma;
-  if (strip.line_load <= 0.0) return v;
-  const double delta = gw.highest_summit(2.0 * strip.hertz_half_width * face_width) - strip.min_separation;
+  v.loaded = strip.line_load > 0.0;
+  v.deep_separation = v.loaded && v.separation_over_sigma < rules.deep_separation_over_sigma;
+  // The highest asperity in normal contact (the stress stage may tilt it; its size is the same).
+  const double delta = highest_asperity_interference(gw, strip, face_width);
   if (delta <= 0.0) return v;
   const asperity::AsperityState a = gw.model().evaluate(gw.pair(), delta, asperity::Detail::load_area);
   const double half_spacing = 0.5 / std::sqrt(s.summit_density);
@@ -49,9 +51,15 @@ ValidityVerdict validity_verdict(const std::vector<PositionValidity>& pos, doubl
   }
   // Regime: from the plastic area fraction along the path where it was computed, else from psi
   // (Greenwood & Williamson 1966: elastic below 0.6, plastic above 1).
+  // Unloaded positions (zero share by definition, e.g. a dynamic loss of contact) do not count.
   double pf_lo = 1.0, pf_hi = 0.0, yielded = 0.0;
-  for (double f : plastic) pf_lo = std::min(pf_lo, f), pf_hi = std::max(pf_hi, f);
-  for (double f : path.plastic_contact_fraction) yielded = std::max(yielded, f);
+  double pm_lo = std::numeric_limits<double>::infinity(), pm_hi = 0.0;
+  for (std::size_t i = 0; i < pos.size(); ++i) {
+    if (!pos[i].loaded) continue;
+    if (i < plastic.size()) pf_lo = std::min(pf_lo, plastic[i]), pf_hi = std::max(pf_hi, plastic[i]);
+    if (i < path.plastic_contact_fraction.size()) yielded = std::max(yielded, path.plastic_contact_fraction[i]);
+    if (i < mean_pressure.size()) pm_lo = std::min(pm_lo, mean_pressure[i]), pm_hi = std::max(pm_hi, mean_pressure[i]);
+  }
   if (!plastic.empty())
     v.regime = pf_lo > 0.99 ? "fully plastic" : (pf_hi < 0.01 && yielded < 0.01) ? "elastic" : "elastic-plastic";
   else v.regime = psi < 0.6 ? "elastic" : psi > 1.0 ? "fully plastic" : "elastic-plastic";
@@ -61,17 +69,16 @@ ValidityVerdict validity_verdict(const std::vector<PositionValidity>& pos, doubl
   if (!plastic.empty()) t += fmt::format(", plastic area fraction {:.5g} to {:.5g} along the path", pf_lo, pf_hi);
   if (v.regime == "fully plastic") {
     t += ": the real area is the load over the hardness";
-    if (!mean_pressure.empty()) {
-      const auto [lo, hi] = std::minmax_element(mean_pressure.begin(), mean_pressure.end());
-      t += fmt::format(" (mean real pressure {:.4g} to {:.4g} H)", *lo / hardness, *hi / hardness);
-    }
+    if (pm_hi > 0.0) t += fmt::format(" (mean real pressure {:.4g} to {:.4g} H)", pm_lo / hardness, pm_hi / hardness);
     t += " and the asperity stresses saturate at those of a uniform pressure H, whatever the roughness";
   }
   t += ".";
   if (v.beyond_fitted_range)
-    t += fmt::format(" {} of {} positions beyond {}'s range (delta* <= {:g}; highest asperity up to delta* {:.3g}){}.",
+    t += fmt::format(" {} of {} positions beyond {}'s range (delta* <= {:g}; highest asperity up to delta* {:.3g}): {}.",
                      v.beyond_fitted_range, n, model.name(), model.range().fitted_delta_star_max, max_delta_star,
-                     v.fully_plastic_limit ? ": the fully plastic limit governs there" : "");
+                     model.range().past_range);
+  if (v.fully_plastic_limit)
+    t += fmt::format(" At {} of {} positions the fully plastic limit governs the highest asperity.", v.fully_plastic_limit, n);
   if (v.beyond_paraboloid)
     t += fmt::format(" {} of {} positions with a contact radius beyond {:g} x the summit radius (up to {:.3g}): "
                      "the asperity is no longer a paraboloid tip.",
@@ -84,7 +91,7 @@ ValidityVerdict validity_verdict(const std::vector<PositionValidity>& pos, doubl
     t += fmt::format(" {} of {} positions with the separation below {:g} summit sigma (down to {:.3g}): most summits "
                      "touch, GW's sparse contacts do not hold.",
                      v.deep_separation, n, rules.deep_separation_over_sigma, min_sep);
-  if (!(v.beyond_fitted_range || v.beyond_paraboloid || v.summits_interact || v.deep_separation))
+  if (!(v.beyond_fitted_range || v.beyond_paraboloid || v.fully_plastic_limit || v.summits_interact || v.deep_separation))
     t += " Every position is within the models' ranges.";
   v.text = t;
   return v;

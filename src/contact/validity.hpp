@@ -34,6 +34,7 @@ struct PositionValidity {
   double max_interference_over_radius = 0.0;         // highest asperity delta / beta [-]
   double max_contact_radius_over_radius = 0.0;       // a / beta [-]
   double max_contact_radius_over_half_spacing = 0.0; // a / (1/(2 sqrt(eta))) [-]
+  bool loaded = false;                // the position carries load (the regime counts only these)
   bool beyond_fitted_range = false;   // delta* past the law's fitted range
   bool beyond_paraboloid = false;     // a/beta past the law's paraboloid limit
   bool fully_plastic_limit = false;   // the switch to the fully plastic limit governs
@@ -47,8 +48,9 @@ PositionValidity position_validity(const GreenwoodWilliamson& gw, const StripRes
 // The run's verdict: the regime from the plastic area fraction along the path and the
 // plasticity index, then, per rule, at how many positions it is broken and how far.
 struct ValidityVerdict {
-  // "elastic": no contact beyond first yield; "fully plastic": more than 99% of the real area
-  // yielded at the surface at every position; "elastic-plastic" between.
+  // "elastic": below 1% of the real area yielded and below 1% of the contacts past first yield
+  // at every position; "fully plastic": more than 99% of the real area yielded at the surface at
+  // every loaded position; "elastic-plastic" between.
   std::string regime;
   std::string text;     // one paragraph for the user
   int beyond_fitted_range = 0, beyond_paraboloid = 0, fully_plastic_limit = 0, summits_interact = 0,

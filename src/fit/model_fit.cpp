@@ -282,7 +282,7 @@ FitResult fit_model(const asperity::AsperityModel& model, const asperity::Contac
 
 double model_observable(const asperity::AsperityModel& model, const asperity::ContactPair& pair, double delta_star,
                         Observable what) {
-  const asperity::Star<double> s = model.star(delta_star, pair);
+  const asperity::Star<double> s = model.law_star(delta_star, pair);  // the law the fit fits (no switch)
   switch (what) {
     case Observable::load_star: return s.load;
     case Observable::area_star: return s.area;

@@ -67,7 +67,8 @@ struct FitResult {
 FitResult fit_model(const asperity::AsperityModel& model, const asperity::ContactPair& pair,
                     const std::vector<FitData>& data, const FitOptions& options);
 
-// The model's dimensionless value of an observable at delta* (as the fit computes it).
+// The model's dimensionless value of an observable at delta* (as the fit computes it: the law
+// itself, without the switch to the fully plastic limit past its range).
 double model_observable(const asperity::AsperityModel& model, const asperity::ContactPair& pair, double delta_star,
                         Observable what);
 

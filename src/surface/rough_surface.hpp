@@ -2,6 +2,7 @@
 // against a rigid flat (Greenwood & Williamson 1966; McCool 1986; seed section 4).
 #pragma once
 
+#include <numbers>
 #include <string>
 #include <utility>
 
@@ -48,7 +49,7 @@ inline constexpr double kTypicalEtaSigmaBeta = 0.05;
 //   alpha = (6 pi sqrt 3)^2/(0.375^2 pi) (eta sigma_s beta)^2 + 0.8968  (= 6.93 at 0.05),
 // so any two of the descriptions below fix one consistent set of summit statistics.
 inline constexpr double kMcCoolSummitSigmaConstant = 0.8968;
-inline constexpr double kMcCoolBandwidthPerEsb2 = 2412.8;  // (6 pi sqrt 3)^2/(0.140625 pi)
+inline constexpr double kMcCoolBandwidthPerEsb2 = 768.0 * std::numbers::pi;  // (6 pi sqrt 3)^2/(0.375^2 pi) = 2412.74
 double mccool_bandwidth(double eta_sigma_beta);
 
 // Combines two flanks into one equivalent surface against a flat; every form gives the summit

@@ -6,7 +6,7 @@
 #     the contact area at the surface in the project's perfectly plastic CalculiX runs
 #     (ccx-perfectly-plastic.csv and, at delta* 2.5-5 where it starts, ccx-perfectly-plastic-onset.csv:
 #     column plastic_area_fraction with its sd);
-#  2. with that core, the contact radius (area_scale, area_exponent) and the core pressure
+#  2. with that core, the contact radius (area_scale, area_exponent) and the mean pressure
 #     (pressure_scale, pressure_exponent) to the Kogut-Etsion 2002 and Jackson-Green 2005
 #     FEM-based load and area curves.
 # Writes:
