@@ -6,7 +6,7 @@
 # three-refinement convergence study (10, 14, 20) for delta* = 6-20 and 50-100. Writes
 # validation/fem-reference/ccx-*.csv: reference tables for `geartrib fit` and, in *-details.csv,
 # contact radius, peak pressure, von Mises and plastic zone.
-# Usage: bash validation/fem-reference/ccx-study.sh build/geartrib   (about 3 hours on one core)
+# Usage: bash validation/fem-reference/ccx-study.sh build/geartrib   (about 3.5 hours on one core)
 set -euo pipefail
 bin="$1"
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -15,6 +15,9 @@ for material in perfectly-plastic table; do
   name=$([[ $material == table ]] && echo hardening || echo "$material")
   "$bin" fem single-asperity --material "$material" --delta-star "$levels" --refine 10 \
     -o "$here/ccx-$name.csv" --details "$here/ccx-$name-details.csv"
+  # Where the surface starts to yield (the continuous model's plastic core is fitted to it).
+  "$bin" fem single-asperity --material "$material" --delta-star 2.5,3,3.5,4,5 --refine 10 \
+    -o "$here/ccx-$name-onset.csv" --details "$here/ccx-$name-onset-details.csv"
 done
 "$bin" fem single-asperity --material elastic --delta-star 1,2,6,10 --refine 20 --convergence \
   -o "$here/ccx-elastic.csv" --details "$here/ccx-elastic-details.csv"

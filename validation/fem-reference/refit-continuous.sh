@@ -40,7 +40,7 @@ printf '%s\n%s\n' "$(cat gears/m6z30.toml)" "$start" > "$tmp/gears/start.toml"
   --free plastic_scale,plastic_exponent --observe plastic_area_fraction \
   --report "$reports/continuous-core-fit.txt" -o "$reports/continuous-core-fit.toml" -q
 # The same core fitted to the hardening runs (45 steel's flow table), for comparison only.
-"$bin" fit --model continuous --case "$tmp/gears/start.toml" --data "$here/ccx-hardening.csv" \
+"$bin" fit --model continuous --case "$tmp/gears/start.toml" --data "$here/ccx-hardening.csv" --data "$here/ccx-hardening-onset.csv" \
   --free plastic_scale,plastic_exponent --observe plastic_area_fraction \
   --report "$reports/continuous-core-fit-hardening.txt" -o "$reports/continuous-core-fit-hardening.toml" -q
 # Step 2 starts from a case whose continuous constants carry step 1's core.
