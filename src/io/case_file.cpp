@@ -126,12 +126,10 @@ Material load_material(const std::filesystem::path& file) {
   require(r, "yield_strength", m.yield_strength < m.youngs_modulus, "yield strength must be below Young's modulus");
   // hardness: a pressure (measured), "tabor-yield" (2.8 S_y, the default) or "flow-curve"
   // (2.8 x the flow stress at Tabor's representative strain 0.08, needs [flow_curve]).
-  if (r.is_string("hardness") && (r.string("hardness") == "tabor-yield" || r.string("hardness") == "flow-curve"))
-    m.hardness_rule = r.string("hardness");
-  else if (r.has("hardness"))
-    m.hardness_rule = "given";
-  if (m.hardness_rule == "given") m.hardness = r.quantity("hardness", Dimension::pressure);
-  else m.hardness = kTaborHardnessRatio * m.yield_strength;
+  // The rule is read here, the value after the flow curve it may need.
+  const std::string named = r.is_string("hardness") ? r.string("hardness") : std::string();
+  if (named == "tabor-yield" || named == "flow-curve") m.hardness_rule = named;
+  else if (r.has("hardness")) m.hardness_rule = "given";
   m.density = positive_quantity(r, "density", Dimension::density);
   if (r.has("flow_curve")) {
     r.string("flow_curve.source");
@@ -150,9 +148,13 @@ Material load_material(const std::filesystem::path& file) {
       require(r, "flow_curve.stress", stress[i] >= stress[i - 1], "must not decrease (entry " + std::to_string(i) + ")");
     }
   }
-  if (m.hardness_rule == "flow-curve") {
+  if (m.hardness_rule == "given") {
+    m.hardness = r.quantity("hardness", Dimension::pressure);
+  } else if (m.hardness_rule == "flow-curve") {
     if (m.flow_curve.empty()) r.fail("hardness", "\"flow-curve\" needs a [flow_curve] table");
     m.hardness = tabor_flow_curve_hardness(m);
+  } else {
+    m.hardness = kTaborHardnessRatio * m.yield_strength;
   }
   require(r, "hardness", m.hardness >= m.yield_strength, "hardness must be at least the yield strength");
   r.check_all_used();
