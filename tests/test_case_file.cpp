@@ -1,4 +1,6 @@
 // Loading the data files, and the error each kind of bad input produces.
+#include "contact/greenwood_williamson.hpp"
+#include "contact/rough_line_contact.hpp"
 #include "io/case_file.hpp"
 #include "io/input_error.hpp"
 #include "io/topography_files.hpp"
@@ -10,6 +12,7 @@
 
 #include <fstream>
 #include <numbers>
+#include <set>
 #include <sstream>
 
 using namespace geartrib;
@@ -69,10 +72,10 @@ TEST(CaseFile, LoadsTheSeedCaseInSi) {
   EXPECT_DOUBLE_EQ(c.gear_pair.module, 6e-3);
   EXPECT_DOUBLE_EQ(c.gear_pair.face_width, 80e-3);
   EXPECT_DOUBLE_EQ(c.gear_pair.pressure_angle, 20.0 * std::numbers::pi / 180.0);
-  EXPECT_EQ(c.pinion.teeth, 30);
-  EXPECT_EQ(c.wheel.teeth, 30);
-  EXPECT_DOUBLE_EQ(c.pinion.flank.summit_radius, 1.65e-6);
-  EXPECT_DOUBLE_EQ(c.wheel.flank.summit_radius, 1.75e-6);
+  EXPECT_EQ(c.gear_pair.teeth[0], 30);
+  EXPECT_EQ(c.gear_pair.teeth[1], 30);
+  EXPECT_DOUBLE_EQ(c.pinion.flank.roughness.summit_radius, 1.65e-6);
+  EXPECT_DOUBLE_EQ(c.wheel.flank.roughness.summit_radius, 1.75e-6);
   EXPECT_DOUBLE_EQ(c.pinion.flank.roughness.ra, 0.8e-6);
   EXPECT_EQ(c.pinion.flank.roughness.form, surface::FlankRoughness::Form::ra);
   EXPECT_DOUBLE_EQ(c.operating.pinion_torque, 1000.0);
@@ -223,9 +226,9 @@ TEST_F(BadInput, MeasuredFlanksGiveTheirSummitStatistics) {
   EXPECT_EQ(c.pinion.flank.roughness.form, surface::FlankRoughness::Form::summits);
   EXPECT_DOUBLE_EQ(c.pinion.flank.roughness.summit_density, s.summit_density);
   EXPECT_DOUBLE_EQ(c.pinion.flank.roughness.summit_sigma, s.summit_sigma);
-  EXPECT_DOUBLE_EQ(c.pinion.flank.summit_radius, s.summit_radius);
-  EXPECT_DOUBLE_EQ(c.wheel.flank.summit_radius, 2e-6);  // the case's radius overrides the measured one
-  EXPECT_EQ(c.wheel.flank.topography_file, "wheel.csv");
+  EXPECT_DOUBLE_EQ(c.pinion.flank.roughness.summit_radius, s.summit_radius);
+  EXPECT_DOUBLE_EQ(c.wheel.flank.roughness.summit_radius, 2e-6);  // the case's radius overrides the measured one
+  EXPECT_EQ(c.wheel.flank.topography->file, "wheel.csv");
 }
 
 TEST_F(BadInput, MeasuredFlankErrorsNameTheFile) {
@@ -243,4 +246,75 @@ TEST_F(BadInput, MeasuredFlankErrorsNameTheFile) {
   const io::InputError bad = load_error();
   EXPECT_NE(bad.file().find("bad.txt"), std::string::npos) << bad.what();
   EXPECT_EQ(bad.line(), 3);
+}
+
+// The parameter table: a kinematics-only case needs no friction, flank roughness or cylinder
+// radius; a run (all parts) still requires them, at the key that is missing.
+TEST_F(BadInput, PartsRequireOnlyTheKeysTheyUse) {
+  edit("gears/m6z30.toml", "[friction]\nmu = 0.1", "[friction]");
+  edit("gears/m6z30.toml", "tip_radius = \"6.6 um\"", "");
+  const Case c = io::load_case(dir_ / "gears/m6z30.toml", {}, io::kGeometryPart | io::kRoughnessPart);
+  EXPECT_EQ(c.friction_coefficient, 0.0);
+  EXPECT_EQ(c.asperity.cylinder_tip_radius, 0.0);
+  const io::InputError e = load_error();
+  EXPECT_EQ(e.key(), "friction.mu");
+  EXPECT_NE(e.rule().find("missing required key"), std::string::npos) << e.rule();
+  try {
+    io::load_case(dir_ / "gears/m6z30.toml", {{"mu", "0.1"}}, io::kAllParts);
+    ADD_FAILURE() << "no InputError for the cylinder radius";
+  } catch (const io::InputError& ce) {
+    EXPECT_EQ(ce.key(), "asperity.cylinder.tip_radius");
+  }
+}
+
+// What ran is what the case records: every key with its value in SI and its origin.
+TEST(CaseParameters, RecordsEveryKeyWithItsOrigin) {
+  const Case c = io::load_case(test::source_dir() / "gears/m6z30.toml", {{"module", "5mm"}, {"positions", "21"}});
+  auto find = [&](const std::string& key) -> const ResolvedParameter& {
+    for (const auto& p : c.parameters)
+      if (p.key == key) return p;
+    static const ResolvedParameter none;
+    ADD_FAILURE() << key << " not recorded";
+    return none;
+  };
+  EXPECT_EQ(find("gear_pair.module").value, "0.005 m");
+  EXPECT_EQ(find("gear_pair.module").origin, "--set");
+  EXPECT_EQ(find("contact.positions").value, "21");
+  EXPECT_EQ(find("gear_pair.face_width").value, "0.08 m");
+  EXPECT_NE(find("gear_pair.face_width").origin.find("m6z30.toml:"), std::string::npos);
+  EXPECT_EQ(find("gear_pair.center_distance").origin, "default");
+  EXPECT_EQ(find("pinion.teeth").value, "30");
+  EXPECT_EQ(c.gear_pair.module, 5e-3);
+  EXPECT_EQ(c.contact.positions, 21);
+}
+
+// Every row is complete, each key is declared once, each alias names declared keys, and each
+// default lies in its own range (the table is the only place these are stated).
+TEST(CaseParameters, TableIsConsistent) {
+  const Case defaults;
+  std::set<std::string> keys;
+  for (const io::Parameter& p : io::case_parameters()) {
+    EXPECT_TRUE(keys.insert(p.key).second) << p.key << " declared twice";
+    EXPECT_FALSE(p.meaning.empty()) << p.key;
+    EXPECT_TRUE(p.get && p.set) << p.key;
+    const bool numeric = p.kind == io::ParameterKind::quantity || p.kind == io::ParameterKind::number ||
+                         p.kind == io::ParameterKind::integer;
+    if (numeric && p.has_default && p.required_by == 0) {
+      EXPECT_TRUE(p.in_range(p.get(defaults, 0).number)) << p.key << " default outside " << p.range_text();
+    }
+    for (const auto& v : p.ladder) EXPECT_EQ(io::parameter_text_error(p, v), "") << p.key << " ladder " << v;
+  }
+  for (const io::CaseAlias& a : io::case_aliases())
+    for (const auto& k : a.keys) EXPECT_NE(io::find_parameter(k).parameter, nullptr) << a.name << " -> " << k;
+  // The physics option structs' ranges are the table's (declared once, with the struct).
+  EXPECT_EQ(io::find_parameter("contact.strip_points").parameter->min, contact::StripOptions::kMinStripPoints);
+  EXPECT_EQ(io::find_parameter("contact.height_points").parameter->min, contact::GreenwoodWilliamsonOptions::kMinHeightPoints);
+  EXPECT_EQ(io::find_parameter("wheel.teeth").gear, 1);
+  // Sweep values are checked against the row: unit, kind, choices and range.
+  const io::Parameter& module = *io::find_parameter("gear_pair.module").parameter;
+  EXPECT_EQ(io::parameter_text_error(module, "4mm"), "");
+  EXPECT_NE(io::parameter_text_error(module, "4 GPa"), "");
+  EXPECT_NE(io::parameter_text_error(module, "-4mm"), "");
+  EXPECT_NE(io::parameter_text_error(*io::find_parameter("contact.fidelity").parameter, "fine"), "");
+  EXPECT_NE(io::parameter_text_error(*io::find_parameter("contact.positions").parameter, "2.5"), "");
 }

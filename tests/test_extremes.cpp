@@ -118,7 +118,7 @@ TEST(Extremes, FrictionZeroToOne) {
   const contact::RoughLineContact strip(s.gw, s.mesh.composite_modulus(), c.gear_pair.face_width, {}, nullptr);
   const contact::StripResult r = strip.solve(s.mesh.normal_force() / c.gear_pair.face_width, 0.02);
   for (double mu : {0.0, 1e-6, 0.01, 0.1, 0.3, 0.6, 1.0}) {
-    const auto g = asperity::side_contact_geometry(c.pinion.flank.summit_radius, c.wheel.flank.summit_radius, mu);
+    const auto g = asperity::side_contact_geometry(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius, mu);
     const contact::HighestAsperity h = contact::highest_asperity(s.gw, r, c.gear_pair.face_width, &g);
     EXPECT_TRUE(std::isfinite(h.von_mises) && h.von_mises > 0.0) << mu;
     EXPECT_TRUE(std::isfinite(h.peak_pressure) && std::isfinite(h.plastic_fraction)) << mu;

@@ -14,7 +14,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 
-SpurPairSpec seed_spec() { return spur_pair_spec(test::seed_case()); }
+GearPairSpec seed_spec() { return test::seed_case().gear_pair; }
 }  // namespace
 
 TEST(Involute, InverseRoundTrip) {
@@ -67,7 +67,7 @@ TEST(SpurPair, IdentitiesAlongThePath) {
 TEST(SpurPair, ShiftedPairOperatingAngle) {
   // FZG type C (z 16/24, m 4.5, x 0.1817/0.1715, a 91.5 mm; see validation/fzg-type-c):
   // zero-backlash inv(alpha_w) = inv(alpha) + 2 tan(alpha)(x1 + x2)/(z1 + z2).
-  SpurPairSpec s = seed_spec();
+  GearPairSpec s = seed_spec();
   s.module = 4.5e-3;
   s.teeth[0] = 16;
   s.teeth[1] = 24;
@@ -85,7 +85,7 @@ TEST(SpurPair, ShiftedPairOperatingAngle) {
 }
 
 TEST(SpurPair, ImpossibleGeometriesNameTheKey) {
-  auto expect_key = [](SpurPairSpec s, const std::string& key) {
+  auto expect_key = [](GearPairSpec s, const std::string& key) {
     try {
       SpurPair p(s);
       ADD_FAILURE() << "no error for " << key;
@@ -93,9 +93,9 @@ TEST(SpurPair, ImpossibleGeometriesNameTheKey) {
       EXPECT_EQ(e.key(), key) << e.what();
     }
   };
-  SpurPairSpec s = seed_spec();
+  GearPairSpec s = seed_spec();
   s.bore_diameter[0] = s.bore_diameter[1] = 0.0;
-  const SpurPairSpec base = s;
+  const GearPairSpec base = s;
   s.tip_shortening = 0.6;  // short teeth: eps_alpha < 1
   expect_key(s, "gear_pair.addendum_coefficient");
   s = base;
@@ -111,7 +111,7 @@ TEST(SpurPair, ImpossibleGeometriesNameTheKey) {
 }
 
 TEST(SpurPair, UndercutIsAWarning) {
-  SpurPairSpec s = seed_spec();
+  GearPairSpec s = seed_spec();
   s.teeth[0] = 14;  // z < 2 (h_fP - rho_fP (1 - sin a))/sin^2 a = 14.9: undercut by the rack
   s.teeth[1] = 14;
   s.tip_shortening = 0.1;

@@ -8,7 +8,7 @@ using namespace geartrib;
 using namespace geartrib::gear;
 
 TEST(LoadSharing, IsoFactorShape) {
-  const SpurPair p(spur_pair_spec(test::seed_case()));
+  const SpurPair p(test::seed_case().gear_pair);
   const PathOfContact& path = p.path();
   EXPECT_DOUBLE_EQ(iso_load_sharing_factor(path, path.a), 1.0 / 3.0);
   EXPECT_NEAR(iso_load_sharing_factor(path, path.b), 2.0 / 3.0, 1e-12);        // double-contact side

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "asperity/case_setup.hpp"
-#include "core/case.hpp"
+#include "case/case.hpp"
 #include "io/case_file.hpp"
 
 #include <filesystem>

@@ -77,8 +77,8 @@ TEST(CaseChanges, AliasesSetKeysAndReplaceRoughnessForms) {
   const auto file = test::source_dir() / "gears/m6z30.toml";
   const Case c = io::load_case(file, {{"module", "5mm"}, {"rq", "0.4um"}, {"z1", "25"}, {"model", "kogut-etsion"}});
   EXPECT_DOUBLE_EQ(c.gear_pair.module, 0.005);
-  EXPECT_EQ(c.pinion.teeth, 25);
-  EXPECT_EQ(c.wheel.teeth, 30);
+  EXPECT_EQ(c.gear_pair.teeth[0], 25);
+  EXPECT_EQ(c.gear_pair.teeth[1], 30);
   EXPECT_EQ(c.asperity.model, "kogut-etsion");
   // The case gives ra; rq replaces it on both flanks (exactly one form per flank).
   EXPECT_EQ(c.pinion.flank.roughness.form, surface::FlankRoughness::Form::rq);

@@ -36,7 +36,7 @@ TianCompliance tian(double a1, double a2, double e, double nu, double b, int n =
 TEST(ToothStiffness, InvolutePartEqualsTianIntegrals) {
   // A gear whose root circle lies above the base circle would hide the constant-section part;
   // use the seed gear with root and bore terms switched off to isolate the involute part.
-  const SpurPair p(spur_pair_spec(test::seed_case()));
+  const SpurPair p(test::seed_case().gear_pair);
   GearBody g = p.pinion();
   g.root_radius = g.base_radius;  // involute part only
   g.bore_radius = 0.0;            // no foundation term
@@ -54,7 +54,7 @@ TEST(ToothStiffness, InvolutePartEqualsTianIntegrals) {
 
 TEST(ToothStiffness, ComplianceGrowsTowardTheTip) {
   // Bending compliance rises as the load moves up the tooth (longer lever arm).
-  const SpurPair p(spur_pair_spec(test::seed_case()));
+  const SpurPair p(test::seed_case().gear_pair);
   const ToothMaterial steel{206e9, 0.3};
   double prev = 0.0;
   for (double s = p.path().a; s <= p.path().e; s += p.path().length / 20.0) {

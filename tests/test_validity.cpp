@@ -206,7 +206,7 @@ TEST(EquivalentSurface, SpectralFlanksUseOneRadius) {
   std::ofstream(dir / "gears/case.toml") << text;
   const Case c = io::load_case(dir / "gears/case.toml");
   const auto s = contact::case_equivalent_surface(c);
-  const double r1 = c.pinion.flank.summit_radius, r2 = c.wheel.flank.summit_radius;
+  const double r1 = c.pinion.flank.roughness.summit_radius, r2 = c.wheel.flank.roughness.summit_radius;
   EXPECT_NEAR(r1 * r2 / (r1 + r2) / s.summit_radius, 1.0, 1e-12);
   EXPECT_NEAR(s.summit_radius, 0.375 * std::sqrt(kPi / 3e8), 1e-18);
   EXPECT_NEAR(r1 / r2, std::sqrt(2.0), 1e-12);  // McCool radii ~ m4^-1/2

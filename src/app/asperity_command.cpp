@@ -1,5 +1,6 @@
 // `geartrib asperity`: single-asperity contact of the case's equivalent asperity pair, by model,
 // in normal or side contact; the case summary; comparison with a reference table.
+#include "app/case_loading.hpp"
 #include "app/commands.hpp"
 
 #include "asperity/case_setup.hpp"
@@ -60,16 +61,15 @@ const Column& column(const std::string& quantity) {
 
 struct Options {
   std::string model;
-  std::string case_file;
+  CaseOptions case_options;
   std::string contact = "normal";
-  std::optional<double> mu;
+  std::string mu;
   std::vector<double> delta_star;
   std::string range;
-  bool csv = false;
+  TableOptions table;
   bool summary = false;
   bool list_constants = false;
   std::string compare;
-  std::string output;
 };
 
 std::vector<double> parse_range(const std::string& text) {
@@ -124,7 +124,7 @@ void print_summary(const Case& c, const asperity::AsperityModel& model, double m
     fmt::print("  {:<14} delta_c {:.5g} nm  F_c {:.5g} uN  A_c {:.5g} nm^2\n", name, mc.interference * 1e9,
                mc.load * 1e6, mc.area * 1e18);
   }
-  const SideContactGeometry g = side_contact_geometry(c.pinion.flank.summit_radius, c.wheel.flank.summit_radius, mu);
+  const SideContactGeometry g = side_contact_geometry(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius, mu);
   const ContactPair p0 = with_radius(p, g.radius_0);
   fmt::print("Side contact, mu = {:.4g} (seed section 2.1; model {})\n", mu, model.name());
   fmt::print("  theta    contact-normal tilt atan(mu) {:.4f} deg\n", g.theta * 180.0 / std::numbers::pi);
@@ -136,12 +136,12 @@ void print_summary(const Case& c, const asperity::AsperityModel& model, double m
              hertz_critical(p0, k * p.hardness).interference * 1e9, model.name(),
              model.critical(p0).interference * 1e9);
   if (c.asperity.measured_axis_offset > 0.0) {
-    const double r12 = c.pinion.flank.summit_radius + c.wheel.flank.summit_radius;
+    const double r12 = c.pinion.flank.roughness.summit_radius + c.wheel.flank.roughness.summit_radius;
     const double d0 = c.asperity.measured_axis_offset;
     fmt::print("  measured d0 = {:.4g} um, y0 = {:.4g} um: touching tips need y0 = d0^2/(2(R1+R2)) = {:.4g} um;\n"
                "  their normal tilt is atan(d0/(R1+R2)) = {:.4f} deg, i.e. tan(theta) = {:.4g}, not mu\n",
                d0 * 1e6, c.asperity.measured_tip_gap * 1e6, d0 * d0 / (2.0 * r12) * 1e6,
-               normal_tilt_from_offset(c.pinion.flank.summit_radius, c.wheel.flank.summit_radius, d0) * 180.0 /
+               normal_tilt_from_offset(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius, d0) * 180.0 /
                    std::numbers::pi,
                d0 / r12);
   }
@@ -200,15 +200,20 @@ void run_compare(const Options& o, const asperity::AsperityModel& m, const asper
     }
     t.rows.push_back(std::move(row));
   }
-  std::cout << (o.csv ? io::format_csv(t) : io::format_text(t));
+  emit_table(t, o.table);
 }
 
 void run(const Options& o) {
-  const Case c = load_case_reporting(o.case_file);
-  const std::string model_name = o.model.empty() ? c.asperity.model : o.model;
-  const auto model = asperity::make_case_model(c, model_name);
-  const double mu = o.mu.value_or(c.friction_coefficient);
-  if (!(mu >= 0.0 && mu <= 1.0)) throw std::invalid_argument("--mu must lie in [0, 1]");
+  // --model and --mu are shorthands for --set asperity.model and friction.mu.
+  CaseOptions co = o.case_options;
+  if (!o.model.empty()) co.changes.push_back("asperity.model=" + o.model);
+  if (!o.mu.empty()) co.changes.push_back("friction.mu=" + o.mu);
+  unsigned parts = io::kGeometryPart | io::kRoughnessPart;
+  if (o.contact == "side" || o.summary) parts |= io::kFrictionPart;
+  if (o.summary) parts |= io::kCylinderPart;
+  const Case c = load_case_reporting(co, parts);
+  const auto model = asperity::make_case_model(c, c.asperity.model);
+  const double mu = c.friction_coefficient;
   const asperity::ContactPair pair = asperity::contact_pair(c);
 
   if (o.list_constants) return print_constants(*model);
@@ -232,7 +237,7 @@ void run(const Options& o) {
       t.rows.push_back(std::move(row));
     }
   } else {
-    const auto g = asperity::side_contact_geometry(c.pinion.flank.summit_radius, c.wheel.flank.summit_radius, mu);
+    const auto g = asperity::side_contact_geometry(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius, mu);
     for (auto h : {"applied_delta_m", "theta_deg", "vertical_load_N", "tangential_load_N", "semi_major_m", "semi_minor_m"})
       t.header.push_back(h);
     const double dcn = model->critical(asperity::with_radius(pair, g.radius_0)).interference;
@@ -246,7 +251,14 @@ void run(const Options& o) {
       t.rows.push_back(std::move(row));
     }
   }
-  io::output_table(t, o.csv, o.output);
+  emit_table(t, o.table);
+}
+
+// The registry's model names, for the help text.
+std::string model_list() {
+  std::string s;
+  for (auto n : asperity::asperity_model_names()) s += (s.empty() ? "" : ", ") + std::string(n);
+  return s;
 }
 
 }  // namespace
@@ -258,18 +270,17 @@ void add_asperity_command(CLI::App& app) {
       "Single-asperity elastic-plastic contact (sphere on flat) of the case's equivalent asperity.\n"
       "Prints, for each interference delta* = delta/delta_c (the model's own delta_c), the load, contact\n"
       "area and radius, plastic-core radius, mean and peak pressure, plastic share of the area, and the\n"
-      "largest von Mises stress of the elastic field on the axis with its depth. Models: hertz, ceb,\n"
-      "kogut-etsion, jackson-green, zmc, continuous (the seed's model, default).");
-  cmd->add_option("--model", o->model, "Asperity model (default: the case's asperity.model)");
-  cmd->add_option("--case", o->case_file, "Case file (default: gears/m6z30.toml)");
+      "largest von Mises stress of the elastic field on the axis with its depth. Models: " + model_list() + ".");
+  cmd->add_option("--model", o->model, "Asperity model: shorthand for --set asperity.model=... (default: the case's)");
+  add_case_option(cmd, o->case_options);
   cmd->add_option("--contact", o->contact, "normal (frictionless, coaxial) or side (frictional, tilted by atan(mu))")
       ->check(CLI::IsMember({"normal", "side"}));
-  cmd->add_option("--mu", o->mu, "Friction coefficient for side contact (default: the case's friction.mu)");
+  cmd->add_option("--mu", o->mu, "Friction coefficient of side contact: shorthand for --set friction.mu=...");
   auto* ds = cmd->add_option("--delta-star", o->delta_star, "Comma-separated delta* values (default 1,2,6,7,10)")
                  ->delimiter(',');
   auto* rg = cmd->add_option("--range", o->range, "MIN:MAX:COUNT, log-spaced delta* with both ends included");
   ds->excludes(rg);
-  add_table_options(cmd, o->csv, o->output);
+  add_table_options(cmd, o->table);
   cmd->add_flag("--summary", o->summary, "Print E_t, R, k, H, delta_c, F_c, the yield depth, side-contact and cylinder values");
   cmd->add_flag("--constants", o->list_constants, "List the model's named constants with values, ranges and meaning");
   cmd->add_option("--compare", o->compare, "Reference table (validation/*/...csv) to print the model beside");

@@ -1,5 +1,6 @@
 // `geartrib dynamics`: the mesh's single-degree-of-freedom dynamics at one speed (the steady
 // cycle) or over a speed sweep (the dynamic factor against speed).
+#include "app/case_loading.hpp"
 #include "app/commands.hpp"
 
 #include "gear/mesh_dynamics.hpp"
@@ -23,23 +24,25 @@ double speed_option(const std::string& option, const std::string& text) {
 }
 
 struct Options {
-  std::string case_file;
+  CaseOptions case_options;
   std::string integrator;
-  std::optional<double> rtol;
+  std::string rtol;
   std::string speed;
   std::string sweep;
-  bool csv = false;
-  std::string output;
+  TableOptions table;
 };
 
 constexpr double kRpm = 2.0 * std::numbers::pi / 60.0;
 
 void run(const Options& o) {
-  const Case c = load_case_reporting(o.case_file);
+  // --integrator and --rtol are shorthands for --set mesh.dynamics and dynamics.relative_tolerance.
+  CaseOptions co = o.case_options;
+  if (!o.integrator.empty()) co.changes.push_back("mesh.dynamics=" + o.integrator);
+  if (!o.rtol.empty()) co.changes.push_back("dynamics.relative_tolerance=" + o.rtol);
+  const Case c = load_case_reporting(co, io::kGeometryPart);
   const gear::GearMesh mesh(c);
-  gear::DynamicsSettings settings = gear::dynamics_settings(c);
-  if (o.rtol) settings.tolerances.relative = *o.rtol;
-  const std::string engine = !o.integrator.empty() ? o.integrator : (c.dynamics.engine == "none" ? "cvode" : c.dynamics.engine);
+  const gear::DynamicsSettings settings = gear::dynamics_settings(c);
+  const std::string engine = c.dynamics.engine == "none" ? "cvode" : c.dynamics.engine;
   const auto integrator = solvers::make_integrator(engine);
   const gear::MeshDynamics dyn(mesh, settings);
   const int z1 = mesh.pair().pinion().teeth;
@@ -84,7 +87,7 @@ void run(const Options& o) {
                              w / kRpm, s.mesh_frequency, s.dynamic_factor, s.dynamic_factor_quasi_static,
                              s.contact_lost ? "lost" : "kept", s.periodic ? "periodic" : "NOT periodic", s.cycles, s.steps);
   }
-  io::output_table(t, o.csv, o.output);
+  emit_table(t, o.table);
 }
 
 }  // namespace
@@ -99,15 +102,16 @@ void add_dynamics_command(CLI::App& app) {
       "static transmission error, mesh force, each pair's dynamic load). Over a sweep: the dynamic factor\n"
       "(peak mesh force over F, and over the model's quasi-static peak) against speed; plot it with\n"
       "scripts/plot_speed_sweep.py.");
-  cmd->add_option("case", o->case_file, "Case file (default: gears/m6z30.toml)");
-  cmd->add_option("--integrator", o->integrator, "cvode (SUNDIALS BDF) or odeint (Boost Dormand-Prince 5(4))")
+  add_case_argument(cmd, o->case_options);
+  cmd->add_option("--integrator", o->integrator,
+                  "cvode (SUNDIALS BDF) or odeint (Boost Dormand-Prince 5(4)): shorthand for --set mesh.dynamics=...\n"
+                  "(default: the case's, cvode when it asks for none)")
       ->check(CLI::IsMember({"cvode", "odeint"}));
-  cmd->add_option("--rtol", o->rtol, "Relative tolerance (default: the case's dynamics.relative_tolerance, 1e-8)")
-      ->check(CLI::Range(1e-14, 1e-2));
+  cmd->add_option("--rtol", o->rtol, "Relative tolerance: shorthand for --set dynamics.relative_tolerance=... (default 1e-8)");
   auto* sp = cmd->add_option("--speed", o->speed, "Pinion speed, e.g. 1000rpm (default: the case's)");
   auto* sw = cmd->add_option("--speed-sweep", o->sweep, "MIN:MAX:COUNT pinion speeds, e.g. 100rpm:9000rpm:200");
   sp->excludes(sw);
-  add_table_options(cmd, o->csv, o->output);
+  add_table_options(cmd, o->table);
   cmd->callback([o] { run(*o); });
 }
 

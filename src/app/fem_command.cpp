@@ -1,5 +1,6 @@
 // `geartrib fem`: finite-element reference data with CalculiX (ccx) - decks, runs, tables in the
 // fitting format.
+#include "app/case_loading.hpp"
 #include "app/commands.hpp"
 
 #include "asperity/case_setup.hpp"
@@ -45,7 +46,7 @@ struct FemFolder {
 };
 
 struct SingleOptions {
-  std::string case_file;
+  CaseOptions case_options;
   std::string material = "perfectly-plastic";
   std::vector<double> delta_star{1, 2, 6, 10};
   int refine = 10;
@@ -57,7 +58,7 @@ struct SingleOptions {
 };
 
 void single_asperity(const SingleOptions& o) {
-  const Case c = load_case_reporting(o.case_file);
+  const Case c = load_case_reporting(o.case_options, io::kGeometryPart | io::kRoughnessPart);
   const asperity::ContactPair pair = asperity::contact_pair(c);
   const asperity::Critical crit = asperity::hertz_critical(pair, asperity::ceb_pressure_factor(pair.poisson_ratio) * pair.hardness);
   fem::SingleAsperitySpec s;
@@ -152,7 +153,7 @@ void single_asperity(const SingleOptions& o) {
 }
 
 struct CylinderOptions {
-  std::string case_file;
+  CaseOptions case_options;
   std::string layout = "HLH";
   double height_step = 0.0;
   std::string spacing = "0.5um";
@@ -167,7 +168,7 @@ struct CylinderOptions {
 };
 
 void three_cylinders(const CylinderOptions& o) {
-  const Case c = load_case_reporting(o.case_file);
+  const Case c = load_case_reporting(o.case_options, io::kGeometryPart | io::kCylinderPart);
   const double delta_pc = o.delta_pc.empty() ? asperity::seed_critical_interference(asperity::cylinder_asperity(c))
                                              : quantity_option("--delta-pc", o.delta_pc, io::Dimension::length);
   const Material& m = c.pinion.material.hardness <= c.wheel.material.hardness ? c.pinion.material : c.wheel.material;
@@ -239,7 +240,7 @@ void add_fem_command(CLI::App& app) {
       "to the delta* levels; prints load*, area* and mean pressure / S_y with provenance lines, in the reference-table\n"
       "format of `geartrib fit`, with the yielded share of the contact area at the surface (--details: contact radius,\n"
       "largest von Mises stress and its depth, plastic zone).");
-  single->add_option("--case", o->case_file, "Case file for the material and radius (default: gears/m6z30.toml)");
+  add_case_option(single, o->case_options);
   single->add_option("--material", o->material, "elastic, perfectly-plastic (default) or table (the case's flow curve)")
       ->check(CLI::IsMember({"elastic", "perfectly-plastic", "table"}));
   single->add_option("--delta-star", o->delta_star, "Comma-separated interference levels delta/delta_c (default 1,2,6,10)")->delimiter(',');
@@ -247,7 +248,7 @@ void add_fem_command(CLI::App& app) {
                                              "run on separate meshes")->check(CLI::Range(4, 400));
   single->add_flag("--convergence", o->convergence, "Also run each mesh at about 1/2 and 1/sqrt2 of the refinement and report the\n"
                                                     "changes in load* and area* (stderr and provenance lines)");
-  single->add_option("-o,--output", o->output, "Write the table here (atomically) instead of stdout");
+  add_output_option(single, o->output, "the table (CSV with # provenance lines), written atomically (default: standard output)");
   single->add_option("--details", o->details, "Also write the contact radius, the largest von Mises stress and its depth, and the\n"
                                                "plastic zone's depth, surface radius, surface yielded share and inner radius per level to this CSV");
   auto* keep = single->add_option("--keep-deck", o->keep_deck, "Keep the deck and ccx's files in this folder (written even without ccx)");
@@ -261,7 +262,7 @@ void add_fem_command(CLI::App& app) {
       "The seed's section 6 model: parabolic cylinders (R_m from the case) on a base in plane strain, pressed by a rigid\n"
       "flat to the approaches (in delta_pc); per asperity its load, contact width, surface von Mises and plastic strain,\n"
       "for comparison with `geartrib multi-asperity`.");
-  cyl->add_option("--case", c->case_file, "Case file for the material and R_m (default: gears/m6z30.toml)");
+  add_case_option(cyl, c->case_options);
   cyl->add_option("--layout", c->layout, "H (high) and L (low) letters, e.g. HLH, LHL, or H alone (default HLH)");
   cyl->add_option("--height-step", c->height_step, "Height difference h_m of the low asperities, in delta_pc (default 0)")
       ->check(CLI::Range(0.0, 9.0));
@@ -275,7 +276,7 @@ void add_fem_command(CLI::App& app) {
       ->check(CLI::IsMember({"elastic", "perfectly-plastic", "table"}));
   cyl->add_option("--refine", c->refine, "Elements across the estimated contact half-width sqrt(2 R_m delta) (default 10)")
       ->check(CLI::Range(4, 200));
-  cyl->add_option("-o,--output", c->output, "Write the table here (atomically) instead of stdout");
+  add_output_option(cyl, c->output, "the table (CSV with # provenance lines), written atomically (default: standard output)");
   cyl->add_option("--keep-deck", c->keep_deck, "Keep the deck and ccx's files in this folder (written even without ccx)");
   cyl->callback([c] { three_cylinders(*c); });
 }

@@ -1,5 +1,6 @@
 // `geartrib fit`: a registered asperity model's named constants fitted to reference data with
 // Ceres; report, TOML fragment for case files, optionally the C++ defaults header.
+#include "app/case_loading.hpp"
 #include "app/commands.hpp"
 
 #include "asperity/case_setup.hpp"
@@ -26,7 +27,7 @@ struct Options {
   std::vector<std::string> bounds;
   std::string loss = "squared";
   double loss_scale = 0.1;
-  std::string case_file;
+  CaseOptions case_options;
   std::string output;
   std::string report;
   std::string emit_cpp;
@@ -46,7 +47,7 @@ void list_constants(const std::string& name) {
 void run(const Options& o) {
   if (!o.list.empty()) return list_constants(o.list);
   if (o.model.empty() || o.data.empty()) throw std::invalid_argument("fit needs --model NAME and at least one --data FILE (or --list MODEL)");
-  const Case c = load_case_reporting(o.case_file);
+  const Case c = load_case_reporting(o.case_options, io::kGeometryPart | io::kRoughnessPart);
   const auto model = asperity::make_case_model(c, o.model);
   std::vector<fit::FitData> data;
   for (const auto& f : o.data) data.push_back(io::read_fit_data(f));
@@ -95,7 +96,9 @@ void add_fit_command(CLI::App& app) {
       "constant with its standard error, the correlation matrix, the rms relative error per observed column\n"
       "and the residuals; -o writes a TOML fragment a case file can include ([asperity.constants.<model>]).");
   cmd->add_option("--list", o->list, "Print a model's named constants (default, range, meaning) and exit");
-  cmd->add_option("--model", o->model, "Model to fit (hertz, ceb, kogut-etsion, jackson-green, zmc, continuous)");
+  std::string models;
+  for (auto n : asperity::asperity_model_names()) models += (models.empty() ? "" : ", ") + std::string(n);
+  cmd->add_option("--model", o->model, "Model to fit (" + models + ")");
   cmd->add_option("--data", o->data, "Reference data CSV (repeat for several data sets)");
   cmd->add_option("--free", o->free, "Comma-separated constants to fit (default: all); the rest stay at their values")->delimiter(',');
   cmd->add_option("--observe", o->observe, "Comma-separated observed columns (default: all in the data)")->delimiter(',');
@@ -104,11 +107,11 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--loss", o->loss, "squared, huber or cauchy")->check(CLI::IsMember({"squared", "huber", "cauchy"}));
   cmd->add_option("--loss-scale", o->loss_scale, "Residual scale of the robust losses (default 0.1, a relative 10%)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--case", o->case_file, "Case for the material (default: gears/m6z30.toml), and its constant overrides as the start");
-  cmd->add_option("-o,--output", o->output, "Write the fitted constants as a TOML fragment");
+  add_case_option(cmd, o->case_options);
+  add_output_option(cmd, o->output, "the fitted constants as a TOML fragment (the case's overrides are the start)");
   cmd->add_option("--report", o->report, "Write the full report (with every residual and Ceres' report) to this file");
   cmd->add_option("--emit-cpp", o->emit_cpp, "Write the constants as a C++ defaults header (see src/asperity/continuous_defaults.hpp)");
-  cmd->add_flag("-q,--quiet", o->quiet, "Print nothing");
+  add_quiet_flag(cmd, o->quiet);
   cmd->callback([o] { run(*o); });
 }
 

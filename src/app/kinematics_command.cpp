@@ -1,5 +1,6 @@
 // `geartrib kinematics`: the spur pair along its line of action: geometry, load sharing,
 // curvature, Hertz line contact, rolling and sliding, mesh stiffness.
+#include "app/case_loading.hpp"
 #include "app/commands.hpp"
 
 #include "gear/gear_mesh.hpp"
@@ -19,13 +20,12 @@ namespace geartrib::app {
 namespace {
 
 struct Options {
-  std::string case_file;
+  CaseOptions case_options;
   std::vector<std::string> points;
   std::optional<int> positions;
   std::string load_sharing;
-  bool csv = false;
+  TableOptions table;
   bool summary = false;
-  std::string output;
 };
 
 // Mean, minimum and maximum mesh stiffness over one base pitch.
@@ -84,14 +84,15 @@ void run_summary(const Options& o, const Case& c, const gear::GearMesh& mesh) {
   t.add_row("iso_c_prime_N_per_m_um", {iso.single * to_n_per_m_um});
   t.add_row("iso_c_gamma_alpha_N_per_m_um", {iso.mesh * to_n_per_m_um});
   t.add_row("mean_mesh_stiffness_over_iso_c_gamma_alpha", {k.mean / (iso.mesh * b)});
-  io::output_table(t, o.csv, o.output);
+  emit_table(t, o.table);
 }
 
 void run(const Options& o) {
-  const Case c = load_case_reporting(o.case_file);
-  std::optional<gear::LoadSharing> method;
-  if (!o.load_sharing.empty()) method = gear::parse_load_sharing(o.load_sharing);
-  const gear::GearMesh mesh(c, method);
+  // --load-sharing is a shorthand for --set mesh.load_sharing; the kinematics need only the geometry.
+  CaseOptions co = o.case_options;
+  if (!o.load_sharing.empty()) co.changes.push_back("mesh.load_sharing=" + o.load_sharing);
+  const Case c = load_case_reporting(co, io::kGeometryPart);
+  const gear::GearMesh mesh(c);
   if (o.summary) return run_summary(o, c, mesh);
 
   const auto& pair = mesh.pair();
@@ -132,7 +133,7 @@ void run(const Options& o) {
       add(name, s, true);
     }
   }
-  io::output_table(t, o.csv, o.output);
+  emit_table(t, o.table);
 }
 
 }  // namespace
@@ -148,13 +149,13 @@ void add_kinematics_command(CLI::App& app) {
       "and sliding speeds, slide-to-roll ratio (sliding over mean rolling speed), specific sliding, and the\n"
       "tooth-pair and mesh stiffness. At B and D a named point reports the single-tooth side of the jump.\n"
       "--summary prints the geometry, contact ratio, mesh stiffness and ISO 6336-1 c' and c_gamma_alpha.");
-  cmd->add_option("case", o->case_file, "Case file (default: gears/m6z30.toml)");
+  add_case_argument(cmd, o->case_options);
   auto* pts = cmd->add_option("--points", o->points, "Comma-separated named points (default A,B,C,D,E)")->delimiter(',');
   auto* pos = cmd->add_option("--positions", o->positions, "N equally spaced positions from A to E instead of named points");
   pts->excludes(pos);
-  cmd->add_option("--load-sharing", o->load_sharing, "iso or stiffness (default: the case's mesh.load_sharing)")
+  cmd->add_option("--load-sharing", o->load_sharing, "iso or stiffness: shorthand for --set mesh.load_sharing=...")
       ->check(CLI::IsMember({"iso", "stiffness"}));
-  add_table_options(cmd, o->csv, o->output);
+  add_table_options(cmd, o->table);
   cmd->add_flag("--summary", o->summary, "name,value rows: geometry, contact ratio, mesh stiffness, ISO stiffness");
   cmd->callback([o] { run(*o); });
 }

@@ -1,6 +1,9 @@
 // geartrib: spur-gear mesh tribology along the line of action. Thin command line over the
 // geartrib_physics and geartrib_io libraries.
 #include "app/commands.hpp"
+
+#include <CLI/CLI.hpp>
+
 #include "io/input_error.hpp"
 
 #include <iostream>
@@ -18,6 +21,7 @@ int main(int argc, char** argv) {
   app.fallthrough();
   geartrib::app::add_asperity_command(app);
   geartrib::app::add_run_command(app);
+  geartrib::app::add_case_command(app);
   geartrib::app::add_kinematics_command(app);
   geartrib::app::add_multi_asperity_command(app);
   geartrib::app::add_dynamics_command(app);

@@ -1,6 +1,8 @@
 // `geartrib multi-asperity`: the seed's three parabolic-cylinder asperities (sections 5-7)
 // pressed by a rigid flat, by plane-strain boundary elements.
+#include "app/case_loading.hpp"
 #include "app/commands.hpp"
+#include "app/surface_input.hpp"
 
 #include "asperity/case_setup.hpp"
 #include "contact/multi_asperity.hpp"
@@ -28,7 +30,7 @@ double length_option(const std::string& option, const std::string& text) {
 }
 
 struct Options {
-  std::string case_file;
+  CaseOptions case_options;
   std::string layout = "HLH";
   double height_step = 0.0;
   std::string spacing = "0.5um";
@@ -43,8 +45,7 @@ struct Options {
   std::string sweep;
   std::string topography;
   SurfaceInputOptions surface;
-  bool csv = false;
-  std::string output;
+  TableOptions table;
 };
 
 contact::MultiAsperitySpec make_spec(const Options& o, const Case& c, double delta_pc) {
@@ -88,7 +89,7 @@ contact::MultiAsperitySpec make_spec(const Options& o, const Case& c, double del
 }
 
 void run(const Options& o) {
-  const Case c = load_case_reporting(o.case_file);
+  const Case c = load_case_reporting(o.case_options, io::kGeometryPart | io::kCylinderPart);
   const double delta_pc = o.delta_pc.empty() ? asperity::seed_critical_interference(asperity::cylinder_asperity(c))
                                              : length_option("--delta-pc", o.delta_pc);
   if (!o.sweep.empty()) {
@@ -111,7 +112,7 @@ void run(const Options& o) {
                         r.inflection_von_mises, r.asperities[r.asperities.size() / 2].load, r.line_load,
                         static_cast<double>(r.iterations)});
     }
-    io::output_table(t, o.csv, o.output);
+    emit_table(t, o.table);
     return;
   }
   const contact::MultiAsperitySpec spec = make_spec(o, c, delta_pc);
@@ -139,10 +140,14 @@ void run(const Options& o) {
   totals.add_row("element_width_m", {r.grid.spacing});
   totals.add_row("iterations", {static_cast<double>(r.iterations)});
   totals.add_row("complementarity_error", {r.complementarity_error});
-  const std::string text = (o.csv ? io::format_csv(t) : io::format_text(t)) + "\n" +
-                           (o.csv ? io::format_csv(totals) : io::format_text(totals));
-  if (o.output.empty()) std::cout << text;
-  else io::write_file_atomically(o.output, text);
+  // Two tables, one after the other (a blank line between).
+  const bool csv = o.table.csv_given() && (o.table.csv_file.empty() || o.table.csv_file == "-");
+  auto both = [&](bool as_csv) {
+    return (as_csv ? io::format_csv(t) : io::format_text(t)) + "\n" + (as_csv ? io::format_csv(totals) : io::format_text(totals));
+  };
+  if (!o.table.csv_file.empty() && o.table.csv_file != "-") io::write_file_atomically(o.table.csv_file, both(true));
+  if (o.table.output.empty()) std::cout << both(csv);
+  else io::write_file_atomically(o.table.output, both(csv));
 }
 
 }  // namespace
@@ -158,7 +163,7 @@ void add_multi_asperity_command(CLI::App& app) {
       "largest deformation, then the total contact area (10 um long cylinders), the von Mises stress at the\n"
       "surface midway between neighbours and the inflection point of the von Mises profile below the middle\n"
       "asperity.");
-  cmd->add_option("--case", o->case_file, "Case file for the material and R_m (default: gears/m6z30.toml)");
+  add_case_option(cmd, o->case_options);
   cmd->add_option("--layout", o->layout, "H (high) and L (low) letters, e.g. LLH, LHL, LHH, HLH, or H alone (default HLH)");
   cmd->add_option("--height-step", o->height_step, "Height difference h_m of the low asperities, in delta_pc (default 0)")
       ->check(CLI::Range(0.0, 9.0));
@@ -185,7 +190,7 @@ void add_multi_asperity_command(CLI::App& app) {
   auto* sweep = cmd->add_option("--sweep-spacing", o->sweep, "MIN:MAX:COUNT spacings (e.g. 0.25um:2um:8): one row per spacing");
   topo->excludes(sweep);
   for (const char* geometry : {"--layout", "--height-step", "--spacing"}) topo->excludes(geometry);
-  add_table_options(cmd, o->csv, o->output);
+  add_table_options(cmd, o->table);
   cmd->callback([o] { run(*o); });
 }
 

@@ -1,5 +1,6 @@
 // `geartrib run`: the main job. Rough-surface contact at every position of one tooth pair's
 // path A -> E, written to HDF5 (and CSV), with a summary of each quantity's extremes.
+#include "app/case_loading.hpp"
 #include "app/commands.hpp"
 #include "app/progress_bar.hpp"
 
@@ -19,12 +20,12 @@ namespace geartrib::app {
 namespace {
 
 struct Options {
-  std::string case_file;
+  CaseOptions case_options;
   std::string output;
   std::string csv;
+  const CLI::Option* csv_option = nullptr;
   std::optional<int> positions;
   std::string fidelity;
-  std::vector<std::string> changes;
   bool quiet = false;
 };
 
@@ -62,18 +63,21 @@ void print_summary(const contact::MeshContactResult& r) {
 }
 
 void run(const Options& o) {
-  Case c = load_case_reporting(o.case_file, o.changes);
-  if (!o.fidelity.empty()) c.contact.coupled = o.fidelity == "coupled";
+  // --positions and --fidelity are shorthands for --set: what ran is what the case records.
+  CaseOptions co = o.case_options;
+  if (o.positions) co.changes.push_back(fmt::format("contact.positions={}", *o.positions));
+  if (!o.fidelity.empty()) co.changes.push_back("contact.fidelity=" + o.fidelity);
+  const Case c = load_case_reporting(co);
   ProgressBar bar(!o.quiet, "positions");
-  const contact::MeshContactResult r =
-      run_mesh_cycle(c, [&](int done, int total) { bar(done, total); }, o.positions.value_or(0));
+  const contact::MeshContactResult r = run_mesh_cycle(c, [&](int done, int total) { bar(done, total); });
 
-  const std::string case_file = o.case_file.empty() ? default_case_file().string() : o.case_file;
+  const std::string case_file = co.file.empty() ? default_case_file().string() : co.file;
   const std::filesystem::path out = o.output.empty()
                                         ? std::filesystem::path(std::filesystem::path(case_file).stem().string() + ".h5")
                                         : std::filesystem::path(o.output);
-  io::write_mesh_contact_hdf5(out, r, case_file, c.source_text);
-  if (!o.csv.empty()) {
+  io::write_mesh_contact_hdf5(out, r, case_file, c);
+  const bool csv_to_stdout = o.csv_option->count() > 0 && (o.csv.empty() || o.csv == "-");
+  if (o.csv_option->count() > 0) {
     io::Table t;
     for (const auto* group : {&r.mesh, &r.contact, &r.validity})
       for (const auto& q : *group) t.header.push_back(q.name);
@@ -83,7 +87,8 @@ void run(const Options& o) {
         for (const auto& q : *group) row.push_back(q.values[i]);
       t.rows.push_back(std::move(row));
     }
-    io::output_table(t, true, o.csv);
+    io::output_table(t, true, csv_to_stdout ? "" : o.csv);
+    if (csv_to_stdout) return;  // standard output holds the table only
   }
   for (const auto& w : r.warnings) std::cerr << "warning: " << w << '\n';
   if (!r.verdict.empty()) fmt::print("Validity: {}\n", r.verdict);
@@ -92,12 +97,12 @@ void run(const Options& o) {
       if (g->flank.measured)
         fmt::print("{} flank measured ({}): Ra {:.4g} um, Rq {:.4g} um, {} summits, density {:.4g} /um^2, radius {:.4g} um, "
                    "sigma {:.4g} um\n",
-                   name, g->flank.topography_file, g->flank.measured->ra * 1e6, g->flank.measured->rq * 1e6,
-                   g->flank.measured->summits, g->flank.roughness.summit_density * 1e-12, g->flank.summit_radius * 1e6,
+                   name, g->flank.topography->file, g->flank.measured->ra * 1e6, g->flank.measured->rq * 1e6,
+                   g->flank.measured->summits, g->flank.roughness.summit_density * 1e-12, g->flank.roughness.summit_radius * 1e6,
                    g->flank.roughness.summit_sigma * 1e6);
     print_summary(r);
   }
-  fmt::print("wrote {}{}\n", out.string(), o.csv.empty() ? "" : " and " + o.csv);
+  fmt::print("wrote {}{}\n", out.string(), o.csv.empty() || o.csv == "-" ? "" : " and " + o.csv);
 }
 
 }  // namespace
@@ -111,19 +116,18 @@ void add_run_command(CLI::App& app) {
       "contact across the strip: real-area ratio, real area per face width, mean real pressure, contacts,\n"
       "plastic share of the real area and of the contacts, and the highest asperity's peak pressure and\n"
       "von Mises stress. Computes only the outputs the case asks for ([contact] outputs). Writes HDF5\n"
-      "(/mesh, /contact with units, /scene, /meta with the stages and their times) and prints each\n"
-      "quantity's extremes and where on the path they occur.");
-  cmd->add_option("case", o->case_file, "Case file (default: gears/m6z30.toml)");
-  cmd->add_option("-o,--output", o->output, "HDF5 file (default: <case name>.h5 in the working directory)");
-  cmd->add_option("--csv", o->csv, "Also write the per-position table as CSV to this file");
-  cmd->add_option("--positions", o->positions, "Positions along A -> E (default: the case's contact.positions, 201)")
+      "(/mesh, /contact with units, /scene and /parameters: the case as it ran, /meta with the stages and\n"
+      "their times) and prints each quantity's extremes and where on the path they occur.");
+  add_case_argument(cmd, o->case_options);
+  add_output_option(cmd, o->output, "the HDF5 results (default: <case name>.h5 in the working directory)");
+  o->csv_option = add_csv_option(cmd, o->csv,
+                                 "the per-position table as CSV besides the HDF5: to FILE, or without one to\n"
+                                 "standard output in place of the summary");
+  cmd->add_option("--positions", o->positions, "N: shorthand for --set contact.positions=N (default 201)")
       ->check(CLI::Range(2, 100000));
-  cmd->add_option("--fidelity", o->fidelity, "uncoupled or coupled (default: the case's contact.fidelity)")
+  cmd->add_option("--fidelity", o->fidelity, "uncoupled or coupled: shorthand for --set contact.fidelity=...")
       ->check(CLI::IsMember({"uncoupled", "coupled"}));
-  cmd->add_option("--set", o->changes,
-                  "Change a case key for this run: key=value, repeatable (a dotted key such as gear_pair.module=5mm,\n"
-                  "or an alias: module, face_width, rq, torque, ...; see `geartrib sweep --help`)");
-  cmd->add_flag("-q,--quiet", o->quiet, "No progress bar and no summary");
+  add_quiet_flag(cmd, o->quiet);
   cmd->callback([o] { run(*o); });
 }
 

@@ -1,6 +1,8 @@
 // `geartrib surface`: measured topography (seed section 4) - synthetic surfaces, statistics,
 // the equivalent surface of two flanks, and the reduction to summits or parabolic cylinders.
+#include "app/cli_options.hpp"
 #include "app/commands.hpp"
+#include "app/surface_input.hpp"
 
 #include "io/table_writer.hpp"
 #include "io/topography_files.hpp"
@@ -102,20 +104,19 @@ void generate(const GenerateOptions& o) {
     s.seed = o.seed;
     g = surface::hobbed_surface(s);
   }
-  io::write_topography(o.output, g, quantity_option("--unit", "1 " + o.unit, io::Dimension::length));
+  io::write_topography(o.output, g, quantity_option("--out-unit", "1 " + o.unit, io::Dimension::length));
 }
 
 struct StatsOptions {
   SurfaceInputOptions input;
   std::string file;
-  bool csv = false;
-  std::string output;
+  TableOptions table;
 };
 
 struct EquivalentOptions {
   SurfaceInputOptions input;
   std::string upper, lower, output, unit = "um", mirror = "x";
-  bool csv = false;
+  TableOptions table;  // the statistics (standard output or --csv FILE); -o is the surface
 };
 
 void equivalent(const EquivalentOptions& o) {
@@ -127,8 +128,8 @@ void equivalent(const EquivalentOptions& o) {
   } catch (const std::invalid_argument& ex) {
     throw std::invalid_argument(fmt::format("{} and {}: {}", o.upper, o.lower, ex.what()));
   }
-  io::write_topography(o.output, e, quantity_option("--unit", "1 " + o.unit, io::Dimension::length));
-  io::output_table(statistics_table(surface::surface_statistics(e), nullptr), o.csv, "");
+  io::write_topography(o.output, e, quantity_option("--out-unit", "1 " + o.unit, io::Dimension::length));
+  emit_table(statistics_table(surface::surface_statistics(e), nullptr), o.table);
 }
 
 struct AsperityOptions {
@@ -136,8 +137,7 @@ struct AsperityOptions {
   std::string file;
   bool cylinders = false;
   double prominence = 0.5, cap = 0.3;
-  bool csv = false;
-  std::string output;
+  TableOptions table;
 };
 
 void asperities(const AsperityOptions& o) {
@@ -168,7 +168,7 @@ void asperities(const AsperityOptions& o) {
                r.mean_tip_radius * 1e6, r.sd_tip_radius * 1e6, r.mean_spacing * 1e6, r.sd_spacing * 1e6, r.mean_height * 1e6,
                r.sd_height * 1e6);
   }
-  io::output_table(t, o.csv, o.output);
+  emit_table(t, o.table);
 }
 
 }  // namespace
@@ -210,7 +210,8 @@ void add_surface_command(CLI::App& app) {
   auto* gen = cmd->add_subcommand("generate", "Write a seeded synthetic surface: the test data (no measured flank ships with geartrib)");
   gen->add_option("kind", g->kind, "self-affine (random-phase, Hurst exponent, roll-off) or hobbed (parallel parabolic ridges)")
       ->check(CLI::IsMember({"self-affine", "hobbed"}));
-  gen->add_option("-o,--output", g->output, "Surface file to write (format by extension)")->required();
+  add_output_option(gen, g->output, "the surface to write (format by extension; required)");
+  gen->get_option("--output")->required();
   gen->add_option("--nx", g->nx, "Points along x (self-affine 256, hobbed 512)")->check(CLI::Range(3, 1 << 14));
   gen->add_option("--ny", g->ny, "Points along y (self-affine 256, hobbed 64)")->check(CLI::Range(3, 1 << 14));
   gen->add_option("--spacing", g->spacing, "Grid spacing (self-affine 0.5 um, hobbed 0.1 um)");
@@ -224,23 +225,24 @@ void add_surface_command(CLI::App& app) {
   gen->add_option("--tip-radius", g->tip_radius, "hobbed: ridge tip radius (default 6.6 um)");
   gen->add_option("--noise", g->noise, "hobbed: Rq of added Gaussian noise (default 0)");
   gen->add_option("--seed", g->seed, "Random seed (default 1)");
-  gen->add_option("--unit", g->unit, "Length unit of ASCII output (m, mm, um, nm; default um)");
+  gen->add_option("--out-unit", g->unit, "Length unit of ASCII output (m, mm, um, nm; default um)");
   gen->callback([g] { generate(*g); });
 
   auto s = std::make_shared<StatsOptions>();
   auto* st = cmd->add_subcommand("stats", "Clean a surface and print its statistics");
   st->add_option("file", s->file, "Surface file")->required();
   add_surface_input_options(st, s->input);
-  add_table_options(st, s->csv, s->output);
+  add_table_options(st, s->table);
   st->callback([s] {
     const io::LoadedSurface in = load_surface_reporting(s->file, s->input);
-    io::output_table(statistics_table(surface::surface_statistics(in.grid), &in.cleanup), s->csv, s->output);
+    emit_table(statistics_table(surface::surface_statistics(in.grid), &in.cleanup), s->table);
   });
 
   auto cl = std::make_shared<EquivalentOptions>();  // upper: the input; unit: of the output
   auto* clean = cmd->add_subcommand("clean", "Clean a surface and write it (any format: also a format converter)");
   clean->add_option("file", cl->upper, "Surface file")->required();
-  clean->add_option("-o,--output", cl->output, "Cleaned surface file to write (format by extension)")->required();
+  add_output_option(clean, cl->output, "the cleaned surface to write (format by extension; required)");
+  clean->get_option("--output")->required();
   clean->add_option("--out-unit", cl->unit, "Length unit of ASCII output (default um)");
   add_surface_input_options(clean, cl->input);
   clean->callback([cl] {
@@ -255,11 +257,14 @@ void add_surface_command(CLI::App& app) {
                                  "each is cleaned, the sum written to -o and its statistics printed");
   eq->add_option("upper", e->upper, "Upper flank surface file")->required();
   eq->add_option("lower", e->lower, "Lower flank surface file")->required();
-  eq->add_option("-o,--output", e->output, "Equivalent surface file to write (format by extension)")->required();
+  add_output_option(eq, e->output, "the equivalent surface to write (format by extension; required)");
+  eq->get_option("--output")->required();
   eq->add_option("--out-unit", e->unit, "Length unit of ASCII output (default um)");
   eq->add_option("--mirror", e->mirror, "Axis the upper flank is mirrored about: x (default), y, or none (already in the lower's frame)")
       ->check(CLI::IsMember({"x", "y", "none"}));
-  eq->add_flag("--csv", e->csv, "Statistics as CSV");
+  e->table.csv = add_csv_option(eq, e->table.csv_file,
+                                "the statistics as CSV: to FILE, or without one to standard output in place\n"
+                                "of the aligned table");
   add_surface_input_options(eq, e->input);
   eq->callback([e] { equivalent(*e); });
 
@@ -275,7 +280,7 @@ void add_surface_command(CLI::App& app) {
   as->add_option("--cap", a->cap, "Cylinders: fit each parabola over the top fraction of its prominence (default 0.3)")
       ->check(CLI::Range(0.05, 1.0));
   add_surface_input_options(as, a->input);
-  add_table_options(as, a->csv, a->output);
+  add_table_options(as, a->table);
   as->callback([a] { asperities(*a); });
 }
 

@@ -3,7 +3,9 @@
 // minimum, mean and maximum along A -> E. Points that fail (impossible geometry, a solver that
 // does not converge) are reported in their row and the sweep goes on. `--shard i/n` runs a share
 // of the points; `--merge` joins the shards' files into the file the whole sweep would write.
+#include "app/case_loading.hpp"
 #include "app/commands.hpp"
+#include "contact/mesh_contact.hpp"
 #include "app/progress_bar.hpp"
 
 #include "io/column_table.hpp"
@@ -33,6 +35,7 @@ struct Options {
   int threads = 0;
   std::string output;
   std::string csv;
+  const CLI::Option* csv_option = nullptr;
   std::vector<std::string> merge;
   bool quiet = false;
 };
@@ -162,7 +165,8 @@ std::string signature(const std::string& scene, const std::string& plan) {
 
 void write_outputs(const io::ColumnTableFile& f, const Options& o) {
   io::write_column_table_hdf5(o.output.empty() ? "sweep.h5" : o.output, f);
-  if (!o.csv.empty()) io::write_file_atomically(o.csv, io::format_csv(f.table));
+  if (!o.csv.empty() && o.csv != "-") io::write_file_atomically(o.csv, io::format_csv(f.table));
+  else if (o.csv_option && o.csv_option->count() > 0) std::cout << io::format_csv(f.table);
 }
 
 void print_summary(const io::ColumnTable& t, const std::string& output) {
@@ -241,7 +245,7 @@ void run(const Options& o) {
   const io::Shard shard = o.shard.empty() ? io::Shard{} : io::parse_shard(o.shard);
   const std::filesystem::path case_file = o.case_file.empty() ? default_case_file() : std::filesystem::path(o.case_file);
   // The base case must load: an error there is the user's, not a point's.
-  const Case base = load_case_reporting(case_file.string());
+  const Case base = load_case_reporting(CaseOptions{case_file.string(), {}});
 
   std::vector<std::size_t> mine;
   for (std::size_t i = 0; i < plan.size(); ++i)
@@ -305,15 +309,19 @@ void add_sweep_command(CLI::App& app) {
           "Larger than one machine: run `--shard i/n` (0 <= i < n; points with index % n == i) as n jobs of a\n"
           "scheduler array or MPI launcher, each with its own -o, then `geartrib sweep --merge shard*.h5 -o all.h5`.");
   cmd->add_option("case", o->case_file, "Case file (default: gears/m6z30.toml)");
-  cmd->add_option("--set", o->sets, "An axis: key=v1,v2,... or key=lo:hi:n (repeatable)");
+  cmd->add_option("--set", o->sets,
+                  "KEY=VALUE as everywhere, where VALUE may be an axis: v1,v2,... or lo:hi:n (repeatable; values are\n"
+                  "checked against the case's parameter table before any point runs)");
   cmd->add_flag("--zip", o->zip, "Points are the i-th values of all axes (equal lengths) instead of the factorial");
   cmd->add_option("--shard", o->shard, "Run only points with index % n == i: i/n with 0 <= i < n");
-  cmd->add_option("--threads", o->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
-  cmd->add_option("-o,--output", o->output, "HDF5 file (default: sweep.h5)");
-  cmd->add_option("--csv", o->csv, "Also write the table as CSV to this file");
+  add_threads_option(cmd, o->threads);
+  add_output_option(cmd, o->output, "the HDF5 table of points (default: sweep.h5)");
+  o->csv_option = add_csv_option(cmd, o->csv,
+                                 "the table of points as CSV besides the HDF5: to FILE, or without one to\n"
+                                 "standard output");
   cmd->add_option("--merge", o->merge, "Join shard files (all shards of one sweep) into -o instead of running")
       ->check(CLI::ExistingFile);
-  cmd->add_flag("-q,--quiet", o->quiet, "No progress bar and no summary");
+  add_quiet_flag(cmd, o->quiet);
   cmd->callback([o] { run(*o); });
 }
 

@@ -4,7 +4,9 @@
 // real-area ratio, the plastic area fraction and the highest asperity's von Mises stress along
 // A -> E. Then the case as given and the recommended combination (each knob's cheapest setting
 // within the tolerance of its reference) are compared with all knobs at their highest settings.
+#include "app/case_loading.hpp"
 #include "app/commands.hpp"
+#include "contact/mesh_contact.hpp"
 
 #include "fem/ccx_results.hpp"
 #include "io/case_file.hpp"
@@ -24,9 +26,8 @@ namespace geartrib::app {
 namespace {
 
 struct Options {
-  std::string case_file;
-  bool csv = false;
-  std::string output;
+  CaseOptions case_options;
+  TableOptions table;
   double tolerance = 0.01;
   double min_time = 0.3;
   std::vector<std::string> knobs;
@@ -47,36 +48,42 @@ struct Knob {
   bool physics = false;
 };
 
+// The knobs and their settings come from the parameter table: each resolution's ladder, the
+// choices of fidelity, dynamics and asperity model.
 std::vector<Knob> knobs_of(const Case& c) {
-  auto ladder = [](const std::string& name, const std::string& key, std::vector<int> values) {
+  auto row = [](const std::string& key) -> const io::Parameter& { return *io::find_parameter(key).parameter; };
+  auto ladder = [&](const std::string& name, const std::string& key) {
     Knob k{name, {}, false};
-    for (int v : values) k.settings.push_back({std::to_string(v), {{key, std::to_string(v)}}});
+    for (const auto& v : row(key).ladder) k.settings.push_back({v, {{key, v}}});
     return k;
   };
   std::vector<Knob> out;
-  out.push_back(ladder("positions", "contact.positions", {11, 21, 41, 81, 101, 201, 401, 801}));
-  out.push_back(ladder("height_points", "contact.height_points", {8, 16, 32, 64, 128, 256, 512, 1024}));
-  out.push_back(ladder("table_points", "contact.table_points", {4, 8, 16, 32, 64, 128, 256}));
-  out.push_back(ladder("strip_points", "contact.strip_points", {8, 16, 32, 64, 128, 256, 512}));
+  out.push_back(ladder("positions", "contact.positions"));
+  out.push_back(ladder("height_points", "contact.height_points"));
+  out.push_back(ladder("table_points", "contact.table_points"));
+  out.push_back(ladder("strip_points", "contact.strip_points"));
   Knob fidelity{"fidelity", {{"uncoupled", {{"contact.fidelity", "uncoupled"}}}}, false};
-  for (int n : {32, 64, 128, 256})
-    fidelity.settings.push_back({fmt::format("coupled {}", n), {{"contact.fidelity", "coupled"}, {"contact.coupled_nodes", std::to_string(n)}}});
+  for (const auto& n : row("contact.coupled_nodes").ladder)
+    fidelity.settings.push_back({"coupled " + n, {{"contact.fidelity", "coupled"}, {"contact.coupled_nodes", n}}});
   out.push_back(fidelity);
+  // The reference of the dynamic cycle: CVODE (BDF) at the finest tolerance of the ladder.
+  const std::vector<std::string>& rtols = row("dynamics.relative_tolerance").ladder;
+  const std::vector<io::CaseChange> finest = {{"mesh.dynamics", "cvode"}, {"dynamics.relative_tolerance", rtols.back()}};
   // Static load sharing against the steady dynamic cycle: a physics choice, reported.
-  out.push_back({"dynamics",
-                 {{"none (static)", {{"mesh.dynamics", "none"}}},
-                  {"cvode 1e-12", {{"mesh.dynamics", "cvode"}, {"dynamics.relative_tolerance", "1e-12"}}}},
-                 true});
-  // The integrator and its tolerance for the dynamic cycle (recommended when the case asks for dynamics).
+  out.push_back({"dynamics", {{"none (static)", {{"mesh.dynamics", "none"}}}, {"cvode " + rtols.back(), finest}}, true});
+  // The integrators and their tolerances (recommended when the case asks for dynamics).
   Knob integrator{"integrator", {}, c.dynamics.engine == "none"};
-  for (const char* engine : {"odeint", "cvode"})
-    for (const char* rtol : {"1e-4", "1e-6", "1e-8", "1e-10"})
-      integrator.settings.push_back({fmt::format("{} {}", engine, rtol), {{"mesh.dynamics", engine}, {"dynamics.relative_tolerance", rtol}}});
-  integrator.settings.push_back({"cvode 1e-12", {{"mesh.dynamics", "cvode"}, {"dynamics.relative_tolerance", "1e-12"}}});
+  std::vector<std::string> engines = row("mesh.dynamics").choices;
+  std::erase(engines, "none");
+  std::stable_partition(engines.begin(), engines.end(), [](const std::string& e) { return e != "cvode"; });
+  for (const auto& engine : engines)
+    for (std::size_t i = 0; i + 1 < rtols.size(); ++i)
+      integrator.settings.push_back({engine + " " + rtols[i], {{"mesh.dynamics", engine}, {"dynamics.relative_tolerance", rtols[i]}}});
+  integrator.settings.push_back({"cvode " + rtols.back(), finest});
   out.push_back(integrator);
   // The asperity models, the case's own last (the reference).
   Knob model{"asperity_model", {}, true};
-  for (const char* m : {"hertz", "ceb", "zmc", "kogut-etsion", "jackson-green", "continuous"})
+  for (const auto& m : row("asperity.model").choices)
     if (m != c.asperity.model) model.settings.push_back({m, {{"asperity.model", m}}});
   model.settings.push_back({c.asperity.model, {{"asperity.model", c.asperity.model}}});
   out.push_back(model);
@@ -96,7 +103,11 @@ struct Timed {
   Curves curves;
 };
 
-Timed run_timed(const std::filesystem::path& case_file, const std::vector<io::CaseChange>& changes, double min_time) {
+// One setting on top of the command line's --set changes.
+Timed run_timed(const std::filesystem::path& case_file, const std::vector<io::CaseChange>& base,
+                const std::vector<io::CaseChange>& setting, double min_time) {
+  std::vector<io::CaseChange> changes = base;
+  changes.insert(changes.end(), setting.begin(), setting.end());
   const Case c = io::load_case(case_file, changes);
   Timed t;
   t.seconds = 1e300;
@@ -151,8 +162,10 @@ Row compare(const std::string& knob, const std::string& setting, const Timed& t,
 }
 
 void run(const Options& o) {
-  const std::filesystem::path case_file = o.case_file.empty() ? default_case_file() : std::filesystem::path(o.case_file);
-  const Case base = load_case_reporting(case_file.string());
+  const std::filesystem::path case_file = o.case_options.file.empty() ? default_case_file() : std::filesystem::path(o.case_options.file);
+  const Case base = load_case_reporting(o.case_options);
+  std::vector<io::CaseChange> given;
+  for (const auto& text : o.case_options.changes) given.push_back(io::parse_case_change(text));
   std::vector<Knob> knobs = knobs_of(base);
   if (!o.knobs.empty()) {
     std::erase_if(knobs, [&](const Knob& k) { return std::find(o.knobs.begin(), o.knobs.end(), k.name) == o.knobs.end(); });
@@ -162,10 +175,10 @@ void run(const Options& o) {
   std::vector<io::CaseChange> recommended, highest;
   for (const Knob& k : knobs) {
     if (!o.quiet) std::cerr << "tradeoff: " << k.name << " (" << k.settings.size() << " settings)\n";
-    const Timed ref = run_timed(case_file, k.settings.back().changes, o.min_time);
+    const Timed ref = run_timed(case_file, given, k.settings.back().changes, o.min_time);
     std::vector<Row> mine;
     for (std::size_t i = 0; i + 1 < k.settings.size(); ++i)
-      mine.push_back(compare(k.name, k.settings[i].label, run_timed(case_file, k.settings[i].changes, o.min_time), ref));
+      mine.push_back(compare(k.name, k.settings[i].label, run_timed(case_file, given, k.settings[i].changes, o.min_time), ref));
     mine.push_back(compare(k.name, k.settings.back().label, ref, ref));
     mine.back().reference = true;
     // The cheapest setting within the tolerance of the reference; times within 5% of the fastest
@@ -184,9 +197,9 @@ void run(const Options& o) {
   }
   // Later knobs' changes win where keys repeat (the coupled fidelity makes strip_points moot).
   if (!o.quiet) std::cerr << "tradeoff: the case as given and the recommended combination against all knobs highest\n";
-  const Timed all_highest = run_timed(case_file, highest, o.min_time);
-  rows.push_back(compare("combined", "case as given", run_timed(case_file, {}, o.min_time), all_highest));
-  rows.push_back(compare("combined", "recommended", run_timed(case_file, recommended, o.min_time), all_highest));
+  const Timed all_highest = run_timed(case_file, given, highest, o.min_time);
+  rows.push_back(compare("combined", "case as given", run_timed(case_file, given, {}, o.min_time), all_highest));
+  rows.push_back(compare("combined", "recommended", run_timed(case_file, given, recommended, o.min_time), all_highest));
   rows.push_back(compare("combined", "all highest", all_highest, all_highest));
   rows.back().reference = true;
 
@@ -203,11 +216,14 @@ void run(const Options& o) {
     t.columns[6].texts.push_back(r.reference ? (r.recommended ? "reference, recommended" : "reference")
                                              : (r.recommended ? "recommended" : ""));
   }
-  const bool png = o.output.size() > 4 && o.output.substr(o.output.size() - 4) == ".png";
-  if (o.csv && !png) {
+  const std::string& output = o.table.output;
+  const bool png = output.size() > 4 && output.substr(output.size() - 4) == ".png";
+  const bool csv_file = !o.table.csv_file.empty() && o.table.csv_file != "-";
+  if (csv_file) io::write_file_atomically(o.table.csv_file, io::format_csv(t));
+  if (o.table.csv_given() && !csv_file && !png) {
     const std::string text = io::format_csv(t);
-    if (o.output.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
-    else io::write_file_atomically(o.output, text);
+    if (output.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
+    else io::write_file_atomically(output, text);
   } else {
     std::string text = fmt::format("{:<15} {:<16} {:>10} {:>16} {:>22} {:>17}  {}\n", "knob", "setting", "time_s",
                                    "error_real_area", "error_plastic_fraction", "error_peak_stress", "note");
@@ -219,22 +235,22 @@ void run(const Options& o) {
     for (const Row& r : rows)
       if (r.recommended && r.knob != "combined") advice += fmt::format(" {} = {};", r.knob, r.setting);
     text += advice + "\n";
-    if (png || o.output.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
-    else io::write_file_atomically(o.output, text);
+    if (png || output.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
+    else io::write_file_atomically(output, text);
   }
   if (png) {
     // The Pareto plot by scripts/plot_tradeoff.py from the CSV table (matplotlib).
-    const std::filesystem::path csv = o.output.substr(0, o.output.size() - 4) + ".csv";
-    io::write_file_atomically(csv, io::format_csv(t));
+    const std::filesystem::path csv = csv_file ? std::filesystem::path(o.table.csv_file) : std::filesystem::path(output.substr(0, output.size() - 4) + ".csv");
+    if (!csv_file) io::write_file_atomically(csv, io::format_csv(t));
     const std::filesystem::path script = std::filesystem::path(GEARTRIB_SOURCE_DIR) / "scripts/plot_tradeoff.py";
     // Debian's interpreter, where python3-matplotlib installs (a PATH python3 may lack it).
     const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
     const std::string command = python + " " + fem::shell_quoted(script.string()) + " " + fem::shell_quoted(csv.string()) + " " +
-                                fem::shell_quoted(o.output) + fmt::format(" {:g}", o.tolerance);
+                                fem::shell_quoted(output) + fmt::format(" {:g}", o.tolerance);
     if (std::system(command.c_str()) != 0)
       throw std::runtime_error("plotting failed (" + command + "); the table is in " + csv.string() +
                                " (needs python3 with matplotlib: apt-get install python3-matplotlib)");
-    fmt::print("wrote {} and {}\n", csv.string(), o.output);
+    fmt::print("wrote {} and {}\n", csv.string(), output);
   }
 }
 
@@ -256,18 +272,19 @@ void add_tradeoff_command(CLI::App& app) {
       "value. Time: the fastest of up to 5 runs (at least --min-time in all).\n"
       "Then the case as given and the recommended combination against all knobs at their highest.\n"
       "The boundary-element grid is not part of the mesh cycle: its trade is in `geartrib_bench\n"
-      "--benchmark_filter=multi_asperity` (README).");
-  cmd->add_option("case", o->case_file, "Case file (default: gears/m6z30.toml)");
-  cmd->add_flag("--csv", o->csv, "CSV instead of aligned columns");
-  cmd->add_option("-o,--output", o->output,
-                  "Write the table here; a .png name draws the Pareto plot (time against error) with\n"
-                  "scripts/plot_tradeoff.py and writes the table beside it as .csv");
+      "--benchmark_filter=multi_asperity` (docs/reference/timings.md).");
+  add_case_argument(cmd, o->case_options);
+  add_output_option(cmd, o->table.output,
+                    "the table (default: standard output); a .png name draws the Pareto plot (time against\n"
+                    "error) with scripts/plot_tradeoff.py and writes the table beside it as .csv (or to --csv FILE)");
+  o->table.csv = add_csv_option(cmd, o->table.csv_file,
+                                "the table as CSV: to FILE, or without one in place of the aligned table");
   cmd->add_option("--tolerance", o->tolerance, "Relative error a recommended setting may have (default 0.01)")
       ->check(CLI::Range(1e-9, 1.0));
   cmd->add_option("--min-time", o->min_time, "Repeat each run until this much time [s] is spent (default 0.3)")
       ->check(CLI::Range(0.0, 1e4));
   cmd->add_option("--knob", o->knobs, "Only these knobs (repeatable)");
-  cmd->add_flag("-q,--quiet", o->quiet, "No progress lines");
+  add_quiet_flag(cmd, o->quiet);
   cmd->callback([o] { run(*o); });
 }
 

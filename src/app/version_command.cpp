@@ -1,6 +1,8 @@
 // `geartrib version`: the tool's version and the versions of the libraries it was built with.
 #include "app/commands.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <Eigen/Core>
 #include <boost/version.hpp>
 #include <ceres/version.h>

@@ -5,8 +5,8 @@
 namespace geartrib::asperity {
 
 ContactPair contact_pair(const Case& c) {
-  return make_contact_pair(c.pinion.material, c.wheel.material, c.pinion.flank.summit_radius,
-                           c.wheel.flank.summit_radius);
+  return make_contact_pair(c.pinion.material, c.wheel.material, c.pinion.flank.roughness.summit_radius,
+                           c.wheel.flank.roughness.summit_radius);
 }
 
 std::unique_ptr<AsperityModel> make_case_model(const Case& c, std::string_view name) {

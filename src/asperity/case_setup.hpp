@@ -5,7 +5,7 @@
 #include "asperity/contact_pair.hpp"
 #include "asperity/cylinder.hpp"
 #include "asperity/model.hpp"
-#include "core/case.hpp"
+#include "case/case.hpp"
 
 #include <memory>
 #include <string_view>

@@ -1,5 +1,7 @@
 #include "asperity/contact_pair.hpp"
 
+#include "core/series_radius.hpp"
+
 #include <stdexcept>
 #include <string>
 
@@ -20,7 +22,7 @@ ContactPair make_contact_pair(const Material& body1, const Material& body2, doub
   if (!(tip_radius1 > 0.0 && tip_radius2 > 0.0)) throw std::invalid_argument("asperity tip radii must be positive");
   const Material& soft = body1.hardness <= body2.hardness ? body1 : body2;
   ContactPair p;
-  p.radius = tip_radius1 * tip_radius2 / (tip_radius1 + tip_radius2);
+  p.radius = series_radius(tip_radius1, tip_radius2);
   p.modulus = composite_modulus(body1, body2);
   p.youngs_modulus = soft.youngs_modulus;
   p.poisson_ratio = soft.poisson_ratio;

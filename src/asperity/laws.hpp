@@ -241,7 +241,7 @@ struct ZmcLaw {
 // so F* = 3 A* m/(2 k), A* = delta* g: Hertz at delta* = 1 and 2 pi R delta H when g = 2, m = 1;
 // and sigma_rp = 3 p_m/(2 + phi) (two_zone_profile). phi is the yielded share of the contact area
 // at the surface. (The seed's printed annulus amplitude p_e = 2 E_t r_a/(pi R) cannot be
-// continuous at r_p with a core that matches the surface yield: README, "departs from the seed".)
+// continuous at r_p with a core that matches the surface yield: docs/theory/departures-from-the-thesis.md.)
 // Defaults: validation/fem-reference/refit-continuous.sh writes continuous_defaults.hpp (one
 // source): phi fitted to the project's CalculiX surface-yield share, g and m to the Kogut-Etsion
 // 2002 and Jackson-Green 2005 FEM-based load and area.

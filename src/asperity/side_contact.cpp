@@ -1,5 +1,7 @@
 #include "asperity/side_contact.hpp"
 
+#include "core/series_radius.hpp"
+
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_2.hpp>
 #include <boost/math/tools/roots.hpp>
@@ -44,7 +46,7 @@ SideContactGeometry side_contact_geometry(double r1, double r2, double mu) {
   SideContactGeometry g;
   g.theta = std::atan(mu);
   const double c = std::cos(g.theta);
-  const double r = r1 * r2 / (r1 + r2);
+  const double r = series_radius(r1, r2);
   g.axis_offset = (r1 + r2) * mu;
   g.tip_gap = g.axis_offset * g.axis_offset / (2.0 * (r1 + r2));
   g.radius_x = r / (c * c * c);

@@ -1,5 +1,7 @@
 #include "contact/greenwood_williamson.hpp"
 
+#include <fmt/format.h>
+
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/quadrature/gauss.hpp>
 
@@ -24,10 +26,11 @@ double blend(double a, double b, double t) {
 }  // namespace
 
 void GreenwoodWilliamsonOptions::validate() const {
-  if (height_points < kGaussPoints || height_points > 100000)
-    throw std::invalid_argument("height_points must lie in [8, 100000]");
-  if (table_points_per_sigma < 4 || table_points_per_sigma > 10000)
-    throw std::invalid_argument("table_points_per_sigma must lie in [4, 10000]");
+  static_assert(kMinHeightPoints >= kGaussPoints, "at least one Gauss panel");
+  if (height_points < kMinHeightPoints || height_points > kMaxHeightPoints)
+    throw std::invalid_argument(fmt::format("height_points must lie in [{}, {}]", kMinHeightPoints, kMaxHeightPoints));
+  if (table_points_per_sigma < kMinTablePoints || table_points_per_sigma > kMaxTablePoints)
+    throw std::invalid_argument(fmt::format("table_points_per_sigma must lie in [{}, {}]", kMinTablePoints, kMaxTablePoints));
 }
 
 GreenwoodWilliamson::GreenwoodWilliamson(const surface::EquivalentSurface& surface, const asperity::AsperityModel& model,

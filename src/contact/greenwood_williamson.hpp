@@ -22,6 +22,9 @@ struct SurfaceContact {
 };
 
 struct GreenwoodWilliamsonOptions {
+  // The resolutions' ranges (the case file's contact.height_points and contact.table_points).
+  static constexpr int kMinHeightPoints = 8, kMaxHeightPoints = 100000;  // 8: one Gauss panel
+  static constexpr int kMinTablePoints = 4, kMaxTablePoints = 10000;
   int height_points = 128;    // quadrature points over the summit heights in contact (panel ends also at the model's breakpoints)
   int table_points_per_sigma = 32;  // separation table resolution
   bool plastic = true;        // tabulate the plastic area

@@ -253,7 +253,7 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   if (cs.asperity_stress) {
     const bool side = c.friction_coefficient > 0.0;
     asperity::SideContactGeometry geometry;
-    if (side) geometry = asperity::side_contact_geometry(c.pinion.flank.summit_radius, c.wheel.flank.summit_radius,
+    if (side) geometry = asperity::side_contact_geometry(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius,
                                                          c.friction_coefficient);
     auto& ai = add(r.contact, "max_asperity_interference_m", "m");
     auto& ap = add(r.contact, "max_asperity_pressure_Pa", "Pa");

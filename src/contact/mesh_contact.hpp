@@ -2,7 +2,7 @@
 // evaluating only what the case asks for, with the time each stage took.
 #pragma once
 
-#include "core/case.hpp"
+#include "case/case.hpp"
 #include "core/nonlinear_solver.hpp"
 #include "core/ode_integrator.hpp"
 #include "gear/gear_mesh.hpp"

@@ -44,8 +44,10 @@ double log_antiderivative(double t) { return t == 0.0 ? 0.0 : t * std::log(std::
 }  // namespace
 
 void StripOptions::validate() const {
-  if (strip_points < 4 || strip_points > 100000) throw std::invalid_argument("strip_points must lie in [4, 100000]");
-  if (coupled_nodes < 16 || coupled_nodes > 4000) throw std::invalid_argument("coupled_nodes must lie in [16, 4000]");
+  if (strip_points < kMinStripPoints || strip_points > kMaxStripPoints)
+    throw std::invalid_argument(fmt::format("strip_points must lie in [{}, {}]", kMinStripPoints, kMaxStripPoints));
+  if (coupled_nodes < kMinCoupledNodes || coupled_nodes > kMaxCoupledNodes)
+    throw std::invalid_argument(fmt::format("coupled_nodes must lie in [{}, {}]", kMinCoupledNodes, kMaxCoupledNodes));
 }
 
 RoughLineContact::RoughLineContact(const GreenwoodWilliamson& gw, double composite_modulus, double face_width,

@@ -17,6 +17,9 @@ namespace geartrib::contact {
 enum class StripFidelity { uncoupled, coupled };
 
 struct StripOptions {
+  // The resolutions' ranges (the case file's contact.strip_points and contact.coupled_nodes).
+  static constexpr int kMinStripPoints = 8, kMaxStripPoints = 100000;  // 8: one Gauss panel
+  static constexpr int kMinCoupledNodes = 16, kMaxCoupledNodes = 4000; // 4000: the dense Jacobian's memory
   StripFidelity fidelity = StripFidelity::uncoupled;
   int strip_points = 64;     // uncoupled: Gauss points across the Hertz strip
   int coupled_nodes = 128;   // coupled: pressure elements across the contact

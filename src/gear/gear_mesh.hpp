@@ -2,7 +2,7 @@
 // loaded-mesh analysis at the case's operating point.
 #pragma once
 
-#include "core/case.hpp"
+#include "case/case.hpp"
 #include "gear/load_sharing.hpp"
 #include "gear/mesh_analysis.hpp"
 #include "gear/spur_pair.hpp"

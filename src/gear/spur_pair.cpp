@@ -16,35 +16,15 @@ constexpr double kPi = std::numbers::pi;
 const char* kGearName[2] = {"pinion", "wheel"};
 }  // namespace
 
-SpurPairSpec spur_pair_spec(const Case& c) {
-  SpurPairSpec s;
-  const auto& g = c.gear_pair;
-  s.module = g.module;
-  s.pressure_angle = g.pressure_angle;
-  s.face_width = g.face_width;
-  s.addendum_coefficient = g.addendum_coefficient;
-  s.dedendum_coefficient = g.dedendum_coefficient;
-  s.root_radius_coefficient = g.root_radius_coefficient;
-  s.tip_shortening = g.tip_shortening;
-  s.center_distance = g.center_distance;
-  const GearSpec* gears[2] = {&c.pinion, &c.wheel};
-  for (int i = 0; i < 2; ++i) {
-    s.teeth[i] = gears[i]->teeth;
-    s.profile_shift[i] = gears[i]->profile_shift;
-    s.tip_diameter[i] = gears[i]->tip_diameter;
-    s.bore_diameter[i] = gears[i]->bore_diameter;
-  }
-  return s;
-}
-
-SpurPair::SpurPair(const SpurPairSpec& spec) : spec_(spec) {
+SpurPair::SpurPair(const GearPairSpec& spec) : spec_(spec) {
   const double m = spec.module, alpha = spec.pressure_angle;
   if (!(m > 0.0)) throw GeometryError("gear_pair.module", "module must be positive");
   if (!(alpha > 0.0 && alpha < kPi / 4.0)) throw GeometryError("gear_pair.pressure_angle", "pressure angle must lie in (0, 45) deg");
   if (!(spec.face_width > 0.0)) throw GeometryError("gear_pair.face_width", "face width must be positive");
   const int z1 = spec.teeth[0], z2 = spec.teeth[1];
   for (int i = 0; i < 2; ++i)
-    if (spec.teeth[i] < 5) throw GeometryError(std::string(kGearName[i]) + ".teeth", "at least 5 teeth");
+    if (spec.teeth[i] < GearPairSpec::kMinTeeth || spec.teeth[i] > GearPairSpec::kMaxTeeth)
+      throw GeometryError(std::string(kGearName[i]) + ".teeth", fmt::format("tooth number must lie in [{}, {}]", GearPairSpec::kMinTeeth, GearPairSpec::kMaxTeeth));
 
   reference_center_distance_ = 0.5 * m * (z1 + z2);
   // Zero-backlash operating pressure angle for the shifts (ISO 21771 eq. for inv alpha_w).

@@ -2,30 +2,13 @@
 // geometry and kinematics at any point of it (ISO 21771; Niemann-Winter; Litvin).
 #pragma once
 
-#include "core/case.hpp"
+#include "case/case.hpp"
 
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace geartrib::gear {
-
-// Everything that fixes the geometry, SI. Built from a case by spur_pair_spec().
-struct SpurPairSpec {
-  double module = 0.0;                     // m [m]
-  double pressure_angle = 0.0;             // alpha of the basic rack [rad]
-  double face_width = 0.0;                 // b [m]
-  double addendum_coefficient = 1.0;       // h_aP/m
-  double dedendum_coefficient = 1.25;      // h_fP/m
-  double root_radius_coefficient = 0.38;   // rho_fP/m
-  double tip_shortening = 0.0;             // k
-  double center_distance = 0.0;            // a_w [m]; 0: zero backlash for the shifts
-  int teeth[2] = {0, 0};                   // pinion, wheel
-  double profile_shift[2] = {0.0, 0.0};    // x
-  double tip_diameter[2] = {0.0, 0.0};     // d_a [m]; 0: computed
-  double bore_diameter[2] = {0.0, 0.0};    // [m]
-};
-SpurPairSpec spur_pair_spec(const Case& c);
 
 // A geometry the pair cannot have. `key` names the case-file key to change.
 class GeometryError : public std::invalid_argument {
@@ -92,9 +75,9 @@ struct FlankKinematics {
 class SpurPair {
  public:
   // Validates and builds; throws GeometryError naming the key to change.
-  explicit SpurPair(const SpurPairSpec& spec);
+  explicit SpurPair(const GearPairSpec& spec);
 
-  const SpurPairSpec& spec() const { return spec_; }
+  const GearPairSpec& spec() const { return spec_; }
   const GearBody& pinion() const { return gear_[0]; }
   const GearBody& wheel() const { return gear_[1]; }
   const GearBody& gear(int i) const { return gear_[i]; }
@@ -110,7 +93,7 @@ class SpurPair {
   double roll_angle(int i, double s) const;
 
  private:
-  SpurPairSpec spec_;
+  GearPairSpec spec_;
   GearBody gear_[2];
   double reference_center_distance_ = 0.0;
   double center_distance_ = 0.0;

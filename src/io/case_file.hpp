@@ -1,7 +1,9 @@
-// Loading materials/*.toml and gears/*.toml into SI structs, validating every field.
+// Loading materials/*.toml and gears/*.toml into SI structs, validating every field. A case's
+// keys are those of the declared parameter table (io/case_parameters.hpp).
 #pragma once
 
-#include "core/case.hpp"
+#include "case/case.hpp"
+#include "io/case_parameters.hpp"
 #include "material/material.hpp"
 
 #include <filesystem>
@@ -16,20 +18,15 @@ struct CaseChange {
   std::string key;
   std::string value;  // as typed: "4mm", "30", "kogut-etsion", "0.1"
 };
-
-// The short aliases and the dotted keys each stands for (rq: both flanks' rq, ...).
-struct CaseAlias {
-  const char* name;
-  std::vector<const char*> keys;
-};
-const std::vector<CaseAlias>& case_aliases();
 // "name=value" into a change; throws std::invalid_argument naming `text` when there is no '='.
 CaseChange parse_case_change(const std::string& text);
 
 // Throws InputError (file, line, key, value, rule) on any problem; an error about a changed key
 // names its --set. Setting one roughness form of a flank (ra, rq, summit_density, m0, topography)
-// removes that flank's other forms.
+// removes that flank's other forms. `parts` (io::CasePart bits): what the caller uses; a key
+// without a default is required only when one of them needs it. Every key's value and origin is
+// recorded in Case::parameters.
 Material load_material(const std::filesystem::path& file);
-Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>& changes = {});
+Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>& changes = {}, unsigned parts = kAllParts);
 
 }  // namespace geartrib::io

@@ -18,7 +18,7 @@ using hdf5::number_attribute;
 using hdf5::string_attribute;
 
 void write_file(const std::string& path, const contact::MeshContactResult& r, const std::string& case_file,
-                const std::string& case_text) {
+                const Case& c) {
   Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, "file " + path);
   {
     Handle mesh(H5Gcreate2(file, "/mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /mesh");
@@ -44,9 +44,20 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
     }
   }
   {
-    hdf5::string_dataset(file, "/scene", case_text);
+    hdf5::string_dataset(file, "/scene", c.source_text);
     Handle scene(H5Dopen2(file, "/scene", H5P_DEFAULT), H5Dclose, "/scene");
     string_attribute(scene, "file", case_file);
+    // Every declared key as it ran: value with its SI unit, and where it came from.
+    Handle parameters(H5Gcreate2(file, "/parameters", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /parameters");
+    std::vector<std::string> keys, values, origins;
+    for (const auto& p : c.parameters) {
+      keys.push_back(p.key);
+      values.push_back(p.value);
+      origins.push_back(p.origin);
+    }
+    hdf5::strings_dataset(parameters, "key", keys);
+    hdf5::strings_dataset(parameters, "value", values);
+    hdf5::strings_dataset(parameters, "origin", origins);
   }
   {
     Handle meta(H5Gcreate2(file, "/meta", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /meta");
@@ -74,9 +85,9 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
 }  // namespace
 
 void write_mesh_contact_hdf5(const std::filesystem::path& path, const contact::MeshContactResult& result,
-                             const std::string& case_file, const std::string& case_text) {
+                             const std::string& case_file, const Case& c) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not stderr dumps
-  write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp.string(), result, case_file, case_text); });
+  write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp.string(), result, case_file, c); });
 }
 
 }  // namespace geartrib::io

@@ -1,13 +1,16 @@
 // The mesh-cycle results as HDF5 (readable with h5py):
 //   /mesh/<name>, /contact/<name>   1-D float64 datasets over the positions, attribute "units"
 //   /mesh attributes                s_A_m .. s_E_m, base_pitch_m, contact_ratio
-//   /scene                          the case file's text as run (string), attribute "file"
+//   /scene                          the case file's text with the --set changes (string), attribute "file"
+//   /parameters/key, value, origin  every declared key as it ran (value with SI unit; origin
+//                                   "file:line", "--set" or "default")
 //   /meta                           attributes version, asperity_model, fidelity, equivalent
 //                                   surface; datasets stage_names, stage_seconds (units "s"),
 //                                   warnings (findings that make the result doubtful)
 // Written to a temporary name in the same folder and renamed when complete.
 #pragma once
 
+#include "case/case.hpp"
 #include "contact/mesh_contact.hpp"
 
 #include <filesystem>
@@ -16,6 +19,6 @@
 namespace geartrib::io {
 
 void write_mesh_contact_hdf5(const std::filesystem::path& path, const contact::MeshContactResult& result,
-                             const std::string& case_file, const std::string& case_text);
+                             const std::string& case_file, const Case& c);
 
 }  // namespace geartrib::io

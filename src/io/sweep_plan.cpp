@@ -28,6 +28,19 @@ bool is_integer_text(const std::string& t) {
   return !t.empty() && t.find_first_not_of("+-0123456789") == std::string::npos;
 }
 
+// The values of an axis on a declared key, checked against the parameter table before any
+// point runs (unit, kind, choices, range). Keys the table does not know are left to the points,
+// which report them as unknown.
+void check_axis_values(const SweepAxis& axis, const std::string& text) {
+  for (const std::string& key : resolve_case_key(axis.key)) {
+    const ParameterLookup found = find_parameter(key);
+    if (!found.parameter || found.parameter->kind == ParameterKind::model_constants) continue;
+    for (const std::string& v : axis.values)
+      if (const std::string rule = parameter_text_error(*found.parameter, v); !rule.empty())
+        throw std::invalid_argument("'" + text + "': value '" + v + "' for " + key + ": " + rule);
+  }
+}
+
 }  // namespace
 
 SweepAxis parse_sweep_axis(const std::string& text) {
@@ -51,6 +64,7 @@ SweepAxis parse_sweep_axis(const std::string& text) {
       const double v = v0 + (v1 - v0) * static_cast<double>(i) / static_cast<double>(n - 1);
       axis.values.push_back(integers ? fmt::format("{}", std::llround(v)) : fmt::format("{:.10g}{}", v, u0));
     }
+    check_axis_values(axis, text);
     return axis;
   }
   for (const auto& p : parts) {
@@ -58,6 +72,7 @@ SweepAxis parse_sweep_axis(const std::string& text) {
     if (v.empty()) throw std::invalid_argument("'" + text + "': empty value in the list");
     axis.values.push_back(v);
   }
+  check_axis_values(axis, text);
   return axis;
 }
 

@@ -33,6 +33,8 @@ class TomlReader {
   std::filesystem::path directory() const { return std::filesystem::path(file_).parent_path(); }
 
   bool has(std::string_view key) const;
+  // Whether the key was given (or removed) by a command-line change.
+  bool changed(std::string_view key) const { return changed_.contains(key); }
   bool is_string(std::string_view key) const;
   // A quantity with a unit ("6 mm") or a bare SI number; required unless a fallback is given.
   double quantity(std::string_view key, Dimension d, std::optional<double> fallback = std::nullopt);

@@ -1,5 +1,7 @@
 #include "surface/rough_surface.hpp"
 
+#include "core/series_radius.hpp"
+
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -32,7 +34,7 @@ std::pair<double, double> flank_summit_radii(const FlankRoughness& a, const Flan
   if (a.form != FlankRoughness::Form::spectral || b.form != FlankRoughness::Form::spectral)
     return {a.summit_radius, b.summit_radius};
   const double r1 = mccool_summit_radius(a.m4), r2 = mccool_summit_radius(b.m4);
-  const double f = mccool_summit_radius(a.m4 + b.m4) / (r1 * r2 / (r1 + r2));
+  const double f = mccool_summit_radius(a.m4 + b.m4) / series_radius(r1, r2);
   return {f * r1, f * r2};
 }
 
@@ -42,7 +44,6 @@ EquivalentSurface equivalent_surface(const FlankRoughness& a, const FlankRoughne
   if (a.form != b.form) throw std::invalid_argument("both flanks must describe their roughness in the same form");
   EquivalentSurface s;
   s.distribution = dist;
-  auto series_radius = [](double r1, double r2) { return r1 * r2 / (r1 + r2); };
   switch (a.form) {
     case Form::ra:
     case Form::rq: {

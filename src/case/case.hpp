@@ -1,9 +1,11 @@
 // A case (scene): the gear pair, the bodies' materials and flanks, the operating point and the
-// contact-model choices, all SI. Read from gears/*.toml by io::load_case; the physics takes the
-// pieces it needs from here.
+// contact-model choices, all SI. Read from gears/*.toml by io::load_case through the declared
+// parameter table (io/case_parameters.hpp: each key's default, range and meaning); the physics
+// takes the pieces it needs from here.
 #pragma once
 
 #include "material/material.hpp"
+#include "surface/height_grid.hpp"
 #include "surface/rough_surface.hpp"
 #include "surface/surface_statistics.hpp"
 
@@ -15,34 +17,47 @@
 
 namespace geartrib {
 
-// Basic-rack and pair geometry (ISO 53 basic rack by default).
+// The pair's geometry: basic rack (ISO 53 by default), centre distance and both gears' teeth,
+// shifts, tip and bore diameters; index 0 the pinion, 1 the wheel. gear::SpurPair builds on it.
 struct GearPairSpec {
+  static constexpr int kMinTeeth = 5;     // below this no involute spur gear is cut in practice
+  static constexpr int kMaxTeeth = 1000;
   double module = 0.0;                    // m [m]
-  double pressure_angle = 0.0;            // alpha [rad]
+  double pressure_angle = 0.0;            // alpha of the basic rack [rad]
   double face_width = 0.0;                // b [m]
   double addendum_coefficient = 1.0;      // h_aP / m
   double dedendum_coefficient = 1.25;     // h_fP / m
   double root_radius_coefficient = 0.38;  // rho_fP / m
   double tip_shortening = 0.0;            // k: tip diameter reduced by 2 k m on both gears
   double center_distance = 0.0;           // a_w [m]; 0: zero-backlash distance from the shifts
+  int teeth[2] = {0, 0};                  // z
+  double profile_shift[2] = {0.0, 0.0};   // x [-]
+  double tip_diameter[2] = {0.0, 0.0};    // d_a [m]; 0: from addendum, shift and tip shortening
+  double bore_diameter[2] = {0.0, 0.0};   // gear-body bore [m], for the fillet-foundation stiffness
 };
 
-// The rough flank of one gear: its summit radius and its roughness in one of the forms of
-// surface::FlankRoughness (Ra, Rq, summit statistics or spectral moments).
+// A measured flank: the topography file and how it is read and cleaned.
+struct TopographySpec {
+  std::string file;          // as written in the case file (relative to it)
+  double unit = 1e-6;        // length unit of a file that does not state one [m]
+  double spacing = 0.0;      // grid spacing of files without one [m]; 0: from the file
+  double resample = 0.0;     // regrid spacing [m]; 0: as measured
+  surface::CleanupOptions clean;
+};
+
+// The rough flank of one gear: its roughness in one of the forms of surface::FlankRoughness
+// (Ra, Rq, summit statistics or spectral moments; roughness.summit_radius is the flank's summit
+// radius, the only place it is kept).
 struct FlankSpec {
-  double summit_radius = 0.0;  // mean asperity tip radius [m]
   surface::FlankRoughness roughness;
-  // When the flank is measured ([*.flank.topography]): the file as written in the case, and the
-  // statistics of the cleaned surface the roughness above was taken from.
-  std::string topography_file;
+  // When the flank is measured ([*.flank.topography]): where it came from, and the statistics
+  // of the cleaned surface the roughness above was taken from.
+  std::optional<TopographySpec> topography;
   std::optional<surface::SurfaceStatistics> measured;
 };
 
+// One gear's body: its material and its flank (its geometry is in GearPairSpec).
 struct GearSpec {
-  int teeth = 0;
-  double profile_shift = 0.0;  // x [-]
-  double tip_diameter = 0.0;   // d_a [m]; 0: from addendum, shift and tip shortening
-  double bore_diameter = 0.0;  // gear-body bore [m], for the fillet-foundation stiffness
   std::string material_file;   // as written in the case file
   Material material;
   FlankSpec flank;
@@ -60,7 +75,7 @@ struct AsperitySettings {
   std::map<std::string, std::vector<std::pair<std::string, double>>> constants;  // model -> (name, value)
   double measured_axis_offset = 0.0;  // seed's d0 [m]
   double measured_tip_gap = 0.0;      // seed's y0 [m]
-  double cylinder_tip_radius = 0.0;   // R_m [m]
+  double cylinder_tip_radius = 0.0;   // R_m [m]; 0: not given (only the cylinder studies need it)
   double cylinder_yield_constant = 1.64;  // C of delta_pc
 };
 
@@ -101,6 +116,14 @@ struct DynamicsCase {
   double wheel_inertia = 0.0;
 };
 
+// What a declared key resolved to: its value with the SI unit and where it came from
+// ("file:line", "--set" or "default"); written to /scene and printed by `geartrib case`.
+struct ResolvedParameter {
+  std::string key;
+  std::string value;
+  std::string origin;
+};
+
 struct Case {
   std::string title;
   std::string source;
@@ -108,13 +131,14 @@ struct Case {
   GearSpec pinion;
   GearSpec wheel;
   OperatingPoint operating;
-  double friction_coefficient = 0.0;  // mu [-]
+  double friction_coefficient = 0.0;  // mu [-] of the asperity side contact
   MeshSettings mesh;
   DynamicsCase dynamics;
   RoughnessSettings roughness;
   ContactSettings contact;
   AsperitySettings asperity;
-  std::string source_text;            // the case file as read (stored with the results)
+  std::string source_text;            // the case file as read, with the --set changes (stored with the results)
+  std::vector<ResolvedParameter> parameters;  // every key as it ran
   std::vector<std::string> warnings;  // non-fatal findings of the loader (e.g. undercut), located
 };
 

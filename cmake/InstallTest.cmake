@@ -1,0 +1,60 @@
+# The install as another project sees it (ctest -L install): install this build into a fresh
+# prefix, configure and build examples/ on its own with find_package(geartrib), run the examples
+# on the installed data, and check that they compiled against the installed headers and that
+# linking geartrib::io did not bring Ceres.
+#   cmake -DBUILD_DIR=<build> -DSOURCE_DIR=<source> -DWORK_DIR=<scratch> -P cmake/InstallTest.cmake
+foreach(var BUILD_DIR SOURCE_DIR WORK_DIR)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "InstallTest.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+
+set(prefix ${WORK_DIR}/prefix)
+set(build ${WORK_DIR}/examples)
+file(REMOVE_RECURSE ${WORK_DIR})
+
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix} OUTPUT_QUIET
+                COMMAND_ERROR_IS_FATAL ANY)
+foreach(f include/geartrib/gear/spur_pair.hpp include/geartrib/io/case_file.hpp
+          share/geartrib/gears/m6z30.toml share/geartrib/materials/steel-45.toml
+          lib/cmake/geartrib/geartribConfig.cmake lib/cmake/geartrib/geartribConfigVersion.cmake bin/geartrib)
+  if(NOT EXISTS ${prefix}/${f})
+    message(FATAL_ERROR "not installed: ${f}")
+  endif()
+endforeach()
+
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples -B ${build} -DCMAKE_PREFIX_PATH=${prefix}
+                        -DCMAKE_BUILD_TYPE=Release -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
+                OUTPUT_QUIET COMMAND_ERROR_IS_FATAL ANY)
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${build} --parallel 2 OUTPUT_QUIET COMMAND_ERROR_IS_FATAL ANY)
+
+# Compiled against <prefix>/include/geartrib, not the source tree.
+file(READ ${build}/compile_commands.json commands)
+string(FIND "${commands}" "${prefix}/include/geartrib" installed_headers)
+string(FIND "${commands}" "${SOURCE_DIR}/src" source_headers)
+if(installed_headers EQUAL -1 OR NOT source_headers EQUAL -1)
+  message(FATAL_ERROR "the examples did not compile against the installed headers:\n${commands}")
+endif()
+# geartrib::io does not link Ceres (only geartrib::fit does).
+file(GLOB link_lines ${build}/CMakeFiles/*.dir/link.txt)
+foreach(f ${link_lines})
+  file(READ ${f} line)
+  if(line MATCHES "ceres")
+    message(FATAL_ERROR "${f} links Ceres: ${line}")
+  endif()
+endforeach()
+
+# Each example runs on the installed data (share/geartrib) and prints its sanity line.
+foreach(check "single_asperity:delta_c = 0.0746 nm" "mesh_position:Hertz p0 = 588 MPa" "custom_sweep:1000 +0.80 +120.7 +591 +0.3145 ")
+  string(REPLACE ":" ";" check "${check}")
+  list(GET check 0 example)
+  list(GET check 1 expected)
+  execute_process(COMMAND ${build}/${example} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "${expected}")
+    message(FATAL_ERROR "${example} (exit ${rc}) did not print '${expected}':\n${out}${err}")
+  endif()
+  message(STATUS "${example}: ok")
+endforeach()
+
+execute_process(COMMAND ${prefix}/bin/geartrib --help OUTPUT_QUIET COMMAND_ERROR_IS_FATAL ANY)
+message(STATUS "installed geartrib and examples built against it: ok")

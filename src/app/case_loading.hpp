@@ -1,0 +1,29 @@
+// The case a command runs: loaded with its --set changes, warnings printed; and the mesh cycle
+// of a case as the case asks for it.
+#pragma once
+
+#include "app/cli_options.hpp"
+#include "case/case.hpp"
+#include "io/case_parameters.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace geartrib::contact {
+struct MeshContactResult;
+}
+
+namespace geartrib::app {
+
+// gears/m6z30.toml in the working directory, else in the source tree the tool was built from.
+std::filesystem::path default_case_file();
+// Loads the case (the default one when the file is empty) with the command line's key=value
+// changes, requiring the keys of `parts` (io::CasePart), printing its warnings to stderr.
+Case load_case_reporting(const CaseOptions& o, unsigned parts = io::kAllParts);
+// The mesh cycle of a case as the case asks for it (KINSOL when coupled, the case's integrator
+// when it asks for dynamics); throws std::runtime_error on a non-finite output. Thread-safe.
+contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress = {});
+
+}  // namespace geartrib::app

@@ -1,0 +1,52 @@
+// The command line's one grammar: options that several commands take are added here, so that a
+// flag means the same thing everywhere (tests/cli_grammar.sh walks every command's --help):
+//   -o, --output FILE   the command's result to FILE instead of standard output
+//   --csv [FILE]        the table as CSV: to FILE, else where the table goes (-o or stdout)
+//   --set KEY=VALUE     a case key changed for this run (repeatable)
+//   -q, --quiet         no progress bar and no summary
+//   --threads N         worker threads
+#pragma once
+
+#include "io/table_writer.hpp"
+#include "io/units.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace geartrib::app {
+
+// The case a command reads: the positional CASE (default gears/m6z30.toml) or, for commands whose
+// positionals are other files, --case; and its --set changes.
+struct CaseOptions {
+  std::string file;
+  std::vector<std::string> changes;
+};
+void add_case_argument(CLI::App* cmd, CaseOptions& o);  // positional CASE and --set
+void add_case_option(CLI::App* cmd, CaseOptions& o);    // --case FILE and --set
+
+// Where a command's table goes: -o FILE (or stdout), and --csv [FILE].
+struct TableOptions {
+  std::string output;
+  std::string csv_file;              // --csv FILE; empty or "-": CSV where the table goes
+  const CLI::Option* csv = nullptr;  // set by add_table_options
+  bool csv_given() const { return csv && csv->count() > 0; }
+};
+void add_table_options(CLI::App* cmd, TableOptions& o);
+// -o FILE for a command whose result is a file of its own (HDF5, a surface); `what` says which
+// (the help reads "FILE: <what>").
+void add_output_option(CLI::App* cmd, std::string& file, const std::string& what);
+// --csv [FILE] for commands whose table is beside another result (run, sweep): "[FILE]: <what>".
+CLI::Option* add_csv_option(CLI::App* cmd, std::string& file, const std::string& what);
+void add_quiet_flag(CLI::App* cmd, bool& quiet);
+void add_threads_option(CLI::App* cmd, int& threads);
+
+// Writes the table as the options ask: aligned text to -o or stdout, CSV instead when --csv
+// is given without a file, and CSV to the file --csv names besides.
+void emit_table(const io::Table& t, const TableOptions& o);
+
+// A command-line quantity with a unit ("0.5 um", "1000 rpm"), SI; the error names the option.
+double quantity_option(const std::string& option, const std::string& text, io::Dimension d);
+
+}  // namespace geartrib::app

@@ -1,0 +1,563 @@
+#include "io/case_parameters.hpp"
+
+#include "asperity/model.hpp"
+#include "contact/greenwood_williamson.hpp"
+#include "contact/rough_line_contact.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <type_traits>
+#include <utility>
+
+namespace geartrib::io {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+const char* const kGearPrefix[2] = {"pinion.", "wheel."};
+
+ParameterValue number_value(double x) {
+  ParameterValue v;
+  v.number = x;
+  return v;
+}
+ParameterValue text_value(std::string t) {
+  ParameterValue v;
+  v.text = std::move(t);
+  return v;
+}
+
+// The builders: a row from an accessor `ref(case, gear) -> member&`, written once as a generic
+// lambda so that it serves reading (const Case) and writing (Case).
+template <class Ref>
+Parameter numeric(std::string key, ParameterKind kind, Dimension d, Ref ref) {
+  Parameter p;
+  p.key = std::move(key);
+  p.kind = kind;
+  p.dimension = d;
+  p.get = [ref](const Case& c, int g) { return number_value(static_cast<double>(ref(c, g))); };
+  p.set = [ref](Case& c, int g, const ParameterValue& v) {
+    auto& m = ref(c, g);
+    m = static_cast<std::remove_reference_t<decltype(m)>>(v.number);
+  };
+  return p;
+}
+template <class Ref>
+Parameter quantity(std::string key, Dimension d, Ref ref) {
+  return numeric(std::move(key), ParameterKind::quantity, d, ref);
+}
+template <class Ref>
+Parameter number(std::string key, Ref ref) {
+  return numeric(std::move(key), ParameterKind::number, Dimension::dimensionless, ref);
+}
+template <class Ref>
+Parameter integer(std::string key, Ref ref) {
+  return numeric(std::move(key), ParameterKind::integer, Dimension::dimensionless, ref);
+}
+template <class Ref>
+Parameter text(std::string key, ParameterKind kind, Ref ref) {
+  Parameter p;
+  p.key = std::move(key);
+  p.kind = kind;
+  p.get = [ref](const Case& c, int g) { return text_value(ref(c, g)); };
+  p.set = [ref](Case& c, int g, const ParameterValue& v) { ref(c, g) = v.text; };
+  return p;
+}
+// A choice stored as something else (a bool, an enum): `to` maps the text to the member, `from` back.
+template <class Ref, class To, class From>
+Parameter mapped_choice(std::string key, std::vector<std::string> choices, Ref ref, To to, From from) {
+  Parameter p;
+  p.key = std::move(key);
+  p.kind = ParameterKind::choice;
+  p.choices = std::move(choices);
+  p.get = [ref, from](const Case& c, int g) { return text_value(from(ref(c, g))); };
+  p.set = [ref, to](Case& c, int g, const ParameterValue& v) { ref(c, g) = to(v.text); };
+  return p;
+}
+
+// Fluent setters for the rest of a row.
+struct Row {
+  Parameter p;
+  Row& range(double lo, double hi, bool lo_open = false, bool hi_open = false) {
+    p.min = lo, p.max = hi, p.min_open = lo_open, p.max_open = hi_open;
+    return *this;
+  }
+  Row& positive() { return range(0.0, kInf, true, false); }
+  Row& non_negative() { return range(0.0, kInf); }
+  Row& no_default() {
+    p.has_default = false;
+    return *this;
+  }
+  Row& required(unsigned parts) {
+    p.required_by = parts;
+    return *this;
+  }
+  Row& alias(std::vector<std::string> names) {
+    p.aliases = std::move(names);
+    return *this;
+  }
+  Row& gear_alias(std::string pinion, std::string wheel) {
+    p.gear_aliases = {std::move(pinion), std::move(wheel)};
+    return *this;
+  }
+  Row& ladder(std::vector<std::string> settings) {
+    p.ladder = std::move(settings);
+    return *this;
+  }
+  Row& choices(std::vector<std::string> names, std::string noun = "value") {
+    p.choices = std::move(names);
+    p.noun = std::move(noun);
+    return *this;
+  }
+  Row& doc(std::string meaning) {
+    p.meaning = std::move(meaning);
+    return *this;
+  }
+};
+
+std::vector<std::string> model_names() {
+  std::vector<std::string> out;
+  for (auto n : asperity::asperity_model_names()) out.emplace_back(n);
+  return out;
+}
+
+std::vector<Parameter> build_table() {
+  using D = Dimension;
+  using K = ParameterKind;
+  using contact::GreenwoodWilliamsonOptions;
+  using contact::StripOptions;
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  auto gear = [](auto& c, int g) -> auto& { return g == 0 ? c.pinion : c.wheel; };
+  std::vector<Row> rows;
+  auto add = [&](Parameter p) -> Row& { return rows.emplace_back(Row{std::move(p)}); };
+
+  add(text("title", K::text, [](auto& c, int) -> auto& { return c.title; })).required(kGeometryPart).doc("What the case is");
+  add(text("source", K::text, [](auto& c, int) -> auto& { return c.source; }))
+      .required(kGeometryPart)
+      .doc("Where its data come from (provenance)");
+
+  // [gear_pair]: basic rack and centre distance (ISO 53, ISO 21771).
+  add(quantity("gear_pair.module", D::length, [](auto& c, int) -> auto& { return c.gear_pair.module; }))
+      .positive().required(kGeometryPart).alias({"module"}).doc("Module m");
+  add(quantity("gear_pair.pressure_angle", D::angle, [](auto& c, int) -> auto& { return c.gear_pair.pressure_angle; }))
+      .range(0.0, 45.0 * kDeg, true, true).required(kGeometryPart).alias({"pressure_angle"})
+      .doc("Pressure angle alpha of the basic rack");
+  add(quantity("gear_pair.face_width", D::length, [](auto& c, int) -> auto& { return c.gear_pair.face_width; }))
+      .positive().required(kGeometryPart).alias({"face_width"}).doc("Face width b in contact");
+  add(number("gear_pair.addendum_coefficient", [](auto& c, int) -> auto& { return c.gear_pair.addendum_coefficient; }))
+      .range(0.0, 2.0, true, false).doc("Addendum h_aP/m of the basic rack");
+  add(number("gear_pair.dedendum_coefficient", [](auto& c, int) -> auto& { return c.gear_pair.dedendum_coefficient; }))
+      .positive().doc("Dedendum h_fP/m of the basic rack; must exceed the addendum (tip clearance)");
+  add(number("gear_pair.root_radius_coefficient", [](auto& c, int) -> auto& { return c.gear_pair.root_radius_coefficient; }))
+      .range(0.0, 1.0, false, true).doc("Root fillet radius rho_fP/m of the basic rack");
+  add(number("gear_pair.tip_shortening", [](auto& c, int) -> auto& { return c.gear_pair.tip_shortening; }))
+      .non_negative().doc("Tip shortening k: both tip diameters reduced by 2 k m; below the addendum");
+  add(quantity("gear_pair.center_distance", D::length, [](auto& c, int) -> auto& { return c.gear_pair.center_distance; }))
+      .non_negative().alias({"center_distance"}).doc("Operating centre distance a_w; 0: the zero-backlash distance of the shifts");
+
+  // [pinion], [wheel]: each gear's teeth, body and flank.
+  add(integer("{gear}.teeth", [](auto& c, int g) -> auto& { return c.gear_pair.teeth[g]; }))
+      .range(GearPairSpec::kMinTeeth, GearPairSpec::kMaxTeeth).required(kGeometryPart).alias({"teeth"}).gear_alias("z1", "z2")
+      .doc("Number of teeth z");
+  add(number("{gear}.profile_shift", [](auto& c, int g) -> auto& { return c.gear_pair.profile_shift[g]; }))
+      .range(-2.0, 2.0).gear_alias("x1", "x2").doc("Profile shift coefficient x");
+  add(quantity("{gear}.tip_diameter", D::length, [](auto& c, int g) -> auto& { return c.gear_pair.tip_diameter[g]; }))
+      .non_negative().doc("Tip diameter d_a; 0: from addendum, shift and tip shortening");
+  add(quantity("{gear}.bore_diameter", D::length, [](auto& c, int g) -> auto& { return c.gear_pair.bore_diameter[g]; }))
+      .non_negative().doc("Bore of the gear body (fillet-foundation stiffness); 0: solid");
+  add(text("{gear}.material", K::text, [gear](auto& c, int g) -> auto& { return gear(c, g).material_file; }))
+      .required(kGeometryPart).alias({"material"}).doc("Material file (materials/*.toml), relative to the case file");
+
+  // The flank's roughness, in exactly one form (surface::FlankRoughness).
+  auto rough = [gear](auto& c, int g) -> auto& { return gear(c, g).flank.roughness; };
+  add(quantity("{gear}.flank.ra", D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).ra; }))
+      .positive().no_default().alias({"ra"}).doc("Form Ra: arithmetic mean roughness (profile)");
+  add(quantity("{gear}.flank.rq", D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).rq; }))
+      .positive().no_default().alias({"rq"}).doc("Form Rq: root-mean-square roughness (profile)");
+  add(quantity("{gear}.flank.summit_density", D::areal_density, [rough](auto& c, int g) -> auto& { return rough(c, g).summit_density; }))
+      .positive().no_default().doc("Form summits: summit density eta (with summit_sigma)");
+  add(quantity("{gear}.flank.summit_sigma", D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).summit_sigma; }))
+      .positive().no_default().doc("Form summits: standard deviation of summit heights");
+  add(quantity("{gear}.flank.m0", D::area, [rough](auto& c, int g) -> auto& { return rough(c, g).m0; }))
+      .positive().no_default().doc("Form spectral: profile moment m0 = Rq^2 (with m2, m4; McCool 1986)");
+  add(quantity("{gear}.flank.m2", D::dimensionless, [rough](auto& c, int g) -> auto& { return rough(c, g).m2; }))
+      .positive().no_default().doc("Form spectral: slope moment m2");
+  add(quantity("{gear}.flank.m4", D::areal_density, [rough](auto& c, int g) -> auto& { return rough(c, g).m4; }))
+      .positive().no_default().doc("Form spectral: curvature moment m4");
+  add(quantity("{gear}.flank.summit_radius", D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).summit_radius; }))
+      .positive().no_default().alias({"summit_radius"})
+      .doc("Mean summit radius beta (forms ra, rq, summits; a measured flank's overrides the measured one)");
+  auto topo = [gear](auto& c, int g) -> auto& { return gear(c, g).flank.topography; };
+  // A measured flank: the rows fill the topography spec (created on first use).
+  auto topo_spec = [topo](Case& c, int g) -> TopographySpec& {
+    auto& t = topo(c, g);
+    if (!t) t.emplace();
+    return *t;
+  };
+  auto topo_get = [topo](const Case& c, int g) -> const TopographySpec& {
+    static const TopographySpec kDefault;
+    const auto& t = topo(c, g);
+    return t ? *t : kDefault;
+  };
+  auto topo_ref = [topo_spec, topo_get](auto member) {
+    return [=](auto& c, int g) -> auto& {
+      if constexpr (std::is_const_v<std::remove_reference_t<decltype(c)>>) return member(topo_get(c, g));
+      else return member(topo_spec(c, g));
+    };
+  };
+  add(text("{gear}.flank.topography.file", K::text, topo_ref([](auto& t) -> auto& { return t.file; })))
+      .doc("Form measured: a profiler export or HDF5 surface (geartrib surface); its summits give the roughness");
+  add(quantity("{gear}.flank.topography.unit", D::length, topo_ref([](auto& t) -> auto& { return t.unit; })))
+      .positive().doc("Length unit of a file that does not state one");
+  add(quantity("{gear}.flank.topography.spacing", D::length, topo_ref([](auto& t) -> auto& { return t.spacing; })))
+      .non_negative().doc("Grid spacing of files without one; 0: from the file");
+  add(quantity("{gear}.flank.topography.resample", D::length, topo_ref([](auto& t) -> auto& { return t.resample; })))
+      .non_negative().doc("Regrid spacing; 0: as measured");
+  add(integer("{gear}.flank.topography.form", topo_ref([](auto& t) -> auto& { return t.clean.form_degree; })))
+      .range(0, 6).doc("Degree of the polynomial form removed");
+  add(quantity("{gear}.flank.topography.cutoff", D::length, topo_ref([](auto& t) -> auto& { return t.clean.waviness_cutoff; })))
+      .non_negative().doc("Gaussian waviness cut-off (ISO 16610-61); 0: no waviness filter");
+  add(number("{gear}.flank.topography.outliers", topo_ref([](auto& t) -> auto& { return t.clean.outlier_limit; })))
+      .non_negative().doc("Outlier limit in robust standard deviations: 0 (off) or at least 2");
+  {
+    Parameter fill = numeric("{gear}.flank.topography.fill", K::flag, D::dimensionless,
+                             topo_ref([](auto& t) -> auto& { return t.clean.fill; }));
+    add(std::move(fill)).doc("Fill missing points from their neighbours");
+  }
+
+  // [operating]
+  add(quantity("operating.pinion_torque", D::torque, [](auto& c, int) -> auto& { return c.operating.pinion_torque; }))
+      .positive().required(kGeometryPart).alias({"torque"}).doc("Pinion torque T1");
+  add(quantity("operating.pinion_speed", D::angular_speed, [](auto& c, int) -> auto& { return c.operating.pinion_speed; }))
+      .positive().required(kGeometryPart).alias({"speed"}).doc("Pinion speed n1");
+
+  // [friction]
+  add(number("friction.mu", [](auto& c, int) -> auto& { return c.friction_coefficient; }))
+      .range(0.0, 1.0).required(kFrictionPart).alias({"mu"})
+      .doc("Coulomb friction coefficient of the asperity side contact (seed section 4)");
+
+  // [mesh]
+  add(text("mesh.load_sharing", K::choice, [](auto& c, int) -> auto& { return c.mesh.load_sharing; }))
+      .choices({"iso", "stiffness"}).alias({"load_sharing"})
+      .doc("Load sharing between tooth pairs: ISO/TS 6336-22 method B or the pairs' stiffnesses");
+  add(integer("mesh.positions", [](auto& c, int) -> auto& { return c.mesh.positions; }))
+      .range(2, 100000).doc("Positions sampling one base pitch (kinematics, mesh stiffness)");
+  add(mapped_choice(
+          "mesh.tooth_beam", {"plane-strain", "plane-stress"}, [](auto& c, int) -> auto& { return c.mesh.plane_strain; },
+          [](const std::string& t) { return t == "plane-strain"; },
+          [](bool strain) { return std::string(strain ? "plane-strain" : "plane-stress"); }))
+      .doc("Tooth beam of the stiffness model: plane strain (wide face) or plane stress");
+  add(text("mesh.dynamics", K::choice, [](auto& c, int) -> auto& { return c.dynamics.engine; }))
+      .choices({"none", "cvode", "odeint"}).alias({"dynamics"})
+      .doc("Mesh dynamics: none (static load sharing) or the steady dynamic cycle with an integrator");
+
+  // [dynamics]
+  add(number("dynamics.damping_ratio", [](auto& c, int) -> auto& { return c.dynamics.damping_ratio; }))
+      .range(0.0, 1.0, false, true).alias({"damping"}).doc("Mesh damping ratio zeta (0.03-0.17 reported; Kasuba & Evans 1981)");
+  add(number("dynamics.relative_tolerance", [](auto& c, int) -> auto& { return c.dynamics.relative_tolerance; }))
+      .range(1e-14, 1e-2).alias({"rtol"}).ladder({"1e-4", "1e-6", "1e-8", "1e-10", "1e-12"})
+      .doc("Relative tolerance of the integrator");
+  add(quantity("dynamics.backlash", D::length, [](auto& c, int) -> auto& { return c.dynamics.backlash; }))
+      .non_negative().doc("Backlash along the line of action; 0: no back-flank contact");
+  add(quantity("dynamics.pinion_inertia", D::inertia, [](auto& c, int) -> auto& { return c.dynamics.pinion_inertia; }))
+      .non_negative().doc("Pinion polar moment of inertia; 0: a solid disc less the bore");
+  add(quantity("dynamics.wheel_inertia", D::inertia, [](auto& c, int) -> auto& { return c.dynamics.wheel_inertia; }))
+      .non_negative().doc("Wheel polar moment of inertia; 0: a solid disc less the bore");
+
+  // [roughness]: both flanks.
+  add(mapped_choice(
+          "roughness.distribution", {"gaussian", "exponential"}, [](auto& c, int) -> auto& { return c.roughness.distribution; },
+          [](const std::string& t) {
+            return t == "gaussian" ? surface::HeightDistribution::gaussian : surface::HeightDistribution::exponential;
+          },
+          [](surface::HeightDistribution d) {
+            return std::string(d == surface::HeightDistribution::gaussian ? "gaussian" : "exponential");
+          }))
+      .doc("Summit height distribution");
+  add(number("roughness.eta_sigma_beta", [](auto& c, int) -> auto& { return c.roughness.eta_sigma_beta; }))
+      .range(0.0, 10.0, true, true).doc("Summit parameter eta sigma beta for flanks given by Ra or Rq");
+
+  // [contact]: the mesh cycle's fidelity, outputs and resolutions.
+  add(mapped_choice(
+          "contact.fidelity", {"uncoupled", "coupled"}, [](auto& c, int) -> auto& { return c.contact.coupled; },
+          [](const std::string& t) { return t == "coupled"; },
+          [](bool coupled) { return std::string(coupled ? "coupled" : "uncoupled"); }))
+      .alias({"fidelity"})
+      .doc("uncoupled: Hertz pressure imposed on the rough surface; coupled: Greenwood-Tripp, bulk and asperities solved together");
+  {
+    Parameter outputs;
+    outputs.key = "contact.outputs";
+    outputs.kind = K::choice_list;
+    outputs.choices = {"real_area", "plastic_fraction", "asperity_stress"};
+    outputs.get = [](const Case& c, int) {
+      ParameterValue v;
+      if (c.contact.real_area) v.list.emplace_back("real_area");
+      if (c.contact.plastic_fraction) v.list.emplace_back("plastic_fraction");
+      if (c.contact.asperity_stress) v.list.emplace_back("asperity_stress");
+      return v;
+    };
+    outputs.set = [](Case& c, int, const ParameterValue& v) {
+      auto has = [&](const char* n) { return std::find(v.list.begin(), v.list.end(), n) != v.list.end(); };
+      c.contact.real_area = has("real_area");
+      c.contact.plastic_fraction = has("plastic_fraction");
+      c.contact.asperity_stress = has("asperity_stress");
+    };
+    add(std::move(outputs)).doc("The outputs computed (a run computes only these)");
+  }
+  add(integer("contact.positions", [](auto& c, int) -> auto& { return c.contact.positions; }))
+      .range(2, 100000).alias({"positions"}).ladder({"11", "21", "41", "81", "101", "201", "401", "801"})
+      .doc("Positions along the path of contact A -> E");
+  add(integer("contact.strip_points", [](auto& c, int) -> auto& { return c.contact.strip_points; }))
+      .range(StripOptions::kMinStripPoints, StripOptions::kMaxStripPoints).alias({"strip_points"})
+      .ladder({"8", "16", "32", "64", "128", "256", "512"}).doc("Uncoupled: quadrature points across the Hertz strip");
+  add(integer("contact.height_points", [](auto& c, int) -> auto& { return c.contact.height_points; }))
+      .range(GreenwoodWilliamsonOptions::kMinHeightPoints, GreenwoodWilliamsonOptions::kMaxHeightPoints).alias({"height_points"})
+      .ladder({"8", "16", "32", "64", "128", "256", "512", "1024"}).doc("Quadrature points over the summit heights in contact");
+  add(integer("contact.table_points", [](auto& c, int) -> auto& { return c.contact.table_points; }))
+      .range(GreenwoodWilliamsonOptions::kMinTablePoints, GreenwoodWilliamsonOptions::kMaxTablePoints).alias({"table_points"})
+      .ladder({"4", "8", "16", "32", "64", "128", "256"}).doc("Pressure-separation table points per summit sigma");
+  add(integer("contact.coupled_nodes", [](auto& c, int) -> auto& { return c.contact.coupled_nodes; }))
+      .range(StripOptions::kMinCoupledNodes, StripOptions::kMaxCoupledNodes).alias({"coupled_nodes"})
+      .ladder({"32", "64", "128", "256"}).doc("Coupled: pressure elements across the contact");
+
+  // [asperity]
+  add(text("asperity.model", K::choice, [](auto& c, int) -> auto& { return c.asperity.model; }))
+      .choices(model_names(), "asperity model").alias({"model"}).doc("Single-asperity model of the rough contact");
+  {
+    Parameter constants;
+    constants.key = "asperity.constants.MODEL.NAME";
+    constants.kind = K::model_constants;
+    constants.get = [](const Case&, int) { return ParameterValue{}; };
+    constants.set = [](Case&, int, const ParameterValue&) {};
+    add(std::move(constants)).doc("A model constant overridden (geartrib asperity --constants --model MODEL lists them)");
+  }
+  add(quantity("asperity.side_contact.measured_offset", D::length, [](auto& c, int) -> auto& { return c.asperity.measured_axis_offset; }))
+      .non_negative().doc("Measured axis offset d0 of the side contact; 0: none measured");
+  add(quantity("asperity.side_contact.measured_tip_gap", D::length, [](auto& c, int) -> auto& { return c.asperity.measured_tip_gap; }))
+      .non_negative().doc("Measured tip gap y0 of the side contact; 0: none measured");
+  add(quantity("asperity.cylinder.tip_radius", D::length, [](auto& c, int) -> auto& { return c.asperity.cylinder_tip_radius; }))
+      .positive().required(kCylinderPart).doc("Tip radius R_m of the cylinder asperity (seed section 5)");
+  add(number("asperity.cylinder.yield_constant", [](auto& c, int) -> auto& { return c.asperity.cylinder_yield_constant; }))
+      .range(0.5, 5.0, true, true).choices({"green-2005"})
+      .doc("C of the cylinder's critical interference, or green-2005 (Green's plane-strain C_L(nu))");
+
+  std::vector<Parameter> out;
+  out.reserve(rows.size());
+  for (auto& r : rows) out.push_back(std::move(r.p));
+  return out;
+}
+
+std::string number_text(double v) { return fmt::format("{:g}", v); }
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return q + "\"";
+}
+
+// Schema columns: key, kind, unit, default, range or choices, required by, aliases, meaning.
+std::vector<std::vector<std::string>> schema_rows() {
+  const Case defaults;
+  std::vector<std::vector<std::string>> rows;
+  auto parts = [](unsigned p) {
+    std::string s;
+    auto add = [&](unsigned bit, const char* name) {
+      if (p & bit) s += (s.empty() ? "" : " ") + std::string(name);
+    };
+    add(kGeometryPart, "geometry");
+    add(kRoughnessPart, "roughness");
+    add(kFrictionPart, "friction");
+    add(kCylinderPart, "cylinder");
+    return s;
+  };
+  for (const Parameter& p : case_parameters()) {
+    std::string kind;
+    switch (p.kind) {
+      case ParameterKind::quantity: kind = std::string(dimension_name(p.dimension)); break;
+      case ParameterKind::number: kind = "number"; break;
+      case ParameterKind::integer: kind = "integer"; break;
+      case ParameterKind::choice: kind = "choice"; break;
+      case ParameterKind::text: kind = "text"; break;
+      case ParameterKind::flag: kind = "true/false"; break;
+      case ParameterKind::choice_list: kind = "list of choices"; break;
+      case ParameterKind::model_constants: kind = "number"; break;
+    }
+    const bool has_default = p.has_default && p.required_by == 0 && p.kind != ParameterKind::model_constants &&
+                             p.kind != ParameterKind::text;
+    std::string range = p.range_text();
+    if (!p.choices.empty()) {
+      std::string names;
+      for (const auto& c : p.choices) names += (names.empty() ? "" : " | ") + c;
+      range = range.empty() ? names : range + "; or " + names;
+    }
+    std::string aliases;
+    for (const auto& a : p.aliases) aliases += (aliases.empty() ? "" : " ") + a;
+    for (const auto& a : p.gear_aliases) aliases += (aliases.empty() ? "" : " ") + a;
+    rows.push_back({p.key, kind, p.kind == ParameterKind::quantity ? std::string(si_symbol(p.dimension)) : "",
+                    has_default ? p.format(p.get(defaults, 0)) : "", range, parts(p.required_by), aliases, p.meaning});
+  }
+  return rows;
+}
+
+const char* const kSchemaHeader[] = {"key", "kind", "SI unit", "default", "range", "required by", "aliases", "meaning"};
+
+}  // namespace
+
+std::string Parameter::range_text() const {
+  const bool lo = std::isfinite(min), hi = std::isfinite(max);
+  if (!lo && !hi) return "";
+  auto shown = [&](double v) {
+    return kind == ParameterKind::quantity ? fmt::format("{:g} {}", v, si_symbol(dimension)) : number_text(v);
+  };
+  if (lo && !hi && min == 0.0) return min_open ? "> 0" : ">= 0";
+  if (lo && !hi) return (min_open ? "> " : ">= ") + shown(min);
+  if (!lo) return (max_open ? "< " : "<= ") + shown(max);
+  return fmt::format("{}{}, {}{}", min_open ? "(" : "[", shown(min), shown(max), max_open ? ")" : "]");
+}
+
+bool Parameter::in_range(double v) const {
+  if (std::isnan(v)) return false;
+  const bool above = min_open ? v > min : v >= min;
+  const bool below = max_open ? v < max : v <= max;
+  return above && below;
+}
+
+std::string Parameter::key_for(int gear) const {
+  if (!per_gear()) return key;
+  return kGearPrefix[gear] + key.substr(std::string_view("{gear}.").size());
+}
+
+std::string Parameter::format(const ParameterValue& v) const {
+  switch (kind) {
+    case ParameterKind::quantity: return fmt::format("{:g} {}", v.number, si_symbol(dimension));
+    case ParameterKind::number: return v.text.empty() ? number_text(v.number) : v.text;
+    case ParameterKind::integer: return fmt::format("{}", static_cast<long>(v.number));
+    case ParameterKind::flag: return v.number != 0.0 ? "true" : "false";
+    case ParameterKind::choice_list: {
+      std::string s;
+      for (const auto& e : v.list) s += (s.empty() ? "" : ", ") + e;
+      return "[" + s + "]";
+    }
+    default: return v.text;
+  }
+}
+
+const std::vector<Parameter>& case_parameters() {
+  static const std::vector<Parameter> table = build_table();
+  return table;
+}
+
+ParameterLookup find_parameter(std::string_view key) {
+  for (const Parameter& p : case_parameters()) {
+    if (p.kind == ParameterKind::model_constants) {
+      if (key.rfind("asperity.constants.", 0) == 0) return {&p, -1};
+      continue;
+    }
+    if (!p.per_gear()) {
+      if (key == p.key) return {&p, -1};
+      continue;
+    }
+    for (int g = 0; g < 2; ++g)
+      if (key == p.key_for(g)) return {&p, g};
+  }
+  return {};
+}
+
+const std::vector<CaseAlias>& case_aliases() {
+  static const std::vector<CaseAlias> aliases = [] {
+    std::vector<CaseAlias> out;
+    for (const Parameter& p : case_parameters()) {
+      for (const auto& a : p.aliases)
+        out.push_back({a, p.per_gear() ? std::vector<std::string>{p.key_for(0), p.key_for(1)} : std::vector<std::string>{p.key}});
+      for (std::size_t g = 0; g < p.gear_aliases.size(); ++g)
+        out.push_back({p.gear_aliases[g], {p.key_for(static_cast<int>(g))}});
+    }
+    return out;
+  }();
+  return aliases;
+}
+
+std::vector<std::string> resolve_case_key(const std::string& name) {
+  for (const CaseAlias& a : case_aliases())
+    if (a.name == name) return a.keys;
+  return {name};
+}
+
+std::string parameter_text_error(const Parameter& p, const std::string& text) {
+  auto named = [&] { return std::find(p.choices.begin(), p.choices.end(), text) != p.choices.end(); };
+  double v = 0.0;
+  switch (p.kind) {
+    case ParameterKind::quantity:
+      try {
+        v = parse_quantity(text, p.dimension);
+      } catch (const std::invalid_argument& e) {
+        return e.what();
+      }
+      break;
+    case ParameterKind::number:
+    case ParameterKind::integer: {
+      if (p.kind == ParameterKind::number && named()) return "";
+      const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(v)) return "expected a number";
+      if (p.kind == ParameterKind::integer && v != std::floor(v)) return "expected an integer";
+      break;
+    }
+    case ParameterKind::choice:
+      if (!named()) {
+        std::string names;
+        for (const auto& c : p.choices) names += (names.empty() ? "" : ", ") + c;
+        return "unknown " + p.noun + " '" + text + "' (known: " + names + ")";
+      }
+      return "";
+    default: return "";
+  }
+  if (!p.in_range(v)) return "must lie in " + p.range_text();
+  return "";
+}
+
+std::string case_schema_csv() {
+  std::string out;
+  for (std::size_t i = 0; i < std::size(kSchemaHeader); ++i) out += (i ? "," : "") + std::string(kSchemaHeader[i]);
+  out += '\n';
+  for (const auto& row : schema_rows()) {
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      if (i) out += ',';
+      out += csv_field(row[i]);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::string case_schema_markdown() {
+  std::string out =
+      "# Case file reference\n\n"
+      "Generated by `geartrib case --schema --markdown` from the parameter table (src/io/case_parameters.cpp);\n"
+      "do not edit by hand. Values with a dimension take a unit from the unit table (\"6 mm\", \"20 deg\",\n"
+      "\"1000 rpm\") or a bare SI number. `{gear}` stands for `pinion` and `wheel`. A key without a default\n"
+      "is required when a command uses its part (\"required by\"); `geartrib case CASE` shows what a case\n"
+      "resolves to. Aliases are the short names `--set` and `geartrib sweep` accept. A flank takes exactly\n"
+      "one roughness form: ra; rq; summit_density + summit_sigma; m0 + m2 + m4; or a topography table.\n\n";
+  out += "|";
+  for (const char* h : kSchemaHeader) out += std::string(" ") + h + " |";
+  out += "\n|";
+  for (std::size_t i = 0; i < std::size(kSchemaHeader); ++i) out += "---|";
+  out += '\n';
+  for (const auto& row : schema_rows()) {
+    out += "|";
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      std::string cell = row[i];
+      for (std::size_t pos = 0; (pos = cell.find('|', pos)) != std::string::npos; pos += 2) cell.replace(pos, 1, "\\|");
+      out += i == 0 && !cell.empty() ? fmt::format(" `{}` |", cell) : fmt::format(" {} |", cell);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+}  // namespace geartrib::io
