@@ -33,8 +33,9 @@ if ((${#missing[@]})); then
 fi
 
 build_type="${GEARTRIB_BUILD_TYPE:-Release}"
+werror="${GEARTRIB_WERROR:-OFF}"   # CI (.ci/run) sets ON: a warning fails the build
 jobs="$(nproc 2>/dev/null || echo 2)"
-cmake -S . -B build -DCMAKE_BUILD_TYPE="$build_type" >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE="$build_type" -DGEARTRIB_WERROR="$werror" >/dev/null
 cmake --build build -j "$jobs"
 
 case "$mode" in

@@ -1,6 +1,7 @@
 // Loading the data files, and the error each kind of bad input produces.
 #include "contact/greenwood_williamson.hpp"
 #include "contact/rough_line_contact.hpp"
+#include "gear/mesh_dynamics.hpp"
 #include "io/case_file.hpp"
 #include "io/input_error.hpp"
 #include "io/topography_files.hpp"
@@ -317,4 +318,20 @@ TEST(CaseParameters, TableIsConsistent) {
   EXPECT_NE(io::parameter_text_error(module, "-4mm"), "");
   EXPECT_NE(io::parameter_text_error(*io::find_parameter("contact.fidelity").parameter, "fine"), "");
   EXPECT_NE(io::parameter_text_error(*io::find_parameter("contact.positions").parameter, "2.5"), "");
+}
+
+// The case's defaults (case/case.hpp, what a case file gets) and the physics option structs'
+// defaults (what a library caller gets) are stated in two layers that cannot include each other
+// (case/ sits below contact/ and gear/); they must agree.
+TEST(CaseParameters, CaseDefaultsAreThePhysicsDefaults) {
+  const Case c;
+  const contact::StripOptions strip;
+  const contact::GreenwoodWilliamsonOptions gw;
+  EXPECT_EQ(c.contact.strip_points, strip.strip_points);
+  EXPECT_EQ(c.contact.coupled_nodes, strip.coupled_nodes);
+  EXPECT_EQ(c.contact.height_points, gw.height_points);
+  EXPECT_EQ(c.contact.table_points, gw.table_points_per_sigma);
+  const gear::DynamicsSettings dyn;
+  EXPECT_EQ(c.dynamics.damping_ratio, dyn.damping_ratio);
+  EXPECT_EQ(c.dynamics.relative_tolerance, dyn.tolerances.relative);
 }

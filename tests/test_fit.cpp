@@ -2,7 +2,7 @@
 // continuous model's defaults as the fit's output, and the errors a fit must report.
 #include "asperity/continuous_defaults.hpp"
 #include "fit/model_fit.hpp"
-#include "io/fit_files.hpp"
+#include "fit/fit_files.hpp"
 #include "io/input_error.hpp"
 #include "test_support.hpp"
 

@@ -17,7 +17,8 @@ struct MeshContactResult;
 
 namespace geartrib::app {
 
-// gears/m6z30.toml in the working directory, else in the source tree the tool was built from.
+// gears/m6z30.toml in the working directory, else beside an installed tool (<prefix>/share/geartrib),
+// else in the source tree the tool was built from.
 std::filesystem::path default_case_file();
 // Loads the case (the default one when the file is empty) with the command line's key=value
 // changes, requiring the keys of `parts` (io::CasePart), printing its warnings to stderr.

@@ -96,7 +96,7 @@ void add_dynamics_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
       "dynamics",
-      "Single-degree-of-freedom mesh dynamics along the line of action: m_e x'' + c x' + k(t) x = F with the\n"
+      "Single-degree-of-freedom mesh dynamics along the line of action: m_e x'' + c x' + k(t) g(x) = F with the\n"
       "potential-energy mesh stiffness (steps at B and D integrated explicitly), damping ratio zeta, contact\n"
       "loss (and back-flank contact with a backlash). At one speed: the periodic steady cycle (deflection,\n"
       "static transmission error, mesh force, each pair's dynamic load). Over a sweep: the dynamic factor\n"

@@ -5,7 +5,7 @@
 
 #include "asperity/case_setup.hpp"
 #include "fit/model_fit.hpp"
-#include "io/fit_files.hpp"
+#include "fit/fit_files.hpp"
 #include "io/table_writer.hpp"
 
 #include <fmt/format.h>

@@ -3,13 +3,11 @@
 
 #include <CLI/CLI.hpp>
 
-#include <Eigen/Core>
 #include <boost/version.hpp>
 #include <ceres/version.h>
 #include <fmt/core.h>
 #include <H5public.h>
 #include <sundials/sundials_config.h>
-#include <toml++/toml.h>
 
 namespace geartrib::app {
 
@@ -19,13 +17,13 @@ void add_version_command(CLI::App& app) {
     unsigned h5maj = 0, h5min = 0, h5rel = 0;
     H5get_libversion(&h5maj, &h5min, &h5rel);
     fmt::print("geartrib {}\n", GEARTRIB_VERSION);
-    fmt::print("  Eigen    {}.{}.{}\n", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION);
+    fmt::print("  Eigen    {}\n", GEARTRIB_EIGEN_VERSION);  // versions of header-only libraries: from CMake
     fmt::print("  SUNDIALS {}\n", SUNDIALS_VERSION);
     fmt::print("  Boost    {}.{}.{}\n", BOOST_VERSION / 100000, BOOST_VERSION / 100 % 1000, BOOST_VERSION % 100);
     fmt::print("  Ceres    {}\n", CERES_VERSION_STRING);
     fmt::print("  HDF5     {}.{}.{}\n", h5maj, h5min, h5rel);
     fmt::print("  CLI11    {}\n", CLI11_VERSION);
-    fmt::print("  toml++   {}.{}.{}\n", TOML_LIB_MAJOR, TOML_LIB_MINOR, TOML_LIB_PATCH);
+    fmt::print("  toml++   {}\n", GEARTRIB_TOMLPLUSPLUS_VERSION);
     fmt::print("  fmt      {}\n", FMT_VERSION);
   });
 }

@@ -1,4 +1,4 @@
-#include "io/fit_files.hpp"
+#include "fit/fit_files.hpp"
 
 #include "io/input_error.hpp"
 #include "io/text_lines.hpp"
