@@ -54,7 +54,8 @@ int main(int argc, char** argv) {
       const auto& pressure = r.find("mean_real_pressure_Pa")->values;
       std::printf("%10.0f %8.2f %8.1f %11.0f %11.4f %10.4f %14.3f\n", torque, ra * 1e6, r.plasticity_index,
                   *std::max_element(p0.begin(), p0.end()) * 1e-6, contact::path_mean(area),
-                  *std::max_element(area.begin(), area.end()), *std::max_element(pressure.begin(), pressure.end()) * 1e-9);
+                  *std::max_element(area.begin(), area.end()),
+                  *std::max_element(pressure.begin(), pressure.end()) * 1e-9);
     }
   }
   // Reading the table: the plasticity index psi is far above 1 for both finishes, so every summit

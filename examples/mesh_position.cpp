@@ -63,8 +63,8 @@ int main(int argc, char** argv) {
   options.strip_points = c.contact.strip_points;
   const contact::RoughLineContact strip(gw, mesh.composite_modulus(), c.gear_pair.face_width, options, nullptr);
   const contact::StripResult r = strip.solve(load.line_load, radius);
-  std::printf("real area ratio %.4f, plastic area fraction %.4f, mean real pressure %.2f GPa\n",
-              r.real_area_ratio, r.plastic_area_fraction, r.mean_real_pressure * 1e-9);
+  std::printf("real area ratio %.4f, plastic area fraction %.4f, mean real pressure %.2f GPa\n", r.real_area_ratio,
+              r.plastic_area_fraction, r.mean_real_pressure * 1e-9);
   std::printf("contacts %.3g per mm, separation at the centre %.3f sigma_s\n", r.contacts_per_width * 1e-3,
               r.min_separation / surf.summit_sigma);
   return 0;

@@ -14,7 +14,8 @@ case "$mode" in build|run|test) ;; *) echo "usage: bash scripts/setup.sh [build|
 packages=(g++ cmake make pkg-config
           libeigen3-dev libsundials-dev libboost-dev libceres-dev libhdf5-dev
           libcli11-dev libtomlplusplus-dev libfmt-dev libgtest-dev libbenchmark-dev libfftw3-dev
-          python3 python3-h5py python3-matplotlib calculix-ccx)
+          python3 python3-h5py python3-matplotlib calculix-ccx
+          clang-format clang-tidy)   # scripts/lint.sh (ctest -R lint.format, ctest -L lint)
 missing=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -104,6 +104,10 @@ PY
 check surface-bad-outliers 2 "outlier limit" -- "$bin" surface stats "$tmp/a.h5" --outliers 1
 
 # Bad input: exit 2 with a message naming what is wrong.
+# The case as it would run, and the parameter table.
+check case-listing 0 "^gear_pair.module +0.005 m +--set" -- "$bin" case --set module=5mm
+check case-schema 0 "^key,kind,SI unit,default,range,required by,aliases,meaning" -- "$bin" case --schema
+check case-bad-set 2 "key 'contact.positions'" -- "$bin" case --set positions=1
 check unknown-model 2 "unknown asperity model 'nope'" -- "$bin" asperity --model nope
 check bad-range 2 "MIN:MAX:COUNT" -- "$bin" asperity --range 1:0:5
 check bad-contact 2 "" -- "$bin" asperity --contact sideways

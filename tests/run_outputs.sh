@@ -108,4 +108,19 @@ assert np.all(np.isfinite(k)) and k.max() > 1.0, k
 # Atomic output: a failing write leaves nothing behind.
 "$bin" run -q -o "$tmp/missing-dir/x.h5" >/dev/null 2>&1 && bad write-error-status || ok write-error-status
 ls -a "$tmp" | grep -q '\.tmp\.' && bad temporary-left || ok no-temporary-left
+# What ran is what the file records: --fidelity and --positions are --set changes, every key is in
+# /parameters with its value and origin.
+"$bin" run -q --positions 21 --set torque=500Nm -o "$tmp/p.h5" >/dev/null && ok run-shorthands || bad run-shorthands
+"$py" - "$tmp/p.h5" <<'PY' && ok parameters-recorded || bad parameters-recorded
+import sys, h5py
+f = h5py.File(sys.argv[1], "r")
+text = lambda d: [x.decode() if isinstance(x, bytes) else x for x in d[()]]
+p = dict(zip(text(f["parameters/key"]), zip(text(f["parameters/value"]), text(f["parameters/origin"]))))
+assert p["contact.positions"] == ("21", "--set"), p["contact.positions"]
+assert p["operating.pinion_torque"] == ("500 N m", "--set"), p["operating.pinion_torque"]
+assert p["gear_pair.module"][0] == "0.006 m" and "m6z30.toml:" in p["gear_pair.module"][1], p["gear_pair.module"]
+assert p["gear_pair.center_distance"] == ("0 m", "default")
+assert f["mesh/s_m"].shape == (21,)
+assert b"--set contact.positions=21" in f["scene"][()]
+PY
 exit $fail

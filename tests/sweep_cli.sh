@@ -72,6 +72,10 @@ check bad-count 2 "integer count" -- "$bin" sweep --set face_width=40mm:80mm:x -
 check zip-lengths 2 "equal lengths" -- "$bin" sweep --zip --set z1=20,30 --set z2=30,31,32 -o "$tmp/bad.h5"
 check bad-shard 2 "0 <= i < n" -- "$bin" sweep --set z1=20,30 --shard 2/2 -o "$tmp/bad.h5"
 check same-key-twice 2 "given twice" -- "$bin" sweep --set z1=20 --set z1=30 -o "$tmp/bad.h5"
+# Axis values are checked against the parameter table before any point runs.
+check axis-unit 2 "value '4GPa' for gear_pair.module: unit 'GPa' is a pressure" -- "$bin" sweep --set module=4GPa,5mm -o "$tmp/bad.h5"
+check axis-choice 2 "unknown value 'fine'" -- "$bin" sweep --set fidelity=fine -o "$tmp/bad.h5"
+check axis-range 2 "must lie in \[5, 1000\]" -- "$bin" sweep --set teeth=4,30 -o "$tmp/bad.h5"
 check unknown-key 0 "unknown key" -- "$bin" sweep --set gear_pair.modul=5mm -o "$tmp/u.h5" --csv "$tmp/u.csv"
 check run-set 2 "--set gear_pair.module=-5mm" -- "$bin" run -q --set module=-5mm -o "$tmp/bad.h5"
 check run-set-integer 2 "expected an integer" -- "$bin" run -q --set pinion.teeth=30.5 -o "$tmp/bad.h5"

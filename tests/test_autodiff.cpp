@@ -37,8 +37,10 @@ void check_derivatives(double d) {
     const double fd_load = (hi.load - lo.load) / (2 * h), fd_area = (hi.area - lo.area) / (2 * h);
     // Central differences with h ~ 1e-6 x: truncation O(h^2) and rounding O(eps/h) both below
     // 1e-7 relative to the function's scale.
-    EXPECT_NEAR(s.load.v[i], fd_load, 1e-6 * std::max(1.0, std::abs(s.load.a))) << Law::name << " d=" << d << " i=" << i;
-    EXPECT_NEAR(s.area.v[i], fd_area, 1e-6 * std::max(1.0, std::abs(s.area.a))) << Law::name << " d=" << d << " i=" << i;
+    EXPECT_NEAR(s.load.v[i], fd_load, 1e-6 * std::max(1.0, std::abs(s.load.a)))
+        << Law::name << " d=" << d << " i=" << i;
+    EXPECT_NEAR(s.area.v[i], fd_area, 1e-6 * std::max(1.0, std::abs(s.area.a)))
+        << Law::name << " d=" << d << " i=" << i;
   }
 }
 

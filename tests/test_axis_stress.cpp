@@ -78,7 +78,9 @@ TEST(AxisStress, YieldFactorFitsReproduceTheExactHertzValue) {
 TEST(PressureProfile, TwoZoneStressesEqualBruteForce) {
   const double nu = 0.3, a = 2.0;
   PressureProfile p{a, 1.2, 0.9, 1.3};  // core 0.9 on r < 1.2, annulus 1.3 sqrt(1 - r^2/a^2)
-  auto pr = [&](double r) { return r < p.core_radius ? p.core_pressure : p.annulus_peak * std::sqrt(std::max(0.0, 1.0 - r * r / (a * a))); };
+  auto pr = [&](double r) {
+    return r < p.core_radius ? p.core_pressure : p.annulus_peak * std::sqrt(std::max(0.0, 1.0 - r * r / (a * a)));
+  };
   for (double z : {0.1, 0.6, 1.5}) {
     const AxisStress s = p.axis_stress(z, nu);
     // The brute force integrates across the pressure jump at r_p: Simpson converges only to
@@ -94,8 +96,8 @@ TEST(PressureProfile, LoadIsTheIntegralOfThePressure) {
   // pi r_p^2 q + (2 pi/3) p_e (a^2 - r_p^2)^(3/2)/a, by hand: exact identity.
   const double expected = kPi * 1.44 * 0.9 + 2.0 * kPi / 3.0 * 1.3 * std::pow(4.0 - 1.44, 1.5) / 2.0;
   EXPECT_NEAR(p.load(), expected, 1e-12);
-  EXPECT_DOUBLE_EQ(hertz_profile(1.0, 3.0).load(), 2.0 * kPi);       // Hertz: F = 2/3 pi a^2 p0
-  EXPECT_DOUBLE_EQ(uniform_profile(1.0, 3.0).load(), 3.0 * kPi);     // uniform: pi a^2 p
+  EXPECT_DOUBLE_EQ(hertz_profile(1.0, 3.0).load(), 2.0 * kPi);    // Hertz: F = 2/3 pi a^2 p0
+  EXPECT_DOUBLE_EQ(uniform_profile(1.0, 3.0).load(), 3.0 * kPi);  // uniform: pi a^2 p
 }
 
 TEST(PressureProfile, TwoZoneProfileCarriesTheMeanPressureContinuously) {
@@ -114,8 +116,8 @@ TEST(PressureProfile, TwoZoneProfileCarriesTheMeanPressureContinuously) {
     }
   }
   EXPECT_EQ(two_zone_profile(1.0, 0.5, 0.0).core_radius, 0.0);
-  EXPECT_DOUBLE_EQ(two_zone_profile(1.0, 0.5, 0.0).max_pressure(), 0.75);  // p0 = 1.5 p_m
-  EXPECT_DOUBLE_EQ(two_zone_profile(1.0, 0.5, 1.0).max_pressure(), 0.5);   // uniform
+  EXPECT_DOUBLE_EQ(two_zone_profile(1.0, 0.5, 0.0).max_pressure(), 0.75);     // p0 = 1.5 p_m
+  EXPECT_DOUBLE_EQ(two_zone_profile(1.0, 0.5, 1.0).max_pressure(), 0.5);      // uniform
   EXPECT_DOUBLE_EQ(two_zone_profile(1.0, 0.5, 2.0).plastic_fraction(), 1.0);  // share clamped to [0, 1]
 }
 

@@ -167,7 +167,8 @@ TEST_F(BadInput, ModelConstantOverrideIsApplied) {
        "[asperity.constants.continuous]\nplastic_scale = 5.0");
   const Case c = io::load_case(dir_ / "gears/m6z30.toml");
   EXPECT_DOUBLE_EQ(asperity::make_case_model(c, "continuous")->constant("plastic_scale"), 5.0);
-  EXPECT_DOUBLE_EQ(asperity::make_case_model(c, "continuous")->constant("area_scale"), asperity::fitted::continuous_area_scale);
+  EXPECT_DOUBLE_EQ(asperity::make_case_model(c, "continuous")->constant("area_scale"),
+                   asperity::fitted::continuous_area_scale);
 }
 
 TEST_F(BadInput, TomlSyntaxError) {
@@ -309,7 +310,8 @@ TEST(CaseParameters, TableIsConsistent) {
     for (const auto& k : a.keys) EXPECT_NE(io::find_parameter(k).parameter, nullptr) << a.name << " -> " << k;
   // The physics option structs' ranges are the table's (declared once, with the struct).
   EXPECT_EQ(io::find_parameter("contact.strip_points").parameter->min, contact::StripOptions::kMinStripPoints);
-  EXPECT_EQ(io::find_parameter("contact.height_points").parameter->min, contact::GreenwoodWilliamsonOptions::kMinHeightPoints);
+  EXPECT_EQ(io::find_parameter("contact.height_points").parameter->min,
+            contact::GreenwoodWilliamsonOptions::kMinHeightPoints);
   EXPECT_EQ(io::find_parameter("wheel.teeth").gear, 1);
   // Sweep values are checked against the row: unit, kind, choices and range.
   const io::Parameter& module = *io::find_parameter("gear_pair.module").parameter;

@@ -141,5 +141,6 @@ TEST(ContinuousModel, ConstantsChangeTheCurve) {
   m->set_constant("plastic_scale", 30.0);  // a later plastic core: less yielded surface, same load
   EXPECT_LT(m->star(10.0, p).plastic, 0.5);
   EXPECT_THROW(m->set_constant("plastic_exponent", 0.1), std::invalid_argument);  // outside [0.2, 20]
-  EXPECT_THROW(m->set_constant("plastic_onset", 0.5), std::invalid_argument);     // the surface cannot yield before delta_c
+  EXPECT_THROW(m->set_constant("plastic_onset", 0.5),
+               std::invalid_argument);  // the surface cannot yield before delta_c
 }

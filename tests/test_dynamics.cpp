@@ -37,7 +37,8 @@ TEST_P(EachIntegrator, UndampedHarmonicSolution) {
   std::vector<std::vector<double>> samples;
   integ->integrate(sys, 0.0, 5e-4, y, times, samples, {1e-11, 1e-11 * xs});
   for (std::size_t i = 0; i < times.size(); ++i)
-    EXPECT_NEAR(samples[i][0], xs * (1.0 - std::cos(w * times[i])), 1e-7 * xs) << times[i];  // 1e4 x rtol: global error growth
+    EXPECT_NEAR(samples[i][0], xs * (1.0 - std::cos(w * times[i])), 1e-7 * xs)
+        << times[i];  // 1e4 x rtol: global error growth
 }
 
 TEST_P(EachIntegrator, DampedStepSettlesToTheStaticDeflection) {
@@ -66,7 +67,8 @@ TEST(MeshDynamics, EnginesAgreeOnTheSteadyCycle) {
   const SteadyCycle b = dyn.steady_cycle(*solvers::make_integrator("odeint"), 1000.0 * kRpm);
   ASSERT_TRUE(a.periodic && b.periodic);
   double worst = 0.0;
-  for (std::size_t i = 0; i < a.force.size(); ++i) worst = std::max(worst, std::abs(a.force[i] - b.force[i]) / a.static_force);
+  for (std::size_t i = 0; i < a.force.size(); ++i)
+    worst = std::max(worst, std::abs(a.force[i] - b.force[i]) / a.static_force);
   EXPECT_LT(worst, 1e-6);
   EXPECT_NEAR(a.dynamic_factor / b.dynamic_factor, 1.0, 1e-6);
 }
@@ -88,7 +90,8 @@ TEST(MeshDynamics, StiffnessStepsAndMeanStiffness) {
   }
   // Natural frequency from the mean stiffness and the equivalent mass: 2750 Hz (ISO 6336-1's
   // estimate with c_gamma_alpha: about 2.94 kHz).
-  EXPECT_NEAR(dyn.natural_frequency(), std::sqrt(dyn.mean_stiffness() / dyn.equivalent_mass()) / (2.0 * std::numbers::pi), 1e-9);
+  EXPECT_NEAR(dyn.natural_frequency(),
+              std::sqrt(dyn.mean_stiffness() / dyn.equivalent_mass()) / (2.0 * std::numbers::pi), 1e-9);
   EXPECT_NEAR(dyn.natural_frequency(), 2750.0, 30.0);
 }
 

@@ -118,7 +118,8 @@ TEST(Extremes, FrictionZeroToOne) {
   const contact::RoughLineContact strip(s.gw, s.mesh.composite_modulus(), c.gear_pair.face_width, {}, nullptr);
   const contact::StripResult r = strip.solve(s.mesh.normal_force() / c.gear_pair.face_width, 0.02);
   for (double mu : {0.0, 1e-6, 0.01, 0.1, 0.3, 0.6, 1.0}) {
-    const auto g = asperity::side_contact_geometry(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius, mu);
+    const auto g = asperity::side_contact_geometry(c.pinion.flank.roughness.summit_radius,
+                                                   c.wheel.flank.roughness.summit_radius, mu);
     const contact::HighestAsperity h = contact::highest_asperity(s.gw, r, c.gear_pair.face_width, &g);
     EXPECT_TRUE(std::isfinite(h.von_mises) && h.von_mises > 0.0) << mu;
     EXPECT_TRUE(std::isfinite(h.peak_pressure) && std::isfinite(h.plastic_fraction)) << mu;
@@ -191,8 +192,8 @@ TEST(Extremes, ProfileShiftMinusHalfToOne) {
   for (double x : {-0.5, -0.25, 0.0, 0.25, 0.5, 0.75, 1.0}) {
     const std::string value = std::to_string(x);
     try {
-      const Case c = changed({{"x1", value}, {"x2", std::to_string(-x)}, {"pinion.bore_diameter", "0"},
-                              {"wheel.bore_diameter", "0"}});
+      const Case c = changed(
+          {{"x1", value}, {"x2", std::to_string(-x)}, {"pinion.bore_diameter", "0"}, {"wheel.bore_diameter", "0"}});
       expect_finite(cycle(c), "x1 = " + value);
       ++ran;
     } catch (const io::InputError& e) {
@@ -224,7 +225,8 @@ TEST(Extremes, SpeedsFromOneRpmToThreeTimesResonance) {
   const gear::GearMesh mesh(c);
   const gear::MeshDynamics dyn(mesh, gear::dynamics_settings(c));
   const auto integrator = solvers::make_integrator("cvode");
-  const double resonance = 2.0 * std::numbers::pi * dyn.natural_frequency() / mesh.pair().pinion().teeth;  // pinion rad/s
+  const double resonance =
+      2.0 * std::numbers::pi * dyn.natural_frequency() / mesh.pair().pinion().teeth;  // pinion rad/s
   for (double f : {1.0 / (resonance * 60.0 / (2.0 * std::numbers::pi)), 0.01, 0.3, 0.9, 1.0, 1.1, 2.0, 3.0}) {
     const gear::SteadyCycle s = dyn.steady_cycle(*integrator, f * resonance);
     for (double v : s.force) ASSERT_TRUE(std::isfinite(v)) << f;

@@ -34,7 +34,8 @@ std::vector<std::string> lines_after(const std::string& text, const std::string&
 }
 // Every 8-node element under `keyword` has counter-clockwise corners (positive shoelace area;
 // ccx stops with "nonpositive jacobian" otherwise); returns how many elements there are.
-int check_element_areas(const std::string& text, const std::string& keyword, const std::map<int, std::pair<double, double>>& node) {
+int check_element_areas(const std::string& text, const std::string& keyword,
+                        const std::map<int, std::pair<double, double>>& node) {
   int count = 0;
   for (const auto& l : lines_after(text, keyword)) {
     std::istringstream in(l);
@@ -142,7 +143,8 @@ TEST(FemDeck, LevelsAreGroupedIntoRunsThatResolveTheirFirstContact) {
   SingleAsperitySpec s = spec();
   s.delta_star = {1, 4};
   const SingleAsperityDeck d = single_asperity_deck(s);
-  EXPECT_NEAR(d.tip_element, std::sqrt(s.critical_interference_over_radius) / s.refine, 1e-15);  // a(delta* = 1) / refine
+  EXPECT_NEAR(d.tip_element, std::sqrt(s.critical_interference_over_radius) / s.refine,
+              1e-15);  // a(delta* = 1) / refine
 }
 
 TEST(FemDeck, CylinderMeshIsValidAndFollowsTheProfile) {
@@ -160,7 +162,8 @@ TEST(FemDeck, CylinderMeshIsValidAndFollowsTheProfile) {
   // The surface is the highest of the parabolas (mm): the middle tip 2 nm low, the outer at 0.
   for (std::size_t k = 0; k < d.top_x.size(); ++k) {
     double y = -4e-3;
-    for (const auto& c : s.cylinders) y = std::max(y, c.tip * 1e3 - std::pow(d.top_x[k] - c.centre * 1e3, 2) / (2.0 * c.radius * 1e3));
+    for (const auto& c : s.cylinders)
+      y = std::max(y, c.tip * 1e3 - std::pow(d.top_x[k] - c.centre * 1e3, 2) / (2.0 * c.radius * 1e3));
     EXPECT_NEAR(d.top_y[k], y, 1e-15);
   }
   s.levels = {10000};
@@ -203,13 +206,13 @@ TEST(FemResults, SurfaceYieldShareIsTheYieldedAreaOverTheContactDisc) {
     for (double x : r) y.push_back(yielded_at(x));
     return surface_yield_share(r, y, a);
   };
-  EXPECT_NEAR(share([](double) { return true; }), 1.0, 1e-12);                            // the whole disc
-  EXPECT_NEAR(share([](double x) { return x > 0.5; }), 0.75, 1e-12);                      // annulus 0.5 a..a
-  EXPECT_NEAR(share([](double x) { return x > 0.5 && x < 1.5; }), 0.75, 1e-12);           // yield beyond a ignored
-  EXPECT_NEAR(share([](double x) { return x < 0.5; }), 0.25, 1e-12);                      // a core disc
+  EXPECT_NEAR(share([](double) { return true; }), 1.0, 1e-12);                          // the whole disc
+  EXPECT_NEAR(share([](double x) { return x > 0.5; }), 0.75, 1e-12);                    // annulus 0.5 a..a
+  EXPECT_NEAR(share([](double x) { return x > 0.5 && x < 1.5; }), 0.75, 1e-12);         // yield beyond a ignored
+  EXPECT_NEAR(share([](double x) { return x < 0.5; }), 0.25, 1e-12);                    // a core disc
   EXPECT_NEAR(share([](double x) { return x > 0.3 && x < 0.6; }), 0.36 - 0.09, 1e-12);  // a ring inside
-  EXPECT_EQ(share([](double) { return false; }), 0.0);                                    // nothing
-  EXPECT_EQ(share([](double x) { return x > 1.0; }), 0.0);                                // only outside the contact
+  EXPECT_EQ(share([](double) { return false; }), 0.0);                                  // nothing
+  EXPECT_EQ(share([](double x) { return x > 1.0; }), 0.0);                              // only outside the contact
   // The contact edge inside a node's ring: that ring is cut at a (0.995 a: a node at 0.995, its ring 0.99..1.0).
   std::vector<bool> all(r.size(), true);
   EXPECT_NEAR(surface_yield_share(r, all, 0.993), 1.0, 1e-12);
@@ -232,6 +235,7 @@ TEST(FemResults, SurfaceYieldedNodesDropOneNodeFlipsOfTheExtrapolatedStrain) {
   const std::vector<double> peeq{0, 1e-7, 0, 3e-6, 5e-5, -1.4e-3, 1.6e-3, 2e-4, 0, 0, 4e-6, 0, 0};
   const std::vector<bool> want{false, false, false, true, true, true, true, true, false, false, false, false, false};
   EXPECT_EQ(surface_yielded_nodes(peeq), want);
-  EXPECT_EQ(surface_yielded_nodes({2e-6, 0, 0, 2e-6}), (std::vector<bool>{true, false, false, true}));  // end nodes as they are
+  EXPECT_EQ(surface_yielded_nodes({2e-6, 0, 0, 2e-6}),
+            (std::vector<bool>{true, false, false, true}));  // end nodes as they are
   EXPECT_TRUE(surface_yielded_nodes({}).empty());
 }

@@ -1,8 +1,8 @@
 // Fitting model constants with Ceres: parameter recovery, coverage of the standard errors, the
 // continuous model's defaults as the fit's output, and the errors a fit must report.
 #include "asperity/continuous_defaults.hpp"
-#include "fit/model_fit.hpp"
 #include "fit/fit_files.hpp"
+#include "fit/model_fit.hpp"
 #include "io/input_error.hpp"
 #include "test_support.hpp"
 
@@ -25,7 +25,8 @@ constexpr double kPlasticSd = 0.01;  // absolute sd of the synthetic plastic sha
 FitData synthetic(const asperity::AsperityModel& truth, double noise, std::mt19937* rng) {
   FitData d;
   d.name = "synthetic";
-  d.columns = {{Observable::load_star, {}, {}}, {Observable::area_star, {}, {}}, {Observable::plastic_area_fraction, {}, {}}};
+  d.columns = {
+      {Observable::load_star, {}, {}}, {Observable::area_star, {}, {}}, {Observable::plastic_area_fraction, {}, {}}};
   std::normal_distribution<double> n(0.0, 1.0);
   const auto pair = test::seed_pair();
   int line = 1;

@@ -38,7 +38,7 @@ TEST(SpurPair, SeedPairClosedForms) {
   const double rb = 0.090 * std::cos(alpha);
   const double eps = (2.0 * std::sqrt(0.096 * 0.096 - rb * rb) - 0.180 * std::sin(alpha)) / (kPi * m * std::cos(alpha));
   EXPECT_NEAR(p.path().contact_ratio, eps, 1e-12);
-  EXPECT_NEAR(p.path().contact_ratio, 1.6535, 5e-5);  // 30/30 standard pair, 4 decimals
+  EXPECT_NEAR(p.path().contact_ratio, 1.6535, 5e-5);                     // 30/30 standard pair, 4 decimals
   EXPECT_NEAR(p.path().b - p.path().a, p.path().e - p.path().d, 1e-15);  // both equal g_alpha - p_b
 }
 
@@ -77,7 +77,7 @@ TEST(SpurPair, ShiftedPairOperatingAngle) {
   const double inv_w = involute(20 * kDeg) + 2.0 * std::tan(20 * kDeg) * 0.3532 / 40.0;
   EXPECT_NEAR(involute(zero_backlash.operating_pressure_angle()), inv_w, 1e-15);
   EXPECT_NEAR(zero_backlash.center_distance(), 0.0915, 1e-6);  // a = 91.5 mm to the shifts' 4 decimals
-  s.center_distance = 0.0916;  // with backlash: cos(alpha_w) = a cos(alpha)/a_w
+  s.center_distance = 0.0916;                                  // with backlash: cos(alpha_w) = a cos(alpha)/a_w
   const SpurPair given(s);
   EXPECT_NEAR(std::cos(given.operating_pressure_angle()), 0.090 * std::cos(20 * kDeg) / 0.0916, 1e-15);
   s.center_distance = 0.0914;

@@ -11,8 +11,8 @@ TEST(LoadSharing, IsoFactorShape) {
   const SpurPair p(test::seed_case().gear_pair);
   const PathOfContact& path = p.path();
   EXPECT_DOUBLE_EQ(iso_load_sharing_factor(path, path.a), 1.0 / 3.0);
-  EXPECT_NEAR(iso_load_sharing_factor(path, path.b), 2.0 / 3.0, 1e-12);        // double-contact side
-  EXPECT_DOUBLE_EQ(iso_load_sharing_factor(path, path.b, true), 1.0);          // single-tooth side
+  EXPECT_NEAR(iso_load_sharing_factor(path, path.b), 2.0 / 3.0, 1e-12);  // double-contact side
+  EXPECT_DOUBLE_EQ(iso_load_sharing_factor(path, path.b, true), 1.0);    // single-tooth side
   EXPECT_DOUBLE_EQ(iso_load_sharing_factor(path, path.c), 1.0);
   EXPECT_NEAR(iso_load_sharing_factor(path, path.d), 2.0 / 3.0, 1e-12);
   EXPECT_DOUBLE_EQ(iso_load_sharing_factor(path, path.d, true), 1.0);

@@ -19,7 +19,7 @@ TEST(Material, FlowStressInterpolatesTheSeedTable) {
   EXPECT_DOUBLE_EQ(m.flow_stress(0.0), 418e6);
   EXPECT_DOUBLE_EQ(m.flow_stress(0.056), 695e6);
   EXPECT_DOUBLE_EQ(m.flow_stress(0.5), 0.5 * (921e6 + 932e6));  // midway between 0.45 and 0.55
-  EXPECT_DOUBLE_EQ(m.flow_stress(5.0), 1040e6);                  // perfectly plastic beyond the table
+  EXPECT_DOUBLE_EQ(m.flow_stress(5.0), 1040e6);                 // perfectly plastic beyond the table
 }
 
 TEST(Material, ValidateNamesTheRule) {

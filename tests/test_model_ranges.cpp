@@ -54,7 +54,8 @@ TEST_P(EveryModel, StressOutputsFiniteAndConsistent) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Registry, EveryModel, ::testing::ValuesIn(asperity_model_names().begin(), asperity_model_names().end()),
+INSTANTIATE_TEST_SUITE_P(Registry, EveryModel,
+                         ::testing::ValuesIn(asperity_model_names().begin(), asperity_model_names().end()),
                          [](const auto& info) {
                            std::string n(info.param);
                            for (char& ch : n)

@@ -72,7 +72,8 @@ TEST(MultiAsperity, MeasuredProfileReproducesTheLayoutItDescribes) {
   const MultiAsperitySpec layout = spec("HLH", 1.0, 0.5e-6);
   MultiAsperitySpec measured = layout;
   const double datum = 3e-6, offset = 17e-6;
-  measured.profile = {{offset - 0.5e-6, datum, 6.6e-6}, {offset, datum - kDeltaPc, 6.6e-6}, {offset + 0.5e-6, datum, 6.6e-6}};
+  measured.profile = {
+      {offset - 0.5e-6, datum, 6.6e-6}, {offset, datum - kDeltaPc, 6.6e-6}, {offset + 0.5e-6, datum, 6.6e-6}};
   const MultiAsperityResult a = solve_multi_asperity(layout), b = solve_multi_asperity(measured);
   ASSERT_EQ(b.asperities.size(), 3u);
   const std::string kinds{b.asperities[0].kind, b.asperities[1].kind, b.asperities[2].kind};

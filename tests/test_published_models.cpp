@@ -73,9 +73,9 @@ TEST(PublishedModels, ZhaoMaiettaChang2000) {
   // K = 0.6, delta_2 = 54 delta_1; values from A = pi R delta (1 - 2x^3 + 3x^2) and
   // p_m = H [1 - (1 - K) ln(54/d)/ln 54], F* = F/(K H A_c).
   const auto m = make_asperity_model("zmc");
-  for (const Expected& e : {Expected{2, 2.2340405758624207, 2.002109123638977},
-                            Expected{10, 14.910598333960312, 10.767143346520953},
-                            Expected{30, 73.89876736048001, 47.11634436481122}})
+  for (const Expected& e :
+       {Expected{2, 2.2340405758624207, 2.002109123638977}, Expected{10, 14.910598333960312, 10.767143346520953},
+        Expected{30, 73.89876736048001, 47.11634436481122}})
     expect_star(*m, e);
   // Its own delta_1 = (3 pi K H/(4 E_t))^2 R, where the Hertz mean pressure is K H.
   const ContactPair p = test::seed_pair();

@@ -38,7 +38,8 @@ TEST(GreenwoodWilliamson, GaussianIntegralsMatchTables) {
   const double eta = surf.summit_density, s = surf.summit_sigma, beta = surf.summit_radius;
   EXPECT_NEAR(c.contact_density / eta, 0.15866, 5e-6);
   EXPECT_NEAR(c.real_area_ratio / (eta * kPi * beta * s), 0.08332, 5e-6);
-  EXPECT_NEAR(c.nominal_pressure / (eta * 4.0 / 3.0 * pair.modulus * std::sqrt(beta) * std::pow(s, 1.5)), 0.07567, 5e-6);
+  EXPECT_NEAR(c.nominal_pressure / (eta * 4.0 / 3.0 * pair.modulus * std::sqrt(beta) * std::pow(s, 1.5)), 0.07567,
+              5e-6);
 }
 
 TEST(GreenwoodWilliamson, ExponentialClosedForms) {
@@ -56,8 +57,10 @@ TEST(GreenwoodWilliamson, ExponentialClosedForms) {
     // 512-point quadrature of a smooth integrand (u = v^2): 1e-8 relative.
     EXPECT_NEAR(c.contact_density / (eta * e), 1.0, 1e-12) << h;
     EXPECT_NEAR(c.real_area_ratio / (eta * kPi * beta * s * e), 1.0, 1e-8) << h;
-    EXPECT_NEAR(c.nominal_pressure / (eta * 4.0 / 3.0 * pair.modulus * std::sqrt(beta) * std::pow(s, 1.5) * std::tgamma(2.5) * e),
-                1.0, 1e-8) << h;
+    EXPECT_NEAR(c.nominal_pressure /
+                    (eta * 4.0 / 3.0 * pair.modulus * std::sqrt(beta) * std::pow(s, 1.5) * std::tgamma(2.5) * e),
+                1.0, 1e-8)
+        << h;
   }
 }
 
@@ -70,7 +73,7 @@ TEST(GreenwoodWilliamson, InversionRobustFromZeroToFullPlasticity) {
   for (double p : test::log_space(1e-3, 5e9, 800)) {
     const double d = gw.separation_for_pressure(p);
     ASSERT_TRUE(std::isfinite(d)) << p;
-    EXPECT_LT(d, prev_d) << p;  // monotone
+    EXPECT_LT(d, prev_d) << p;                        // monotone
     EXPECT_NEAR(gw.pressure(d) / p, 1.0, 1e-9) << p;  // the inverse of the same interpolant
     const SurfaceContact c = gw.interpolate(d);
     EXPECT_GT(c.real_area_ratio, prev_area) << p;  // real area grows with load
@@ -110,8 +113,11 @@ TEST(RoughLineContact, UncoupledCarriesTheLoad) {
   // Gaussian quantile 1 - 1/N lies at 4.8 sigma above the summit mean.
   const HighestAsperity h = highest_asperity(gw, r, 0.08);
   const double n = gw.surface().summit_density * 2.0 * r.hertz_half_width * 0.08;
-  EXPECT_NEAR(0.5 * std::erfc(gw.highest_summit(2.0 * r.hertz_half_width * 0.08) / (gw.surface().summit_sigma * std::sqrt(2.0))) * n,
-              1.0, 1e-9);
+  EXPECT_NEAR(
+      0.5 *
+          std::erfc(gw.highest_summit(2.0 * r.hertz_half_width * 0.08) / (gw.surface().summit_sigma * std::sqrt(2.0))) *
+          n,
+      1.0, 1e-9);
   EXPECT_NEAR(h.interference, gw.highest_summit(2.0 * r.hertz_half_width * 0.08) - r.min_separation, 1e-18);
   EXPECT_GT(h.peak_pressure, 0.0);
   EXPECT_GT(h.von_mises, 0.0);

@@ -51,7 +51,8 @@ TEST(EllipticHertz, LoadScalesAsDeltaToThreeHalves) {
 TEST(SideContact, ElasticRangeIsEllipticHertzAndComponentsFollowTheTilt) {
   const Case& c = test::seed_case();
   const ContactPair p = test::seed_pair();
-  const auto g = side_contact_geometry(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius, 0.1);
+  const auto g =
+      side_contact_geometry(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius, 0.1);
   const auto m = make_asperity_model("continuous");
   const double dcn = m->critical(with_radius(p, g.radius_0)).interference;
   const double applied = 0.5 * dcn / std::cos(g.theta);

@@ -16,7 +16,8 @@ TEST(SweepPlan, AxesFromListsAndRanges) {
   EXPECT_EQ(io::parse_sweep_axis("module=4mm,6mm, 8mm").values, (std::vector<std::string>{"4mm", "6mm", "8mm"}));
   EXPECT_EQ(io::parse_sweep_axis("face_width=40mm:80mm:5").values,
             (std::vector<std::string>{"40mm", "50mm", "60mm", "70mm", "80mm"}));
-  EXPECT_EQ(io::parse_sweep_axis("teeth=20:40:3").values, (std::vector<std::string>{"20", "30", "40"}));  // integers stay integers
+  EXPECT_EQ(io::parse_sweep_axis("teeth=20:40:3").values,
+            (std::vector<std::string>{"20", "30", "40"}));  // integers stay integers
   EXPECT_EQ(io::parse_sweep_axis("x1=0:1:3").values, (std::vector<std::string>{"0", "0.5", "1"}));
   EXPECT_EQ(io::parse_sweep_axis("model=kogut-etsion,jackson-green").key, "model");
   EXPECT_THROW(io::parse_sweep_axis("module"), std::invalid_argument);
@@ -59,7 +60,8 @@ TEST(SweepPlan, ShardsPartitionThePoints) {
     }
     for (int o : owners) EXPECT_EQ(o, 1) << n;
   }
-  for (const char* bad : {"2/2", "1", "a/3", "0/0", "-1/2", "1/2x"}) EXPECT_THROW(io::parse_shard(bad), std::invalid_argument) << bad;
+  for (const char* bad : {"2/2", "1", "a/3", "0/0", "-1/2", "1/2x"})
+    EXPECT_THROW(io::parse_shard(bad), std::invalid_argument) << bad;
 }
 
 TEST(SweepPlan, SiValuesOfSweptText) {
@@ -108,8 +110,8 @@ TEST(CaseChanges, ErrorsNameTheSet) {
 
 // The sweep's _mean along the path: the trapezoidal rule, exact for a linear series.
 TEST(SweepSummary, PathMeanIsTrapezoidal) {
-  EXPECT_DOUBLE_EQ(contact::path_mean({2.0, 4.0, 6.0, 8.0}), 5.0);       // linear: the midpoint value
+  EXPECT_DOUBLE_EQ(contact::path_mean({2.0, 4.0, 6.0, 8.0}), 5.0);  // linear: the midpoint value
   EXPECT_DOUBLE_EQ(contact::path_mean({1.0, 1.0, 1.0}), 1.0);
-  EXPECT_DOUBLE_EQ(contact::path_mean({0.0, 1.0, 0.0}), 0.5);            // a hat: (0/2 + 1 + 0/2)/2
+  EXPECT_DOUBLE_EQ(contact::path_mean({0.0, 1.0, 0.0}), 0.5);  // a hat: (0/2 + 1 + 0/2)/2
   EXPECT_DOUBLE_EQ(contact::path_mean({3.0}), 3.0);
 }

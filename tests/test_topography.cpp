@@ -17,7 +17,9 @@ using namespace geartrib::surface;
 
 namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
-std::filesystem::path temp(const std::string& name) { return std::filesystem::temp_directory_path() / ("geartrib-topo-" + name); }
+std::filesystem::path temp(const std::string& name) {
+  return std::filesystem::temp_directory_path() / ("geartrib-topo-" + name);
+}
 
 double angle_difference(double a, double b) {  // lines: modulo pi
   double d = std::fmod(std::abs(a - b), std::numbers::pi);
@@ -41,7 +43,9 @@ TEST(Topography, SelfAffineStatisticsComeBackThroughEveryFormat) {
     const HeightGrid back = io::read_topography(path);
     const SurfaceStatistics s = surface_statistics(back);
     EXPECT_NEAR(s.rq / spec.rq, 1.0, 0.01) << ext;  // issue: Rq within 1%
-    for (auto [a, b] : {std::pair{s.m2_along, ref.m2_along}, {s.m2_across, ref.m2_across}, {s.m4_along, ref.m4_along},
+    for (auto [a, b] : {std::pair{s.m2_along, ref.m2_along},
+                        {s.m2_across, ref.m2_across},
+                        {s.m4_along, ref.m4_along},
                         {s.m4_across, ref.m4_across}})
       EXPECT_NEAR(a / b, 1.0, 0.05) << ext;  // spectral moments within 5%
     EXPECT_LT(angle_difference(s.lay_angle, spec.lay_angle), 2.0 * kDeg) << ext;
@@ -147,14 +151,16 @@ TEST(Topography, MalformedFilesNameTheLine) {
   expect_error("bad-number.txt", "# spacing: 1 um\n1 2 3\n4 five 6\n", 3, "not a number");
   expect_error("ragged.csv", "# spacing: 1 um\n1,2,3\n4,5\n", 3, "ragged row");
   expect_error("empty.txt", "# spacing: 1 um\n", 1, "no height rows");
-  expect_error("all-missing.txt", "# spacing: 1 um\nNaN NaN NaN\nBad Bad Bad\nNaN NaN NaN\n", 4, "too few valid points");
+  expect_error("all-missing.txt", "# spacing: 1 um\nNaN NaN NaN\nBad Bad Bad\nNaN NaN NaN\n", 4,
+               "too few valid points");
   expect_error("no-spacing.txt", "1 2 3\n4 5 6\n7 8 9\n", 0, "spacing missing");
   expect_error("zero-spacing.txt", "# spacing: 0 um\n1 2 3\n", 1, "spacing must be positive");
   expect_error("late-units.txt", "# spacing: 1\n1 2 3\n# units: nm\n4 5 6\n", 3, "must come before");
   expect_error("one-column.txt", "# spacing: 1 um\n1\n2\n3\n", 4, "at least 2 columns");
   expect_error("bad-unit.xyz", "# units: furlong\n0 0 1\n", 1, "unknown unit");
   expect_error("bad-point.xyz", "Wyko export\nX Y Z\n0 0 1\n1 0 2\n1 oops 3\n", 5, "malformed point");
-  expect_error("irregular.xyz", "0 0 1\n1 0 2\n2.5 0 3\n0 1 1\n1 1 2\n2.5 1 3\n0 2 1\n1 2 1\n2.5 2 1\n", 1, "regular grid");
+  expect_error("irregular.xyz", "0 0 1\n1 0 2\n2.5 0 3\n0 1 1\n1 1 2\n2.5 1 3\n0 2 1\n1 2 1\n2.5 2 1\n", 1,
+               "regular grid");
 }
 
 TEST(Topography, ProfilerExportWithHeaderAndMissingPoints) {
@@ -162,7 +168,9 @@ TEST(Topography, ProfilerExportWithHeaderAndMissingPoints) {
   std::ofstream out(path);
   out << "Wyko Vision export\nPixel size 0.5 um\nX(um) Y(um) Z(um)\n";
   for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 5; ++i) out << i * 0.5 << '\t' << j * 0.5 << '\t' << ((i + j) % 3 == 0 ? std::string("Bad") : std::to_string(0.1 * i)) << '\n';
+    for (int i = 0; i < 5; ++i)
+      out << i * 0.5 << '\t' << j * 0.5 << '\t' << ((i + j) % 3 == 0 ? std::string("Bad") : std::to_string(0.1 * i))
+          << '\n';
   out.close();
   const HeightGrid g = io::read_topography(path);
   EXPECT_EQ(g.nx, 5);
@@ -194,7 +202,8 @@ TEST(Topography, GaussianFilterPassesHalfTheAmplitudeAtTheCutOff) {
     // Amplitude in the middle third (away from the renormalised edges, which are not ISO's).
     double amplitude = 0.0;
     for (int i = g.nx / 3; i < 2 * g.nx / 3; ++i) amplitude = std::max(amplitude, std::abs(g.at(i, 1)));
-    EXPECT_NEAR(amplitude / 1e-6, kept(wavelength), 0.01) << wavelength;  // 1%: sampling of the peak and the discrete kernel
+    EXPECT_NEAR(amplitude / 1e-6, kept(wavelength), 0.01)
+        << wavelength;  // 1%: sampling of the peak and the discrete kernel
   }
 }
 
@@ -213,7 +222,8 @@ TEST(Topography, ResamplingKeepsAPlaneAndBinsAScatteredCloud) {
     std::ofstream out(path);
     out << "# units: um\n";
     for (int j = 0; j < 20; ++j)
-      for (int i = 0; i < 20; ++i) out << i + 0.3 * std::sin(7.0 * i + j) << ' ' << j + 0.3 * std::cos(3.0 * j + i) << ' ' << 0.01 * i << '\n';
+      for (int i = 0; i < 20; ++i)
+        out << i + 0.3 * std::sin(7.0 * i + j) << ' ' << j + 0.3 * std::cos(3.0 * j + i) << ' ' << 0.01 * i << '\n';
   }
   EXPECT_THROW(io::read_topography(path), io::InputError);
   io::TopographyReadOptions o;
@@ -272,7 +282,8 @@ TEST(Topography, SpectralMomentsMatchTheGeneratingSpectrum) {
     spec.seed = 21;
     const SurfaceStatistics s = surface_statistics(self_affine_surface(spec));
     // Expected moments along and across the lay from the generating spectrum.
-    const double qr = 2.0 * std::numbers::pi / spec.rolloff_wavelength, qs = 2.0 * std::numbers::pi / spec.cutoff_wavelength;
+    const double qr = 2.0 * std::numbers::pi / spec.rolloff_wavelength,
+                 qs = 2.0 * std::numbers::pi / spec.cutoff_wavelength;
     // Along the measured lay (for the isotropic surface any direction; the realised one is used).
     const double c = std::cos(s.lay_angle), sn = std::sin(s.lay_angle);
     double w0 = 0, a2 = 0, a4 = 0, c2 = 0, c4 = 0;
@@ -306,7 +317,8 @@ TEST(Topography, ExtremeSurfacesGiveFiniteStatistics) {
   SurfaceStatistics s = surface_statistics(flat);
   EXPECT_EQ(s.rq, 0.0);
   EXPECT_EQ(s.summits, 0u);
-  for (double v : {s.ra, s.rsk, s.rku, s.rz, s.lay_angle, s.m2_along, s.m4_across, s.mccool_density}) EXPECT_TRUE(std::isfinite(v));
+  for (double v : {s.ra, s.rsk, s.rku, s.rz, s.lay_angle, s.m2_along, s.m4_across, s.mccool_density})
+    EXPECT_TRUE(std::isfinite(v));
   EXPECT_THROW(measured_roughness(s), std::invalid_argument);
   // Nanometre and millimetre scales: the statistics scale exactly (heights x k: Rq x k, m2 x k^2,
   // summit radius / k; a property of the definitions).

@@ -171,7 +171,8 @@ TEST(Validity, SeedCaseIsFullyPlasticAndOutsideTheRanges) {
   const double dc_over_r = m->critical(p).interference / p.radius;
   for (std::size_t i = 0; i < 21; ++i)
     EXPECT_NEAR(r.find("max_interference_over_summit_radius")->values[i],
-                r.find("max_delta_star")->values[i] * dc_over_r, 1e-9 * r.find("max_interference_over_summit_radius")->values[i]);
+                r.find("max_delta_star")->values[i] * dc_over_r,
+                1e-9 * r.find("max_interference_over_summit_radius")->values[i]);
   EXPECT_NE(r.verdict.find("21 of 21 positions beyond continuous's range"), std::string::npos) << r.verdict;
   int counted = 0;
   for (const auto& f : r.flag_counts) counted += f.name == "beyond_fitted_range" ? f.positions : 0;

@@ -93,6 +93,7 @@ std::vector<double> parse_range(const std::string& text) {
   if (count == 1.0 && hi != lo) fail("COUNT = 1 needs MIN = MAX");
   std::vector<double> out;
   const int n = static_cast<int>(count);
+  out.reserve(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) out.push_back(n == 1 ? lo : lo * std::pow(hi / lo, static_cast<double>(i) / (n - 1)));
   out.back() = hi;  // both ends exactly
   return out;
@@ -124,7 +125,8 @@ void print_summary(const Case& c, const asperity::AsperityModel& model, double m
     fmt::print("  {:<14} delta_c {:.5g} nm  F_c {:.5g} uN  A_c {:.5g} nm^2\n", name, mc.interference * 1e9,
                mc.load * 1e6, mc.area * 1e18);
   }
-  const SideContactGeometry g = side_contact_geometry(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius, mu);
+  const SideContactGeometry g =
+      side_contact_geometry(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius, mu);
   const ContactPair p0 = with_radius(p, g.radius_0);
   fmt::print("Side contact, mu = {:.4g} (seed section 2.1; model {})\n", mu, model.name());
   fmt::print("  theta    contact-normal tilt atan(mu) {:.4f} deg\n", g.theta * 180.0 / std::numbers::pi);
@@ -138,21 +140,23 @@ void print_summary(const Case& c, const asperity::AsperityModel& model, double m
   if (c.asperity.measured_axis_offset > 0.0) {
     const double r12 = c.pinion.flank.roughness.summit_radius + c.wheel.flank.roughness.summit_radius;
     const double d0 = c.asperity.measured_axis_offset;
-    fmt::print("  measured d0 = {:.4g} um, y0 = {:.4g} um: touching tips need y0 = d0^2/(2(R1+R2)) = {:.4g} um;\n"
-               "  their normal tilt is atan(d0/(R1+R2)) = {:.4f} deg, i.e. tan(theta) = {:.4g}, not mu\n",
-               d0 * 1e6, c.asperity.measured_tip_gap * 1e6, d0 * d0 / (2.0 * r12) * 1e6,
-               normal_tilt_from_offset(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius, d0) * 180.0 /
-                   std::numbers::pi,
-               d0 / r12);
+    fmt::print(
+        "  measured d0 = {:.4g} um, y0 = {:.4g} um: touching tips need y0 = d0^2/(2(R1+R2)) = {:.4g} um;\n"
+        "  their normal tilt is atan(d0/(R1+R2)) = {:.4f} deg, i.e. tan(theta) = {:.4g}, not mu\n",
+        d0 * 1e6, c.asperity.measured_tip_gap * 1e6, d0 * d0 / (2.0 * r12) * 1e6,
+        normal_tilt_from_offset(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius, d0) *
+            180.0 / std::numbers::pi,
+        d0 / r12);
   }
   const CylinderAsperity cyl = cylinder_asperity(c);
   const LineCritical lc = line_critical(cyl);
   CylinderAsperity seed_c = cyl;
   seed_c.yield_constant = 1.64;
   fmt::print("Cylinder asperity (seed section 5), R_m = {:.4g} um\n", cyl.tip_radius * 1e6);
-  fmt::print("  delta_pc (2 R_m s/E_t)[ln(2 E_t/s) - 1] C, C = {:.4g}: {:.4g} um (the seed prints 0.38 um", cyl.yield_constant,
-             seed_critical_interference(cyl) * 1e6);
-  if (cyl.yield_constant != 1.64) fmt::print("; its C = 1.64 gives {:.4g} um", seed_critical_interference(seed_c) * 1e6);
+  fmt::print("  delta_pc (2 R_m s/E_t)[ln(2 E_t/s) - 1] C, C = {:.4g}: {:.4g} um (the seed prints 0.38 um",
+             cyl.yield_constant, seed_critical_interference(cyl) * 1e6);
+  if (cyl.yield_constant != 1.64)
+    fmt::print("; its C = 1.64 gives {:.4g} um", seed_critical_interference(seed_c) * 1e6);
   fmt::print(")\n");
   fmt::print("  Green (2005) plane-strain C_L(nu = {:.3g}) = {:.4g}\n", cyl.poisson_ratio,
              green_cylinder_yield_factor(cyl.poisson_ratio));
@@ -168,24 +172,25 @@ void print_constants(const asperity::AsperityModel& m) {
     fmt::print("  {:<22} = {:<8.6g} [{:g}, {:g}]  {}\n", specs[i].name, m.constants()[i], specs[i].lower,
                specs[i].upper, specs[i].meaning);
   const asperity::LawRange r = m.range();
-  fmt::print("range: delta* <= {:g}, contact radius <= {:g} x the summit radius; past it: {}\n", r.fitted_delta_star_max,
-             r.contact_radius_over_radius_max, r.past_range);
+  fmt::print("range: delta* <= {:g}, contact radius <= {:g} x the summit radius; past it: {}\n",
+             r.fitted_delta_star_max, r.contact_radius_over_radius_max, r.past_range);
 }
 
 void run_compare(const Options& o, const asperity::AsperityModel& m, const asperity::ContactPair& p) {
-  const io::ReferenceTable ref = io::read_reference_table(o.compare, [](const std::string& q) { return column(q).dimension; });
+  const io::ReferenceTable ref =
+      io::read_reference_table(o.compare, [](const std::string& q) { return column(q).dimension; });
   if (ref.input_name != "delta_star")
     throw io::InputError(ref.file, 0, ref.input_name, "", "the input column must be delta_star");
   fmt::print("Reference: {}\n", ref.file);
   for (const auto& [k, v] : ref.provenance) fmt::print("  {}: {}\n", k, v);
   fmt::print("Model: {} ({}); differences are (model - reference)/reference\n", m.name(), m.citation());
   io::Table t;
-  t.header.push_back("delta_star");
+  t.header.emplace_back("delta_star");
   for (const auto& col : ref.columns) {
     const std::string name = col.quantity + "@" + col.label + "[" + col.unit + "]";
     t.header.push_back(name);
     t.header.push_back("model[" + col.unit + "]");
-    t.header.push_back("diff_%");
+    t.header.emplace_back("diff_%");
   }
   const auto crit = m.critical(p);
   for (std::size_t r = 0; r < ref.inputs.size(); ++r) {
@@ -224,7 +229,8 @@ void run(const Options& o) {
   if (!o.range.empty()) levels = parse_range(o.range);
   if (levels.empty()) levels = {1.0, 2.0, 6.0, 7.0, 10.0};  // the seed's section 3 levels
   for (double d : levels)
-    if (!(d >= 0.0 && std::isfinite(d))) throw std::invalid_argument("delta* must be finite and >= 0, got " + fmt::format("{}", d));
+    if (!(d >= 0.0 && std::isfinite(d)))
+      throw std::invalid_argument("delta* must be finite and >= 0, got " + fmt::format("{}", d));
 
   io::Table t;
   for (const auto& col : kColumns) t.header.push_back(std::string(col.quantity) + std::string(col.suffix));
@@ -237,9 +243,11 @@ void run(const Options& o) {
       t.rows.push_back(std::move(row));
     }
   } else {
-    const auto g = asperity::side_contact_geometry(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius, mu);
-    for (auto h : {"applied_delta_m", "theta_deg", "vertical_load_N", "tangential_load_N", "semi_major_m", "semi_minor_m"})
-      t.header.push_back(h);
+    const auto g = asperity::side_contact_geometry(c.pinion.flank.roughness.summit_radius,
+                                                   c.wheel.flank.roughness.summit_radius, mu);
+    for (auto h :
+         {"applied_delta_m", "theta_deg", "vertical_load_N", "tangential_load_N", "semi_major_m", "semi_minor_m"})
+      t.header.emplace_back(h);
     const double dcn = model->critical(asperity::with_radius(pair, g.radius_0)).interference;
     for (double d : levels) {
       const auto s = asperity::evaluate_side_contact(*model, pair, g, d * dcn / std::cos(g.theta));
@@ -270,7 +278,8 @@ void add_asperity_command(CLI::App& app) {
       "Single-asperity elastic-plastic contact (sphere on flat) of the case's equivalent asperity.\n"
       "Prints, for each interference delta* = delta/delta_c (the model's own delta_c), the load, contact\n"
       "area and radius, plastic-core radius, mean and peak pressure, plastic share of the area, and the\n"
-      "largest von Mises stress of the elastic field on the axis with its depth. Models: " + model_list() + ".");
+      "largest von Mises stress of the elastic field on the axis with its depth. Models: " +
+          model_list() + ".");
   cmd->add_option("--model", o->model, "Asperity model: shorthand for --set asperity.model=... (default: the case's)");
   add_case_option(cmd, o->case_options);
   cmd->add_option("--contact", o->contact, "normal (frictionless, coaxial) or side (frictional, tilted by atan(mu))")
@@ -281,7 +290,8 @@ void add_asperity_command(CLI::App& app) {
   auto* rg = cmd->add_option("--range", o->range, "MIN:MAX:COUNT, log-spaced delta* with both ends included");
   ds->excludes(rg);
   add_table_options(cmd, o->table);
-  cmd->add_flag("--summary", o->summary, "Print E_t, R, k, H, delta_c, F_c, the yield depth, side-contact and cylinder values");
+  cmd->add_flag("--summary", o->summary,
+                "Print E_t, R, k, H, delta_c, F_c, the yield depth, side-contact and cylinder values");
   cmd->add_flag("--constants", o->list_constants, "List the model's named constants with values, ranges and meaning");
   cmd->add_option("--compare", o->compare, "Reference table (validation/*/...csv) to print the model beside");
   cmd->callback([o] { run(*o); });

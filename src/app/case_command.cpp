@@ -39,7 +39,8 @@ void run(const Options& o) {
   for (const io::Parameter& p : io::case_parameters()) {
     if (p.required_by == 0 || (p.required_by & io::kGeometryPart)) continue;
     const std::string key = p.key_for(0);
-    if (std::none_of(c.parameters.begin(), c.parameters.end(), [&](const ResolvedParameter& r) { return r.key == key; }))
+    if (std::none_of(c.parameters.begin(), c.parameters.end(),
+                     [&](const ResolvedParameter& r) { return r.key == key; }))
       text += fmt::format("{:<{}}  {:<24}  {}\n", key, width, "(not given)", "needed by the commands that use it");
   }
   write(text, o.output);

@@ -13,13 +13,13 @@
 namespace geartrib::app {
 
 std::filesystem::path default_case_file() {
-  const std::filesystem::path local = "gears/m6z30.toml";
+  std::filesystem::path local = "gears/m6z30.toml";  // not const: returned by move
   if (std::filesystem::exists(local)) return local;
   // An installed tool: <prefix>/bin/geartrib with its data in <prefix>/share/geartrib.
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (!ec) {
-    const std::filesystem::path installed = exe.parent_path().parent_path() / "share/geartrib" / local;
+    std::filesystem::path installed = exe.parent_path().parent_path() / "share/geartrib" / local;
     if (std::filesystem::exists(installed)) return installed;
   }
   return std::filesystem::path(GEARTRIB_SOURCE_DIR) / local;

@@ -33,7 +33,9 @@ CLI::Option* add_csv_option(CLI::App* cmd, std::string& file, const std::string&
   return cmd->add_option("--csv", file, "[FILE]: " + what)->expected(0, 1);
 }
 
-void add_quiet_flag(CLI::App* cmd, bool& quiet) { cmd->add_flag("-q,--quiet", quiet, "No progress bar and no summary"); }
+void add_quiet_flag(CLI::App* cmd, bool& quiet) {
+  cmd->add_flag("-q,--quiet", quiet, "No progress bar and no summary");
+}
 
 void add_threads_option(CLI::App* cmd, int& threads) {
   cmd->add_option("--threads", threads, "N: worker threads (default: all cores)")->check(CLI::Range(1, 1024));

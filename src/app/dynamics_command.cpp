@@ -55,12 +55,15 @@ void run(const Options& o) {
   io::Table t;
   if (!o.sweep.empty()) {
     const auto a = o.sweep.find(':'), b = o.sweep.rfind(':');
-    if (a == std::string::npos || a == b) throw std::invalid_argument("--speed-sweep expects MIN:MAX:COUNT, e.g. 100rpm:9000rpm:200");
-    const double lo = speed_option("--speed-sweep", o.sweep.substr(0, a)), hi = speed_option("--speed-sweep", o.sweep.substr(a + 1, b - a - 1));
+    if (a == std::string::npos || a == b)
+      throw std::invalid_argument("--speed-sweep expects MIN:MAX:COUNT, e.g. 100rpm:9000rpm:200");
+    const double lo = speed_option("--speed-sweep", o.sweep.substr(0, a)),
+                 hi = speed_option("--speed-sweep", o.sweep.substr(a + 1, b - a - 1));
     const int n = std::stoi(o.sweep.substr(b + 1));
-    if (!(lo > 0.0 && hi > lo) || n < 2) throw std::invalid_argument("--speed-sweep needs 0 < MIN < MAX and COUNT >= 2");
-    t.header = {"speed_rpm", "mesh_frequency_Hz", "dynamic_factor", "dynamic_factor_quasi_static", "contact_lost", "periodic",
-                "cycles"};
+    if (!(lo > 0.0 && hi > lo) || n < 2)
+      throw std::invalid_argument("--speed-sweep needs 0 < MIN < MAX and COUNT >= 2");
+    t.header = {"speed_rpm",    "mesh_frequency_Hz", "dynamic_factor", "dynamic_factor_quasi_static",
+                "contact_lost", "periodic",          "cycles"};
     double best = 0.0, best_f = 0.0;
     for (int i = 0; i < n; ++i) {
       const double w = lo + (hi - lo) * i / (n - 1);
@@ -69,23 +72,32 @@ void run(const Options& o) {
                         s.contact_lost ? 1.0 : 0.0, s.periodic ? 1.0 : 0.0, static_cast<double>(s.cycles)});
       if (s.dynamic_factor > best) best = s.dynamic_factor, best_f = s.mesh_frequency;
     }
-    std::cerr << fmt::format("largest dynamic factor {:.4g} at a mesh frequency of {:.1f} Hz ({:+.1f}% from the natural frequency)\n",
-                             best, best_f, 100.0 * (best_f / dyn.natural_frequency() - 1.0));
+    std::cerr << fmt::format(
+        "largest dynamic factor {:.4g} at a mesh frequency of {:.1f} Hz ({:+.1f}% from the natural frequency)\n", best,
+        best_f, 100.0 * (best_f / dyn.natural_frequency() - 1.0));
   } else {
     const double w = o.speed.empty() ? c.operating.pinion_speed : speed_option("--speed", o.speed);
     const gear::SteadyCycle s = dyn.steady_cycle(*integrator, w);
     const auto& p = mesh.pair().path();
-    t.header = {"time_s", "s_m", "mesh_stiffness_N_per_m", "deflection_m", "static_deflection_m", "mesh_force_N",
-                "force_over_static", "pair1_force_N", "pair2_force_N"};
+    t.header = {"time_s",
+                "s_m",
+                "mesh_stiffness_N_per_m",
+                "deflection_m",
+                "static_deflection_m",
+                "mesh_force_N",
+                "force_over_static",
+                "pair1_force_N",
+                "pair2_force_N"};
     for (std::size_t i = 0; i < s.time.size(); ++i) {
       const double s1 = s.position[i], s2 = s1 + p.base_pitch;
       t.rows.push_back({s.time[i], s1, s.stiffness[i], s.deflection[i], s.static_deflection[i], s.force[i],
                         s.force[i] / s.static_force, dyn.pair_force(s, s1), s2 <= p.e ? dyn.pair_force(s, s2) : 0.0});
     }
-    std::cerr << fmt::format("{:.0f} rpm: mesh frequency {:.1f} Hz, dynamic factor {:.4g} ({:.4g} of the quasi-static peak), "
-                             "contact {}, {} after {} cycles, {} steps\n",
-                             w / kRpm, s.mesh_frequency, s.dynamic_factor, s.dynamic_factor_quasi_static,
-                             s.contact_lost ? "lost" : "kept", s.periodic ? "periodic" : "NOT periodic", s.cycles, s.steps);
+    std::cerr << fmt::format(
+        "{:.0f} rpm: mesh frequency {:.1f} Hz, dynamic factor {:.4g} ({:.4g} of the quasi-static peak), "
+        "contact {}, {} after {} cycles, {} steps\n",
+        w / kRpm, s.mesh_frequency, s.dynamic_factor, s.dynamic_factor_quasi_static, s.contact_lost ? "lost" : "kept",
+        s.periodic ? "periodic" : "NOT periodic", s.cycles, s.steps);
   }
   emit_table(t, o.table);
 }
@@ -107,7 +119,8 @@ void add_dynamics_command(CLI::App& app) {
                   "cvode (SUNDIALS BDF) or odeint (Boost Dormand-Prince 5(4)): shorthand for --set mesh.dynamics=...\n"
                   "(default: the case's, cvode when it asks for none)")
       ->check(CLI::IsMember({"cvode", "odeint"}));
-  cmd->add_option("--rtol", o->rtol, "Relative tolerance: shorthand for --set dynamics.relative_tolerance=... (default 1e-8)");
+  cmd->add_option("--rtol", o->rtol,
+                  "Relative tolerance: shorthand for --set dynamics.relative_tolerance=... (default 1e-8)");
   auto* sp = cmd->add_option("--speed", o->speed, "Pinion speed, e.g. 1000rpm (default: the case's)");
   auto* sw = cmd->add_option("--speed-sweep", o->sweep, "MIN:MAX:COUNT pinion speeds, e.g. 100rpm:9000rpm:200");
   sp->excludes(sw);

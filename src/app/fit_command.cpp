@@ -4,8 +4,8 @@
 #include "app/commands.hpp"
 
 #include "asperity/case_setup.hpp"
-#include "fit/model_fit.hpp"
 #include "fit/fit_files.hpp"
+#include "fit/model_fit.hpp"
 #include "io/table_writer.hpp"
 
 #include <fmt/format.h>
@@ -46,7 +46,8 @@ void list_constants(const std::string& name) {
 
 void run(const Options& o) {
   if (!o.list.empty()) return list_constants(o.list);
-  if (o.model.empty() || o.data.empty()) throw std::invalid_argument("fit needs --model NAME and at least one --data FILE (or --list MODEL)");
+  if (o.model.empty() || o.data.empty())
+    throw std::invalid_argument("fit needs --model NAME and at least one --data FILE (or --list MODEL)");
   const Case c = load_case_reporting(o.case_options, io::kGeometryPart | io::kRoughnessPart);
   const auto model = asperity::make_case_model(c, o.model);
   std::vector<fit::FitData> data;
@@ -62,7 +63,8 @@ void run(const Options& o) {
     if (eq == std::string::npos || colon == std::string::npos)
       throw std::invalid_argument("--bound '" + b + "': expected NAME=LOWER:UPPER");
     try {
-      opt.bounds.emplace_back(b.substr(0, eq), std::stod(b.substr(eq + 1, colon - eq - 1)), std::stod(b.substr(colon + 1)));
+      opt.bounds.emplace_back(b.substr(0, eq), std::stod(b.substr(eq + 1, colon - eq - 1)),
+                              std::stod(b.substr(colon + 1)));
     } catch (const std::logic_error&) {
       throw std::invalid_argument("--bound '" + b + "': LOWER and UPPER must be numbers");
     }
@@ -100,8 +102,10 @@ void add_fit_command(CLI::App& app) {
   for (auto n : asperity::asperity_model_names()) models += (models.empty() ? "" : ", ") + std::string(n);
   cmd->add_option("--model", o->model, "Model to fit (" + models + ")");
   cmd->add_option("--data", o->data, "Reference data CSV (repeat for several data sets)");
-  cmd->add_option("--free", o->free, "Comma-separated constants to fit (default: all); the rest stay at their values")->delimiter(',');
-  cmd->add_option("--observe", o->observe, "Comma-separated observed columns (default: all in the data)")->delimiter(',');
+  cmd->add_option("--free", o->free, "Comma-separated constants to fit (default: all); the rest stay at their values")
+      ->delimiter(',');
+  cmd->add_option("--observe", o->observe, "Comma-separated observed columns (default: all in the data)")
+      ->delimiter(',');
   cmd->add_option("--weight", o->weights, "Comma-separated relative weights, one per --observe column")->delimiter(',');
   cmd->add_option("--bound", o->bounds, "NAME=LOWER:UPPER, narrower bounds than the constant's range (repeatable)");
   cmd->add_option("--loss", o->loss, "squared, huber or cauchy")->check(CLI::IsMember({"squared", "huber", "cauchy"}));
@@ -110,7 +114,8 @@ void add_fit_command(CLI::App& app) {
   add_case_option(cmd, o->case_options);
   add_output_option(cmd, o->output, "the fitted constants as a TOML fragment (the case's overrides are the start)");
   cmd->add_option("--report", o->report, "Write the full report (with every residual and Ceres' report) to this file");
-  cmd->add_option("--emit-cpp", o->emit_cpp, "Write the constants as a C++ defaults header (see src/asperity/continuous_defaults.hpp)");
+  cmd->add_option("--emit-cpp", o->emit_cpp,
+                  "Write the constants as a C++ defaults header (see src/asperity/continuous_defaults.hpp)");
   add_quiet_flag(cmd, o->quiet);
   cmd->callback([o] { run(*o); });
 }

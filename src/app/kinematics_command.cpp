@@ -98,10 +98,27 @@ void run(const Options& o) {
   const auto& pair = mesh.pair();
   const auto& p = pair.path();
   io::Table t;
-  t.header = {"point", "s_m", "gamma", "rho1_m", "rho2_m", "r_eq_m", "load_share", "line_load_N_per_m",
-              "hertz_p0_Pa", "hertz_halfwidth_m", "hertz_p0_single_pair_Pa", "v1_m_per_s", "v2_m_per_s",
-              "entrainment_m_per_s", "sliding_m_per_s", "srr", "specific_sliding_pinion", "specific_sliding_wheel",
-              "pair_stiffness_N_per_m", "mesh_stiffness_N_per_m", "pairs_in_contact"};
+  t.header = {"point",
+              "s_m",
+              "gamma",
+              "rho1_m",
+              "rho2_m",
+              "r_eq_m",
+              "load_share",
+              "line_load_N_per_m",
+              "hertz_p0_Pa",
+              "hertz_halfwidth_m",
+              "hertz_p0_single_pair_Pa",
+              "v1_m_per_s",
+              "v2_m_per_s",
+              "entrainment_m_per_s",
+              "sliding_m_per_s",
+              "srr",
+              "specific_sliding_pinion",
+              "specific_sliding_wheel",
+              "pair_stiffness_N_per_m",
+              "mesh_stiffness_N_per_m",
+              "pairs_in_contact"};
   auto add = [&](const std::string& label, double s, bool single_side) {
     const gear::MeshInstant m = mesh.analysis().at(s, single_side);
     const gear::PairLoad* own = nullptr;
@@ -111,10 +128,26 @@ void run(const Options& o) {
     const gear::FlankGeometry f = pair.flank(s);
     const gear::FlankKinematics k = pair.kinematics(s, mesh.pinion_speed());
     const gear::PairLoad single = mesh.analysis().pair_load(s, mesh.normal_force() / pair.spec().face_width);
-    t.add_row(label, {s, f.roll_parameter, f.radius_pinion, f.radius_wheel, f.radius_equivalent, own->share,
-                      own->line_load, own->hertz_peak, own->hertz_half_width, single.hertz_peak, k.rolling_pinion,
-                      k.rolling_wheel, k.entrainment, k.sliding, k.slide_to_roll, k.specific_sliding_pinion,
-                      k.specific_sliding_wheel, own->stiffness, m.mesh_stiffness, static_cast<double>(m.pairs.size())});
+    t.add_row(label, {s,
+                      f.roll_parameter,
+                      f.radius_pinion,
+                      f.radius_wheel,
+                      f.radius_equivalent,
+                      own->share,
+                      own->line_load,
+                      own->hertz_peak,
+                      own->hertz_half_width,
+                      single.hertz_peak,
+                      k.rolling_pinion,
+                      k.rolling_wheel,
+                      k.entrainment,
+                      k.sliding,
+                      k.slide_to_roll,
+                      k.specific_sliding_pinion,
+                      k.specific_sliding_wheel,
+                      own->stiffness,
+                      m.mesh_stiffness,
+                      static_cast<double>(m.pairs.size())});
   };
   if (o.positions) {
     const int n = *o.positions;
@@ -150,8 +183,10 @@ void add_kinematics_command(CLI::App& app) {
       "tooth-pair and mesh stiffness. At B and D a named point reports the single-tooth side of the jump.\n"
       "--summary prints the geometry, contact ratio, mesh stiffness and ISO 6336-1 c' and c_gamma_alpha.");
   add_case_argument(cmd, o->case_options);
-  auto* pts = cmd->add_option("--points", o->points, "Comma-separated named points (default A,B,C,D,E)")->delimiter(',');
-  auto* pos = cmd->add_option("--positions", o->positions, "N equally spaced positions from A to E instead of named points");
+  auto* pts =
+      cmd->add_option("--points", o->points, "Comma-separated named points (default A,B,C,D,E)")->delimiter(',');
+  auto* pos =
+      cmd->add_option("--positions", o->positions, "N equally spaced positions from A to E instead of named points");
   pts->excludes(pos);
   cmd->add_option("--load-sharing", o->load_sharing, "iso or stiffness: shorthand for --set mesh.load_sharing=...")
       ->check(CLI::IsMember({"iso", "stiffness"}));

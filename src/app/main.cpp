@@ -9,7 +9,7 @@
 #include <iostream>
 #include <stdexcept>
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   CLI::App app{
       "geartrib - rough-surface asperity contact of spur gears along the line of action.\n"
       "Implements the elastic-plastic asperity contact thesis of the seed (m = 6 mm, z = 30/30, 45 steel)\n"
@@ -47,4 +47,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+} catch (const std::exception& e) {  // building the command line (outside the parse's handlers)
+  std::cerr << "geartrib: failure: " << e.what() << '\n';
+  return 1;
 }

@@ -6,18 +6,18 @@
 
 #include "asperity/case_setup.hpp"
 #include "contact/multi_asperity.hpp"
-#include "surface/cylinder_reduction.hpp"
-#include "surface/surface_statistics.hpp"
 #include "io/table_writer.hpp"
 #include "io/units.hpp"
+#include "surface/cylinder_reduction.hpp"
+#include "surface/surface_statistics.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
-#include <limits>
-#include <numbers>
 #include <iostream>
+#include <limits>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 
@@ -65,15 +65,18 @@ contact::MultiAsperitySpec make_spec(const Options& o, const Case& c, double del
                                        : m.youngs_modulus / (1.0 - m.poisson_ratio * m.poisson_ratio);
   s.poisson_ratio = m.poisson_ratio;
   if (o.cap == "hardness") s.pressure_cap = m.hardness;
-  else if (o.cap == "yield") s.pressure_cap = (2.0 + std::numbers::pi) * m.yield_strength / std::sqrt(3.0);  // Prandtl punch
+  else if (o.cap == "yield")
+    s.pressure_cap = (2.0 + std::numbers::pi) * m.yield_strength / std::sqrt(3.0);  // Prandtl punch
   else s.pressure_cap = std::numeric_limits<double>::infinity();
   s.elements = o.elements;
   if (!o.reference_depth.empty()) s.reference_length = length_option("--reference-depth", o.reference_depth);
   if (!o.topography.empty()) {
     // A measured profile: its parabolic-cylinder asperities replace the layout (seed section 4 -> 5).
     const io::LoadedSurface in = load_surface_reporting(o.topography, o.surface);
-    const surface::CylinderReduction r = surface::reduce_to_cylinders(in.grid, surface::surface_statistics(in.grid).lay_angle);
-    if (r.asperities.empty()) throw std::invalid_argument(o.topography + ": no asperity across the lay to reduce to cylinders");
+    const surface::CylinderReduction r =
+        surface::reduce_to_cylinders(in.grid, surface::surface_statistics(in.grid).lay_angle);
+    if (r.asperities.empty())
+      throw std::invalid_argument(o.topography + ": no asperity across the lay to reduce to cylinders");
     double top = -std::numeric_limits<double>::infinity(), low = -top;
     for (const auto& a : r.asperities) {
       s.profile.push_back({a.centre, a.height, a.tip_radius});
@@ -99,10 +102,17 @@ void run(const Options& o) {
     const double lo = length_option("--sweep-spacing", o.sweep.substr(0, a));
     const double hi = length_option("--sweep-spacing", o.sweep.substr(a + 1, b - a - 1));
     const int n = std::stoi(o.sweep.substr(b + 1));
-    if (n < 2 || !(hi > lo) || lo < 0.0) throw std::invalid_argument("--sweep-spacing needs 0 <= MIN < MAX and COUNT >= 2");
+    if (n < 2 || !(hi > lo) || lo < 0.0)
+      throw std::invalid_argument("--sweep-spacing needs 0 <= MIN < MAX and COUNT >= 2");
     io::Table t;
-    t.header = {"spacing_m", "total_contact_area_m2", "midpoint_von_mises_Pa", "inflection_depth_m",
-                "inflection_von_mises_Pa", "middle_load_N_per_m", "line_load_N_per_m", "iterations"};
+    t.header = {"spacing_m",
+                "total_contact_area_m2",
+                "midpoint_von_mises_Pa",
+                "inflection_depth_m",
+                "inflection_von_mises_Pa",
+                "middle_load_N_per_m",
+                "line_load_N_per_m",
+                "iterations"};
     for (int i = 0; i < n; ++i) {
       Options oi = o;
       oi.spacing = fmt::format("{} m", lo + (hi - lo) * i / (n - 1));
@@ -118,11 +128,12 @@ void run(const Options& o) {
   const contact::MultiAsperitySpec spec = make_spec(o, c, delta_pc);
   const auto r = contact::solve_multi_asperity(spec);
   io::Table t;
-  t.header = {"asperity", "load_N_per_m", "contact_width_m", "max_pressure_Pa", "max_surface_von_mises_Pa",
+  t.header = {"asperity",          "load_N_per_m", "contact_width_m", "max_pressure_Pa", "max_surface_von_mises_Pa",
               "max_deformation_m", "centre_m"};
   for (std::size_t k = 0; k < r.asperities.size(); ++k) {
     const auto& a = r.asperities[k];
-    t.add_row(fmt::format("{}{}", k + 1, a.kind), {a.load, a.contact_width, a.max_pressure, a.max_surface_von_mises, a.max_deformation, a.centre});
+    t.add_row(fmt::format("{}{}", k + 1, a.kind),
+              {a.load, a.contact_width, a.max_pressure, a.max_surface_von_mises, a.max_deformation, a.centre});
   }
   io::Table totals;
   totals.header = {"name", "value"};
@@ -143,7 +154,8 @@ void run(const Options& o) {
   // Two tables, one after the other (a blank line between).
   const bool csv = o.table.csv_given() && (o.table.csv_file.empty() || o.table.csv_file == "-");
   auto both = [&](bool as_csv) {
-    return (as_csv ? io::format_csv(t) : io::format_text(t)) + "\n" + (as_csv ? io::format_csv(totals) : io::format_text(totals));
+    return (as_csv ? io::format_csv(t) : io::format_text(t)) + "\n" +
+           (as_csv ? io::format_csv(totals) : io::format_text(totals));
   };
   if (!o.table.csv_file.empty() && o.table.csv_file != "-") io::write_file_atomically(o.table.csv_file, both(true));
   if (o.table.output.empty()) std::cout << both(csv);
@@ -164,30 +176,40 @@ void add_multi_asperity_command(CLI::App& app) {
       "surface midway between neighbours and the inflection point of the von Mises profile below the middle\n"
       "asperity.");
   add_case_option(cmd, o->case_options);
-  cmd->add_option("--layout", o->layout, "H (high) and L (low) letters, e.g. LLH, LHL, LHH, HLH, or H alone (default HLH)");
-  cmd->add_option("--height-step", o->height_step, "Height difference h_m of the low asperities, in delta_pc (default 0)")
+  cmd->add_option("--layout", o->layout,
+                  "H (high) and L (low) letters, e.g. LLH, LHL, LHH, HLH, or H alone (default HLH)");
+  cmd->add_option("--height-step", o->height_step,
+                  "Height difference h_m of the low asperities, in delta_pc (default 0)")
       ->check(CLI::Range(0.0, 9.0));
   cmd->add_option("--spacing", o->spacing, "Distance d_m between neighbouring asperity axes (default 0.5um)");
-  auto* ap = cmd->add_option("--approach", o->approach, "Approach of the flat after touching the high tips, in delta_pc (default 6)");
+  auto* ap = cmd->add_option("--approach", o->approach,
+                             "Approach of the flat after touching the high tips, in delta_pc (default 6)");
   auto* ld = cmd->add_option("--load", o->load, "Line load [N/m] instead of an approach (load control)");
   ap->excludes(ld);
-  cmd->add_option("--asperity-height", o->asperity_height, "High asperities' height above the base plane (default 4um, assumed)");
-  cmd->add_option("--delta-pc", o->delta_pc,
-                  "The unit of --height-step and --approach (default: the seed's formula, 0.423 um for the default case; "
-                  "the seed's deformation table implies 0.58nm)");
-  cmd->add_option("--elements", o->elements, "Boundary elements over the domain (default 16384)")->check(CLI::Range(64, 1 << 22));
+  cmd->add_option("--asperity-height", o->asperity_height,
+                  "High asperities' height above the base plane (default 4um, assumed)");
+  cmd->add_option(
+      "--delta-pc", o->delta_pc,
+      "The unit of --height-step and --approach (default: the seed's formula, 0.423 um for the default case; "
+      "the seed's deformation table implies 0.58nm)");
+  cmd->add_option("--elements", o->elements, "Boundary elements over the domain (default 16384)")
+      ->check(CLI::Range(64, 1 << 22));
   cmd->add_option("--pressure-cap", o->cap, "hardness (H), yield (Prandtl punch (2+pi) S_y/sqrt3) or none (elastic)")
       ->check(CLI::IsMember({"hardness", "yield", "none"}));
-  cmd->add_option("--modulus", o->modulus,
-                  "composite (default: E_t of both flanks on a rigid flat, the seed's equivalent surface, consistent\n"
-                  "with delta_pc) or single-body (E/(1 - nu^2) of the softer body, as the CalculiX three-cylinder model)")
+  cmd->add_option(
+         "--modulus", o->modulus,
+         "composite (default: E_t of both flanks on a rigid flat, the seed's equivalent surface, consistent\n"
+         "with delta_pc) or single-body (E/(1 - nu^2) of the softer body, as the CalculiX three-cylinder model)")
       ->check(CLI::IsMember({"composite", "single-body"}));
-  cmd->add_option("--reference-depth", o->reference_depth, "Displacement reference L_ref: a rigid base ~L_ref deep (default 50um, assumed)");
-  auto* topo = cmd->add_option("--topography", o->topography,
-                               "Surface file: its profile across the lay, cut into parabolic cylinders (`geartrib surface\n"
-                               "asperities --cylinders`), replaces --layout, --height-step, --spacing and R_m");
+  cmd->add_option("--reference-depth", o->reference_depth,
+                  "Displacement reference L_ref: a rigid base ~L_ref deep (default 50um, assumed)");
+  auto* topo =
+      cmd->add_option("--topography", o->topography,
+                      "Surface file: its profile across the lay, cut into parabolic cylinders (`geartrib surface\n"
+                      "asperities --cylinders`), replaces --layout, --height-step, --spacing and R_m");
   add_surface_input_options(cmd, o->surface);
-  auto* sweep = cmd->add_option("--sweep-spacing", o->sweep, "MIN:MAX:COUNT spacings (e.g. 0.25um:2um:8): one row per spacing");
+  auto* sweep =
+      cmd->add_option("--sweep-spacing", o->sweep, "MIN:MAX:COUNT spacings (e.g. 0.25um:2um:8): one row per spacing");
   topo->excludes(sweep);
   for (const char* geometry : {"--layout", "--height-step", "--spacing"}) topo->excludes(geometry);
   add_table_options(cmd, o->table);

@@ -40,10 +40,11 @@ std::string point_at(const gear::PathOfContact& p, double s, double step) {
 void print_summary(const contact::MeshContactResult& r) {
   const auto& s = r.find("s_m")->values;
   const double step = s.size() > 1 ? s[1] - s[0] : 0.0;
-  fmt::print("Equivalent surface: summit density {:.4g} /um^2, summit radius {:.4g} um, summit sigma {:.4g} um, "
-             "plasticity index {:.3g}; model {}, {} strip\n",
-             r.surface.summit_density * 1e-12, r.surface.summit_radius * 1e6, r.surface.summit_sigma * 1e6,
-             r.plasticity_index, r.asperity_model, r.fidelity);
+  fmt::print(
+      "Equivalent surface: summit density {:.4g} /um^2, summit radius {:.4g} um, summit sigma {:.4g} um, "
+      "plasticity index {:.3g}; model {}, {} strip\n",
+      r.surface.summit_density * 1e-12, r.surface.summit_radius * 1e6, r.surface.summit_sigma * 1e6, r.plasticity_index,
+      r.asperity_model, r.fidelity);
   fmt::print("{:<30} {:>6} {:>12} {:>9} {:>3} {:>12} {:>9} {:>3}\n", "quantity", "unit", "min", "at s mm", "", "max",
              "at s mm", "");
   for (const auto* group : {&r.mesh, &r.contact})
@@ -54,8 +55,8 @@ void print_summary(const contact::MeshContactResult& r) {
         if (q.values[i] < q.values[lo]) lo = i;
         if (q.values[i] > q.values[hi]) hi = i;
       }
-      fmt::print("{:<30} {:>6} {:>12.5g} {:>9.3f} {:>3} {:>12.5g} {:>9.3f} {:>3}\n", q.name, q.unit, q.values[lo], s[lo] * 1e3,
-                 point_at(r.path, s[lo], step), q.values[hi], s[hi] * 1e3, point_at(r.path, s[hi], step));
+      fmt::print("{:<30} {:>6} {:>12.5g} {:>9.3f} {:>3} {:>12.5g} {:>9.3f} {:>3}\n", q.name, q.unit, q.values[lo],
+                 s[lo] * 1e3, point_at(r.path, s[lo], step), q.values[hi], s[hi] * 1e3, point_at(r.path, s[hi], step));
     }
   fmt::print("stages:");
   for (const auto& st : r.stages) fmt::print(" {} {:.3f} s;", st.name, st.seconds);
@@ -72,9 +73,9 @@ void run(const Options& o) {
   const contact::MeshContactResult r = run_mesh_cycle(c, [&](int done, int total) { bar(done, total); });
 
   const std::string case_file = co.file.empty() ? default_case_file().string() : co.file;
-  const std::filesystem::path out = o.output.empty()
-                                        ? std::filesystem::path(std::filesystem::path(case_file).stem().string() + ".h5")
-                                        : std::filesystem::path(o.output);
+  const std::filesystem::path out =
+      o.output.empty() ? std::filesystem::path(std::filesystem::path(case_file).stem().string() + ".h5")
+                       : std::filesystem::path(o.output);
   io::write_mesh_contact_hdf5(out, r, case_file, c);
   const bool csv_to_stdout = o.csv_option->count() > 0 && (o.csv.empty() || o.csv == "-");
   if (o.csv_option->count() > 0) {
@@ -95,11 +96,12 @@ void run(const Options& o) {
   if (!o.quiet) {
     for (const auto& [name, g] : {std::pair{"pinion", &c.pinion}, std::pair{"wheel", &c.wheel}})
       if (g->flank.measured)
-        fmt::print("{} flank measured ({}): Ra {:.4g} um, Rq {:.4g} um, {} summits, density {:.4g} /um^2, radius {:.4g} um, "
-                   "sigma {:.4g} um\n",
-                   name, g->flank.topography->file, g->flank.measured->ra * 1e6, g->flank.measured->rq * 1e6,
-                   g->flank.measured->summits, g->flank.roughness.summit_density * 1e-12, g->flank.roughness.summit_radius * 1e6,
-                   g->flank.roughness.summit_sigma * 1e6);
+        fmt::print(
+            "{} flank measured ({}): Ra {:.4g} um, Rq {:.4g} um, {} summits, density {:.4g} /um^2, radius {:.4g} um, "
+            "sigma {:.4g} um\n",
+            name, g->flank.topography->file, g->flank.measured->ra * 1e6, g->flank.measured->rq * 1e6,
+            g->flank.measured->summits, g->flank.roughness.summit_density * 1e-12,
+            g->flank.roughness.summit_radius * 1e6, g->flank.roughness.summit_sigma * 1e6);
     print_summary(r);
   }
   fmt::print("wrote {}{}\n", out.string(), o.csv.empty() || o.csv == "-" ? "" : " and " + o.csv);

@@ -19,18 +19,25 @@ namespace geartrib::app {
 
 namespace {
 
-double length(const std::string& option, const std::string& text) { return quantity_option(option, text, io::Dimension::length); }
+double length(const std::string& option, const std::string& text) {
+  return quantity_option(option, text, io::Dimension::length);
+}
 
 }  // namespace
 
 void add_surface_input_options(CLI::App* cmd, SurfaceInputOptions& o) {
   cmd->add_option("--unit", o.unit, "Length unit of ASCII files that do not state one in '# units:' (default um)");
-  cmd->add_option("--grid-spacing", o.spacing, "Spacing of height-grid files without a '# spacing:' line (e.g. \"0.5 um\")");
-  cmd->add_option("--resample", o.resample, "Regrid at this spacing: point clouds off a lattice are binned, grids interpolated");
-  cmd->add_option("--form", o.form_degree, "Form removed: least-squares polynomial of this degree (0 none, 1 plane, default 2)")
+  cmd->add_option("--grid-spacing", o.spacing,
+                  "Spacing of height-grid files without a '# spacing:' line (e.g. \"0.5 um\")");
+  cmd->add_option("--resample", o.resample,
+                  "Regrid at this spacing: point clouds off a lattice are binned, grids interpolated");
+  cmd->add_option("--form", o.form_degree,
+                  "Form removed: least-squares polynomial of this degree (0 none, 1 plane, default 2)")
       ->check(CLI::Range(0, 6));
-  cmd->add_option("--cutoff", o.cutoff, "Gaussian cut-off separating waviness from roughness (e.g. \"0.25 mm\"; default: no filter)");
-  cmd->add_option("--outliers", o.outliers, "Mask points beyond K robust standard deviations (1.4826 MAD) of the form-free surface");
+  cmd->add_option("--cutoff", o.cutoff,
+                  "Gaussian cut-off separating waviness from roughness (e.g. \"0.25 mm\"; default: no filter)");
+  cmd->add_option("--outliers", o.outliers,
+                  "Mask points beyond K robust standard deviations (1.4826 MAD) of the form-free surface");
   cmd->add_flag("--fill", o.fill, "Fill missing points from their neighbours (default: leave them masked)");
 }
 
@@ -123,7 +130,9 @@ void equivalent(const EquivalentOptions& o) {
   const io::LoadedSurface u = load_surface_reporting(o.upper, o.input), d = load_surface_reporting(o.lower, o.input);
   surface::HeightGrid e;
   try {
-    const auto mirror = o.mirror == "x" ? surface::Mirror::x : o.mirror == "y" ? surface::Mirror::y : surface::Mirror::none;
+    const auto mirror = o.mirror == "x"   ? surface::Mirror::x
+                        : o.mirror == "y" ? surface::Mirror::y
+                                          : surface::Mirror::none;
     e = surface::equivalent_surface(u.grid, d.grid, mirror);
   } catch (const std::invalid_argument& ex) {
     throw std::invalid_argument(fmt::format("{} and {}: {}", o.upper, o.lower, ex.what()));
@@ -152,21 +161,23 @@ void asperities(const AsperityOptions& o) {
     mean /= static_cast<double>(n);
     t.header = {"x_m", "y_m", "height_m", "radius_m"};
     for (const auto& p : surface::find_summits(in.grid, mean)) t.rows.push_back({p.x, p.y, p.height, p.radius});
-    fmt::print(stderr,
-               "{} summits: density {:.4g} /mm^2 (McCool {:.4g}), radius {:.4g} um (McCool {:.4g}), height mean {:.4g} um, "
-               "sigma {:.4g} um (McCool {:.4g})\n",
-               s.summits, s.summit_density * 1e-6, s.mccool_density * 1e-6, s.summit_radius * 1e6, s.mccool_radius * 1e6,
-               s.summit_mean_height * 1e6, s.summit_sigma * 1e6, s.mccool_summit_sigma * 1e6);
+    fmt::print(
+        stderr,
+        "{} summits: density {:.4g} /mm^2 (McCool {:.4g}), radius {:.4g} um (McCool {:.4g}), height mean {:.4g} um, "
+        "sigma {:.4g} um (McCool {:.4g})\n",
+        s.summits, s.summit_density * 1e-6, s.mccool_density * 1e-6, s.summit_radius * 1e6, s.mccool_radius * 1e6,
+        s.summit_mean_height * 1e6, s.summit_sigma * 1e6, s.mccool_summit_sigma * 1e6);
   } else {
     const surface::CylinderReduction r = surface::reduce_to_cylinders(in.grid, s.lay_angle, o.prominence, o.cap);
     t.header = {"centre_m", "height_m", "tip_radius_m", "spacing_m"};
     for (const auto& a : r.asperities) t.rows.push_back({a.centre, a.height, a.tip_radius, a.spacing});
-    fmt::print(stderr,
-               "{} cylinder asperities across the lay ({}): tip radius R_m {:.4g} +- {:.3g} um, spacing {:.4g} +- {:.3g} um, "
-               "height {:.4g} +- {:.3g} um\n",
-               r.asperities.size(), r.lay_along_y ? "lay along y, profile along x" : "lay along x, profile along y",
-               r.mean_tip_radius * 1e6, r.sd_tip_radius * 1e6, r.mean_spacing * 1e6, r.sd_spacing * 1e6, r.mean_height * 1e6,
-               r.sd_height * 1e6);
+    fmt::print(
+        stderr,
+        "{} cylinder asperities across the lay ({}): tip radius R_m {:.4g} +- {:.3g} um, spacing {:.4g} +- {:.3g} um, "
+        "height {:.4g} +- {:.3g} um\n",
+        r.asperities.size(), r.lay_along_y ? "lay along y, profile along x" : "lay along x, profile along y",
+        r.mean_tip_radius * 1e6, r.sd_tip_radius * 1e6, r.mean_spacing * 1e6, r.sd_spacing * 1e6, r.mean_height * 1e6,
+        r.sd_height * 1e6);
   }
   emit_table(t, o.table);
 }
@@ -189,9 +200,11 @@ io::LoadedSurface load_surface_reporting(const std::string& file, const SurfaceI
     throw std::invalid_argument(std::string("surface clean-up options: ") + e.what());
   }
   io::LoadedSurface s = io::load_surface(file, read, clean);
-  fmt::print(stderr, "{}: {} x {} points at {:.4g} x {:.4g} um; {} missing in the file, {} outliers masked, {} filled, {} missing\n",
-             file, s.grid.nx, s.grid.ny, s.grid.dx * 1e6, s.grid.dy * 1e6, s.cleanup.missing_in, s.cleanup.outliers,
-             s.cleanup.filled, s.cleanup.missing_out);
+  fmt::print(
+      stderr,
+      "{}: {} x {} points at {:.4g} x {:.4g} um; {} missing in the file, {} outliers masked, {} filled, {} missing\n",
+      file, s.grid.nx, s.grid.ny, s.grid.dx * 1e6, s.grid.dy * 1e6, s.cleanup.missing_in, s.cleanup.outliers,
+      s.cleanup.filled, s.cleanup.missing_out);
   return s;
 }
 
@@ -207,8 +220,10 @@ void add_surface_command(CLI::App& app) {
   cmd->require_subcommand(1);
 
   auto g = std::make_shared<GenerateOptions>();
-  auto* gen = cmd->add_subcommand("generate", "Write a seeded synthetic surface: the test data (no measured flank ships with geartrib)");
-  gen->add_option("kind", g->kind, "self-affine (random-phase, Hurst exponent, roll-off) or hobbed (parallel parabolic ridges)")
+  auto* gen = cmd->add_subcommand(
+      "generate", "Write a seeded synthetic surface: the test data (no measured flank ships with geartrib)");
+  gen->add_option("kind", g->kind,
+                  "self-affine (random-phase, Hurst exponent, roll-off) or hobbed (parallel parabolic ridges)")
       ->check(CLI::IsMember({"self-affine", "hobbed"}));
   add_output_option(gen, g->output, "the surface to write (format by extension; required)");
   gen->get_option("--output")->required();
@@ -219,7 +234,8 @@ void add_surface_command(CLI::App& app) {
   gen->add_option("--hurst", g->hurst, "self-affine: Hurst exponent H in (0, 1) (default 0.8)");
   gen->add_option("--rolloff", g->rolloff, "self-affine: roll-off wavelength (default 30 um)");
   gen->add_option("--short-cutoff", g->short_cutoff, "self-affine: shortest wavelength (default 4 spacings)");
-  gen->add_option("--anisotropy", g->anisotropy, "self-affine: correlation length ratio along/across the lay (default 1)");
+  gen->add_option("--anisotropy", g->anisotropy,
+                  "self-affine: correlation length ratio along/across the lay (default 1)");
   gen->add_option("--lay-angle", g->lay_angle, "self-affine: lay direction from the x axis (default \"0 deg\")");
   gen->add_option("--wavelength", g->wavelength, "hobbed: ridge spacing (default 5 um)");
   gen->add_option("--tip-radius", g->tip_radius, "hobbed: ridge tip radius (default 6.6 um)");
@@ -251,16 +267,18 @@ void add_surface_command(CLI::App& app) {
   });
 
   auto e = std::make_shared<EquivalentOptions>();
-  auto* eq = cmd->add_subcommand("equivalent",
-                                 "Equivalent rough surface y_e = y_u + y_d of two facing flanks (upper mirrored, in x by default; grids\n"
-                                 "must align): "
-                                 "each is cleaned, the sum written to -o and its statistics printed");
+  auto* eq = cmd->add_subcommand(
+      "equivalent",
+      "Equivalent rough surface y_e = y_u + y_d of two facing flanks (upper mirrored, in x by default; grids\n"
+      "must align): "
+      "each is cleaned, the sum written to -o and its statistics printed");
   eq->add_option("upper", e->upper, "Upper flank surface file")->required();
   eq->add_option("lower", e->lower, "Lower flank surface file")->required();
   add_output_option(eq, e->output, "the equivalent surface to write (format by extension; required)");
   eq->get_option("--output")->required();
   eq->add_option("--out-unit", e->unit, "Length unit of ASCII output (default um)");
-  eq->add_option("--mirror", e->mirror, "Axis the upper flank is mirrored about: x (default), y, or none (already in the lower's frame)")
+  eq->add_option("--mirror", e->mirror,
+                 "Axis the upper flank is mirrored about: x (default), y, or none (already in the lower's frame)")
       ->check(CLI::IsMember({"x", "y", "none"}));
   e->table.csv = add_csv_option(eq, e->table.csv_file,
                                 "the statistics as CSV: to FILE, or without one to standard output in place\n"
@@ -269,13 +287,15 @@ void add_surface_command(CLI::App& app) {
   eq->callback([e] { equivalent(*e); });
 
   auto a = std::make_shared<AsperityOptions>();
-  auto* as = cmd->add_subcommand("asperities",
-                                 "Reduce a surface to asperities: its summits (eight-neighbour peaks: position, height, radius), or with\n"
-                                 "--cylinders the profile across the lay cut into parabolic cylinders (the seed's model: centre, tip\n"
-                                 "height, tip radius R_m, spacing). A summary with the distributions goes to stderr.");
+  auto* as = cmd->add_subcommand(
+      "asperities",
+      "Reduce a surface to asperities: its summits (eight-neighbour peaks: position, height, radius), or with\n"
+      "--cylinders the profile across the lay cut into parabolic cylinders (the seed's model: centre, tip\n"
+      "height, tip radius R_m, spacing). A summary with the distributions goes to stderr.");
   as->add_option("file", a->file, "Surface file")->required();
   as->add_flag("--cylinders", a->cylinders, "Parabolic-cylinder asperities across the lay instead of summits");
-  as->add_option("--prominence", a->prominence, "Cylinders: least peak prominence in units of the profile's Rq (default 0.5)")
+  as->add_option("--prominence", a->prominence,
+                 "Cylinders: least peak prominence in units of the profile's Rq (default 0.5)")
       ->check(CLI::Range(0.0, 100.0));
   as->add_option("--cap", a->cap, "Cylinders: fit each parabola over the top fraction of its prominence (default 0.3)")
       ->check(CLI::Range(0.05, 1.0));

@@ -12,12 +12,12 @@ class App;
 namespace geartrib::app {
 
 struct SurfaceInputOptions {
-  std::string unit = "um";   // ASCII length unit when the file does not state one
-  std::string spacing;       // grid files without '# spacing:'
-  std::string resample;      // regrid spacing
-  int form_degree = 2;       // polynomial form removed
-  std::string cutoff;        // Gaussian waviness cut-off
-  double outliers = 0.0;     // k robust standard deviations; 0 off
+  std::string unit = "um";  // ASCII length unit when the file does not state one
+  std::string spacing;      // grid files without '# spacing:'
+  std::string resample;     // regrid spacing
+  int form_degree = 2;      // polynomial form removed
+  std::string cutoff;       // Gaussian waviness cut-off
+  double outliers = 0.0;    // k robust standard deviations; 0 off
   bool fill = false;
 };
 void add_surface_input_options(CLI::App* cmd, SurfaceInputOptions& o);

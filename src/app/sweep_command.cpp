@@ -5,8 +5,8 @@
 // of the points; `--merge` joins the shards' files into the file the whole sweep would write.
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
-#include "contact/mesh_contact.hpp"
 #include "app/progress_bar.hpp"
+#include "contact/mesh_contact.hpp"
 
 #include "io/column_table.hpp"
 #include "io/input_error.hpp"
@@ -53,13 +53,14 @@ struct PointResult {
   double seconds = 0.0;
   double contact_ratio = 0.0;
   double plasticity_index = 0.0;
-  std::string regime;   // the run's validity verdict, in one word
-  std::string verdict;  // and in full
+  std::string regime;                                              // the run's validity verdict, in one word
+  std::string verdict;                                             // and in full
   std::vector<contact::MeshContactResult::FlagCount> flag_counts;  // positions per validity flag
   std::vector<Summary> quantities;
 };
 
-PointResult run_point(const std::filesystem::path& case_file, const std::vector<io::CaseChange>& changes, std::size_t index) {
+PointResult run_point(const std::filesystem::path& case_file, const std::vector<io::CaseChange>& changes,
+                      std::size_t index) {
   PointResult p;
   p.index = index;
   const auto start = std::chrono::steady_clock::now();
@@ -75,7 +76,7 @@ PointResult run_point(const std::filesystem::path& case_file, const std::vector<
     p.flag_counts = r.flag_counts;
     for (const auto* group : {&r.mesh, &r.contact, &r.validity})
       for (const auto& q : *group) {
-        if (q.name == "s_m" || q.name == "roll_angle_rad") continue;  // the path itself
+        if (q.name == "s_m" || q.name == "roll_angle_rad") continue;                  // the path itself
         if (q.name.rfind("flag_", 0) == 0 || q.name == "plasticity_index") continue;  // counted below / a column
         const auto [lo, hi] = std::minmax_element(q.values.begin(), q.values.end());
         p.quantities.push_back({q.name, q.unit, *lo, contact::path_mean(q.values), *hi});
@@ -99,7 +100,8 @@ io::ColumnTable point_table(const io::SweepPlan& plan, const std::vector<PointRe
     const auto& axis = plan.axes[k];
     std::vector<std::optional<io::SiValue>> si;
     for (const auto& v : axis.values) si.push_back(io::si_quantity(v));
-    const bool numeric = std::all_of(si.begin(), si.end(), [&](const auto& s) { return s && s->unit == si.front()->unit; });
+    const bool numeric =
+        std::all_of(si.begin(), si.end(), [&](const auto& s) { return s && s->unit == si.front()->unit; });
     io::Column col{axis.key, numeric ? si.front()->unit : "", !numeric, {}, {}};
     for (const auto& p : points) {
       const std::string value = plan.point(p.index)[k].value;
@@ -112,7 +114,7 @@ io::ColumnTable point_table(const io::SweepPlan& plan, const std::vector<PointRe
   io::Column seconds{"seconds", "s", false, {}, {}}, ratio{"contact_ratio", "1", false, {}, {}},
       psi{"plasticity_index", "1", false, {}, {}};
   for (const auto& p : points) {
-    status.texts.push_back(p.ok ? "ok" : "error");
+    status.texts.emplace_back(p.ok ? "ok" : "error");
     message.texts.push_back(p.message);
     seconds.numbers.push_back(p.seconds);
     ratio.numbers.push_back(p.ok ? p.contact_ratio : std::nan(""));
@@ -134,7 +136,8 @@ io::ColumnTable point_table(const io::SweepPlan& plan, const std::vector<PointRe
   for (const auto& name : flags) {
     io::Column col{"positions_" + name, "1", false, {}, {}};
     for (const auto& p : points) {
-      const auto f = std::find_if(p.flag_counts.begin(), p.flag_counts.end(), [&](const auto& x) { return x.name == name; });
+      const auto f =
+          std::find_if(p.flag_counts.begin(), p.flag_counts.end(), [&](const auto& x) { return x.name == name; });
       col.numbers.push_back(p.ok && f != p.flag_counts.end() ? f->positions : std::nan(""));
     }
     t.columns.push_back(std::move(col));
@@ -149,7 +152,8 @@ io::ColumnTable point_table(const io::SweepPlan& plan, const std::vector<PointRe
     io::Column lo{name + "_min", unit, false, {}, {}}, mean{name + "_mean", unit, false, {}, {}},
         hi{name + "_max", unit, false, {}, {}};
     for (const auto& p : points) {
-      const auto q = std::find_if(p.quantities.begin(), p.quantities.end(), [&](const Summary& s) { return s.name == name; });
+      const auto q = std::find_if(p.quantities.begin(), p.quantities.end(),
+                                  [&key = name](const Summary& s) { return s.name == key; });
       lo.numbers.push_back(q != p.quantities.end() ? q->min : std::nan(""));
       mean.numbers.push_back(q != p.quantities.end() ? q->mean : std::nan(""));
       hi.numbers.push_back(q != p.quantities.end() ? q->max : std::nan(""));
@@ -186,7 +190,8 @@ void merge(const Options& o) {
     for (const char* key : {"points_total", "shard", "shard_count", "signature"})
       if (!files.back().attributes.contains(key))
         throw std::invalid_argument(m + ": not a geartrib sweep shard (no /sweep attribute " + key + ")");
-    if (!files.back().table.find("point")) throw std::invalid_argument(m + ": not a geartrib sweep shard (no /points/point)");
+    if (!files.back().table.find("point"))
+      throw std::invalid_argument(m + ": not a geartrib sweep shard (no /points/point)");
   }
   const auto& first = files.front();
   const std::size_t total = std::stoul(first.attributes.at("points_total"));
@@ -200,21 +205,25 @@ void merge(const Options& o) {
   std::vector<std::pair<std::size_t, std::pair<std::size_t, std::size_t>>> order;  // point -> (file, row)
   for (std::size_t f = 0; f < files.size(); ++f) {
     const auto& a = files[f].attributes;
-    if (a.at("signature") != first.attributes.at("signature") || a.at("shard_count") != first.attributes.at("shard_count"))
-      throw std::invalid_argument(o.merge[f] + ": from another sweep (case, --set or --zip differ) than " + o.merge.front());
+    if (a.at("signature") != first.attributes.at("signature") ||
+        a.at("shard_count") != first.attributes.at("shard_count"))
+      throw std::invalid_argument(o.merge[f] + ": from another sweep (case, --set or --zip differ) than " +
+                                  o.merge.front());
     const std::size_t shard = std::stoul(a.at("shard").substr(0, a.at("shard").find('/')));
     if (shard_seen[shard]) throw std::invalid_argument(o.merge[f] + ": shard " + a.at("shard") + " given twice");
     shard_seen[shard] = true;
     const auto& idx = files[f].table.find("point")->numbers;
     for (std::size_t r = 0; r < idx.size(); ++r) {
       const auto i = static_cast<std::size_t>(idx[r]);
-      if (i >= total || seen[i]) throw std::invalid_argument(fmt::format("{}: point {} out of range or twice", o.merge[f], i));
+      if (i >= total || seen[i])
+        throw std::invalid_argument(fmt::format("{}: point {} out of range or twice", o.merge[f], i));
       seen[i] = true;
       order.push_back({i, {f, r}});
     }
   }
   for (std::size_t s = 0; s < shard_seen.size(); ++s)
-    if (!shard_seen[s]) throw std::invalid_argument(fmt::format("--merge: shard {}/{} is missing", s, shard_seen.size()));
+    if (!shard_seen[s])
+      throw std::invalid_argument(fmt::format("--merge: shard {}/{} is missing", s, shard_seen.size()));
   std::sort(order.begin(), order.end());
   // Columns: the union in order of first appearance (shards may lack a quantity all their points lacked).
   for (const auto& f : files)
@@ -234,7 +243,8 @@ void merge(const Options& o) {
 
 void run(const Options& o) {
   if (!o.merge.empty()) {
-    if (!o.sets.empty() || !o.shard.empty()) throw std::invalid_argument("--merge takes only shard files, -o and --csv");
+    if (!o.sets.empty() || !o.shard.empty())
+      throw std::invalid_argument("--merge takes only shard files, -o and --csv");
     merge(o);
     return;
   }
@@ -243,22 +253,25 @@ void run(const Options& o) {
   for (const auto& s : o.sets) plan.axes.push_back(io::parse_sweep_axis(s));
   plan.validate();
   const io::Shard shard = o.shard.empty() ? io::Shard{} : io::parse_shard(o.shard);
-  const std::filesystem::path case_file = o.case_file.empty() ? default_case_file() : std::filesystem::path(o.case_file);
+  const std::filesystem::path case_file =
+      o.case_file.empty() ? default_case_file() : std::filesystem::path(o.case_file);
   // The base case must load: an error there is the user's, not a point's.
   const Case base = load_case_reporting(CaseOptions{case_file.string(), {}});
 
   std::vector<std::size_t> mine;
   for (std::size_t i = 0; i < plan.size(); ++i)
     if (shard.owns(i)) mine.push_back(i);
-  const int threads = std::max(1, std::min<int>(o.threads > 0 ? o.threads : static_cast<int>(std::thread::hardware_concurrency()),
-                                                static_cast<int>(mine.size())));
+  const int threads =
+      std::max(1, std::min<int>(o.threads > 0 ? o.threads : static_cast<int>(std::thread::hardware_concurrency()),
+                                static_cast<int>(mine.size())));
   if (!o.quiet)
-    std::cerr << fmt::format("sweep: {} points ({}), {} in this shard {}/{}, {} threads\n", plan.size(), plan.describe(),
-                             mine.size(), shard.index, shard.count, threads);
+    std::cerr << fmt::format("sweep: {} points ({}), {} in this shard {}/{}, {} threads\n", plan.size(),
+                             plan.describe(), mine.size(), shard.index, shard.count, threads);
   std::vector<PointResult> results(mine.size());
   std::atomic<std::size_t> next{0}, done{0};
   ProgressBar bar(!o.quiet, "points");
   std::vector<std::jthread> pool;
+  pool.reserve(static_cast<std::size_t>(threads));
   for (int t = 0; t < threads; ++t)
     pool.emplace_back([&] {
       for (std::size_t k; (k = next.fetch_add(1)) < mine.size();) {

@@ -68,9 +68,11 @@ std::vector<Knob> knobs_of(const Case& c) {
   out.push_back(fidelity);
   // The reference of the dynamic cycle: CVODE (BDF) at the finest tolerance of the ladder.
   const std::vector<std::string>& rtols = row("dynamics.relative_tolerance").ladder;
-  const std::vector<io::CaseChange> finest = {{"mesh.dynamics", "cvode"}, {"dynamics.relative_tolerance", rtols.back()}};
+  const std::vector<io::CaseChange> finest = {{"mesh.dynamics", "cvode"},
+                                              {"dynamics.relative_tolerance", rtols.back()}};
   // Static load sharing against the steady dynamic cycle: a physics choice, reported.
-  out.push_back({"dynamics", {{"none (static)", {{"mesh.dynamics", "none"}}}, {"cvode " + rtols.back(), finest}}, true});
+  out.push_back(
+      {"dynamics", {{"none (static)", {{"mesh.dynamics", "none"}}}, {"cvode " + rtols.back(), finest}}, true});
   // The integrators and their tolerances (recommended when the case asks for dynamics).
   Knob integrator{"integrator", {}, c.dynamics.engine == "none"};
   std::vector<std::string> engines = row("mesh.dynamics").choices;
@@ -78,7 +80,8 @@ std::vector<Knob> knobs_of(const Case& c) {
   std::stable_partition(engines.begin(), engines.end(), [](const std::string& e) { return e != "cvode"; });
   for (const auto& engine : engines)
     for (std::size_t i = 0; i + 1 < rtols.size(); ++i)
-      integrator.settings.push_back({engine + " " + rtols[i], {{"mesh.dynamics", engine}, {"dynamics.relative_tolerance", rtols[i]}}});
+      integrator.settings.push_back(
+          {engine + " " + rtols[i], {{"mesh.dynamics", engine}, {"dynamics.relative_tolerance", rtols[i]}}});
   integrator.settings.push_back({"cvode " + rtols.back(), finest});
   out.push_back(integrator);
   // The asperity models, the case's own last (the reference).
@@ -122,7 +125,8 @@ Timed run_timed(const std::filesystem::path& case_file, const std::vector<io::Ca
       t.curves.s = r.find("s_m")->values;
       for (const char* name : kOutputs) {
         const contact::Series* q = r.find(name);
-        if (!q) throw std::invalid_argument(std::string("tradeoff needs the case's contact outputs to include ") + name);
+        if (!q)
+          throw std::invalid_argument(std::string("tradeoff needs the case's contact outputs to include ") + name);
         t.curves.outputs.push_back(q->values);
       }
     }
@@ -140,7 +144,8 @@ double curve_error(const std::vector<double>& s, const std::vector<double>& v, c
   for (double x : ref) scale = std::max(scale, std::abs(x));
   const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
   const auto [lo_ref, hi_ref] = std::minmax_element(ref.begin(), ref.end());
-  double worst = std::max({std::abs(*lo - *lo_ref), std::abs(*hi - *hi_ref), std::abs(contact::path_mean(v) - contact::path_mean(ref))});
+  double worst = std::max(
+      {std::abs(*lo - *lo_ref), std::abs(*hi - *hi_ref), std::abs(contact::path_mean(v) - contact::path_mean(ref))});
   if (s == s_ref)
     for (std::size_t i = 0; i < v.size(); ++i) worst = std::max(worst, std::abs(v[i] - ref[i]));
   return scale > 0.0 ? worst / scale : worst;
@@ -162,13 +167,15 @@ Row compare(const std::string& knob, const std::string& setting, const Timed& t,
 }
 
 void run(const Options& o) {
-  const std::filesystem::path case_file = o.case_options.file.empty() ? default_case_file() : std::filesystem::path(o.case_options.file);
+  const std::filesystem::path case_file =
+      o.case_options.file.empty() ? default_case_file() : std::filesystem::path(o.case_options.file);
   const Case base = load_case_reporting(o.case_options);
   std::vector<io::CaseChange> given;
   for (const auto& text : o.case_options.changes) given.push_back(io::parse_case_change(text));
   std::vector<Knob> knobs = knobs_of(base);
   if (!o.knobs.empty()) {
-    std::erase_if(knobs, [&](const Knob& k) { return std::find(o.knobs.begin(), o.knobs.end(), k.name) == o.knobs.end(); });
+    std::erase_if(knobs,
+                  [&](const Knob& k) { return std::find(o.knobs.begin(), o.knobs.end(), k.name) == o.knobs.end(); });
     if (knobs.empty()) throw std::invalid_argument("--knob: none of the names is a knob (see --help)");
   }
   std::vector<Row> rows;
@@ -178,7 +185,8 @@ void run(const Options& o) {
     const Timed ref = run_timed(case_file, given, k.settings.back().changes, o.min_time);
     std::vector<Row> mine;
     for (std::size_t i = 0; i + 1 < k.settings.size(); ++i)
-      mine.push_back(compare(k.name, k.settings[i].label, run_timed(case_file, given, k.settings[i].changes, o.min_time), ref));
+      mine.push_back(
+          compare(k.name, k.settings[i].label, run_timed(case_file, given, k.settings[i].changes, o.min_time), ref));
     mine.push_back(compare(k.name, k.settings.back().label, ref, ref));
     mine.back().reference = true;
     // The cheapest setting within the tolerance of the reference; times within 5% of the fastest
@@ -204,17 +212,20 @@ void run(const Options& o) {
   rows.back().reference = true;
 
   io::ColumnTable t;
-  t.columns = {{"knob", "", true, {}, {}},           {"setting", "", true, {}, {}},
-               {"time_s", "s", false, {}, {}},        {"error_real_area", "1", false, {}, {}},
-               {"error_plastic_fraction", "1", false, {}, {}}, {"error_peak_stress", "1", false, {}, {}},
+  t.columns = {{"knob", "", true, {}, {}},
+               {"setting", "", true, {}, {}},
+               {"time_s", "s", false, {}, {}},
+               {"error_real_area", "1", false, {}, {}},
+               {"error_plastic_fraction", "1", false, {}, {}},
+               {"error_peak_stress", "1", false, {}, {}},
                {"note", "", true, {}, {}}};
   for (const Row& r : rows) {
     t.columns[0].texts.push_back(r.knob);
     t.columns[1].texts.push_back(r.setting);
     t.columns[2].numbers.push_back(r.seconds);
     for (int k = 0; k < 3; ++k) t.columns[3 + k].numbers.push_back(r.errors[k]);
-    t.columns[6].texts.push_back(r.reference ? (r.recommended ? "reference, recommended" : "reference")
-                                             : (r.recommended ? "recommended" : ""));
+    t.columns[6].texts.emplace_back(r.reference ? (r.recommended ? "reference, recommended" : "reference")
+                                                : (r.recommended ? "recommended" : ""));
   }
   const std::string& output = o.table.output;
   const bool png = output.size() > 4 && output.substr(output.size() - 4) == ".png";
@@ -228,10 +239,11 @@ void run(const Options& o) {
     std::string text = fmt::format("{:<15} {:<16} {:>10} {:>16} {:>22} {:>17}  {}\n", "knob", "setting", "time_s",
                                    "error_real_area", "error_plastic_fraction", "error_peak_stress", "note");
     for (std::size_t i = 0; i < t.rows(); ++i)
-      text += fmt::format("{:<15} {:<16} {:>10.4g} {:>16.3g} {:>22.3g} {:>17.3g}  {}\n", t.columns[0].texts[i], t.columns[1].texts[i],
-                          t.columns[2].numbers[i], t.columns[3].numbers[i], t.columns[4].numbers[i], t.columns[5].numbers[i],
-                          t.columns[6].texts[i]);
-    std::string advice = fmt::format("\nRecommended (cheapest within {:g}% of each knob's reference on all three outputs):", 100 * o.tolerance);
+      text += fmt::format("{:<15} {:<16} {:>10.4g} {:>16.3g} {:>22.3g} {:>17.3g}  {}\n", t.columns[0].texts[i],
+                          t.columns[1].texts[i], t.columns[2].numbers[i], t.columns[3].numbers[i],
+                          t.columns[4].numbers[i], t.columns[5].numbers[i], t.columns[6].texts[i]);
+    std::string advice = fmt::format(
+        "\nRecommended (cheapest within {:g}% of each knob's reference on all three outputs):", 100 * o.tolerance);
     for (const Row& r : rows)
       if (r.recommended && r.knob != "combined") advice += fmt::format(" {} = {};", r.knob, r.setting);
     text += advice + "\n";
@@ -240,13 +252,15 @@ void run(const Options& o) {
   }
   if (png) {
     // The Pareto plot by scripts/plot_tradeoff.py from the CSV table (matplotlib).
-    const std::filesystem::path csv = csv_file ? std::filesystem::path(o.table.csv_file) : std::filesystem::path(output.substr(0, output.size() - 4) + ".csv");
+    const std::filesystem::path csv = csv_file ? std::filesystem::path(o.table.csv_file)
+                                               : std::filesystem::path(output.substr(0, output.size() - 4) + ".csv");
     if (!csv_file) io::write_file_atomically(csv, io::format_csv(t));
     const std::filesystem::path script = std::filesystem::path(GEARTRIB_SOURCE_DIR) / "scripts/plot_tradeoff.py";
     // Debian's interpreter, where python3-matplotlib installs (a PATH python3 may lack it).
     const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    const std::string command = python + " " + fem::shell_quoted(script.string()) + " " + fem::shell_quoted(csv.string()) + " " +
-                                fem::shell_quoted(output) + fmt::format(" {:g}", o.tolerance);
+    const std::string command = python + " " + fem::shell_quoted(script.string()) + " " +
+                                fem::shell_quoted(csv.string()) + " " + fem::shell_quoted(output) +
+                                fmt::format(" {:g}", o.tolerance);
     if (std::system(command.c_str()) != 0)
       throw std::runtime_error("plotting failed (" + command + "); the table is in " + csv.string() +
                                " (needs python3 with matplotlib: apt-get install python3-matplotlib)");
@@ -277,8 +291,8 @@ void add_tradeoff_command(CLI::App& app) {
   add_output_option(cmd, o->table.output,
                     "the table (default: standard output); a .png name draws the Pareto plot (time against\n"
                     "error) with scripts/plot_tradeoff.py and writes the table beside it as .csv (or to --csv FILE)");
-  o->table.csv = add_csv_option(cmd, o->table.csv_file,
-                                "the table as CSV: to FILE, or without one in place of the aligned table");
+  o->table.csv =
+      add_csv_option(cmd, o->table.csv_file, "the table as CSV: to FILE, or without one in place of the aligned table");
   cmd->add_option("--tolerance", o->tolerance, "Relative error a recommended setting may have (default 0.01)")
       ->check(CLI::Range(1e-9, 1.0));
   cmd->add_option("--min-time", o->min_time, "Repeat each run until this much time [s] is spent (default 0.3)")

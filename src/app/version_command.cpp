@@ -3,11 +3,11 @@
 
 #include <CLI/CLI.hpp>
 
-#include <boost/version.hpp>
+#include <H5public.h>
 #include <ceres/version.h>
 #include <fmt/core.h>
-#include <H5public.h>
 #include <sundials/sundials_config.h>
+#include <boost/version.hpp>
 
 namespace geartrib::app {
 

@@ -10,7 +10,9 @@ struct AxisStress {
   double axial = 0.0;   // sigma_z
 };
 
-inline double von_mises_on_axis(const AxisStress& s) { return s.radial > s.axial ? s.radial - s.axial : s.axial - s.radial; }
+inline double von_mises_on_axis(const AxisStress& s) {
+  return s.radial > s.axial ? s.radial - s.axial : s.axial - s.radial;
+}
 
 // Hertz pressure p0 sqrt(1 - r^2/a^2), per unit p0, at depth z/a (Johnson, Contact Mechanics,
 // eq. 3.45): sigma_z = -1/(1 + z^2/a^2); sigma_r = -(1+nu)[1 - (z/a) atan(a/z)] + 1/(2(1 + z^2/a^2)).

@@ -17,8 +17,7 @@ void ContactPair::validate() const {
   if (!(hardness >= yield_strength)) fail("hardness must be at least the yield strength");
 }
 
-ContactPair make_contact_pair(const Material& body1, const Material& body2, double tip_radius1,
-                              double tip_radius2) {
+ContactPair make_contact_pair(const Material& body1, const Material& body2, double tip_radius1, double tip_radius2) {
   if (!(tip_radius1 > 0.0 && tip_radius2 > 0.0)) throw std::invalid_argument("asperity tip radii must be positive");
   const Material& soft = body1.hardness <= body2.hardness ? body1 : body2;
   ContactPair p;

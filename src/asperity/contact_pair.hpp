@@ -19,8 +19,7 @@ struct ContactPair {
 
 // Builds the pair from the two bodies and their asperity tip radii [m]. The softer body (lower
 // hardness) supplies nu, S_y and H.
-ContactPair make_contact_pair(const Material& body1, const Material& body2, double tip_radius1,
-                              double tip_radius2);
+ContactPair make_contact_pair(const Material& body1, const Material& body2, double tip_radius1, double tip_radius2);
 
 // Same pair with another radius (side contact uses R0, seed section 2.1).
 ContactPair with_radius(ContactPair pair, double radius);

@@ -3,7 +3,6 @@
 #include "asperity/axis_stress.hpp"
 #include "core/maximize.hpp"
 
-
 namespace geartrib::asperity {
 
 Critical hertz_critical(const ContactPair& pair, double yield_peak_pressure) {
@@ -17,8 +16,8 @@ Critical hertz_critical(const ContactPair& pair, double yield_peak_pressure) {
 }
 
 HertzYieldPoint hertz_yield_point(double nu) {
-  const auto m = maximize_on_interval(
-      [nu](double z) { return von_mises_on_axis(hertz_axis_stress(z, nu)); }, 1e-4, 3.0, 64);
+  const auto m =
+      maximize_on_interval([nu](double z) { return von_mises_on_axis(hertz_axis_stress(z, nu)); }, 1e-4, 3.0, 64);
   return {m.x, m.value};
 }
 

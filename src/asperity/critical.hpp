@@ -27,7 +27,9 @@ T hertz_load(const T& delta, double radius, double modulus) {  // F = 4/3 E_t R^
   using std::pow, std::sqrt;
   return (4.0 / 3.0) * modulus * std::sqrt(radius) * pow(delta, 1.5);
 }
-inline double hertz_contact_radius(double delta, double radius) { return std::sqrt(radius * delta); }  // a = sqrt(R delta)
+inline double hertz_contact_radius(double delta, double radius) {
+  return std::sqrt(radius * delta);
+}  // a = sqrt(R delta)
 inline double hertz_peak_pressure(double contact_radius, double radius, double modulus) {  // p0 = 2 E_t a/(pi R)
   return 2.0 * modulus * contact_radius / (std::numbers::pi * radius);
 }
@@ -36,10 +38,10 @@ inline double hertz_peak_pressure(double contact_radius, double radius, double m
 // pressure p_y: delta_c = (pi p_y / (2 E_t))^2 R, F_c = 4/3 E_t R^1/2 delta_c^3/2,
 // A_c = pi R delta_c. With p_y = k H this is the CEB / Kogut-Etsion delta_c (seed section 2).
 struct Critical {
-  double interference = 0.0;  // delta_c [m]
-  double load = 0.0;          // F_c [N]
-  double area = 0.0;          // A_c [m^2]
-  double peak_pressure = 0.0; // p_y, Hertz peak pressure at delta_c [Pa]
+  double interference = 0.0;   // delta_c [m]
+  double load = 0.0;           // F_c [N]
+  double area = 0.0;           // A_c [m^2]
+  double peak_pressure = 0.0;  // p_y, Hertz peak pressure at delta_c [Pa]
 };
 Critical hertz_critical(const ContactPair& pair, double yield_peak_pressure);
 

@@ -21,8 +21,8 @@ void CylinderAsperity::validate() const {
 
 double seed_critical_interference(const CylinderAsperity& c) {
   c.validate();
-  return 2.0 * c.tip_radius * c.yield_strength / c.modulus *
-         (std::log(2.0 * c.modulus / c.yield_strength) - 1.0) * c.yield_constant;
+  return 2.0 * c.tip_radius * c.yield_strength / c.modulus * (std::log(2.0 * c.modulus / c.yield_strength) - 1.0) *
+         c.yield_constant;
 }
 
 double hertz_half_width(double load_per_length, double radius, double modulus) {

@@ -29,9 +29,9 @@ double hertz_half_width(double load_per_length, double radius, double modulus);
 // First yield of the line contact: p0 = C sigma_s with the same C, so b_c = 2 R C sigma_s/E_t
 // and F'_c = pi R (C sigma_s)^2/E_t.
 struct LineCritical {
-  double half_width = 0.0;      // b_c [m]
-  double load_per_length = 0.0; // F'_c [N/m]
-  double peak_pressure = 0.0;   // C_L S_y [Pa]
+  double half_width = 0.0;       // b_c [m]
+  double load_per_length = 0.0;  // F'_c [N/m]
+  double peak_pressure = 0.0;    // C_L S_y [Pa]
 };
 LineCritical line_critical(const CylinderAsperity& c);
 

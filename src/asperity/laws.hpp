@@ -10,16 +10,16 @@
 #include "asperity/critical.hpp"
 
 #include <array>
+#include <cmath>
 #include <limits>
-#include <vector>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <tuple>
 #include <type_traits>
-#include <cmath>
-#include <numbers>
-#include <string_view>
+#include <vector>
 
 namespace geartrib::asperity {
 
@@ -57,7 +57,7 @@ struct LawRange {
   double fitted_delta_star_max;
   double contact_radius_over_radius_max = 0.5;
   bool switch_to_fully_plastic = false;
-  std::string_view past_range = "";  // what answers past the range, for the user
+  std::string_view past_range;  // what answers past the range, for the user
 };
 
 // A named model constant: default value, admissible range (inclusive) and meaning.
@@ -98,8 +98,13 @@ struct CebLaw {
   static constexpr std::string_view citation = "Chang, Etsion & Bogy, J. Tribol. 109 (1987) 257";
   static constexpr std::array<ConstantSpec, 0> constants{};
   // Volume conservation holds at any interference; its plastic pressure stays k H (< H).
-  static LawRange range(const double*) { return {std::numeric_limits<double>::infinity(), 0.5, false, "defined at every interference (plastic pressure k H)"}; }
-  static void breakpoints(const double*, std::vector<double>& out) { out.insert(out.end(), {1.0, fitted::continuous_plastic_onset}); }
+  static LawRange range(const double*) {
+    return {std::numeric_limits<double>::infinity(), 0.5, false,
+            "defined at every interference (plastic pressure k H)"};
+  }
+  static void breakpoints(const double*, std::vector<double>& out) {
+    out.insert(out.end(), {1.0, fitted::continuous_plastic_onset});
+  }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
     return T(ceb_pressure_factor(p.poisson_ratio) * p.hardness);
@@ -134,12 +139,15 @@ struct KogutEtsionLaw {
       {"area_coefficient_2", 0.94, 0.1, 10.0, "A* coefficient for 6 <= delta* <= 110"},
       {"area_exponent_2", 1.146, 0.5, 2.0, "A* exponent for 6 <= delta* <= 110"},
       {"surface_yield", 6.0, 1.0, 100.0, "delta* where the plastic zone reaches the surface"},
-      {"fully_plastic", 110.0, 2.0, 1000.0, "delta* of fully plastic contact (the end of the fitted range: the continuous switch to the fully plastic limit starts here)"},
+      {"fully_plastic", 110.0, 2.0, 1000.0,
+       "delta* of fully plastic contact (the end of the fitted range: the continuous switch to the fully plastic limit starts here)"},
   }};
   // Fitted 1 <= delta* <= 110 (the constant fully_plastic); the model switches to the fully
   // plastic limit there.
   static LawRange range(const double* c) { return {c[9], 0.5, true, "continuous switch to the fully plastic limit"}; }
-  static void breakpoints(const double* c, std::vector<double>& out) { out.insert(out.end(), {1.0, c[8], c[9], fitted::continuous_plastic_onset}); }
+  static void breakpoints(const double* c, std::vector<double>& out) {
+    out.insert(out.end(), {1.0, c[8], c[9], fitted::continuous_plastic_onset});
+  }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
     return T(ceb_pressure_factor(p.poisson_ratio) * p.hardness);
@@ -176,7 +184,9 @@ struct JacksonGreenLaw {
   // law, extrapolated, outgrows the fully plastic 2 pi R delta and the mean pressure falls far
   // below the hardness, so the model switches to the fully plastic limit there.
   static LawRange range(const double*) { return {110.0, 0.5, true, "continuous switch to the fully plastic limit"}; }
-  static void breakpoints(const double* c, std::vector<double>& out) { out.insert(out.end(), {c[0], fitted::continuous_plastic_onset}); }
+  static void breakpoints(const double* c, std::vector<double>& out) {
+    out.insert(out.end(), {c[0], fitted::continuous_plastic_onset});
+  }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
     return T(jackson_green_yield_factor(p.poisson_ratio) * p.yield_strength);
@@ -191,8 +201,8 @@ struct JacksonGreenLaw {
     const T area = d * pow(d / c[0], b);
     const T a_over_r = sqrt(area) * sqrt_dc_over_r;  // a/R = sqrt(A*/pi * pi delta_c / R) / 1
     const T hg = c[1] * (1.0 - exp(-c[2] * pow(a_over_r, -c[3])));
-    const T load = exp(-0.25 * pow(d, 5.0 / 12.0)) * pow(d, 1.5) +
-                   4.0 * hg / cy * (1.0 - exp(-pow(d, 5.0 / 9.0) / 25.0)) * d;
+    const T load =
+        exp(-0.25 * pow(d, 5.0 / 12.0)) * pow(d, 1.5) + 4.0 * hg / cy * (1.0 - exp(-pow(d, 5.0 / 9.0) / 25.0)) * d;
     return {load, area, published_surface_yield_share(d)};
   }
 };
@@ -210,8 +220,13 @@ struct ZmcLaw {
       {"fully_plastic", 54.0, 2.0, 1000.0, "delta_2/delta_1, onset of fully plastic flow"},
   }};
   // Defined at every interference: fully plastic (p = H, A = 2 pi R delta) from delta_2 on.
-  static LawRange range(const double*) { return {std::numeric_limits<double>::infinity(), 0.5, false, "defined at every interference (fully plastic from delta_2)"}; }
-  static void breakpoints(const double* c, std::vector<double>& out) { out.insert(out.end(), {1.0, c[1], fitted::continuous_plastic_onset}); }
+  static LawRange range(const double*) {
+    return {std::numeric_limits<double>::infinity(), 0.5, false,
+            "defined at every interference (fully plastic from delta_2)"};
+  }
+  static void breakpoints(const double* c, std::vector<double>& out) {
+    out.insert(out.end(), {1.0, c[1], fitted::continuous_plastic_onset});
+  }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T* c) {
     return 1.5 * c[0] * p.hardness;
@@ -247,19 +262,26 @@ struct ZmcLaw {
 // 2002 and Jackson-Green 2005 FEM-based load and area.
 struct ContinuousLaw {
   static constexpr std::string_view name = "continuous";
-  static constexpr std::string_view citation = "seed section 2, closure re-derived (ERRATA); area and load fitted to KE 2002 / JG 2005, plastic core to the project's CalculiX surface yield";
+  static constexpr std::string_view citation =
+      "seed section 2, closure re-derived (ERRATA); area and load fitted to KE 2002 / JG 2005, plastic core to the project's CalculiX surface yield";
   static constexpr std::array<ConstantSpec, 7> constants{{
-      {"area_scale", fitted::continuous_area_scale, 0.1, 1e4, "da: delta* - 1 at which r_a^2 is halfway from R delta to 2 R delta"},
+      {"area_scale", fitted::continuous_area_scale, 0.1, 1e4,
+       "da: delta* - 1 at which r_a^2 is halfway from R delta to 2 R delta"},
       {"area_exponent", fitted::continuous_area_exponent, 0.2, 5.0, "na: steepness of the contact-radius growth"},
       {"plastic_onset", fitted::continuous_plastic_onset, 1.0, 100.0, "d0: delta* at which the surface first yields"},
-      {"plastic_scale", fitted::continuous_plastic_scale, 0.01, 1e4, "dp: delta* - d0 at which half the contact area has yielded at the surface"},
+      {"plastic_scale", fitted::continuous_plastic_scale, 0.01, 1e4,
+       "dp: delta* - d0 at which half the contact area has yielded at the surface"},
       {"plastic_exponent", fitted::continuous_plastic_exponent, 0.2, 20.0, "np: steepness of the surface-yield growth"},
-      {"pressure_scale", fitted::continuous_pressure_scale, 0.01, 1e4, "ds: delta* - 1 at which the mean pressure is halfway from 2 k H/3 to H"},
-      {"pressure_exponent", fitted::continuous_pressure_exponent, 0.2, 5.0, "ns: steepness of the mean-pressure growth"},
+      {"pressure_scale", fitted::continuous_pressure_scale, 0.01, 1e4,
+       "ds: delta* - 1 at which the mean pressure is halfway from 2 k H/3 to H"},
+      {"pressure_exponent", fitted::continuous_pressure_exponent, 0.2, 5.0,
+       "ns: steepness of the mean-pressure growth"},
   }};
   // Fitted to the KE/JG curves up to delta* = 110 (and KE's fully plastic branch beyond); the
   // closure reaches the fully plastic limit by itself (g -> 2, m -> 1, phi -> 1), so no switch.
-  static LawRange range(const double*) { return {110.0, 0.5, false, "flagged only: the closure reaches the fully plastic limit itself"}; }
+  static LawRange range(const double*) {
+    return {110.0, 0.5, false, "flagged only: the closure reaches the fully plastic limit itself"};
+  }
   static void breakpoints(const double* c, std::vector<double>& out) { out.insert(out.end(), {1.0, c[2]}); }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
@@ -279,9 +301,10 @@ struct ContinuousLaw {
   }
   template <class T>
   static Closure<T> closure(const T& d, const T* c, double k) {
-    const T x = d - 1.0;  // > 0: callers handle d <= 1 as Hertz
+    const T x = d - 1.0;                 // > 0: callers handle d <= 1 as Hertz
     const double hertz = 2.0 * k / 3.0;  // Hertz mean pressure at first yield over H
-    return {1.0 + rise(x, c[0], c[1]), surface_yield_share(d, c[2], c[3], c[4]), hertz + (1.0 - hertz) * rise(x, c[5], c[6])};
+    return {1.0 + rise(x, c[0], c[1]), surface_yield_share(d, c[2], c[3], c[4]),
+            hertz + (1.0 - hertz) * rise(x, c[5], c[6])};
   }
   template <class T>
   static Star<T> star(const T& d, const T* c, const ContactPair& p) {
@@ -311,19 +334,15 @@ auto visit_law(std::string_view name, F&& f) {
   std::optional<std::conditional_t<std::is_void_v<Result>, int, Result>> out;
   bool found = false;
   std::string known;
-  std::apply(
-      [&](auto... laws) {
-        (([&] {
-           using Law = decltype(laws);
-           known += (known.empty() ? "" : ", ") + std::string(Law::name);
-           if (found || Law::name != name) return;
-           found = true;
-           if constexpr (std::is_void_v<Result>) f(LawTag<Law>{});
-           else out.emplace(f(LawTag<Law>{}));
-         }()),
-         ...);
-      },
-      LawList{});
+  auto visit_one = [&]<class Law>(LawTag<Law>) {
+    known += (known.empty() ? "" : ", ") + std::string(Law::name);
+    if (found || Law::name != name) return;
+    found = true;
+    if constexpr (std::is_void_v<Result>) f(LawTag<Law>{});
+    else out.emplace(f(LawTag<Law>{}));
+  };
+  // In LawList's order. (Not std::apply over a fold of lambdas: clang 14, and so clang-tidy, crashes on it.)
+  [&]<class... Laws>(std::tuple<Laws...>*) { (visit_one(LawTag<Laws>{}), ...); }(static_cast<LawList*>(nullptr));
   if (!found) throw std::invalid_argument("unknown asperity model '" + std::string(name) + "' (known: " + known + ")");
   if constexpr (!std::is_void_v<Result>) return std::move(*out);
 }

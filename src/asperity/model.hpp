@@ -18,19 +18,19 @@ namespace geartrib::asperity {
 
 // Everything known about one asperity contact at an interference, SI units.
 struct AsperityState {
-  double delta = 0.0;             // interference [m]
-  double delta_star = 0.0;        // delta / delta_c (the model's own delta_c)
-  double load = 0.0;              // F [N]
-  double load_star = 0.0;         // F / F_c
-  double area = 0.0;              // A [m^2]
-  double area_star = 0.0;         // A / A_c
-  double contact_radius = 0.0;    // a = sqrt(A/pi) [m]
-  double plastic_radius = 0.0;    // r_p, radius of the plastic core of the pressure profile [m]
-  double mean_pressure = 0.0;     // F/A [Pa]
-  double max_pressure = 0.0;      // peak contact pressure [Pa]
-  double plastic_fraction = 0.0;  // share of the contact area whose surface has yielded, (r_p/a)^2
-  double max_von_mises = 0.0;     // largest von Mises stress of the elastic field on the axis [Pa]
-  double von_mises_depth = 0.0;   // its depth [m]
+  double delta = 0.0;                // interference [m]
+  double delta_star = 0.0;           // delta / delta_c (the model's own delta_c)
+  double load = 0.0;                 // F [N]
+  double load_star = 0.0;            // F / F_c
+  double area = 0.0;                 // A [m^2]
+  double area_star = 0.0;            // A / A_c
+  double contact_radius = 0.0;       // a = sqrt(A/pi) [m]
+  double plastic_radius = 0.0;       // r_p, radius of the plastic core of the pressure profile [m]
+  double mean_pressure = 0.0;        // F/A [Pa]
+  double max_pressure = 0.0;         // peak contact pressure [Pa]
+  double plastic_fraction = 0.0;     // share of the contact area whose surface has yielded, (r_p/a)^2
+  double max_von_mises = 0.0;        // largest von Mises stress of the elastic field on the axis [Pa]
+  double von_mises_depth = 0.0;      // its depth [m]
   bool beyond_fitted_range = false;  // delta* past the law's fitted range (LawRange)
   bool beyond_paraboloid = false;    // contact radius past the law's a/R limit
   bool fully_plastic_limit = false;  // the switch to the fully plastic limit governs the answer

@@ -3,8 +3,8 @@
 #include "asperity/model.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -44,7 +44,8 @@ double AsperityModel::switch_delta_star(const ContactPair& pair, const Critical&
   if (!r.switch_to_fully_plastic) return std::numeric_limits<double>::infinity();
   // a^2 = 2 R delta = (lim R)^2  =>  delta/R = lim^2/2, and delta_c/R = (pi p_y/(2 E_t))^2.
   const double dc_over_r = crit.interference / pair.radius;
-  return std::min(r.fitted_delta_star_max, 0.5 * r.contact_radius_over_radius_max * r.contact_radius_over_radius_max / dc_over_r);
+  return std::min(r.fitted_delta_star_max,
+                  0.5 * r.contact_radius_over_radius_max * r.contact_radius_over_radius_max / dc_over_r);
 }
 
 std::vector<double> AsperityModel::breakpoints(const ContactPair& pair) const {
@@ -65,8 +66,8 @@ Star<double> AsperityModel::star(double d, const ContactPair& pair, double ds) c
   const double load_per_d = 3.0 * pair.hardness / yield_peak_pressure(pair);
   const Star<double> at = law_star(ds, pair);
   const double decay = ds / d;
-  return {load_per_d * d * std::pow(at.load / (load_per_d * ds), decay), 2.0 * d * std::pow(at.area / (2.0 * ds), decay),
-          law_star(d, pair).plastic};
+  return {load_per_d * d * std::pow(at.load / (load_per_d * ds), decay),
+          2.0 * d * std::pow(at.area / (2.0 * ds), decay), law_star(d, pair).plastic};
 }
 
 PressureProfile AsperityModel::profile(double plastic_share, double load, double area) const {

@@ -68,8 +68,8 @@ AxisStress PressureProfile::axis_stress(double depth, double nu) const {
 VonMisesMaximum PressureProfile::von_mises_maximum(double nu) const {
   const double a = contact_radius;
   if (a <= 0.0) return {};
-  const auto m = maximize_on_interval(
-      [&](double z) { return von_mises_on_axis(axis_stress(z * a, nu)); }, 1e-4, 3.0, 48);
+  const auto m =
+      maximize_on_interval([&](double z) { return von_mises_on_axis(axis_stress(z * a, nu)); }, 1e-4, 3.0, 48);
   return {m.value, m.x * a};
 }
 

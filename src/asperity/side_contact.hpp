@@ -11,13 +11,13 @@
 namespace geartrib::asperity {
 
 struct SideContactGeometry {
-  double theta = 0.0;         // tilt of the contact normal [rad], tan theta = mu
-  double axis_offset = 0.0;   // d = (R1 + R2) tan theta [m]
-  double tip_gap = 0.0;       // vertical tip separation at first touch d^2/(2 (R1 + R2)) [m]
-  double radius_x = 0.0;      // equivalent radius in the plane of the offset: R/cos^3 theta [m]
-  double radius_y = 0.0;      // equivalent radius across it: R/cos theta [m]
-  double radius_0 = 0.0;      // the seed's R0 = R1' R2'/(R1' + R2'), R_i' = R_i/cos^3 theta: = radius_x
-  double radius_mean = 0.0;   // sqrt(R_x R_y), the Hertz equivalent radius of the ellipse [m]
+  double theta = 0.0;        // tilt of the contact normal [rad], tan theta = mu
+  double axis_offset = 0.0;  // d = (R1 + R2) tan theta [m]
+  double tip_gap = 0.0;      // vertical tip separation at first touch d^2/(2 (R1 + R2)) [m]
+  double radius_x = 0.0;     // equivalent radius in the plane of the offset: R/cos^3 theta [m]
+  double radius_y = 0.0;     // equivalent radius across it: R/cos theta [m]
+  double radius_0 = 0.0;     // the seed's R0 = R1' R2'/(R1' + R2'), R_i' = R_i/cos^3 theta: = radius_x
+  double radius_mean = 0.0;  // sqrt(R_x R_y), the Hertz equivalent radius of the ellipse [m]
 };
 
 // Principal radii of a paraboloid of tip radius R at the point where its normal is tilted by
@@ -34,10 +34,10 @@ double normal_tilt_from_offset(double tip_radius1, double tip_radius2, double ax
 // p0 = E_t delta/(b K), F = 2/3 pi a b p0.
 struct EllipticHertz {
   double eccentricity = 0.0;
-  double semi_major = 0.0;    // a [m]
-  double semi_minor = 0.0;    // b [m]
-  double peak_pressure = 0.0; // p0 [Pa]
-  double load = 0.0;          // F [N]
+  double semi_major = 0.0;     // a [m]
+  double semi_minor = 0.0;     // b [m]
+  double peak_pressure = 0.0;  // p0 [Pa]
+  double load = 0.0;           // F [N]
   double area() const;
 };
 EllipticHertz elliptic_hertz(double radius_x, double radius_y, double modulus, double delta);
@@ -48,12 +48,12 @@ EllipticHertz elliptic_hertz(double radius_x, double radius_y, double modulus, d
 // (pi k H / (2 E_t))^2 R0, and its load and area are scaled by the elliptical-to-circular Hertz
 // ratios (constant in delta), which makes the elastic range exactly the elliptical Hertz contact.
 struct SideContactState {
-  AsperityState normal;        // along the contact normal (delta = delta_n, delta_star = delta_n/delta_cn)
-  double theta = 0.0;          // [rad]
-  double applied_delta = 0.0;  // delta along the load direction [m]
-  double vertical_load = 0.0;  // F_n cos theta [N]
-  double tangential_load = 0.0;// F_n sin theta [N]
-  double semi_major = 0.0;     // contact ellipse semi-axes [m]
+  AsperityState normal;          // along the contact normal (delta = delta_n, delta_star = delta_n/delta_cn)
+  double theta = 0.0;            // [rad]
+  double applied_delta = 0.0;    // delta along the load direction [m]
+  double vertical_load = 0.0;    // F_n cos theta [N]
+  double tangential_load = 0.0;  // F_n sin theta [N]
+  double semi_major = 0.0;       // contact ellipse semi-axes [m]
   double semi_minor = 0.0;
 };
 SideContactState evaluate_side_contact(const AsperityModel& model, const ContactPair& pair,

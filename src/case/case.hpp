@@ -20,7 +20,7 @@ namespace geartrib {
 // The pair's geometry: basic rack (ISO 53 by default), centre distance and both gears' teeth,
 // shifts, tip and bore diameters; index 0 the pinion, 1 the wheel. gear::SpurPair builds on it.
 struct GearPairSpec {
-  static constexpr int kMinTeeth = 5;     // below this no involute spur gear is cut in practice
+  static constexpr int kMinTeeth = 5;  // below this no involute spur gear is cut in practice
   static constexpr int kMaxTeeth = 1000;
   double module = 0.0;                    // m [m]
   double pressure_angle = 0.0;            // alpha of the basic rack [rad]
@@ -38,10 +38,10 @@ struct GearPairSpec {
 
 // A measured flank: the topography file and how it is read and cleaned.
 struct TopographySpec {
-  std::string file;          // as written in the case file (relative to it)
-  double unit = 1e-6;        // length unit of a file that does not state one [m]
-  double spacing = 0.0;      // grid spacing of files without one [m]; 0: from the file
-  double resample = 0.0;     // regrid spacing [m]; 0: as measured
+  std::string file;       // as written in the case file (relative to it)
+  double unit = 1e-6;     // length unit of a file that does not state one [m]
+  double spacing = 0.0;   // grid spacing of files without one [m]; 0: from the file
+  double resample = 0.0;  // regrid spacing [m]; 0: as measured
   surface::CleanupOptions clean;
 };
 
@@ -58,7 +58,7 @@ struct FlankSpec {
 
 // One gear's body: its material and its flank (its geometry is in GearPairSpec).
 struct GearSpec {
-  std::string material_file;   // as written in the case file
+  std::string material_file;  // as written in the case file
   Material material;
   FlankSpec flank;
 };
@@ -73,9 +73,9 @@ struct OperatingPoint {
 struct AsperitySettings {
   std::string model = "continuous";
   std::map<std::string, std::vector<std::pair<std::string, double>>> constants;  // model -> (name, value)
-  double measured_axis_offset = 0.0;  // seed's d0 [m]
-  double measured_tip_gap = 0.0;      // seed's y0 [m]
-  double cylinder_tip_radius = 0.0;   // R_m [m]; 0: not given (only the cylinder studies need it)
+  double measured_axis_offset = 0.0;                                             // seed's d0 [m]
+  double measured_tip_gap = 0.0;                                                 // seed's y0 [m]
+  double cylinder_tip_radius = 0.0;       // R_m [m]; 0: not given (only the cylinder studies need it)
   double cylinder_yield_constant = 1.64;  // C of delta_pc
 };
 
@@ -95,15 +95,15 @@ struct RoughnessSettings {
 
 // The mesh-cycle contact run: fidelity, the outputs asked for, and the resolution knobs.
 struct ContactSettings {
-  bool coupled = false;          // "uncoupled" (Hertz pressure imposed) or "coupled" (Greenwood-Tripp)
-  bool real_area = true;         // outputs asked for
+  bool coupled = false;   // "uncoupled" (Hertz pressure imposed) or "coupled" (Greenwood-Tripp)
+  bool real_area = true;  // outputs asked for
   bool plastic_fraction = true;
   bool asperity_stress = true;
-  int positions = 201;           // along A -> E of one tooth pair
-  int strip_points = 64;         // uncoupled quadrature across the strip
-  int height_points = 128;       // GW quadrature over summit heights
-  int table_points = 32;         // GW pressure-separation table points per summit sigma
-  int coupled_nodes = 128;       // coupled pressure elements
+  int positions = 201;      // along A -> E of one tooth pair
+  int strip_points = 64;    // uncoupled quadrature across the strip
+  int height_points = 128;  // GW quadrature over summit heights
+  int table_points = 32;    // GW pressure-separation table points per summit sigma
+  int coupled_nodes = 128;  // coupled pressure elements
 };
 
 // Mesh dynamics: the engine (none: static load sharing) and the model's data.
@@ -137,9 +137,9 @@ struct Case {
   RoughnessSettings roughness;
   ContactSettings contact;
   AsperitySettings asperity;
-  std::string source_text;            // the case file as read, with the --set changes (stored with the results)
+  std::string source_text;                    // the case file as read, with the --set changes (stored with the results)
   std::vector<ResolvedParameter> parameters;  // every key as it ran
-  std::vector<std::string> warnings;  // non-fatal findings of the loader (e.g. undercut), located
+  std::vector<std::string> warnings;          // non-fatal findings of the loader (e.g. undercut), located
 };
 
 }  // namespace geartrib

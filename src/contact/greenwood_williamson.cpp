@@ -30,16 +30,18 @@ void GreenwoodWilliamsonOptions::validate() const {
   if (height_points < kMinHeightPoints || height_points > kMaxHeightPoints)
     throw std::invalid_argument(fmt::format("height_points must lie in [{}, {}]", kMinHeightPoints, kMaxHeightPoints));
   if (table_points_per_sigma < kMinTablePoints || table_points_per_sigma > kMaxTablePoints)
-    throw std::invalid_argument(fmt::format("table_points_per_sigma must lie in [{}, {}]", kMinTablePoints, kMaxTablePoints));
+    throw std::invalid_argument(
+        fmt::format("table_points_per_sigma must lie in [{}, {}]", kMinTablePoints, kMaxTablePoints));
 }
 
-GreenwoodWilliamson::GreenwoodWilliamson(const surface::EquivalentSurface& surface, const asperity::AsperityModel& model,
-                                         const asperity::ContactPair& pair, double max_pressure,
-                                         const GreenwoodWilliamsonOptions& options)
+GreenwoodWilliamson::GreenwoodWilliamson(const surface::EquivalentSurface& surface,
+                                         const asperity::AsperityModel& model, const asperity::ContactPair& pair,
+                                         double max_pressure, const GreenwoodWilliamsonOptions& options)
     : surface_(surface), model_(model), pair_(asperity::with_radius(pair, surface.summit_radius)), options_(options) {
   surface_.validate();
   options_.validate();
-  if (!(max_pressure > 0.0 && std::isfinite(max_pressure))) throw std::invalid_argument("max_pressure must be positive");
+  if (!(max_pressure > 0.0 && std::isfinite(max_pressure)))
+    throw std::invalid_argument("max_pressure must be positive");
   delta_c_ = model_.critical(pair_).interference;
   for (double b : model_.breakpoints(pair_))
     if (std::isfinite(b) && b > 0.0) breaks_.push_back(b * delta_c_);
@@ -113,7 +115,8 @@ SurfaceContact GreenwoodWilliamson::at_separation(double d) const {
   // Contact counts in closed form.
   const double s = surface_.summit_sigma;
   auto survival = [&](double z) {
-    if (surface_.distribution == surface::HeightDistribution::gaussian) return 0.5 * std::erfc(z / (s * std::sqrt(2.0)));
+    if (surface_.distribution == surface::HeightDistribution::gaussian)
+      return 0.5 * std::erfc(z / (s * std::sqrt(2.0)));
     return z <= 0.0 ? 1.0 : std::exp(-z / s);
   };
   c.contact_density = eta * survival(d);
@@ -177,7 +180,8 @@ double GreenwoodWilliamson::separation_for_pressure(double p) const {
   const SurfaceContact& b = *it;
   const SurfaceContact& a = *(it - 1);
   double t;
-  if (a.nominal_pressure > 0.0) t = std::log(p / a.nominal_pressure) / std::log(b.nominal_pressure / a.nominal_pressure);
+  if (a.nominal_pressure > 0.0)
+    t = std::log(p / a.nominal_pressure) / std::log(b.nominal_pressure / a.nominal_pressure);
   else t = (p - a.nominal_pressure) / (b.nominal_pressure - a.nominal_pressure);
   return a.separation - std::clamp(t, 0.0, 1.0) * step_;
 }

@@ -13,11 +13,11 @@ namespace geartrib::contact {
 
 // Contact of the rough surface per unit nominal area at one separation.
 struct SurfaceContact {
-  double separation = 0.0;               // d [m]
-  double nominal_pressure = 0.0;         // p = eta int F(z - d) phi(z) dz [Pa]
-  double real_area_ratio = 0.0;          // A_r/A_n = eta int A(z - d) phi(z) dz
-  double contact_density = 0.0;          // contacts per nominal area, eta int_d phi [1/m^2]
-  double plastic_area_ratio = 0.0;       // eta int A(z - d) phi_p(z - d) phi(z) dz, phi_p the plastic share of one contact
+  double separation = 0.0;          // d [m]
+  double nominal_pressure = 0.0;    // p = eta int F(z - d) phi(z) dz [Pa]
+  double real_area_ratio = 0.0;     // A_r/A_n = eta int A(z - d) phi(z) dz
+  double contact_density = 0.0;     // contacts per nominal area, eta int_d phi [1/m^2]
+  double plastic_area_ratio = 0.0;  // eta int A(z - d) phi_p(z - d) phi(z) dz, phi_p the plastic share of one contact
   double plastic_contact_density = 0.0;  // contacts with z - d > delta_c, per nominal area [1/m^2]
 };
 
@@ -25,9 +25,10 @@ struct GreenwoodWilliamsonOptions {
   // The resolutions' ranges (the case file's contact.height_points and contact.table_points).
   static constexpr int kMinHeightPoints = 8, kMaxHeightPoints = 100000;  // 8: one Gauss panel
   static constexpr int kMinTablePoints = 4, kMaxTablePoints = 10000;
-  int height_points = 128;    // quadrature points over the summit heights in contact (panel ends also at the model's breakpoints)
+  int height_points =
+      128;  // quadrature points over the summit heights in contact (panel ends also at the model's breakpoints)
   int table_points_per_sigma = 32;  // separation table resolution
-  bool plastic = true;        // tabulate the plastic area
+  bool plastic = true;              // tabulate the plastic area
   void validate() const;
 };
 
@@ -36,7 +37,8 @@ class GreenwoodWilliamson {
   // `pair` carries the materials; its radius is replaced by the surface's summit radius. The
   // pressure-separation table covers nominal pressures up to at least `max_pressure` [Pa].
   GreenwoodWilliamson(const surface::EquivalentSurface& surface, const asperity::AsperityModel& model,
-                      const asperity::ContactPair& pair, double max_pressure, const GreenwoodWilliamsonOptions& options);
+                      const asperity::ContactPair& pair, double max_pressure,
+                      const GreenwoodWilliamsonOptions& options);
 
   // Direct quadrature at a separation (what the table is built from).
   SurfaceContact at_separation(double d) const;
@@ -66,9 +68,9 @@ class GreenwoodWilliamson {
   asperity::ContactPair pair_;
   GreenwoodWilliamsonOptions options_;
   double delta_c_;
-  double z_low_, z_high_;  // support of phi used in the quadrature
-  std::vector<double> breaks_;  // interferences where the model jumps or kinks [m], ascending
-  double step_;            // table spacing in d [m]
+  double z_low_, z_high_;              // support of phi used in the quadrature
+  std::vector<double> breaks_;         // interferences where the model jumps or kinks [m], ascending
+  double step_;                        // table spacing in d [m]
   std::vector<SurfaceContact> table_;  // decreasing d from z_high_: table_[k].separation = z_high_ - k step
 };
 

@@ -30,7 +30,8 @@ void BemOptions::validate() const {
 HalfPlaneBem::HalfPlaneBem(const HalfPlaneGrid& grid, double modulus, const BemOptions& options)
     : grid_(grid), modulus_(modulus), options_(options) {
   options_.validate();
-  if (grid.size < 2 || !(grid.spacing > 0.0)) throw std::invalid_argument("BEM grid needs >= 2 elements of positive width");
+  if (grid.size < 2 || !(grid.spacing > 0.0))
+    throw std::invalid_argument("BEM grid needs >= 2 elements of positive width");
   if (!(modulus > 0.0)) throw std::invalid_argument("modulus must be positive");
   const int n = grid.size;
   const double h = grid.spacing, c = 2.0 / (kPi * modulus);
@@ -38,7 +39,8 @@ HalfPlaneBem::HalfPlaneBem(const HalfPlaneGrid& grid, double modulus, const BemO
     // u_i = c sum_j p_j int_elem_j ln(L_ref/|x_i - s|) ds
     const double lref = options_.reference_length;
     if (lref < n * h)
-      throw std::invalid_argument(fmt::format("reference length {:.3g} m must exceed the domain {:.3g} m", lref, n * h));
+      throw std::invalid_argument(
+          fmt::format("reference length {:.3g} m must exceed the domain {:.3g} m", lref, n * h));
     std::vector<double> k(static_cast<std::size_t>(2 * n - 1));
     for (int m = -(n - 1); m <= n - 1; ++m)
       k[static_cast<std::size_t>(m + n - 1)] =
@@ -123,14 +125,17 @@ BemSolution HalfPlaneBem::solve(const std::vector<double>& g0, bool load_control
   double scale = g_max - g_min;
   if (!(scale > 0.0)) scale = std::max(std::abs(target) / modulus_, 1e-12);
   // Initial pressure: uniform over the lowest gaps (load control) or where the flat overlaps.
-  std::vector<double> p(static_cast<std::size_t>(n), 0.0), u, g(static_cast<std::size_t>(n)), t(static_cast<std::size_t>(n), 0.0), r;
+  std::vector<double> p(static_cast<std::size_t>(n), 0.0), u, g(static_cast<std::size_t>(n)),
+      t(static_cast<std::size_t>(n), 0.0), r;
   if (initial) {
     p = *initial;
   } else if (load_control) {
     std::fill(p.begin(), p.end(), std::min(cap, target / (n * h)));
   } else {
     for (int i = 0; i < n; ++i)
-      if (g0[static_cast<std::size_t>(i)] < target) p[static_cast<std::size_t>(i)] = std::min(cap, 1e-3 * modulus_ * (target - g0[static_cast<std::size_t>(i)]) / (n * h));
+      if (g0[static_cast<std::size_t>(i)] < target)
+        p[static_cast<std::size_t>(i)] =
+            std::min(cap, 1e-3 * modulus_ * (target - g0[static_cast<std::size_t>(i)]) / (n * h));
   }
   auto is_free = [&](double pi) { return pi > 0.0 && pi < cap; };
   double g_old = 1.0, approach = load_control ? 0.0 : target, error = 0.0;
@@ -168,14 +173,16 @@ BemSolution HalfPlaneBem::solve(const std::vector<double>& g0, bool load_control
     if (free_count == 0) {
       // Everything capped or open: move all overlapping nodes into contact and continue.
       for (int i = 0; i < n; ++i)
-        if (g[static_cast<std::size_t>(i)] < 0.0 && p[static_cast<std::size_t>(i)] <= 0.0) p[static_cast<std::size_t>(i)] = std::min(cap, 1e-6 * cap);
+        if (g[static_cast<std::size_t>(i)] < 0.0 && p[static_cast<std::size_t>(i)] <= 0.0)
+          p[static_cast<std::size_t>(i)] = std::min(cap, 1e-6 * cap);
       conjugate = false;
       continue;
     }
     // Conjugate direction on the free set.
     double gg = 0.0;
     for (int i = 0; i < n; ++i)
-      if (is_free(p[static_cast<std::size_t>(i)])) gg += g[static_cast<std::size_t>(i)] * g[static_cast<std::size_t>(i)];
+      if (is_free(p[static_cast<std::size_t>(i)]))
+        gg += g[static_cast<std::size_t>(i)] * g[static_cast<std::size_t>(i)];
     for (int i = 0; i < n; ++i) {
       const std::size_t k = static_cast<std::size_t>(i);
       t[k] = is_free(p[k]) ? g[k] + (conjugate && g_old > 0.0 ? gg / g_old * t[k] : 0.0) : 0.0;
@@ -227,7 +234,8 @@ BemSolution HalfPlaneBem::solve(const std::vector<double>& g0, bool load_control
   return finish(std::move(p), std::move(u), std::move(g), approach, it, error);
 }
 
-BemSolution HalfPlaneBem::solve_box(const std::vector<double>& g0, double approach, const std::vector<double>* initial) const {
+BemSolution HalfPlaneBem::solve_box(const std::vector<double>& g0, double approach,
+                                    const std::vector<double>* initial) const {
   // Displacement control: min 1/2 p'Kp + p'(g0 - approach) subject to 0 <= p <= cap, whose
   // gradient is the gap. Dostal's MPRGP (modified proportioning with reduced gradient
   // projections): conjugate gradients on the free set, expansion steps along the projected
@@ -314,9 +322,10 @@ BemSolution HalfPlaneBem::solve_box(const std::vector<double>& g0, double approa
 BemSolution HalfPlaneBem::finish(std::vector<double> p, std::vector<double> u, std::vector<double> g, double approach,
                                  int iterations, double error) const {
   if (!(error < options_.tolerance))
-    throw std::runtime_error(fmt::format("boundary elements: complementarity error {:.3g} above the tolerance {:.3g} after {} "
-                                         "iterations",
-                                         error, options_.tolerance, iterations));
+    throw std::runtime_error(
+        fmt::format("boundary elements: complementarity error {:.3g} above the tolerance {:.3g} after {} "
+                    "iterations",
+                    error, options_.tolerance, iterations));
   BemSolution s;
   for (double x : p) {
     s.line_load += x * grid_.spacing;
@@ -352,7 +361,8 @@ PlaneStrainStress uniform_strip_stress(double x, double z, double a, double p, d
   return s;
 }
 
-PlaneStrainStress subsurface_stress(const HalfPlaneGrid& grid, const std::vector<double>& p, double x, double z, double nu) {
+PlaneStrainStress subsurface_stress(const HalfPlaneGrid& grid, const std::vector<double>& p, double x, double z,
+                                    double nu) {
   PlaneStrainStress s;
   for (int j = 0; j < grid.size; ++j) {
     const double pj = p[static_cast<std::size_t>(j)];

@@ -27,7 +27,7 @@ struct HalfPlaneGrid {
 };
 
 struct BemOptions {
-  double tolerance = 1e-10;        // complementarity error at convergence (relative to the profile relief)
+  double tolerance = 1e-10;  // complementarity error at convergence (relative to the profile relief)
   int max_iterations = 20000;
   double pressure_cap = std::numeric_limits<double>::infinity();  // [Pa]; H for an elastic-perfectly-plastic surface
   bool periodic = false;

@@ -2,10 +2,10 @@
 
 #include "asperity/case_setup.hpp"
 #include "asperity/side_contact.hpp"
-#include "gear/mesh_dynamics.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "contact/validity.hpp"
+#include "gear/mesh_dynamics.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -208,6 +208,7 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   {
     r.validity.reserve(kMaxSeries);
     std::vector<PositionValidity> pv;
+    pv.reserve(strips.size());
     for (const auto& st : strips) pv.push_back(position_validity(gw, st, mesh.pair().spec().face_width));
     auto& psi = add(r.validity, "plasticity_index", "1");
     auto& sep = add(r.validity, "separation_over_summit_sigma", "1");
@@ -237,9 +238,9 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
       const Series* s = r.find(name);
       return s ? s->values : std::vector<double>{};
     };
-    const ValidityVerdict verdict =
-        validity_verdict(pv, r.plasticity_index, gw,
-                         {values("plastic_area_fraction"), values("plastic_contact_fraction"), values("mean_real_pressure_Pa")});
+    const ValidityVerdict verdict = validity_verdict(
+        pv, r.plasticity_index, gw,
+        {values("plastic_area_fraction"), values("plastic_contact_fraction"), values("mean_real_pressure_Pa")});
     r.regime = verdict.regime;
     r.verdict = verdict.text;
     r.flag_counts = {{"beyond_fitted_range", verdict.beyond_fitted_range},
@@ -253,8 +254,9 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   if (cs.asperity_stress) {
     const bool side = c.friction_coefficient > 0.0;
     asperity::SideContactGeometry geometry;
-    if (side) geometry = asperity::side_contact_geometry(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius,
-                                                         c.friction_coefficient);
+    if (side)
+      geometry = asperity::side_contact_geometry(c.pinion.flank.roughness.summit_radius,
+                                                 c.wheel.flank.roughness.summit_radius, c.friction_coefficient);
     auto& ai = add(r.contact, "max_asperity_interference_m", "m");
     auto& ap = add(r.contact, "max_asperity_pressure_Pa", "Pa");
     auto& av = add(r.contact, "max_asperity_von_mises_Pa", "Pa");

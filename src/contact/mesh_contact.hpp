@@ -33,11 +33,11 @@ struct StageTiming {
 };
 
 struct MeshContactResult {
-  std::vector<Series> mesh;     // kinematics and loading: s_m, load_share, hertz_p0_Pa, ...
-  std::vector<Series> contact;  // rough contact: real_area_ratio, plastic_area_fraction, ...
-  std::vector<Series> validity; // where the models hold: separation_over_sigma, flags, ... (validity.hpp)
-  std::string regime;           // "elastic", "elastic-plastic" or "fully plastic"
-  std::string verdict;          // one paragraph: the regime and every validity rule broken, and where
+  std::vector<Series> mesh;      // kinematics and loading: s_m, load_share, hertz_p0_Pa, ...
+  std::vector<Series> contact;   // rough contact: real_area_ratio, plastic_area_fraction, ...
+  std::vector<Series> validity;  // where the models hold: separation_over_sigma, flags, ... (validity.hpp)
+  std::string regime;            // "elastic", "elastic-plastic" or "fully plastic"
+  std::string verdict;           // one paragraph: the regime and every validity rule broken, and where
   struct FlagCount {
     std::string name;
     int positions = 0;

@@ -14,11 +14,14 @@ void MultiAsperitySpec::validate() const {
       const auto& a = profile[k];
       if (!(a.tip_radius > 0.0) || !std::isfinite(a.tip_radius) || !std::isfinite(a.height) || !std::isfinite(a.centre))
         throw std::invalid_argument("profile asperities need finite centres and heights and positive tip radii");
-      if (k > 0 && !(a.centre > profile[k - 1].centre)) throw std::invalid_argument("profile asperities must be ordered by centre");
+      if (k > 0 && !(a.centre > profile[k - 1].centre))
+        throw std::invalid_argument("profile asperities must be ordered by centre");
       top = std::max(top, a.height), low = std::min(low, a.height);
     }
-    if (!(asperity_height > top - low)) throw std::invalid_argument("asperity height must exceed the spread of the profile's tip heights");
-  } else if (layout.empty() || layout.find_first_not_of("HL") != std::string::npos || layout.find('H') == std::string::npos)
+    if (!(asperity_height > top - low))
+      throw std::invalid_argument("asperity height must exceed the spread of the profile's tip heights");
+  } else if (layout.empty() || layout.find_first_not_of("HL") != std::string::npos ||
+             layout.find('H') == std::string::npos)
     throw std::invalid_argument("layout must be letters H and L with at least one H (e.g. LLH, HLH, H)");
   if (profile.empty() && !(tip_radius > 0.0)) throw std::invalid_argument("tip radius must be positive");
   if (!(height_step >= 0.0)) throw std::invalid_argument("height step must be >= 0");
@@ -31,7 +34,8 @@ void MultiAsperitySpec::validate() const {
   if (!(reference_length > 0.0)) throw std::invalid_argument("reference length must be positive");
   if (line_load && !(*line_load > 0.0)) throw std::invalid_argument("line load must be positive");
   if (!line_load && !(approach > 0.0)) throw std::invalid_argument("approach must be positive");
-  if (!line_load && approach >= asperity_height) throw std::invalid_argument("approach must stay below the asperity height");
+  if (!line_load && approach >= asperity_height)
+    throw std::invalid_argument("approach must stay below the asperity height");
 }
 
 MultiAsperityResult solve_multi_asperity(const MultiAsperitySpec& spec) {
@@ -75,7 +79,8 @@ MultiAsperityResult solve_multi_asperity(const MultiAsperitySpec& spec) {
   opt.pressure_cap = spec.pressure_cap;
   opt.reference_length = spec.reference_length;
   const HalfPlaneBem bem(grid, spec.modulus, opt);
-  const BemSolution s = spec.line_load ? bem.solve_load(gap0, *spec.line_load) : bem.solve_approach(gap0, spec.approach);
+  const BemSolution s =
+      spec.line_load ? bem.solve_load(gap0, *spec.line_load) : bem.solve_approach(gap0, spec.approach);
 
   MultiAsperityResult out;
   out.grid = grid;

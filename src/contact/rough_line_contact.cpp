@@ -129,7 +129,7 @@ StripResult RoughLineContact::coupled(double w, double radius) const {
     sys.jacobian = [&](const Eigen::VectorXd& y, Eigen::MatrixXd& jac) {
       jac.setZero(n + 1, n + 1);
       for (int j = 0; j < n; ++j) {
-        const double slope = gw_.pressure_slope(y(j) * sigma);  // dp/dd
+        const double slope = gw_.pressure_slope(y(j) * sigma);     // dp/dd
         for (int i = 0; i < n; ++i) jac(i, j) = -k(i, j) * slope;  // d/d(y_j) of -(K p)/sigma, times sigma
         jac(j, j) += 1.0;
         jac(n, j) = dx * slope * sigma / load;
@@ -166,9 +166,10 @@ StripResult RoughLineContact::coupled(double w, double radius) const {
       load = w;
     }
     if (!summary.converged)
-      throw std::runtime_error(fmt::format("coupled rough line contact did not converge (line load {:.6g} N/m, R {:.6g} m): "
-                                           "{}, residual {:.3g} after {} iterations",
-                                           w, radius, summary.message, summary.residual_norm, iterations));
+      throw std::runtime_error(
+          fmt::format("coupled rough line contact did not converge (line load {:.6g} N/m, R {:.6g} m): "
+                      "{}, residual {:.3g} after {} iterations",
+                      w, radius, summary.message, summary.residual_norm, iterations));
     StripResult r;
     r.hertz_half_width = b;
     r.solver_iterations = iterations;
@@ -210,9 +211,8 @@ HighestAsperity highest_asperity(const GreenwoodWilliamson& gw, const StripResul
   const double delta = highest_asperity_interference(gw, strip, face_width);
   if (delta <= 0.0) return h;
   h.interference = delta;
-  const asperity::AsperityState s =
-      side ? asperity::evaluate_side_contact(gw.model(), gw.pair(), *side, delta).normal
-           : gw.model().evaluate(gw.pair(), delta, asperity::Detail::full);
+  const asperity::AsperityState s = side ? asperity::evaluate_side_contact(gw.model(), gw.pair(), *side, delta).normal
+                                         : gw.model().evaluate(gw.pair(), delta, asperity::Detail::full);
   h.peak_pressure = s.max_pressure;
   h.von_mises = s.max_von_mises;
   h.plastic_fraction = s.plastic_fraction;

@@ -18,30 +18,30 @@ enum class StripFidelity { uncoupled, coupled };
 
 struct StripOptions {
   // The resolutions' ranges (the case file's contact.strip_points and contact.coupled_nodes).
-  static constexpr int kMinStripPoints = 8, kMaxStripPoints = 100000;  // 8: one Gauss panel
-  static constexpr int kMinCoupledNodes = 16, kMaxCoupledNodes = 4000; // 4000: the dense Jacobian's memory
+  static constexpr int kMinStripPoints = 8, kMaxStripPoints = 100000;   // 8: one Gauss panel
+  static constexpr int kMinCoupledNodes = 16, kMaxCoupledNodes = 4000;  // 4000: the dense Jacobian's memory
   StripFidelity fidelity = StripFidelity::uncoupled;
-  int strip_points = 64;     // uncoupled: Gauss points across the Hertz strip
-  int coupled_nodes = 128;   // coupled: pressure elements across the contact
+  int strip_points = 64;    // uncoupled: Gauss points across the Hertz strip
+  int coupled_nodes = 128;  // coupled: pressure elements across the contact
   void validate() const;
 };
 
 // Strip results per unit face width. The nominal width is the smooth Hertz width 2b in both
 // fidelities, so their ratios compare.
 struct StripResult {
-  double line_load = 0.0;                 // integral of the nominal pressure [N/m]
-  double hertz_half_width = 0.0;          // b [m]
-  double max_nominal_pressure = 0.0;      // [Pa]
-  double contact_half_width = 0.0;        // half-width of the region carrying 99.9% of the load [m]
-  double real_area_per_width = 0.0;       // integral of A_r/A_n [m]
-  double real_area_ratio = 0.0;           // real_area_per_width / (2b)
-  double contacts_per_width = 0.0;        // [1/m]
-  double plastic_area_fraction = 0.0;     // plastic share of the real contact area
-  double plastic_contact_fraction = 0.0;  // share of contacting asperities beyond delta_c
-  double mean_real_pressure = 0.0;        // line load / real area per width [Pa]
-  double min_separation = 0.0;            // separation at the centre of the strip [m]
-  int solver_iterations = 0;               // coupled: Newton iterations
-  std::vector<double> x, nominal_pressure; // the pressure across the strip [m], [Pa]
+  double line_load = 0.0;                   // integral of the nominal pressure [N/m]
+  double hertz_half_width = 0.0;            // b [m]
+  double max_nominal_pressure = 0.0;        // [Pa]
+  double contact_half_width = 0.0;          // half-width of the region carrying 99.9% of the load [m]
+  double real_area_per_width = 0.0;         // integral of A_r/A_n [m]
+  double real_area_ratio = 0.0;             // real_area_per_width / (2b)
+  double contacts_per_width = 0.0;          // [1/m]
+  double plastic_area_fraction = 0.0;       // plastic share of the real contact area
+  double plastic_contact_fraction = 0.0;    // share of contacting asperities beyond delta_c
+  double mean_real_pressure = 0.0;          // line load / real area per width [Pa]
+  double min_separation = 0.0;              // separation at the centre of the strip [m]
+  int solver_iterations = 0;                // coupled: Newton iterations
+  std::vector<double> x, nominal_pressure;  // the pressure across the strip [m], [Pa]
 };
 
 class RoughLineContact {
@@ -69,9 +69,9 @@ class RoughLineContact {
 // (GreenwoodWilliamson::highest_summit), pressed by the centre's separation. In side contact
 // (mu > 0) it is evaluated as a tilted paraboloid pair (side_contact.hpp) at the same approach.
 struct HighestAsperity {
-  double interference = 0.0;    // [m]; 0 when it does not touch
-  double peak_pressure = 0.0;   // [Pa]
-  double von_mises = 0.0;       // largest von Mises stress of the elastic field on the axis [Pa]
+  double interference = 0.0;   // [m]; 0 when it does not touch
+  double peak_pressure = 0.0;  // [Pa]
+  double von_mises = 0.0;      // largest von Mises stress of the elastic field on the axis [Pa]
   double plastic_fraction = 0.0;
 };
 HighestAsperity highest_asperity(const GreenwoodWilliamson& gw, const StripResult& strip, double face_width,

@@ -25,7 +25,8 @@ ToeplitzConvolution::ToeplitzConvolution(const std::vector<double>& kernel, int 
   fftw_execute(forward_);
   kernel_hat_.resize(static_cast<std::size_t>(m_ / 2 + 1));
   for (int k = 0; k <= m_ / 2; ++k)
-    kernel_hat_[static_cast<std::size_t>(k)] = std::complex<double>(spectrum_[k][0], spectrum_[k][1]) / static_cast<double>(m_);
+    kernel_hat_[static_cast<std::size_t>(k)] =
+        std::complex<double>(spectrum_[k][0], spectrum_[k][1]) / static_cast<double>(m_);
 }
 
 ToeplitzConvolution::~ToeplitzConvolution() {
@@ -40,7 +41,8 @@ void ToeplitzConvolution::apply(const double* in, double* out) const {
   std::fill(real_ + n_, real_ + m_, 0.0);
   fftw_execute(forward_);
   for (int k = 0; k <= m_ / 2; ++k) {
-    const std::complex<double> v = std::complex<double>(spectrum_[k][0], spectrum_[k][1]) * kernel_hat_[static_cast<std::size_t>(k)];
+    const std::complex<double> v =
+        std::complex<double>(spectrum_[k][0], spectrum_[k][1]) * kernel_hat_[static_cast<std::size_t>(k)];
     spectrum_[k][0] = v.real();
     spectrum_[k][1] = v.imag();
   }

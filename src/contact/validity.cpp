@@ -74,24 +74,30 @@ ValidityVerdict validity_verdict(const std::vector<PositionValidity>& pos, doubl
   }
   t += ".";
   if (v.beyond_fitted_range)
-    t += fmt::format(" {} of {} positions beyond {}'s range (delta* <= {:g}; highest asperity up to delta* {:.3g}): {}.",
-                     v.beyond_fitted_range, n, model.name(), model.range().fitted_delta_star_max, max_delta_star,
-                     model.range().past_range);
+    t +=
+        fmt::format(" {} of {} positions beyond {}'s range (delta* <= {:g}; highest asperity up to delta* {:.3g}): {}.",
+                    v.beyond_fitted_range, n, model.name(), model.range().fitted_delta_star_max, max_delta_star,
+                    model.range().past_range);
   if (v.fully_plastic_limit)
-    t += fmt::format(" At {} of {} positions the fully plastic limit governs the highest asperity.", v.fully_plastic_limit, n);
+    t += fmt::format(" At {} of {} positions the fully plastic limit governs the highest asperity.",
+                     v.fully_plastic_limit, n);
   if (v.beyond_paraboloid)
-    t += fmt::format(" {} of {} positions with a contact radius beyond {:g} x the summit radius (up to {:.3g}): "
-                     "the asperity is no longer a paraboloid tip.",
-                     v.beyond_paraboloid, n, model.range().contact_radius_over_radius_max, max_a_radius);
+    t += fmt::format(
+        " {} of {} positions with a contact radius beyond {:g} x the summit radius (up to {:.3g}): "
+        "the asperity is no longer a paraboloid tip.",
+        v.beyond_paraboloid, n, model.range().contact_radius_over_radius_max, max_a_radius);
   if (v.summits_interact)
-    t += fmt::format(" {} of {} positions where the highest contact's radius exceeds {:g} x half the summit spacing "
-                     "(up to {:.3g}): neighbouring contacts interact, which GW leaves out.",
-                     v.summits_interact, n, rules.interaction_over_half_spacing, max_a_spacing);
+    t += fmt::format(
+        " {} of {} positions where the highest contact's radius exceeds {:g} x half the summit spacing "
+        "(up to {:.3g}): neighbouring contacts interact, which GW leaves out.",
+        v.summits_interact, n, rules.interaction_over_half_spacing, max_a_spacing);
   if (v.deep_separation)
-    t += fmt::format(" {} of {} positions with the separation below {:g} summit sigma (down to {:.3g}): most summits "
-                     "touch, GW's sparse contacts do not hold.",
-                     v.deep_separation, n, rules.deep_separation_over_sigma, min_sep);
-  if (!(v.beyond_fitted_range || v.beyond_paraboloid || v.fully_plastic_limit || v.summits_interact || v.deep_separation))
+    t += fmt::format(
+        " {} of {} positions with the separation below {:g} summit sigma (down to {:.3g}): most summits "
+        "touch, GW's sparse contacts do not hold.",
+        v.deep_separation, n, rules.deep_separation_over_sigma, min_sep);
+  if (!(v.beyond_fitted_range || v.beyond_paraboloid || v.fully_plastic_limit || v.summits_interact ||
+        v.deep_separation))
     t += " Every position is within the models' ranges.";
   v.text = t;
   return v;

@@ -29,17 +29,17 @@ struct ValidityRules {
 // One position's figures: the highest asperity's interference and contact radius against the
 // summit radius, the summit spacing and the law's range; the strip's separation.
 struct PositionValidity {
-  double separation_over_sigma = 0.0;                // min separation / sigma_s [-]
-  double max_delta_star = 0.0;                       // highest asperity delta/delta_c [-]
-  double max_interference_over_radius = 0.0;         // highest asperity delta / beta [-]
-  double max_contact_radius_over_radius = 0.0;       // a / beta [-]
-  double max_contact_radius_over_half_spacing = 0.0; // a / (1/(2 sqrt(eta))) [-]
-  bool loaded = false;                // the position carries load (the regime counts only these)
-  bool beyond_fitted_range = false;   // delta* past the law's fitted range
-  bool beyond_paraboloid = false;     // a/beta past the law's paraboloid limit
-  bool fully_plastic_limit = false;   // the switch to the fully plastic limit governs
-  bool summits_interact = false;      // rule interaction_over_half_spacing
-  bool deep_separation = false;       // rule deep_separation_over_sigma
+  double separation_over_sigma = 0.0;                 // min separation / sigma_s [-]
+  double max_delta_star = 0.0;                        // highest asperity delta/delta_c [-]
+  double max_interference_over_radius = 0.0;          // highest asperity delta / beta [-]
+  double max_contact_radius_over_radius = 0.0;        // a / beta [-]
+  double max_contact_radius_over_half_spacing = 0.0;  // a / (1/(2 sqrt(eta))) [-]
+  bool loaded = false;                                // the position carries load (the regime counts only these)
+  bool beyond_fitted_range = false;                   // delta* past the law's fitted range
+  bool beyond_paraboloid = false;                     // a/beta past the law's paraboloid limit
+  bool fully_plastic_limit = false;                   // the switch to the fully plastic limit governs
+  bool summits_interact = false;                      // rule interaction_over_half_spacing
+  bool deep_separation = false;                       // rule deep_separation_over_sigma
 };
 
 PositionValidity position_validity(const GreenwoodWilliamson& gw, const StripResult& strip, double face_width,
@@ -52,7 +52,7 @@ struct ValidityVerdict {
   // at every position; "fully plastic": more than 99% of the real area yielded at the surface at
   // every loaded position; "elastic-plastic" between.
   std::string regime;
-  std::string text;     // one paragraph for the user
+  std::string text;  // one paragraph for the user
   int beyond_fitted_range = 0, beyond_paraboloid = 0, fully_plastic_limit = 0, summits_interact = 0,
       deep_separation = 0;  // positions where each flag is set
 };
@@ -62,6 +62,7 @@ struct PathContact {
   std::vector<double> plastic_area_fraction, plastic_contact_fraction, mean_real_pressure;
 };
 ValidityVerdict validity_verdict(const std::vector<PositionValidity>& positions, double plasticity_index,
-                                 const GreenwoodWilliamson& gw, const PathContact& path, const ValidityRules& rules = {});
+                                 const GreenwoodWilliamson& gw, const PathContact& path,
+                                 const ValidityRules& rules = {});
 
 }  // namespace geartrib::contact

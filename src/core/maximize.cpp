@@ -8,8 +8,7 @@
 
 namespace geartrib {
 
-Maximum maximize_on_interval(const std::function<double(double)>& f, double lo, double hi,
-                             int samples) {
+Maximum maximize_on_interval(const std::function<double(double)>& f, double lo, double hi, int samples) {
   if (!(lo < hi) || samples < 3) throw std::invalid_argument("maximize_on_interval: need lo < hi and >= 3 samples");
   std::vector<double> xs(static_cast<std::size_t>(samples));
   const bool geometric = lo > 0.0;
@@ -21,7 +20,10 @@ Maximum maximize_on_interval(const std::function<double(double)>& f, double lo, 
   double best_value = f(xs[0]);
   for (std::size_t i = 1; i < xs.size(); ++i) {
     const double v = f(xs[i]);
-    if (v > best_value) { best_value = v; best = i; }
+    if (v > best_value) {
+      best_value = v;
+      best = i;
+    }
   }
   const double a = xs[best == 0 ? 0 : best - 1];
   const double b = xs[best + 1 == xs.size() ? best : best + 1];

@@ -14,7 +14,6 @@ struct Maximum {
 
 // Maximises f on [lo, hi] (lo < hi). Samples `samples` points geometrically spaced when
 // lo > 0 (linearly otherwise), then refines with Brent to about 1e-10 relative in x.
-Maximum maximize_on_interval(const std::function<double(double)>& f, double lo, double hi,
-                             int samples = 48);
+Maximum maximize_on_interval(const std::function<double(double)>& f, double lo, double hi, int samples = 48);
 
 }  // namespace geartrib

@@ -9,7 +9,6 @@
 
 namespace geartrib::fem {
 
-
 void SingleAsperitySpec::validate() const {
   if (!(modulus > 0.0) || !(yield_strength > 0.0) || !(poisson_ratio > 0.0 && poisson_ratio < 0.5))
     throw std::invalid_argument("FEM material needs E' > 0, S_y > 0 and 0 < nu < 0.5");
@@ -21,12 +20,15 @@ void SingleAsperitySpec::validate() const {
       throw std::invalid_argument("delta* levels must be positive and increasing");
   if (delta_star.back() * critical_interference_over_radius > 0.05)
     throw std::invalid_argument("the largest interference exceeds 5% of R: beyond the small-slope paraboloid");
-  if (refine < 4 || refine > 400) throw std::invalid_argument("refine (elements across the contact radius) must lie in [4, 400]");
+  if (refine < 4 || refine > 400)
+    throw std::invalid_argument("refine (elements across the contact radius) must lie in [4, 400]");
   if (std::sqrt(delta_star.back() / delta_star.front()) * refine > 400)
-    throw std::invalid_argument("levels too far apart for one mesh (more than 400 elements across the last contact): split the run");
+    throw std::invalid_argument(
+        "levels too far apart for one mesh (more than 400 elements across the last contact): split the run");
   if (!(growth >= 1.0 && growth <= 2.0)) throw std::invalid_argument("mesh growth must lie in [1, 2]");
   if (!(size >= 5.0)) throw std::invalid_argument("body size must be at least 5 contact radii");
-  if (material == FemMaterial::table && flow_table.empty()) throw std::invalid_argument("material 'table' needs a flow table");
+  if (material == FemMaterial::table && flow_table.empty())
+    throw std::invalid_argument("material 'table' needs a flow table");
 }
 
 std::vector<std::vector<double>> plan_runs(const std::vector<double>& levels, double ratio) {
@@ -43,19 +45,24 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
   SingleAsperityDeck d;
   const double radius = 1.0;  // [mm]
   d.critical_interference = s.critical_interference_over_radius * radius;
-  const double a_max = std::sqrt(radius * d.critical_interference * s.delta_star.back());  // Hertz radius at the last level
+  const double a_max =
+      std::sqrt(radius * d.critical_interference * s.delta_star.back());  // Hertz radius at the last level
   const double a_min = std::sqrt(radius * d.critical_interference * s.delta_star.front());
   const double h0 = a_min / s.refine;
   d.tip_element = h0;
-  const std::vector<double> r = graded_grid(std::min(2e-5 * radius, 0.2 * h0), h0, 1.6 * a_max, s.size * a_max, s.growth);
+  const std::vector<double> r =
+      graded_grid(std::min(2e-5 * radius, 0.2 * h0), h0, 1.6 * a_max, s.size * a_max, s.growth);
   const std::vector<double> depth = graded_grid(0.0, h0, 1.6 * a_max, s.size * a_max, s.growth);
   const int nr = static_cast<int>(r.size()) - 1, nz = static_cast<int>(depth.size()) - 1;
   const int ni = 2 * nr + 1;  // lattice points across (corners and midsides)
-  auto lattice = [](const std::vector<double>& x, int i) { return i % 2 == 0 ? x[i / 2] : 0.5 * (x[i / 2] + x[i / 2 + 1]); };
+  auto lattice = [](const std::vector<double>& x, int i) {
+    return i % 2 == 0 ? x[i / 2] : 0.5 * (x[i / 2] + x[i / 2 + 1]);
+  };
   auto id = [&](int i, int j) { return j * ni + i + 1; };  // j = 0 at the surface, downward
   std::string& out = d.text;
   out += "** geartrib: single asperity (paraboloid y = -r^2/(2R), R = 1 mm) against a rigid flat\n";
-  out += fmt::format("** units mm N MPa; delta_c = {} mm; tip element {} mm; {} x {} CAX8\n", deck_number(d.critical_interference), deck_number(h0), nr, nz);
+  out += fmt::format("** units mm N MPa; delta_c = {} mm; tip element {} mm; {} x {} CAX8\n",
+                     deck_number(d.critical_interference), deck_number(h0), nr, nz);
   out += "** delta* levels:";
   for (double l : s.delta_star) out += fmt::format(" {}", l);
   out += "\n";
@@ -79,8 +86,8 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
   for (std::size_t i = 0; i < rf.size(); ++i) d.flat_nodes.emplace_back(flat0 + static_cast<int>(i), rf[i]);
   for (int row = 0; row < 2; ++row)
     for (std::size_t i = 0; i < rf.size(); ++i)
-      out += fmt::format("{}, {}, {}\n", flat0 + row * static_cast<int>(rf.size()) + static_cast<int>(i), deck_number(rf[i]),
-                         deck_number(row * thickness));
+      out += fmt::format("{}, {}, {}\n", flat0 + row * static_cast<int>(rf.size()) + static_cast<int>(i),
+                         deck_number(rf[i]), deck_number(row * thickness));
   out += "*ELEMENT, TYPE=CAX8, ELSET=EASP\n";
   int e = 0;
   std::vector<int> top_elements;
@@ -88,8 +95,8 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
     for (int i = 0; i < nr; ++i) {
       const int I = 2 * i, J = 2 * j;
       ++e;
-      out += fmt::format("{}, {}, {}, {}, {}, {}, {}, {}, {}\n", e, id(I, J + 2), id(I + 2, J + 2), id(I + 2, J), id(I, J),
-                         id(I + 1, J + 2), id(I + 2, J + 1), id(I + 1, J), id(I, J + 1));
+      out += fmt::format("{}, {}, {}, {}, {}, {}, {}, {}, {}\n", e, id(I, J + 2), id(I + 2, J + 2), id(I + 2, J),
+                         id(I, J), id(I + 1, J + 2), id(I + 2, J + 1), id(I + 1, J), id(I, J + 1));
       if (j == 0 && r[i] < 2.0 * a_max) top_elements.push_back(e);
     }
   d.elements = e;
@@ -118,7 +125,8 @@ SingleAsperityDeck single_asperity_deck(const SingleAsperitySpec& s) {
   write_materials(out, "EASP", s.modulus * (1.0 - nu * nu), nu, s.material, s.yield_strength, s.flow_table, "");
   RigidFlatStep step;
   step.slave = "SASP";
-  step.penalty = 1e3 * 1.6 * sy / d.critical_interference;  // penetration ~0.1% of delta_c at the first-yield pressure ~1.6 S_y
+  step.penalty =
+      1e3 * 1.6 * sy / d.critical_interference;  // penetration ~0.1% of delta_c at the first-yield pressure ~1.6 S_y
   step.levels = s.delta_star;
   // Increments: from a quarter of the first level (at most delta* = 0.5, before first yield), at
   // most half the first level or a fiftieth of the last, whichever is larger; ccx adapts between.

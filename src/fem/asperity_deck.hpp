@@ -14,13 +14,13 @@
 namespace geartrib::fem {
 
 struct SingleAsperitySpec {
-  double modulus = 0.0;         // E/(1 - nu^2) of the deformable asperity = the pair's E_t (Johnson's E*) [Pa]
+  double modulus = 0.0;  // E/(1 - nu^2) of the deformable asperity = the pair's E_t (Johnson's E*) [Pa]
   double poisson_ratio = 0.3;
-  double yield_strength = 0.0;  // S_y [Pa]
+  double yield_strength = 0.0;                     // S_y [Pa]
   double critical_interference_over_radius = 0.0;  // delta_c / R [-] (Kogut-Etsion's, from the case)
   FemMaterial material = FemMaterial::elastic;
   std::vector<std::pair<double, double>> flow_table;  // (stress [Pa], plastic strain [-]) from S_y at 0
-  std::vector<double> delta_star;  // levels, increasing, > 0
+  std::vector<double> delta_star;                     // levels, increasing, > 0
   // Mesh: the element size at the tip is the Hertz contact radius at the smallest level over
   // `refine` (n elements across the first contact), uniform to 1.6 times the contact radius at
   // the largest level, then growing geometrically by `growth` to a body `size` such radii wide
@@ -32,12 +32,12 @@ struct SingleAsperitySpec {
 };
 
 struct SingleAsperityDeck {
-  std::string text;                 // the .inp deck
-  int elements = 0;                 // CAX8 elements of the asperity
-  double tip_element = 0.0;         // element size near the tip [mm]
-  double critical_interference = 0.0;  // delta_c [mm] (R = 1 mm)
-  std::vector<double> top_node_r;   // radial positions of the surface nodes, outward [mm]
-  std::vector<int> top_nodes;       // their node numbers
+  std::string text;                                // the .inp deck
+  int elements = 0;                                // CAX8 elements of the asperity
+  double tip_element = 0.0;                        // element size near the tip [mm]
+  double critical_interference = 0.0;              // delta_c [mm] (R = 1 mm)
+  std::vector<double> top_node_r;                  // radial positions of the surface nodes, outward [mm]
+  std::vector<int> top_nodes;                      // their node numbers
   std::vector<std::pair<int, double>> node_depth;  // node -> depth below the apex (undeformed) [mm], for stresses
   std::vector<std::pair<int, double>> node_r;      // node -> radial position [mm]
   std::vector<std::pair<int, double>> flat_nodes;  // the flat's contact-face nodes and their radii [mm]

@@ -29,7 +29,8 @@ std::string run_capture(const std::string& command) {
 
 // Von Mises stress of ccx's stress components (xx, yy, zz, xy, yz, zx).
 double von_mises(const std::vector<double>& s) {
-  return std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[2] - s[0]) * (s[2] - s[0])) +
+  return std::sqrt(0.5 *
+                       ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[2] - s[0]) * (s[2] - s[0])) +
                    3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
 }
 
@@ -63,18 +64,20 @@ std::string ccx_version(const std::filesystem::path& ccx) {
 
 void run_ccx(const std::filesystem::path& ccx, const std::filesystem::path& dir, const std::string& job) {
   const std::string log = (dir / (job + ".log")).string();
-  const std::string command = "cd " + shell_quoted(dir.string()) + " && OMP_NUM_THREADS=1 CCX_NPROC_EQUATION_SOLVER=1 " + shell_quoted(ccx.string()) +
+  const std::string command = "cd " + shell_quoted(dir.string()) +
+                              " && OMP_NUM_THREADS=1 CCX_NPROC_EQUATION_SOLVER=1 " + shell_quoted(ccx.string()) +
                               " -i " + job + " > " + shell_quoted(log) + " 2>&1";
   const int status = std::system(command.c_str());
   std::ifstream in(log);
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string text = ss.str();
-  const bool failed = status != 0 || text.find("*ERROR") != std::string::npos || !std::filesystem::exists(dir / (job + ".frd"));
+  const bool failed =
+      status != 0 || text.find("*ERROR") != std::string::npos || !std::filesystem::exists(dir / (job + ".frd"));
   if (failed) {
     const std::string tail = text.size() > 1500 ? text.substr(text.size() - 1500) : text;
-    throw std::runtime_error(fmt::format("ccx failed on {} (exit {}); the end of its output:\n{}", (dir / (job + ".inp")).string(),
-                                         status, tail));
+    throw std::runtime_error(fmt::format("ccx failed on {} (exit {}); the end of its output:\n{}",
+                                         (dir / (job + ".inp")).string(), status, tail));
   }
 }
 
@@ -164,7 +167,7 @@ std::vector<std::pair<double, double>> contact_intervals(const std::vector<doubl
     // Open nodes on the rim whose gap is below a tenth of the next one's lie within the
     // discretisation of the edge (penalty contact, element-wise integration): skip them.
     std::size_t k1 = k + dir;
-    while (k1 + 2 * dir < x.size() && gap[k1] < 0.1 * gap[k1 + dir]) k1 += dir;
+    while (k1 + static_cast<std::size_t>(2 * dir) < x.size() && gap[k1] < 0.1 * gap[k1 + dir]) k1 += dir;
     const std::size_t k2 = k1 + dir;
     double e = x[k];
     if (k2 < x.size() && gap[k2] > gap[k1]) {
@@ -200,7 +203,8 @@ std::vector<bool> surface_yielded_nodes(const std::vector<double>& peeq, double 
 }
 
 double surface_yield_share(const std::vector<double>& radius, const std::vector<bool>& yielded, double contact_radius) {
-  if (radius.size() != yielded.size()) throw std::invalid_argument("surface_yield_share: radii and yielded flags differ in number");
+  if (radius.size() != yielded.size())
+    throw std::invalid_argument("surface_yield_share: radii and yielded flags differ in number");
   if (!(contact_radius > 0.0)) return 0.0;
   const double a = contact_radius;
   double area = 0.0;  // over pi
@@ -216,14 +220,15 @@ double surface_yield_share(const std::vector<double>& radius, const std::vector<
 
 std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec& spec, const SingleAsperityDeck& deck,
                                                        const std::filesystem::path& dir, const std::string& job) {
-  const double radius = 1.0, dc = deck.critical_interference;           // [mm]
-  const double e_prime = spec.modulus * 1e-6, sy = spec.yield_strength * 1e-6;  // [MPa]
+  const double radius = 1.0, dc = deck.critical_interference;                     // [mm]
+  const double e_prime = spec.modulus * 1e-6, sy = spec.yield_strength * 1e-6;    // [MPa]
   const double fc = 4.0 / 3.0 * e_prime * std::sqrt(radius) * std::pow(dc, 1.5);  // [N]
   const double ac = std::sqrt(radius * dc), area_c = std::numbers::pi * radius * dc;
   const auto totals = read_dat_totals(dir / (job + ".dat"));
   const auto forces = read_dat_forces(dir / (job + ".dat"));
   const auto fields = read_frd(dir / (job + ".frd"));
-  std::map<int, double> depth(deck.node_depth.begin(), deck.node_depth.end()), rpos(deck.node_r.begin(), deck.node_r.end());
+  std::map<int, double> depth(deck.node_depth.begin(), deck.node_depth.end()),
+      rpos(deck.node_r.begin(), deck.node_r.end());
   std::vector<SingleAsperityResult> out;
   for (double level : spec.delta_star) {
     SingleAsperityResult r;
@@ -234,7 +239,9 @@ std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec&
       return nullptr;
     };
     const FrdField* disp = at_time("DISP");
-    if (!disp) throw std::runtime_error(fmt::format("ccx wrote no displacements at delta* = {} (did the run stop early?)", level));
+    if (!disp)
+      throw std::runtime_error(
+          fmt::format("ccx wrote no displacements at delta* = {} (did the run stop early?)", level));
     // Force: ccx expands an axisymmetric model into a 2-degree wedge; its totals are 1/180 of the whole.
     double force = 0.0;
     bool found = false;
@@ -251,7 +258,8 @@ std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec&
       gap.push_back(flat - (-r0 * r0 / (2.0 * radius) + u[1]));  // > 0 open, <= 0 touching (penalty penetration)
     }
     std::vector<double> xs;
-    for (std::size_t k = 0; k < deck.top_nodes.size(); ++k) xs.push_back(deck.top_node_r[k] + disp->values.at(deck.top_nodes[k])[0]);
+    for (std::size_t k = 0; k < deck.top_nodes.size(); ++k)
+      xs.push_back(deck.top_node_r[k] + disp->values.at(deck.top_nodes[k])[0]);
     const auto zones = contact_intervals(xs, gap, 1e-3 * level * dc);
     const double a = zones.empty() ? 0.0 : zones.back().second;  // outermost edge (the zone starts on the axis)
     r.contact_radius = a / ac;
@@ -299,7 +307,8 @@ std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec&
       const std::vector<bool> yielded = surface_yielded_nodes(peeq);
       r.plastic_surface_area_fraction = surface_yield_share(xs, yielded, a);
       const auto first = std::find(yielded.begin(), yielded.end(), true);
-      if (first != yielded.end()) r.plastic_surface_inner_radius = xs[static_cast<std::size_t>(first - yielded.begin())] / ac;
+      if (first != yielded.end())
+        r.plastic_surface_inner_radius = xs[static_cast<std::size_t>(first - yielded.begin())] / ac;
     }
     // Its standard deviation: half the share of the surface element (corner to corner: top nodes
     // 2i..2i+2) that contains the contact edge, at least 0.02 (the yielded/unyielded boundary is
@@ -319,8 +328,8 @@ std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec&
 
 namespace geartrib::fem {
 
-std::vector<CylinderLevelResult> read_cylinders(const CylindersSpec& spec, const CylindersDeck& deck, const std::filesystem::path& dir,
-                                                const std::string& job) {
+std::vector<CylinderLevelResult> read_cylinders(const CylindersSpec& spec, const CylindersDeck& deck,
+                                                const std::filesystem::path& dir, const std::string& job) {
   const double mm = 1e-3;  // deck millimetres -> metres
   const auto fields = read_frd(dir / (job + ".frd"));
   const auto forces = read_dat_forces(dir / (job + ".dat"));
@@ -344,7 +353,8 @@ std::vector<CylinderLevelResult> read_cylinders(const CylindersSpec& spec, const
       return nullptr;
     };
     const FrdField* disp = at_time("DISP");
-    if (!disp) throw std::runtime_error(fmt::format("ccx wrote no displacements at level {} (did the run stop early?)", level));
+    if (!disp)
+      throw std::runtime_error(fmt::format("ccx wrote no displacements at level {} (did the run stop early?)", level));
     CylinderLevelResult r;
     r.level = level;
     r.asperities.resize(n);
@@ -352,7 +362,8 @@ std::vector<CylinderLevelResult> read_cylinders(const CylindersSpec& spec, const
     for (const auto& f : forces)
       if (f.set == "NCONTACT" && std::abs(f.time - level) <= 1e-6 * level)
         for (const auto& [node, v] : f.forces) {
-          const auto it = std::find_if(deck.flat_nodes.begin(), deck.flat_nodes.end(), [&](const auto& p) { return p.first == node; });
+          const auto it = std::find_if(deck.flat_nodes.begin(), deck.flat_nodes.end(),
+                                       [id = node](const auto& p) { return p.first == id; });
           if (it == deck.flat_nodes.end()) continue;
           r.asperities[share(it->second)].load += -v[1] * 1e3;
           r.line_load += -v[1] * 1e3;
@@ -365,7 +376,8 @@ std::vector<CylinderLevelResult> read_cylinders(const CylindersSpec& spec, const
       xs.push_back(deck.top_x[k] + u[0]);
       gap.push_back(flat - (deck.top_y[k] + u[1]));
     }
-    for (const auto& [a, b] : contact_intervals(xs, gap, -1e-3 * flat)) r.asperities[share(0.5 * (a + b))].contact_width += (b - a) * mm;
+    for (const auto& [a, b] : contact_intervals(xs, gap, -1e-3 * flat))
+      r.asperities[share(0.5 * (a + b))].contact_width += (b - a) * mm;
     // Stresses: largest von Mises within one contact width of each asperity's surface.
     if (const FrdField* stress = at_time("STRESS")) {
       for (std::size_t q = 0; q < deck.node_xy.size(); ++q) {
@@ -383,7 +395,8 @@ std::vector<CylinderLevelResult> read_cylinders(const CylindersSpec& spec, const
       for (const auto& [node, xy] : deck.node_xy) {
         const auto it = pe->values.find(node);
         if (it != pe->values.end() && !it->second.empty())
-          r.asperities[share(xy.first)].max_plastic_strain = std::max(r.asperities[share(xy.first)].max_plastic_strain, it->second[0]);
+          r.asperities[share(xy.first)].max_plastic_strain =
+              std::max(r.asperities[share(xy.first)].max_plastic_strain, it->second[0]);
       }
     out.push_back(r);
   }

@@ -5,8 +5,8 @@
 #include "fem/asperity_deck.hpp"
 #include "fem/cylinder_deck.hpp"
 
-#include <filesystem>
 #include <array>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -58,15 +58,16 @@ std::vector<std::pair<double, double>> contact_intervals(const std::vector<doubl
 // Normalised single-asperity results at each level.
 struct SingleAsperityResult {
   double delta_star = 0.0;
-  double load_star = 0.0;            // F / F_c
-  double area_star = 0.0;            // pi a^2 / A_c
-  double contact_radius = 0.0;       // a / a_c
+  double load_star = 0.0;                 // F / F_c
+  double area_star = 0.0;                 // pi a^2 / A_c
+  double contact_radius = 0.0;            // a / a_c
   double mean_pressure_over_yield = 0.0;  // F / (pi a^2 S_y)
-  double max_pressure_over_yield = 0.0;   // largest nodal reaction of the flat over its ring area, / S_y (axis node excluded)
+  double max_pressure_over_yield =
+      0.0;  // largest nodal reaction of the flat over its ring area, / S_y (axis node excluded)
   double max_von_mises_over_yield = 0.0;  // largest nodal von Mises / S_y
   double max_von_mises_depth = 0.0;       // its depth below the apex / a
-  double plastic_depth = 0.0;        // deepest node with PEEQ > 0, / a_c (0: elastic)
-  double plastic_surface_radius = 0.0;  // outermost surface node with PEEQ > 0, / a_c
+  double plastic_depth = 0.0;             // deepest node with PEEQ > 0, / a_c (0: elastic)
+  double plastic_surface_radius = 0.0;    // outermost surface node with PEEQ > 0, / a_c
   // The yielded share of the contact disc at the surface (surface_yield_share of the
   // surface_yielded_nodes, deformed radii): 0..1; its standard deviation from the mesh, and the
   // innermost yielded surface node (deformed) / a_c (0 if none or from the axis), which shows an annulus.
@@ -103,8 +104,8 @@ std::vector<SingleAsperityResult> read_single_asperity(const SingleAsperitySpec&
 
 // Three-cylinder results per level and asperity (SI).
 struct CylinderLevelResult {
-  double level = 0.0;                 // approach in the spec's unit
-  double line_load = 0.0;             // total [N/m]
+  double level = 0.0;      // approach in the spec's unit
+  double line_load = 0.0;  // total [N/m]
   struct Asperity {
     double load = 0.0;                // [N/m], from the flat's nodal reactions over its share
     double contact_width = 0.0;       // [m]
@@ -113,7 +114,7 @@ struct CylinderLevelResult {
   };
   std::vector<Asperity> asperities;
 };
-std::vector<CylinderLevelResult> read_cylinders(const CylindersSpec& spec, const CylindersDeck& deck, const std::filesystem::path& dir,
-                                                const std::string& job);
+std::vector<CylinderLevelResult> read_cylinders(const CylindersSpec& spec, const CylindersDeck& deck,
+                                                const std::filesystem::path& dir, const std::string& job);
 
 }  // namespace geartrib::fem

@@ -24,8 +24,9 @@ void write_id_lines(std::string& out, const std::vector<int>& ids);
 // Materials ASPERITY (elastic; perfectly plastic at S_y, or the flow table of (stress [Pa],
 // plastic strain)) on `body_set` and FLAT (elastic) on EFLAT, with their solid sections
 // (`section_line`: "1.\n" for the plane-strain thickness, empty for axisymmetric).
-void write_materials(std::string& out, const std::string& body_set, double youngs_modulus, double poisson_ratio, FemMaterial material,
-                     double yield_strength, const std::vector<std::pair<double, double>>& flow_table, const std::string& section_line);
+void write_materials(std::string& out, const std::string& body_set, double youngs_modulus, double poisson_ratio,
+                     FemMaterial material, double yield_strength,
+                     const std::vector<std::pair<double, double>>& flow_table, const std::string& section_line);
 
 // The rigid flat's frictionless penalty contact with the `slave` surface (master SFLAT) and one
 // static step per level (total time = level): `supports` (*BOUNDARY lines), the flat (NFLAT)
@@ -33,12 +34,12 @@ void write_materials(std::string& out, const std::string& body_set, double young
 // (per node), U, S and, for plastic runs, PEEQ at every increment.
 struct RigidFlatStep {
   std::string slave;
-  double penalty = 0.0;                  // [MPa/mm]
-  std::vector<double> levels;            // increasing
+  double penalty = 0.0;        // [MPa/mm]
+  std::vector<double> levels;  // increasing
   double initial_increment = 0.0, max_increment = 0.0;
-  bool plastic = false;                  // NLGEOM and PEEQ output
+  bool plastic = false;  // NLGEOM and PEEQ output
   std::string supports;
-  double displacement_per_level = 0.0;   // [mm]
+  double displacement_per_level = 0.0;  // [mm]
 };
 void write_rigid_flat_step(std::string& out, const RigidFlatStep& step);
 

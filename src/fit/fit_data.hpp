@@ -25,8 +25,8 @@ struct FitData {
   std::string name;                                             // file name, for reports
   std::vector<std::pair<std::string, std::string>> provenance;  // '# key: value' lines
   std::vector<double> delta_star;
-  std::vector<double> weight;   // per row (1 when absent)
-  std::vector<int> line;        // source line of each row
+  std::vector<double> weight;  // per row (1 when absent)
+  std::vector<int> line;       // source line of each row
   std::vector<ObservedColumn> columns;
   const ObservedColumn* column(Observable o) const;
 };

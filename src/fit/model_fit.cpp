@@ -15,10 +15,14 @@ namespace geartrib::fit {
 
 std::string_view to_string(Observable o) {
   switch (o) {
-    case Observable::load_star: return "load_star";
-    case Observable::area_star: return "area_star";
-    case Observable::mean_pressure_over_yield: return "mean_pressure_over_yield";
-    case Observable::plastic_area_fraction: return "plastic_area_fraction";
+    case Observable::load_star:
+      return "load_star";
+    case Observable::area_star:
+      return "area_star";
+    case Observable::mean_pressure_over_yield:
+      return "mean_pressure_over_yield";
+    case Observable::plastic_area_fraction:
+      return "plastic_area_fraction";
   }
   return "?";
 }
@@ -49,7 +53,7 @@ namespace {
 struct Term {
   Observable what;
   double observed;
-  double scale;   // observed value (relative residual) or its standard deviation
+  double scale;  // observed value (relative residual) or its standard deviation
   double weight;
 };
 
@@ -70,9 +74,15 @@ struct RowResidualFunctor {
     for (std::size_t i = 0; i < terms.size(); ++i) {
       T value;
       switch (terms[i].what) {
-        case Observable::load_star: value = s.load; break;
-        case Observable::area_star: value = s.area; break;
-        case Observable::plastic_area_fraction: value = s.plastic; break;
+        case Observable::load_star:
+          value = s.load;
+          break;
+        case Observable::area_star:
+          value = s.area;
+          break;
+        case Observable::plastic_area_fraction:
+          value = s.plastic;
+          break;
         default:  // F/A over S_y with F_c/A_c = 2/3 p_y
           value = s.load / s.area * (2.0 / 3.0) * Law::yield_peak_pressure(*pair, c.data()) / pair->yield_strength;
       }
@@ -102,7 +112,8 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
     if (!found) {
       std::string known;
       for (const auto& c : Law::constants) known += (known.empty() ? "" : ", ") + std::string(c.name);
-      throw std::invalid_argument("model '" + std::string(Law::name) + "' has no constant '" + name + "' (known: " + known + ")");
+      throw std::invalid_argument("model '" + std::string(Law::name) + "' has no constant '" + name +
+                                  "' (known: " + known + ")");
     }
   }
   std::size_t free_count = 0;
@@ -116,8 +127,9 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
     while (k < n && Law::constants[k].name != name) ++k;
     if (k == n) throw std::invalid_argument("bound for unknown constant '" + name + "'");
     if (!(lo <= hi && lo >= lower[k] && hi <= upper[k]))
-      throw std::invalid_argument(fmt::format("bounds [{}, {}] of '{}' must be ordered and lie within its range [{}, {}]", lo, hi,
-                                              name, lower[k], upper[k]));
+      throw std::invalid_argument(
+          fmt::format("bounds [{}, {}] of '{}' must be ordered and lie within its range [{}, {}]", lo, hi, name,
+                      lower[k], upper[k]));
     lower[k] = lo;
     upper[k] = hi;
     values[k] = std::clamp(values[k], lo, hi);
@@ -132,6 +144,7 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
   if (options.loss == Loss::huber) loss = new ceres::HuberLoss(options.loss_scale);
   if (options.loss == Loss::cauchy) loss = new ceres::CauchyLoss(options.loss_scale);
   std::vector<double*> blocks;
+  blocks.reserve(values.size());
   for (auto& v : values) blocks.push_back(&v);
 
   std::vector<Observable> observe = options.observe;
@@ -157,12 +170,13 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
         const ObservedColumn* col = d.column(observe[j]);
         if (!col || std::isnan(col->values[r])) continue;
         const double obs = col->values[r];
-        if (!std::isfinite(obs)) throw std::invalid_argument(fmt::format("{}:{}: observation is not finite", d.name, d.line[r]));
+        if (!std::isfinite(obs))
+          throw std::invalid_argument(fmt::format("{}:{}: observation is not finite", d.name, d.line[r]));
         const bool sd = !col->std_dev.empty() && std::isfinite(col->std_dev[r]) && col->std_dev[r] > 0.0;
         has_sd = has_sd || sd;
         if (!sd && obs == 0.0)
-          throw std::invalid_argument(fmt::format("{}:{}: a zero observation needs a standard deviation (residuals are relative)",
-                                                  d.name, d.line[r]));
+          throw std::invalid_argument(fmt::format(
+              "{}:{}: a zero observation needs a standard deviation (residuals are relative)", d.name, d.line[r]));
         const double w = (options.observe_weight.size() > j ? options.observe_weight[j] : 1.0) * d.weight[r];
         p.terms.push_back({observe[j], obs, sd ? col->std_dev[r] : std::abs(obs), w});
       }
@@ -174,10 +188,12 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
   for (Observable o : observe) {
     bool present = false;
     for (const auto& d : data) present = present || d.column(o);
-    if (!present) throw std::invalid_argument("no data set has the observed column '" + std::string(to_string(o)) + "'");
+    if (!present)
+      throw std::invalid_argument("no data set has the observed column '" + std::string(to_string(o)) + "'");
   }
   if (observations <= free_count)
-    throw std::invalid_argument(fmt::format("{} observations cannot determine {} free constants", observations, free_count));
+    throw std::invalid_argument(
+        fmt::format("{} observations cannot determine {} free constants", observations, free_count));
   for (const auto& p : rows) {
     auto* functor = new RowResidualFunctor<Law>{p.data->delta_star[p.row], &pair, p.terms};
     auto* cost = new ceres::DynamicAutoDiffCostFunction<RowResidualFunctor<Law>, 4>(functor);
@@ -250,8 +266,10 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
       const double model_value = t.observed + res[i] * t.scale / t.weight;
       // A zero observation (e.g. no yielded surface) has no relative residual: NaN, left out of the rms.
       const double rel = t.observed != 0.0 ? model_value / t.observed - 1.0 : std::nan("");
-      result.residuals.push_back({p.data->name, p.data->line[p.row], p.data->delta_star[p.row], t.what, t.observed, model_value, rel});
-      const std::size_t j = static_cast<std::size_t>(std::find(observe.begin(), observe.end(), t.what) - observe.begin());
+      result.residuals.push_back(
+          {p.data->name, p.data->line[p.row], p.data->delta_star[p.row], t.what, t.observed, model_value, rel});
+      const std::size_t j =
+          static_cast<std::size_t>(std::find(observe.begin(), observe.end(), t.what) - observe.begin());
       if (std::isnan(rel)) continue;
       sum[j] += rel * rel;
       ++count[j];
@@ -275,19 +293,22 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
 FitResult fit_model(const asperity::AsperityModel& model, const asperity::ContactPair& pair,
                     const std::vector<FitData>& data, const FitOptions& options) {
   if (data.empty()) throw std::invalid_argument("no reference data to fit");
-  return asperity::visit_law(model.name(), [&](auto tag) {
-    return fit_law<typename decltype(tag)::type>(model, pair, data, options);
-  });
+  return asperity::visit_law(
+      model.name(), [&](auto tag) { return fit_law<typename decltype(tag)::type>(model, pair, data, options); });
 }
 
 double model_observable(const asperity::AsperityModel& model, const asperity::ContactPair& pair, double delta_star,
                         Observable what) {
   const asperity::Star<double> s = model.law_star(delta_star, pair);  // the law the fit fits (no switch)
   switch (what) {
-    case Observable::load_star: return s.load;
-    case Observable::area_star: return s.area;
-    case Observable::plastic_area_fraction: return s.plastic;
-    default: return s.load / s.area * (2.0 / 3.0) * model.yield_peak_pressure(pair) / pair.yield_strength;
+    case Observable::load_star:
+      return s.load;
+    case Observable::area_star:
+      return s.area;
+    case Observable::plastic_area_fraction:
+      return s.plastic;
+    default:
+      return s.load / s.area * (2.0 / 3.0) * model.yield_peak_pressure(pair) / pair.yield_strength;
   }
 }
 

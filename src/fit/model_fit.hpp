@@ -18,12 +18,12 @@ enum class Loss { squared, huber, cauchy };
 Loss parse_loss(std::string_view name);  // throws std::invalid_argument
 
 struct FitOptions {
-  std::vector<std::string> free;          // constants to fit; empty: all
-  std::vector<Observable> observe;        // empty: every observed column present in the data
-  std::vector<double> observe_weight;     // relative weight per observed column (1 when empty)
+  std::vector<std::string> free;                                // constants to fit; empty: all
+  std::vector<Observable> observe;                              // empty: every observed column present in the data
+  std::vector<double> observe_weight;                           // relative weight per observed column (1 when empty)
   std::vector<std::tuple<std::string, double, double>> bounds;  // (constant, lower, upper) within its range
   Loss loss = Loss::squared;
-  double loss_scale = 0.1;                // residual scale of the robust losses (a relative 10%)
+  double loss_scale = 0.1;  // residual scale of the robust losses (a relative 10%)
   int max_iterations = 500;
 };
 
@@ -55,8 +55,8 @@ struct FitResult {
     Observable what;
     double rms;
   };
-  std::vector<DataRms> rms_by_data;                          // per data set and observed column
-  std::string ceres_report;                                  // Ceres' full report
+  std::vector<DataRms> rms_by_data;  // per data set and observed column
+  std::string ceres_report;          // Ceres' full report
   int iterations = 0;
   double final_cost = 0.0;
 };

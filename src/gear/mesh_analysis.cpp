@@ -10,7 +10,11 @@ namespace geartrib::gear {
 
 MeshAnalysis::MeshAnalysis(const SpurPair& pair, const MeshStiffnessModel& stiffness, LoadSharing method,
                            double normal_force, double composite_modulus)
-    : pair_(pair), stiffness_(stiffness), method_(method), normal_force_(normal_force), composite_modulus_(composite_modulus) {
+    : pair_(pair),
+      stiffness_(stiffness),
+      method_(method),
+      normal_force_(normal_force),
+      composite_modulus_(composite_modulus) {
   if (!(normal_force >= 0.0)) throw std::invalid_argument("normal force must be >= 0");
 }
 
@@ -51,6 +55,7 @@ MeshInstant MeshAnalysis::at(double s, bool single_side) const {
 std::vector<MeshInstant> MeshAnalysis::cycle(int n) const {
   if (n < 1) throw std::invalid_argument("mesh cycle needs at least one position");
   std::vector<MeshInstant> out;
+  out.reserve(static_cast<std::size_t>(n));
   const PathOfContact& p = pair_.path();
   for (int i = 0; i < n; ++i) out.push_back(at(p.a + p.base_pitch * i / n));
   return out;

@@ -20,8 +20,8 @@ struct PairLoad {
 };
 
 struct MeshInstant {
-  std::vector<PairLoad> pairs;    // every pair in contact, in order of s
-  double mesh_stiffness = 0.0;    // sum of the pair stiffnesses [N/m]
+  std::vector<PairLoad> pairs;  // every pair in contact, in order of s
+  double mesh_stiffness = 0.0;  // sum of the pair stiffnesses [N/m]
 };
 
 class MeshAnalysis {

@@ -20,7 +20,8 @@ void DynamicsSettings::validate() const {
   if (!(density > 0.0)) throw std::invalid_argument("density must be positive");
   if (!(tolerances.relative > 0.0)) throw std::invalid_argument("relative tolerance must be positive");
   if (!(steady_tolerance >= 0.0)) throw std::invalid_argument("steady-state tolerance must not be negative");
-  if (max_cycles < 1 || samples_per_cycle < 8) throw std::invalid_argument("max_cycles >= 1 and samples_per_cycle >= 8");
+  if (max_cycles < 1 || samples_per_cycle < 8)
+    throw std::invalid_argument("max_cycles >= 1 and samples_per_cycle >= 8");
 }
 
 DynamicsSettings dynamics_settings(const Case& c) {
@@ -68,7 +69,8 @@ MeshDynamics::MeshDynamics(const GearMesh& mesh, const DynamicsSettings& setting
     segments_.emplace_back(k.begin(), k.end(), lo, h);
     segment_start_.push_back(lo);
     segment_end_.push_back(hi);
-    for (int i = 0; i + 1 < n; ++i) integral += 0.5 * (k[static_cast<std::size_t>(i)] + k[static_cast<std::size_t>(i + 1)]) * h;
+    for (int i = 0; i + 1 < n; ++i)
+      integral += 0.5 * (k[static_cast<std::size_t>(i)] + k[static_cast<std::size_t>(i + 1)]) * h;
   }
   mean_stiffness_ = integral / p.base_pitch;
   damping_ = 2.0 * settings_.damping_ratio * std::sqrt(mean_stiffness_ * mass_);
@@ -95,7 +97,8 @@ double MeshDynamics::stiffness(double u) const {
   u = std::fmod(u, pb);
   if (u < 0.0) u += pb;
   for (std::size_t i = 0; i < segments_.size(); ++i)
-    if (u <= segment_end_[i] || i + 1 == segments_.size()) return segments_[i](std::clamp(u, segment_start_[i], segment_end_[i]));
+    if (u <= segment_end_[i] || i + 1 == segments_.size())
+      return segments_[i](std::clamp(u, segment_start_[i], segment_end_[i]));
   return segments_.back()(u);
 }
 
@@ -142,7 +145,8 @@ SteadyCycle MeshDynamics::steady_cycle(const OdeIntegrator& integrator, double p
       // Each segment is integrated in its own time; the integrator restarts at the jump.
       c.steps += integrator.integrate(sys, bounds[k], bounds[k + 1], y, times, samples, tol);
     }
-    const double change = std::max(std::abs(y[0] - start[0]) / x_static, std::abs(y[1] - start[1]) / (omega_n * x_static));
+    const double change =
+        std::max(std::abs(y[0] - start[0]) / x_static, std::abs(y[1] - start[1]) / (omega_n * x_static));
     c.cycles = cycle;
     c.last_change = change;
     if (cycle > settings_.max_cycles - 100)

@@ -18,38 +18,38 @@
 namespace geartrib::gear {
 
 struct DynamicsSettings {
-  double damping_ratio = 0.07;   // zeta: typical of spur meshes (0.03-0.17 reported; Kasuba & Evans 1981)
+  double damping_ratio = 0.07;  // zeta: typical of spur meshes (0.03-0.17 reported; Kasuba & Evans 1981)
   double backlash = std::numeric_limits<double>::infinity();  // along the line of action [m]
-  double pinion_inertia = 0.0;   // [kg m^2]; 0: a solid disc of the pitch radius, face width and density, less the bore
+  double pinion_inertia = 0.0;  // [kg m^2]; 0: a solid disc of the pitch radius, face width and density, less the bore
   double wheel_inertia = 0.0;
-  double density = 7850.0;       // [kg/m^3] for the solid discs
+  double density = 7850.0;              // [kg/m^3] for the solid discs
   OdeTolerances tolerances{1e-8, 0.0};  // absolute 0: set from the static deflection
-  double steady_tolerance = 0.0;       // cycle-to-cycle change relative to the static deflection; 0: 100 x rtol
+  double steady_tolerance = 0.0;        // cycle-to-cycle change relative to the static deflection; 0: 100 x rtol
   int max_cycles = 3000;
   int samples_per_cycle = 256;
   void validate() const;
 };
 
 struct SteadyCycle {
-  double pinion_speed = 0.0;      // [rad/s]
-  double mesh_frequency = 0.0;    // [Hz]
-  double period = 0.0;            // one base pitch [s]
-  std::vector<double> time;       // over one period [s]
-  std::vector<double> position;   // s of the pair that entered at A at time 0 [m], in [A, A + p_b)
-  std::vector<double> stiffness;  // mesh stiffness [N/m]
-  std::vector<double> deflection; // x [m]
+  double pinion_speed = 0.0;              // [rad/s]
+  double mesh_frequency = 0.0;            // [Hz]
+  double period = 0.0;                    // one base pitch [s]
+  std::vector<double> time;               // over one period [s]
+  std::vector<double> position;           // s of the pair that entered at A at time 0 [m], in [A, A + p_b)
+  std::vector<double> stiffness;          // mesh stiffness [N/m]
+  std::vector<double> deflection;         // x [m]
   std::vector<double> static_deflection;  // F/k (static transmission error) [m]
-  std::vector<double> force;      // dynamic mesh force k g(x) + c x' (0 when separated) [N]
-  double static_force = 0.0;      // F [N]
-  double dynamic_factor = 0.0;    // max force / F
+  std::vector<double> force;              // dynamic mesh force k g(x) + c x' (0 when separated) [N]
+  double static_force = 0.0;              // F [N]
+  double dynamic_factor = 0.0;            // max force / F
   // max force over the low-speed limit of the same model's peak (quasi_static_peak): tends to 1 at
   // low speed, while dynamic_factor tends to the engagement impact of the stiffness steps.
   double dynamic_factor_quasi_static = 0.0;
   bool contact_lost = false;
-  bool periodic = true;           // false: no periodic state within max_cycles (the last cycles are reported)
-  double last_change = 0.0;       // cycle-to-cycle change at the end, relative to the static deflection
-  int cycles = 0;                 // cycles integrated to reach the steady state
-  long steps = 0;                 // integrator steps
+  bool periodic = true;      // false: no periodic state within max_cycles (the last cycles are reported)
+  double last_change = 0.0;  // cycle-to-cycle change at the end, relative to the static deflection
+  int cycles = 0;            // cycles integrated to reach the steady state
+  long steps = 0;            // integrator steps
 };
 
 // The settings a case asks for (density from the pinion's material).

@@ -54,20 +54,20 @@ struct PathOfContact {
 
 // Contact geometry at a point s of the line of action.
 struct FlankGeometry {
-  double s = 0.0;                // distance from T1 [m]
-  double radius_pinion = 0.0;    // rho1 = s, the pinion flank's radius of curvature [m]
-  double radius_wheel = 0.0;     // rho2 = T1T2 - s [m]
-  double radius_equivalent = 0.0;// rho1 rho2 / (rho1 + rho2) [m]
-  double roll_parameter = 0.0;   // ISO Gamma = tan(alpha_y1)/tan(alpha_w) - 1 = s / T1C - 1
+  double s = 0.0;                  // distance from T1 [m]
+  double radius_pinion = 0.0;      // rho1 = s, the pinion flank's radius of curvature [m]
+  double radius_wheel = 0.0;       // rho2 = T1T2 - s [m]
+  double radius_equivalent = 0.0;  // rho1 rho2 / (rho1 + rho2) [m]
+  double roll_parameter = 0.0;     // ISO Gamma = tan(alpha_y1)/tan(alpha_w) - 1 = s / T1C - 1
 };
 
 // Surface velocities at s (tangential to the flanks, perpendicular to the line of action).
 struct FlankKinematics {
-  double rolling_pinion = 0.0;   // v1 = omega1 rho1 [m/s]
-  double rolling_wheel = 0.0;    // v2 = omega2 rho2 [m/s]
-  double entrainment = 0.0;      // u = (v1 + v2)/2 [m/s]
-  double sliding = 0.0;          // v1 - v2 [m/s], zero at the pitch point
-  double slide_to_roll = 0.0;    // (v1 - v2)/u
+  double rolling_pinion = 0.0;           // v1 = omega1 rho1 [m/s]
+  double rolling_wheel = 0.0;            // v2 = omega2 rho2 [m/s]
+  double entrainment = 0.0;              // u = (v1 + v2)/2 [m/s]
+  double sliding = 0.0;                  // v1 - v2 [m/s], zero at the pitch point
+  double slide_to_roll = 0.0;            // (v1 - v2)/u
   double specific_sliding_pinion = 0.0;  // (v1 - v2)/v1
   double specific_sliding_wheel = 0.0;   // (v2 - v1)/v2
 };

@@ -65,9 +65,14 @@ ToothCompliance tooth_compliance(const GearBody& g, double roll_angle, const Too
     const double dy = rb * (a2 - t) * std::cos(t);  // |dy/dt|
     const double area = 2.0 * x * b, inertia = 2.0 * x * x * x * b / 3.0;
     switch (part) {
-      case 0: { const double mm = moment(height(t)); return mm * mm / (e_beam * inertia) * dy; }
-      case 1: return 1.2 * ca * ca / (shear_modulus * area) * dy;
-      default: return sa * sa / (e_beam * area) * dy;
+      case 0: {
+        const double mm = moment(height(t));
+        return mm * mm / (e_beam * inertia) * dy;
+      }
+      case 1:
+        return 1.2 * ca * ca / (shear_modulus * area) * dy;
+      default:
+        return sa * sa / (e_beam * area) * dy;
     }
   };
   if (t_end > tc) {
@@ -84,7 +89,8 @@ ToothCompliance tooth_compliance(const GearBody& g, double roll_angle, const Too
     const double area = 2.0 * xb * b, inertia = 2.0 * xb * xb * xb * b / 3.0;
     const double m_top = moment(yb), m_bottom = moment(yf);
     // int M^2 dy with dM/dy = -cos(a1)
-    const double m2 = std::abs(ca) > 1e-12 ? (std::pow(m_bottom, 3) - std::pow(m_top, 3)) / (3.0 * ca) : m_top * m_top * len;
+    const double m2 =
+        std::abs(ca) > 1e-12 ? (std::pow(m_bottom, 3) - std::pow(m_top, 3)) / (3.0 * ca) : m_top * m_top * len;
     c.bending += m2 / (e_beam * inertia);
     c.shear += 1.2 * ca * ca * len / (shear_modulus * area);
     c.axial += sa * sa * len / (e_beam * area);
@@ -98,14 +104,17 @@ ToothCompliance tooth_compliance(const GearBody& g, double roll_angle, const Too
     const double sf = 2.0 * g.root_radius * theta_f;
     const double ratio = uf / sf;
     c.foundation = ca * ca / (mat.youngs_modulus * b) *
-                   (kL(h, theta_f) * ratio * ratio + kM(h, theta_f) * ratio + kP(h, theta_f) * (1.0 + kQ(h, theta_f) * std::tan(a1) * std::tan(a1)));
+                   (kL(h, theta_f) * ratio * ratio + kM(h, theta_f) * ratio +
+                    kP(h, theta_f) * (1.0 + kQ(h, theta_f) * std::tan(a1) * std::tan(a1)));
   }
   return c;
 }
 
 MeshStiffnessModel::MeshStiffnessModel(const SpurPair& pair, const ToothMaterial& pinion, const ToothMaterial& wheel,
                                        double composite_modulus, bool plane_strain)
-    : pair_(pair), material_{pinion, wheel}, hertz_compliance_(2.0 / (std::numbers::pi * pair.spec().face_width * composite_modulus)),
+    : pair_(pair),
+      material_{pinion, wheel},
+      hertz_compliance_(2.0 / (std::numbers::pi * pair.spec().face_width * composite_modulus)),
       plane_strain_(plane_strain) {}
 
 PairStiffness MeshStiffnessModel::pair(double s) const {

@@ -27,8 +27,8 @@ struct ToothMaterial {
 // plane_strain uses E/(1 - nu^2) in the beam terms (a wide tooth); the foundation term uses E as
 // fitted by Sainsot et al. Outside that fit's range (1.4 <= r_f/r_bore <= 7,
 // 0.01 <= theta_f <= 0.12 rad) the formula is still evaluated; fillet_foundation_in_range tells.
-ToothCompliance tooth_compliance(const GearBody& g, double roll_angle, const ToothMaterial& material,
-                                 double face_width, bool plane_strain);
+ToothCompliance tooth_compliance(const GearBody& g, double roll_angle, const ToothMaterial& material, double face_width,
+                                 bool plane_strain);
 bool fillet_foundation_in_range(const GearBody& g);
 
 // The tooth-pair stiffness at s [N/m] and its parts, for the pair's materials.

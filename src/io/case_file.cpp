@@ -59,7 +59,8 @@ Material load_material(const std::filesystem::path& file) {
     for (std::size_t i = 1; i < stress.size(); ++i) {
       require(r, "flow_curve.plastic_strain", strain[i] > strain[i - 1],
               "must increase strictly (entry " + std::to_string(i) + ")");
-      require(r, "flow_curve.stress", stress[i] >= stress[i - 1], "must not decrease (entry " + std::to_string(i) + ")");
+      require(r, "flow_curve.stress", stress[i] >= stress[i - 1],
+              "must not decrease (entry " + std::to_string(i) + ")");
     }
   }
   if (m.hardness_rule == "given") {
@@ -79,7 +80,8 @@ Material load_material(const std::filesystem::path& file) {
 CaseChange parse_case_change(const std::string& text) {
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
-    throw std::invalid_argument("'" + text + "': expected key=value (a dotted case key or an alias such as module=4mm)");
+    throw std::invalid_argument("'" + text +
+                                "': expected key=value (a dotted case key or an alias such as module=4mm)");
   return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
@@ -114,7 +116,9 @@ void read_parameter(TomlReader& r, const Parameter& p, int gear, Case& c, unsign
   ParameterValue v;
   bool numeric = true;
   switch (p.kind) {
-    case ParameterKind::quantity: v.number = r.quantity(key, p.dimension); break;
+    case ParameterKind::quantity:
+      v.number = r.quantity(key, p.dimension);
+      break;
     case ParameterKind::number:
       if (!p.choices.empty() && r.is_string(key)) {
         v.text = r.string(key);
@@ -125,8 +129,12 @@ void read_parameter(TomlReader& r, const Parameter& p, int gear, Case& c, unsign
         v.number = r.number(key);
       }
       break;
-    case ParameterKind::integer: v.number = static_cast<double>(r.integer(key)); break;
-    case ParameterKind::flag: v.number = r.boolean(key) ? 1.0 : 0.0; break;
+    case ParameterKind::integer:
+      v.number = static_cast<double>(r.integer(key));
+      break;
+    case ParameterKind::flag:
+      v.number = r.boolean(key) ? 1.0 : 0.0;
+      break;
     case ParameterKind::choice:
       v.text = r.string(key);
       if (std::find(p.choices.begin(), p.choices.end(), v.text) == p.choices.end())
@@ -144,7 +152,8 @@ void read_parameter(TomlReader& r, const Parameter& p, int gear, Case& c, unsign
           r.fail(key, "unknown entry '" + e + "' (known: " + choices_text(p.choices) + ")");
       numeric = false;
       break;
-    case ParameterKind::model_constants: return;  // read_model_constants
+    case ParameterKind::model_constants:
+      return;  // read_model_constants
   }
   if (numeric && !p.in_range(v.number)) r.fail(key, range_rule(p));
   p.set(c, gear, v);
@@ -185,14 +194,15 @@ void read_flank(TomlReader& r, Case& c, int gear) {
   const std::string f = p + "flank.";
   auto& rough = g.flank.roughness;
   using Form = surface::FlankRoughness::Form;
-  const int forms = int(r.has(f + "ra")) + int(r.has(f + "rq")) + int(r.has(f + "summit_density")) + int(r.has(f + "m0")) +
-                    int(r.has(f + "topography"));
+  const int forms = int(r.has(f + "ra")) + int(r.has(f + "rq")) + int(r.has(f + "summit_density")) +
+                    int(r.has(f + "m0")) + int(r.has(f + "topography"));
   if (forms != 1)
     r.fail(p + "flank",
            "give the roughness in exactly one form: ra, rq, summit_density + summit_sigma, m0 + m2 + m4, or a [" + p +
                "flank.topography] table naming a measured surface");
   auto need = [&](const std::string& leaf) {
-    if (!r.has(f + leaf)) r.fail(f + leaf, "missing required key (" + find_parameter(f + leaf).parameter->meaning + ")");
+    if (!r.has(f + leaf))
+      r.fail(f + leaf, "missing required key (" + find_parameter(f + leaf).parameter->meaning + ")");
   };
   if (g.flank.topography) {
     // A measured flank: the cleaned surface's summits give density, height sigma and radius
@@ -216,15 +226,17 @@ void read_flank(TomlReader& r, Case& c, int gear) {
     }
     if (r.has(f + "summit_radius")) rough.summit_radius = given_radius;
     if (g.flank.measured->summits < kFewSummits)
-      c.warnings.push_back(fmt::format("{}: warning: key '{}': only {} summits on the measured surface (statistics scatter "
-                                       "by ~1/sqrt(n)); measure a larger area",
-                                       r.where(t + "file"), t + "file", g.flank.measured->summits));
+      c.warnings.push_back(
+          fmt::format("{}: warning: key '{}': only {} summits on the measured surface (statistics scatter "
+                      "by ~1/sqrt(n)); measure a larger area",
+                      r.where(t + "file"), t + "file", g.flank.measured->summits));
     return;
   }
   if (r.has(f + "m0")) {
     // McCool's relations give the summit radius from the moments: one description per flank.
     if (r.has(f + "summit_radius"))
-      r.fail(f + "summit_radius", "the spectral moments m0, m2, m4 give the summit radius (McCool 1986); remove summit_radius");
+      r.fail(f + "summit_radius",
+             "the spectral moments m0, m2, m4 give the summit radius (McCool 1986); remove summit_radius");
     need("m2");
     need("m4");
     rough.form = Form::spectral;
@@ -254,7 +266,9 @@ void apply_change(TomlReader& r, const std::string& key, const std::string& valu
     const std::string flank(gear);
     if (key.rfind(flank, 0) != 0) continue;
     const std::string leaf = key.substr(flank.size(), key.find('.', flank.size()) - flank.size());
-    auto in = [&](const std::vector<std::string>& form) { return std::find(form.begin(), form.end(), leaf) != form.end(); };
+    auto in = [&](const std::vector<std::string>& form) {
+      return std::find(form.begin(), form.end(), leaf) != form.end();
+    };
     const auto& forms = roughness_forms();
     if (std::none_of(forms.begin(), forms.end(), in)) continue;  // e.g. summit_radius: not a roughness form
     for (const auto& form : forms)
@@ -277,15 +291,15 @@ Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>&
     if (p.kind == ParameterKind::model_constants) read_model_constants(r, c);
     else if (p.per_gear())
       for (int gear = 0; gear < 2; ++gear) read_parameter(r, p, gear, c, parts);
-    else
-      read_parameter(r, p, -1, c, parts);
+    else read_parameter(r, p, -1, c, parts);
   }
 
   // Rules between keys.
   const auto& gp = c.gear_pair;
   if (!(gp.dedendum_coefficient > gp.addendum_coefficient))
     r.fail("gear_pair.dedendum_coefficient", "must exceed the addendum coefficient (tip clearance)");
-  if (!(gp.tip_shortening < gp.addendum_coefficient)) r.fail("gear_pair.tip_shortening", "must lie in [0, addendum_coefficient)");
+  if (!(gp.tip_shortening < gp.addendum_coefficient))
+    r.fail("gear_pair.tip_shortening", "must lie in [0, addendum_coefficient)");
   for (int gear = 0; gear < 2; ++gear) {
     const auto& topography = (gear == 0 ? c.pinion : c.wheel).flank.topography;
     const std::string key = std::string(gear == 0 ? "pinion" : "wheel") + ".flank.topography.outliers";

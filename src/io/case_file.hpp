@@ -27,6 +27,7 @@ CaseChange parse_case_change(const std::string& text);
 // without a default is required only when one of them needs it. Every key's value and origin is
 // recorded in Case::parameters.
 Material load_material(const std::filesystem::path& file);
-Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>& changes = {}, unsigned parts = kAllParts);
+Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>& changes = {},
+               unsigned parts = kAllParts);
 
 }  // namespace geartrib::io

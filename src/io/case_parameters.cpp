@@ -135,61 +135,131 @@ std::vector<Parameter> build_table() {
   std::vector<Row> rows;
   auto add = [&](Parameter p) -> Row& { return rows.emplace_back(Row{std::move(p)}); };
 
-  add(text("title", K::text, [](auto& c, int) -> auto& { return c.title; })).required(kGeometryPart).doc("What the case is");
-  add(text("source", K::text, [](auto& c, int) -> auto& { return c.source; }))
+  add(text(
+          "title", K::text, [](auto& c, int) -> auto& { return c.title; }))
+      .required(kGeometryPart)
+      .doc("What the case is");
+  add(text(
+          "source", K::text, [](auto& c, int) -> auto& { return c.source; }))
       .required(kGeometryPart)
       .doc("Where its data come from (provenance)");
 
   // [gear_pair]: basic rack and centre distance (ISO 53, ISO 21771).
-  add(quantity("gear_pair.module", D::length, [](auto& c, int) -> auto& { return c.gear_pair.module; }))
-      .positive().required(kGeometryPart).alias({"module"}).doc("Module m");
-  add(quantity("gear_pair.pressure_angle", D::angle, [](auto& c, int) -> auto& { return c.gear_pair.pressure_angle; }))
-      .range(0.0, 45.0 * kDeg, true, true).required(kGeometryPart).alias({"pressure_angle"})
+  add(quantity(
+          "gear_pair.module", D::length, [](auto& c, int) -> auto& { return c.gear_pair.module; }))
+      .positive()
+      .required(kGeometryPart)
+      .alias({"module"})
+      .doc("Module m");
+  add(quantity(
+          "gear_pair.pressure_angle", D::angle, [](auto& c, int) -> auto& { return c.gear_pair.pressure_angle; }))
+      .range(0.0, 45.0 * kDeg, true, true)
+      .required(kGeometryPart)
+      .alias({"pressure_angle"})
       .doc("Pressure angle alpha of the basic rack");
-  add(quantity("gear_pair.face_width", D::length, [](auto& c, int) -> auto& { return c.gear_pair.face_width; }))
-      .positive().required(kGeometryPart).alias({"face_width"}).doc("Face width b in contact");
-  add(number("gear_pair.addendum_coefficient", [](auto& c, int) -> auto& { return c.gear_pair.addendum_coefficient; }))
-      .range(0.0, 2.0, true, false).doc("Addendum h_aP/m of the basic rack");
-  add(number("gear_pair.dedendum_coefficient", [](auto& c, int) -> auto& { return c.gear_pair.dedendum_coefficient; }))
-      .positive().doc("Dedendum h_fP/m of the basic rack; must exceed the addendum (tip clearance)");
-  add(number("gear_pair.root_radius_coefficient", [](auto& c, int) -> auto& { return c.gear_pair.root_radius_coefficient; }))
-      .range(0.0, 1.0, false, true).doc("Root fillet radius rho_fP/m of the basic rack");
-  add(number("gear_pair.tip_shortening", [](auto& c, int) -> auto& { return c.gear_pair.tip_shortening; }))
-      .non_negative().doc("Tip shortening k: both tip diameters reduced by 2 k m; below the addendum");
-  add(quantity("gear_pair.center_distance", D::length, [](auto& c, int) -> auto& { return c.gear_pair.center_distance; }))
-      .non_negative().alias({"center_distance"}).doc("Operating centre distance a_w; 0: the zero-backlash distance of the shifts");
+  add(quantity(
+          "gear_pair.face_width", D::length, [](auto& c, int) -> auto& { return c.gear_pair.face_width; }))
+      .positive()
+      .required(kGeometryPart)
+      .alias({"face_width"})
+      .doc("Face width b in contact");
+  add(number(
+          "gear_pair.addendum_coefficient", [](auto& c, int) -> auto& { return c.gear_pair.addendum_coefficient; }))
+      .range(0.0, 2.0, true, false)
+      .doc("Addendum h_aP/m of the basic rack");
+  add(number(
+          "gear_pair.dedendum_coefficient", [](auto& c, int) -> auto& { return c.gear_pair.dedendum_coefficient; }))
+      .positive()
+      .doc("Dedendum h_fP/m of the basic rack; must exceed the addendum (tip clearance)");
+  add(number(
+          "gear_pair.root_radius_coefficient",
+          [](auto& c, int) -> auto& { return c.gear_pair.root_radius_coefficient; }))
+      .range(0.0, 1.0, false, true)
+      .doc("Root fillet radius rho_fP/m of the basic rack");
+  add(number(
+          "gear_pair.tip_shortening", [](auto& c, int) -> auto& { return c.gear_pair.tip_shortening; }))
+      .non_negative()
+      .doc("Tip shortening k: both tip diameters reduced by 2 k m; below the addendum");
+  add(quantity(
+          "gear_pair.center_distance", D::length, [](auto& c, int) -> auto& { return c.gear_pair.center_distance; }))
+      .non_negative()
+      .alias({"center_distance"})
+      .doc("Operating centre distance a_w; 0: the zero-backlash distance of the shifts");
 
   // [pinion], [wheel]: each gear's teeth, body and flank.
-  add(integer("{gear}.teeth", [](auto& c, int g) -> auto& { return c.gear_pair.teeth[g]; }))
-      .range(GearPairSpec::kMinTeeth, GearPairSpec::kMaxTeeth).required(kGeometryPart).alias({"teeth"}).gear_alias("z1", "z2")
+  add(integer(
+          "{gear}.teeth", [](auto& c, int g) -> auto& { return c.gear_pair.teeth[g]; }))
+      .range(GearPairSpec::kMinTeeth, GearPairSpec::kMaxTeeth)
+      .required(kGeometryPart)
+      .alias({"teeth"})
+      .gear_alias("z1", "z2")
       .doc("Number of teeth z");
-  add(number("{gear}.profile_shift", [](auto& c, int g) -> auto& { return c.gear_pair.profile_shift[g]; }))
-      .range(-2.0, 2.0).gear_alias("x1", "x2").doc("Profile shift coefficient x");
-  add(quantity("{gear}.tip_diameter", D::length, [](auto& c, int g) -> auto& { return c.gear_pair.tip_diameter[g]; }))
-      .non_negative().doc("Tip diameter d_a; 0: from addendum, shift and tip shortening");
-  add(quantity("{gear}.bore_diameter", D::length, [](auto& c, int g) -> auto& { return c.gear_pair.bore_diameter[g]; }))
-      .non_negative().doc("Bore of the gear body (fillet-foundation stiffness); 0: solid");
-  add(text("{gear}.material", K::text, [gear](auto& c, int g) -> auto& { return gear(c, g).material_file; }))
-      .required(kGeometryPart).alias({"material"}).doc("Material file (materials/*.toml), relative to the case file");
+  add(number(
+          "{gear}.profile_shift", [](auto& c, int g) -> auto& { return c.gear_pair.profile_shift[g]; }))
+      .range(-2.0, 2.0)
+      .gear_alias("x1", "x2")
+      .doc("Profile shift coefficient x");
+  add(quantity(
+          "{gear}.tip_diameter", D::length, [](auto& c, int g) -> auto& { return c.gear_pair.tip_diameter[g]; }))
+      .non_negative()
+      .doc("Tip diameter d_a; 0: from addendum, shift and tip shortening");
+  add(quantity(
+          "{gear}.bore_diameter", D::length, [](auto& c, int g) -> auto& { return c.gear_pair.bore_diameter[g]; }))
+      .non_negative()
+      .doc("Bore of the gear body (fillet-foundation stiffness); 0: solid");
+  add(text(
+          "{gear}.material", K::text, [gear](auto& c, int g) -> auto& { return gear(c, g).material_file; }))
+      .required(kGeometryPart)
+      .alias({"material"})
+      .doc("Material file (materials/*.toml), relative to the case file");
 
   // The flank's roughness, in exactly one form (surface::FlankRoughness).
   auto rough = [gear](auto& c, int g) -> auto& { return gear(c, g).flank.roughness; };
-  add(quantity("{gear}.flank.ra", D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).ra; }))
-      .positive().no_default().alias({"ra"}).doc("Form Ra: arithmetic mean roughness (profile)");
-  add(quantity("{gear}.flank.rq", D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).rq; }))
-      .positive().no_default().alias({"rq"}).doc("Form Rq: root-mean-square roughness (profile)");
-  add(quantity("{gear}.flank.summit_density", D::areal_density, [rough](auto& c, int g) -> auto& { return rough(c, g).summit_density; }))
-      .positive().no_default().doc("Form summits: summit density eta (with summit_sigma)");
-  add(quantity("{gear}.flank.summit_sigma", D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).summit_sigma; }))
-      .positive().no_default().doc("Form summits: standard deviation of summit heights");
-  add(quantity("{gear}.flank.m0", D::area, [rough](auto& c, int g) -> auto& { return rough(c, g).m0; }))
-      .positive().no_default().doc("Form spectral: profile moment m0 = Rq^2 (with m2, m4; McCool 1986)");
-  add(quantity("{gear}.flank.m2", D::dimensionless, [rough](auto& c, int g) -> auto& { return rough(c, g).m2; }))
-      .positive().no_default().doc("Form spectral: slope moment m2");
-  add(quantity("{gear}.flank.m4", D::areal_density, [rough](auto& c, int g) -> auto& { return rough(c, g).m4; }))
-      .positive().no_default().doc("Form spectral: curvature moment m4");
-  add(quantity("{gear}.flank.summit_radius", D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).summit_radius; }))
-      .positive().no_default().alias({"summit_radius"})
+  add(quantity(
+          "{gear}.flank.ra", D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).ra; }))
+      .positive()
+      .no_default()
+      .alias({"ra"})
+      .doc("Form Ra: arithmetic mean roughness (profile)");
+  add(quantity(
+          "{gear}.flank.rq", D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).rq; }))
+      .positive()
+      .no_default()
+      .alias({"rq"})
+      .doc("Form Rq: root-mean-square roughness (profile)");
+  add(quantity(
+          "{gear}.flank.summit_density",
+          D::areal_density, [rough](auto& c, int g) -> auto& { return rough(c, g).summit_density; }))
+      .positive()
+      .no_default()
+      .doc("Form summits: summit density eta (with summit_sigma)");
+  add(quantity(
+          "{gear}.flank.summit_sigma",
+          D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).summit_sigma; }))
+      .positive()
+      .no_default()
+      .doc("Form summits: standard deviation of summit heights");
+  add(quantity(
+          "{gear}.flank.m0", D::area, [rough](auto& c, int g) -> auto& { return rough(c, g).m0; }))
+      .positive()
+      .no_default()
+      .doc("Form spectral: profile moment m0 = Rq^2 (with m2, m4; McCool 1986)");
+  add(quantity(
+          "{gear}.flank.m2", D::dimensionless, [rough](auto& c, int g) -> auto& { return rough(c, g).m2; }))
+      .positive()
+      .no_default()
+      .doc("Form spectral: slope moment m2");
+  add(quantity(
+          "{gear}.flank.m4", D::areal_density, [rough](auto& c, int g) -> auto& { return rough(c, g).m4; }))
+      .positive()
+      .no_default()
+      .doc("Form spectral: curvature moment m4");
+  add(quantity(
+          "{gear}.flank.summit_radius",
+          D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).summit_radius; }))
+      .positive()
+      .no_default()
+      .alias({"summit_radius"})
       .doc("Mean summit radius beta (forms ra, rq, summits; a measured flank's overrides the measured one)");
   auto topo = [gear](auto& c, int g) -> auto& { return gear(c, g).flank.topography; };
   // A measured flank: the rows fill the topography spec (created on first use).
@@ -212,17 +282,24 @@ std::vector<Parameter> build_table() {
   add(text("{gear}.flank.topography.file", K::text, topo_ref([](auto& t) -> auto& { return t.file; })))
       .doc("Form measured: a profiler export or HDF5 surface (geartrib surface); its summits give the roughness");
   add(quantity("{gear}.flank.topography.unit", D::length, topo_ref([](auto& t) -> auto& { return t.unit; })))
-      .positive().doc("Length unit of a file that does not state one");
+      .positive()
+      .doc("Length unit of a file that does not state one");
   add(quantity("{gear}.flank.topography.spacing", D::length, topo_ref([](auto& t) -> auto& { return t.spacing; })))
-      .non_negative().doc("Grid spacing of files without one; 0: from the file");
+      .non_negative()
+      .doc("Grid spacing of files without one; 0: from the file");
   add(quantity("{gear}.flank.topography.resample", D::length, topo_ref([](auto& t) -> auto& { return t.resample; })))
-      .non_negative().doc("Regrid spacing; 0: as measured");
+      .non_negative()
+      .doc("Regrid spacing; 0: as measured");
   add(integer("{gear}.flank.topography.form", topo_ref([](auto& t) -> auto& { return t.clean.form_degree; })))
-      .range(0, 6).doc("Degree of the polynomial form removed");
-  add(quantity("{gear}.flank.topography.cutoff", D::length, topo_ref([](auto& t) -> auto& { return t.clean.waviness_cutoff; })))
-      .non_negative().doc("Gaussian waviness cut-off (ISO 16610-61); 0: no waviness filter");
+      .range(0, 6)
+      .doc("Degree of the polynomial form removed");
+  add(quantity("{gear}.flank.topography.cutoff", D::length,
+               topo_ref([](auto& t) -> auto& { return t.clean.waviness_cutoff; })))
+      .non_negative()
+      .doc("Gaussian waviness cut-off (ISO 16610-61); 0: no waviness filter");
   add(number("{gear}.flank.topography.outliers", topo_ref([](auto& t) -> auto& { return t.clean.outlier_limit; })))
-      .non_negative().doc("Outlier limit in robust standard deviations: 0 (off) or at least 2");
+      .non_negative()
+      .doc("Outlier limit in robust standard deviations: 0 (off) or at least 2");
   {
     Parameter fill = numeric("{gear}.flank.topography.fill", K::flag, D::dimensionless,
                              topo_ref([](auto& t) -> auto& { return t.clean.fill; }));
@@ -230,47 +307,78 @@ std::vector<Parameter> build_table() {
   }
 
   // [operating]
-  add(quantity("operating.pinion_torque", D::torque, [](auto& c, int) -> auto& { return c.operating.pinion_torque; }))
-      .positive().required(kGeometryPart).alias({"torque"}).doc("Pinion torque T1");
-  add(quantity("operating.pinion_speed", D::angular_speed, [](auto& c, int) -> auto& { return c.operating.pinion_speed; }))
-      .positive().required(kGeometryPart).alias({"speed"}).doc("Pinion speed n1");
+  add(quantity(
+          "operating.pinion_torque", D::torque, [](auto& c, int) -> auto& { return c.operating.pinion_torque; }))
+      .positive()
+      .required(kGeometryPart)
+      .alias({"torque"})
+      .doc("Pinion torque T1");
+  add(quantity(
+          "operating.pinion_speed", D::angular_speed, [](auto& c, int) -> auto& { return c.operating.pinion_speed; }))
+      .positive()
+      .required(kGeometryPart)
+      .alias({"speed"})
+      .doc("Pinion speed n1");
 
   // [friction]
-  add(number("friction.mu", [](auto& c, int) -> auto& { return c.friction_coefficient; }))
-      .range(0.0, 1.0).required(kFrictionPart).alias({"mu"})
+  add(number(
+          "friction.mu", [](auto& c, int) -> auto& { return c.friction_coefficient; }))
+      .range(0.0, 1.0)
+      .required(kFrictionPart)
+      .alias({"mu"})
       .doc("Coulomb friction coefficient of the asperity side contact (seed section 4)");
 
   // [mesh]
-  add(text("mesh.load_sharing", K::choice, [](auto& c, int) -> auto& { return c.mesh.load_sharing; }))
-      .choices({"iso", "stiffness"}).alias({"load_sharing"})
+  add(text(
+          "mesh.load_sharing", K::choice, [](auto& c, int) -> auto& { return c.mesh.load_sharing; }))
+      .choices({"iso", "stiffness"})
+      .alias({"load_sharing"})
       .doc("Load sharing between tooth pairs: ISO/TS 6336-22 method B or the pairs' stiffnesses");
-  add(integer("mesh.positions", [](auto& c, int) -> auto& { return c.mesh.positions; }))
-      .range(2, 100000).doc("Positions sampling one base pitch (kinematics, mesh stiffness)");
+  add(integer(
+          "mesh.positions", [](auto& c, int) -> auto& { return c.mesh.positions; }))
+      .range(2, 100000)
+      .doc("Positions sampling one base pitch (kinematics, mesh stiffness)");
   add(mapped_choice(
-          "mesh.tooth_beam", {"plane-strain", "plane-stress"}, [](auto& c, int) -> auto& { return c.mesh.plane_strain; },
+          "mesh.tooth_beam", {"plane-strain", "plane-stress"},
+          [](auto& c, int) -> auto& { return c.mesh.plane_strain; },
           [](const std::string& t) { return t == "plane-strain"; },
           [](bool strain) { return std::string(strain ? "plane-strain" : "plane-stress"); }))
       .doc("Tooth beam of the stiffness model: plane strain (wide face) or plane stress");
-  add(text("mesh.dynamics", K::choice, [](auto& c, int) -> auto& { return c.dynamics.engine; }))
-      .choices({"none", "cvode", "odeint"}).alias({"dynamics"})
+  add(text(
+          "mesh.dynamics", K::choice, [](auto& c, int) -> auto& { return c.dynamics.engine; }))
+      .choices({"none", "cvode", "odeint"})
+      .alias({"dynamics"})
       .doc("Mesh dynamics: none (static load sharing) or the steady dynamic cycle with an integrator");
 
   // [dynamics]
-  add(number("dynamics.damping_ratio", [](auto& c, int) -> auto& { return c.dynamics.damping_ratio; }))
-      .range(0.0, 1.0, false, true).alias({"damping"}).doc("Mesh damping ratio zeta (0.03-0.17 reported; Kasuba & Evans 1981)");
-  add(number("dynamics.relative_tolerance", [](auto& c, int) -> auto& { return c.dynamics.relative_tolerance; }))
-      .range(1e-14, 1e-2).alias({"rtol"}).ladder({"1e-4", "1e-6", "1e-8", "1e-10", "1e-12"})
+  add(number(
+          "dynamics.damping_ratio", [](auto& c, int) -> auto& { return c.dynamics.damping_ratio; }))
+      .range(0.0, 1.0, false, true)
+      .alias({"damping"})
+      .doc("Mesh damping ratio zeta (0.03-0.17 reported; Kasuba & Evans 1981)");
+  add(number(
+          "dynamics.relative_tolerance", [](auto& c, int) -> auto& { return c.dynamics.relative_tolerance; }))
+      .range(1e-14, 1e-2)
+      .alias({"rtol"})
+      .ladder({"1e-4", "1e-6", "1e-8", "1e-10", "1e-12"})
       .doc("Relative tolerance of the integrator");
-  add(quantity("dynamics.backlash", D::length, [](auto& c, int) -> auto& { return c.dynamics.backlash; }))
-      .non_negative().doc("Backlash along the line of action; 0: no back-flank contact");
-  add(quantity("dynamics.pinion_inertia", D::inertia, [](auto& c, int) -> auto& { return c.dynamics.pinion_inertia; }))
-      .non_negative().doc("Pinion polar moment of inertia; 0: a solid disc less the bore");
-  add(quantity("dynamics.wheel_inertia", D::inertia, [](auto& c, int) -> auto& { return c.dynamics.wheel_inertia; }))
-      .non_negative().doc("Wheel polar moment of inertia; 0: a solid disc less the bore");
+  add(quantity(
+          "dynamics.backlash", D::length, [](auto& c, int) -> auto& { return c.dynamics.backlash; }))
+      .non_negative()
+      .doc("Backlash along the line of action; 0: no back-flank contact");
+  add(quantity(
+          "dynamics.pinion_inertia", D::inertia, [](auto& c, int) -> auto& { return c.dynamics.pinion_inertia; }))
+      .non_negative()
+      .doc("Pinion polar moment of inertia; 0: a solid disc less the bore");
+  add(quantity(
+          "dynamics.wheel_inertia", D::inertia, [](auto& c, int) -> auto& { return c.dynamics.wheel_inertia; }))
+      .non_negative()
+      .doc("Wheel polar moment of inertia; 0: a solid disc less the bore");
 
   // [roughness]: both flanks.
   add(mapped_choice(
-          "roughness.distribution", {"gaussian", "exponential"}, [](auto& c, int) -> auto& { return c.roughness.distribution; },
+          "roughness.distribution", {"gaussian", "exponential"},
+          [](auto& c, int) -> auto& { return c.roughness.distribution; },
           [](const std::string& t) {
             return t == "gaussian" ? surface::HeightDistribution::gaussian : surface::HeightDistribution::exponential;
           },
@@ -278,8 +386,10 @@ std::vector<Parameter> build_table() {
             return std::string(d == surface::HeightDistribution::gaussian ? "gaussian" : "exponential");
           }))
       .doc("Summit height distribution");
-  add(number("roughness.eta_sigma_beta", [](auto& c, int) -> auto& { return c.roughness.eta_sigma_beta; }))
-      .range(0.0, 10.0, true, true).doc("Summit parameter eta sigma beta for flanks given by Ra or Rq");
+  add(number(
+          "roughness.eta_sigma_beta", [](auto& c, int) -> auto& { return c.roughness.eta_sigma_beta; }))
+      .range(0.0, 10.0, true, true)
+      .doc("Summit parameter eta sigma beta for flanks given by Ra or Rq");
 
   // [contact]: the mesh cycle's fidelity, outputs and resolutions.
   add(mapped_choice(
@@ -287,7 +397,8 @@ std::vector<Parameter> build_table() {
           [](const std::string& t) { return t == "coupled"; },
           [](bool coupled) { return std::string(coupled ? "coupled" : "uncoupled"); }))
       .alias({"fidelity"})
-      .doc("uncoupled: Hertz pressure imposed on the rough surface; coupled: Greenwood-Tripp, bulk and asperities solved together");
+      .doc(
+          "uncoupled: Hertz pressure imposed on the rough surface; coupled: Greenwood-Tripp, bulk and asperities solved together");
   {
     Parameter outputs;
     outputs.key = "contact.outputs";
@@ -308,41 +419,72 @@ std::vector<Parameter> build_table() {
     };
     add(std::move(outputs)).doc("The outputs computed (a run computes only these)");
   }
-  add(integer("contact.positions", [](auto& c, int) -> auto& { return c.contact.positions; }))
-      .range(2, 100000).alias({"positions"}).ladder({"11", "21", "41", "81", "101", "201", "401", "801"})
+  add(integer(
+          "contact.positions", [](auto& c, int) -> auto& { return c.contact.positions; }))
+      .range(2, 100000)
+      .alias({"positions"})
+      .ladder({"11", "21", "41", "81", "101", "201", "401", "801"})
       .doc("Positions along the path of contact A -> E");
-  add(integer("contact.strip_points", [](auto& c, int) -> auto& { return c.contact.strip_points; }))
-      .range(StripOptions::kMinStripPoints, StripOptions::kMaxStripPoints).alias({"strip_points"})
-      .ladder({"8", "16", "32", "64", "128", "256", "512"}).doc("Uncoupled: quadrature points across the Hertz strip");
-  add(integer("contact.height_points", [](auto& c, int) -> auto& { return c.contact.height_points; }))
-      .range(GreenwoodWilliamsonOptions::kMinHeightPoints, GreenwoodWilliamsonOptions::kMaxHeightPoints).alias({"height_points"})
-      .ladder({"8", "16", "32", "64", "128", "256", "512", "1024"}).doc("Quadrature points over the summit heights in contact");
-  add(integer("contact.table_points", [](auto& c, int) -> auto& { return c.contact.table_points; }))
-      .range(GreenwoodWilliamsonOptions::kMinTablePoints, GreenwoodWilliamsonOptions::kMaxTablePoints).alias({"table_points"})
-      .ladder({"4", "8", "16", "32", "64", "128", "256"}).doc("Pressure-separation table points per summit sigma");
-  add(integer("contact.coupled_nodes", [](auto& c, int) -> auto& { return c.contact.coupled_nodes; }))
-      .range(StripOptions::kMinCoupledNodes, StripOptions::kMaxCoupledNodes).alias({"coupled_nodes"})
-      .ladder({"32", "64", "128", "256"}).doc("Coupled: pressure elements across the contact");
+  add(integer(
+          "contact.strip_points", [](auto& c, int) -> auto& { return c.contact.strip_points; }))
+      .range(StripOptions::kMinStripPoints, StripOptions::kMaxStripPoints)
+      .alias({"strip_points"})
+      .ladder({"8", "16", "32", "64", "128", "256", "512"})
+      .doc("Uncoupled: quadrature points across the Hertz strip");
+  add(integer(
+          "contact.height_points", [](auto& c, int) -> auto& { return c.contact.height_points; }))
+      .range(GreenwoodWilliamsonOptions::kMinHeightPoints, GreenwoodWilliamsonOptions::kMaxHeightPoints)
+      .alias({"height_points"})
+      .ladder({"8", "16", "32", "64", "128", "256", "512", "1024"})
+      .doc("Quadrature points over the summit heights in contact");
+  add(integer(
+          "contact.table_points", [](auto& c, int) -> auto& { return c.contact.table_points; }))
+      .range(GreenwoodWilliamsonOptions::kMinTablePoints, GreenwoodWilliamsonOptions::kMaxTablePoints)
+      .alias({"table_points"})
+      .ladder({"4", "8", "16", "32", "64", "128", "256"})
+      .doc("Pressure-separation table points per summit sigma");
+  add(integer(
+          "contact.coupled_nodes", [](auto& c, int) -> auto& { return c.contact.coupled_nodes; }))
+      .range(StripOptions::kMinCoupledNodes, StripOptions::kMaxCoupledNodes)
+      .alias({"coupled_nodes"})
+      .ladder({"32", "64", "128", "256"})
+      .doc("Coupled: pressure elements across the contact");
 
   // [asperity]
-  add(text("asperity.model", K::choice, [](auto& c, int) -> auto& { return c.asperity.model; }))
-      .choices(model_names(), "asperity model").alias({"model"}).doc("Single-asperity model of the rough contact");
+  add(text(
+          "asperity.model", K::choice, [](auto& c, int) -> auto& { return c.asperity.model; }))
+      .choices(model_names(), "asperity model")
+      .alias({"model"})
+      .doc("Single-asperity model of the rough contact");
   {
     Parameter constants;
     constants.key = "asperity.constants.MODEL.NAME";
     constants.kind = K::model_constants;
     constants.get = [](const Case&, int) { return ParameterValue{}; };
     constants.set = [](Case&, int, const ParameterValue&) {};
-    add(std::move(constants)).doc("A model constant overridden (geartrib asperity --constants --model MODEL lists them)");
+    add(std::move(constants))
+        .doc("A model constant overridden (geartrib asperity --constants --model MODEL lists them)");
   }
-  add(quantity("asperity.side_contact.measured_offset", D::length, [](auto& c, int) -> auto& { return c.asperity.measured_axis_offset; }))
-      .non_negative().doc("Measured axis offset d0 of the side contact; 0: none measured");
-  add(quantity("asperity.side_contact.measured_tip_gap", D::length, [](auto& c, int) -> auto& { return c.asperity.measured_tip_gap; }))
-      .non_negative().doc("Measured tip gap y0 of the side contact; 0: none measured");
-  add(quantity("asperity.cylinder.tip_radius", D::length, [](auto& c, int) -> auto& { return c.asperity.cylinder_tip_radius; }))
-      .positive().required(kCylinderPart).doc("Tip radius R_m of the cylinder asperity (seed section 5)");
-  add(number("asperity.cylinder.yield_constant", [](auto& c, int) -> auto& { return c.asperity.cylinder_yield_constant; }))
-      .range(0.5, 5.0, true, true).choices({"green-2005"})
+  add(quantity(
+          "asperity.side_contact.measured_offset", D::length,
+          [](auto& c, int) -> auto& { return c.asperity.measured_axis_offset; }))
+      .non_negative()
+      .doc("Measured axis offset d0 of the side contact; 0: none measured");
+  add(quantity(
+          "asperity.side_contact.measured_tip_gap", D::length,
+          [](auto& c, int) -> auto& { return c.asperity.measured_tip_gap; }))
+      .non_negative()
+      .doc("Measured tip gap y0 of the side contact; 0: none measured");
+  add(quantity(
+          "asperity.cylinder.tip_radius", D::length,
+          [](auto& c, int) -> auto& { return c.asperity.cylinder_tip_radius; }))
+      .positive()
+      .required(kCylinderPart)
+      .doc("Tip radius R_m of the cylinder asperity (seed section 5)");
+  add(number(
+          "asperity.cylinder.yield_constant", [](auto& c, int) -> auto& { return c.asperity.cylinder_yield_constant; }))
+      .range(0.5, 5.0, true, true)
+      .choices({"green-2005"})
       .doc("C of the cylinder's critical interference, or green-2005 (Green's plane-strain C_L(nu))");
 
   std::vector<Parameter> out;
@@ -378,14 +520,30 @@ std::vector<std::vector<std::string>> schema_rows() {
   for (const Parameter& p : case_parameters()) {
     std::string kind;
     switch (p.kind) {
-      case ParameterKind::quantity: kind = std::string(dimension_name(p.dimension)); break;
-      case ParameterKind::number: kind = "number"; break;
-      case ParameterKind::integer: kind = "integer"; break;
-      case ParameterKind::choice: kind = "choice"; break;
-      case ParameterKind::text: kind = "text"; break;
-      case ParameterKind::flag: kind = "true/false"; break;
-      case ParameterKind::choice_list: kind = "list of choices"; break;
-      case ParameterKind::model_constants: kind = "number"; break;
+      case ParameterKind::quantity:
+        kind = std::string(dimension_name(p.dimension));
+        break;
+      case ParameterKind::number:
+        kind = "number";
+        break;
+      case ParameterKind::integer:
+        kind = "integer";
+        break;
+      case ParameterKind::choice:
+        kind = "choice";
+        break;
+      case ParameterKind::text:
+        kind = "text";
+        break;
+      case ParameterKind::flag:
+        kind = "true/false";
+        break;
+      case ParameterKind::choice_list:
+        kind = "list of choices";
+        break;
+      case ParameterKind::model_constants:
+        kind = "number";
+        break;
     }
     const bool has_default = p.has_default && p.required_by == 0 && p.kind != ParameterKind::model_constants &&
                              p.kind != ParameterKind::text;
@@ -434,16 +592,21 @@ std::string Parameter::key_for(int gear) const {
 
 std::string Parameter::format(const ParameterValue& v) const {
   switch (kind) {
-    case ParameterKind::quantity: return fmt::format("{:g} {}", v.number, si_symbol(dimension));
-    case ParameterKind::number: return v.text.empty() ? number_text(v.number) : v.text;
-    case ParameterKind::integer: return fmt::format("{}", static_cast<long>(v.number));
-    case ParameterKind::flag: return v.number != 0.0 ? "true" : "false";
+    case ParameterKind::quantity:
+      return fmt::format("{:g} {}", v.number, si_symbol(dimension));
+    case ParameterKind::number:
+      return v.text.empty() ? number_text(v.number) : v.text;
+    case ParameterKind::integer:
+      return fmt::format("{}", static_cast<long>(v.number));
+    case ParameterKind::flag:
+      return v.number != 0.0 ? "true" : "false";
     case ParameterKind::choice_list: {
       std::string s;
       for (const auto& e : v.list) s += (s.empty() ? "" : ", ") + e;
       return "[" + s + "]";
     }
-    default: return v.text;
+    default:
+      return v.text;
   }
 }
 
@@ -473,7 +636,8 @@ const std::vector<CaseAlias>& case_aliases() {
     std::vector<CaseAlias> out;
     for (const Parameter& p : case_parameters()) {
       for (const auto& a : p.aliases)
-        out.push_back({a, p.per_gear() ? std::vector<std::string>{p.key_for(0), p.key_for(1)} : std::vector<std::string>{p.key}});
+        out.push_back(
+            {a, p.per_gear() ? std::vector<std::string>{p.key_for(0), p.key_for(1)} : std::vector<std::string>{p.key}});
       for (std::size_t g = 0; g < p.gear_aliases.size(); ++g)
         out.push_back({p.gear_aliases[g], {p.key_for(static_cast<int>(g))}});
     }
@@ -514,7 +678,8 @@ std::string parameter_text_error(const Parameter& p, const std::string& text) {
         return "unknown " + p.noun + " '" + text + "' (known: " + names + ")";
       }
       return "";
-    default: return "";
+    default:
+      return "";
   }
   if (!p.in_range(v)) return "must lie in " + p.range_text();
   return "";

@@ -20,21 +20,21 @@ namespace geartrib::io {
 // that needs it is asked for: the kinematics need no friction coefficient, flank roughness or
 // cylinder radius.
 enum CasePart : unsigned {
-  kGeometryPart = 1u,      // gear pair, materials, operating point, mesh, dynamics
-  kRoughnessPart = 2u,     // flank roughness and the asperity model
-  kFrictionPart = 4u,      // the asperity side contact (mesh cycle, `geartrib asperity --contact side`)
-  kCylinderPart = 8u,      // the cylinder asperity of the multi-asperity and FEM studies
+  kGeometryPart = 1u,   // gear pair, materials, operating point, mesh, dynamics
+  kRoughnessPart = 2u,  // flank roughness and the asperity model
+  kFrictionPart = 4u,   // the asperity side contact (mesh cycle, `geartrib asperity --contact side`)
+  kCylinderPart = 8u,   // the cylinder asperity of the multi-asperity and FEM studies
   kAllParts = 15u,
 };
 
 enum class ParameterKind {
-  quantity,     // a number with a unit of its dimension, or a bare SI number
-  number,       // dimensionless; may also be one of `choices` (a named rule)
+  quantity,  // a number with a unit of its dimension, or a bare SI number
+  number,    // dimensionless; may also be one of `choices` (a named rule)
   integer,
-  choice,       // one of `choices`
-  text,         // free text (title, source, file names)
-  flag,         // true or false
-  choice_list,  // an array of `choices`
+  choice,           // one of `choices`
+  text,             // free text (title, source, file names)
+  flag,             // true or false
+  choice_list,      // an array of `choices`
   model_constants,  // asperity.constants.MODEL.NAME = number (checked by the model's own ranges)
 };
 

@@ -91,7 +91,8 @@ ColumnTableFile read_column_table_hdf5(const std::filesystem::path& path) {
     Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "file");
     Handle points(H5Gopen2(file, "/points", H5P_DEFAULT), H5Gclose, "group /points");
     std::string order;
-    if (!hdf5::read_string_attribute(points, "columns", order)) throw std::runtime_error("no attribute /points columns");
+    if (!hdf5::read_string_attribute(points, "columns", order))
+      throw std::runtime_error("no attribute /points columns");
     std::size_t start = 0;
     while (start <= order.size()) {
       const std::size_t comma = std::min(order.find(',', start), order.size());
@@ -112,7 +113,8 @@ ColumnTableFile read_column_table_hdf5(const std::filesystem::path& path) {
     const int n = static_cast<int>(H5Aget_num_attrs(sweep));
     for (int i = 0; i < n; ++i) {
       char name[256] = {};
-      H5Aget_name_by_idx(sweep, ".", H5_INDEX_NAME, H5_ITER_INC, static_cast<hsize_t>(i), name, sizeof name, H5P_DEFAULT);
+      H5Aget_name_by_idx(sweep, ".", H5_INDEX_NAME, H5_ITER_INC, static_cast<hsize_t>(i), name, sizeof name,
+                         H5P_DEFAULT);
       std::string v;
       if (hdf5::read_string_attribute(sweep, name, v)) f.attributes[name] = v;
     }

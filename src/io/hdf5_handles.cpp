@@ -24,7 +24,8 @@ void string_attribute(hid_t obj, const std::string& name, const std::string& val
 
 void number_attribute(hid_t obj, const std::string& name, double value) {
   Handle space(H5Screate(H5S_SCALAR), H5Sclose, "scalar space");
-  Handle attr(H5Acreate2(obj, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose, "attribute " + name);
+  Handle attr(H5Acreate2(obj, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+              "attribute " + name);
   check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value), "write attribute " + name);
 }
 
@@ -76,17 +77,20 @@ void number_dataset(hid_t group, const std::string& name, const std::vector<doub
 void string_dataset(hid_t group, const std::string& name, const std::string& value) {
   Handle type(utf8_type(std::max<std::size_t>(1, value.size())), H5Tclose, "string type");
   Handle space(H5Screate(H5S_SCALAR), H5Sclose, "scalar space");
-  Handle set(H5Dcreate2(group, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose, "dataset " + name);
+  Handle set(H5Dcreate2(group, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
+             "dataset " + name);
   check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, value.c_str()), "write " + name);
 }
 
 void strings_dataset(hid_t group, const std::string& name, const std::vector<std::string>& values) {
   std::vector<const char*> pointers;
+  pointers.reserve(values.size());
   for (const auto& v : values) pointers.push_back(v.c_str());
   const hsize_t n = values.size();
   Handle type(utf8_type(H5T_VARIABLE), H5Tclose, "string type");
   Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "dataspace");
-  Handle set(H5Dcreate2(group, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose, "dataset " + name);
+  Handle set(H5Dcreate2(group, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
+             "dataset " + name);
   if (n > 0) check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "write " + name);
 }
 
@@ -127,6 +131,7 @@ std::vector<std::string> read_strings(hid_t group, const std::string& name) {
   std::vector<char*> pointers(n, nullptr);
   if (n > 0) check(H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "read " + name);
   std::vector<std::string> out;
+  out.reserve(pointers.size());
   for (char* p : pointers) out.emplace_back(p ? p : "");
   if (n > 0) H5Dvlen_reclaim(type, space, H5P_DEFAULT, pointers.data());
   return out;

@@ -13,7 +13,6 @@ namespace geartrib::io {
 namespace {
 
 using hdf5::Handle;
-using hdf5::check;
 using hdf5::number_attribute;
 using hdf5::string_attribute;
 
@@ -48,7 +47,8 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
     Handle scene(H5Dopen2(file, "/scene", H5P_DEFAULT), H5Dclose, "/scene");
     string_attribute(scene, "file", case_file);
     // Every declared key as it ran: value with its SI unit, and where it came from.
-    Handle parameters(H5Gcreate2(file, "/parameters", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /parameters");
+    Handle parameters(H5Gcreate2(file, "/parameters", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                      "group /parameters");
     std::vector<std::string> keys, values, origins;
     for (const auto& p : c.parameters) {
       keys.push_back(p.key);

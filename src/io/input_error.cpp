@@ -8,9 +8,9 @@ namespace {
 std::string format(const std::string& file, int line, const std::string& key, const std::string& value,
                    const std::string& rule) {
   const std::string where = line > 0 ? fmt::format("{}:{}", file, line) : file;
-  const std::string what = key.empty() ? (value.empty() ? "" : fmt::format("{}: ", value))
-                                       : (value.empty() ? fmt::format("key '{}': ", key)
-                                                        : fmt::format("key '{}' = {}: ", key, value));
+  const std::string what =
+      key.empty() ? (value.empty() ? "" : fmt::format("{}: ", value))
+                  : (value.empty() ? fmt::format("key '{}': ", key) : fmt::format("key '{}' = {}: ", key, value));
   return fmt::format("{}: {}{}", where, what, rule);
 }
 }  // namespace

@@ -31,7 +31,8 @@ ReferenceTable read_reference_table(const std::filesystem::path& file,
     const auto cells = split_csv(s);
     if (!header_seen) {
       header_seen = true;
-      if (cells.size() < 2) throw InputError(t.file, n, "", s, "header needs an input column and at least one quantity");
+      if (cells.size() < 2)
+        throw InputError(t.file, n, "", s, "header needs an input column and at least one quantity");
       t.input_name = cells[0];
       for (std::size_t i = 1; i < cells.size(); ++i) {
         const std::string& h = cells[i];
@@ -55,9 +56,9 @@ ReferenceTable read_reference_table(const std::filesystem::path& file,
       continue;
     }
     if (cells.size() != t.columns.size() + 1)
-      throw InputError(t.file, n, "", s,
-                       "row has " + std::to_string(cells.size()) + " cells, header has " +
-                           std::to_string(t.columns.size() + 1));
+      throw InputError(
+          t.file, n, "", s,
+          "row has " + std::to_string(cells.size()) + " cells, header has " + std::to_string(t.columns.size() + 1));
     for (std::size_t i = 0; i < cells.size(); ++i) {
       double v = 0.0;
       const auto [end, ec] = std::from_chars(cells[i].data(), cells[i].data() + cells[i].size(), v);

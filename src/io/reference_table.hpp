@@ -14,9 +14,9 @@
 namespace geartrib::io {
 
 struct ReferenceColumn {
-  std::string quantity;  // e.g. contact_radius
-  std::string label;     // e.g. seed-fem
-  std::string unit;      // as written, e.g. um
+  std::string quantity;        // e.g. contact_radius
+  std::string label;           // e.g. seed-fem
+  std::string unit;            // as written, e.g. um
   std::vector<double> values;  // SI
 };
 

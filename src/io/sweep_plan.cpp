@@ -20,7 +20,8 @@ std::pair<double, std::string> number_and_unit(const std::string& text, const st
   double v = 0.0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc{} || end == text.data() || !std::isfinite(v))
-    throw std::invalid_argument("'" + whole + "': range ends must be numbers with an optional unit, got '" + text + "'");
+    throw std::invalid_argument("'" + whole + "': range ends must be numbers with an optional unit, got '" + text +
+                                "'");
   return {v, trim(std::string(end, text.data() + text.size()))};
 }
 
@@ -54,12 +55,14 @@ SweepAxis parse_sweep_axis(const std::string& text) {
     long n = 0;
     const auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), n);
     if (ec != std::errc{} || end != count.data() + count.size() || n < 2 || n > 100000)
-      throw std::invalid_argument("'" + text + "': lo:hi:n needs an integer count n in [2, 100000], got '" + count + "'");
+      throw std::invalid_argument("'" + text + "': lo:hi:n needs an integer count n in [2, 100000], got '" + count +
+                                  "'");
     const auto [v0, u0] = number_and_unit(lo, text);
     const auto [v1, u1] = number_and_unit(hi, text);
-    if (u0 != u1) throw std::invalid_argument("'" + text + "': both range ends need the same unit ('" + u0 + "', '" + u1 + "')");
-    const bool integers = is_integer_text(lo) && is_integer_text(hi) &&
-                          std::fmod(std::abs(v1 - v0), static_cast<double>(n - 1)) == 0.0;
+    if (u0 != u1)
+      throw std::invalid_argument("'" + text + "': both range ends need the same unit ('" + u0 + "', '" + u1 + "')");
+    const bool integers =
+        is_integer_text(lo) && is_integer_text(hi) && std::fmod(std::abs(v1 - v0), static_cast<double>(n - 1)) == 0.0;
     for (long i = 0; i < n; ++i) {
       const double v = v0 + (v1 - v0) * static_cast<double>(i) / static_cast<double>(n - 1);
       axis.values.push_back(integers ? fmt::format("{}", std::llround(v)) : fmt::format("{:.10g}{}", v, u0));
@@ -82,9 +85,10 @@ void SweepPlan::validate() const {
   for (const auto& a : axes) {
     if (!keys.insert(a.key).second) throw std::invalid_argument("--set " + a.key + " given twice");
     if (zip && a.values.size() != 1 && a.values.size() != size())
-      throw std::invalid_argument(fmt::format("--zip: --set {} has {} values, another axis {}: zipped axes need equal lengths "
-                                              "(or one value, used at every point)",
-                                              a.key, a.values.size(), size()));
+      throw std::invalid_argument(
+          fmt::format("--zip: --set {} has {} values, another axis {}: zipped axes need equal lengths "
+                      "(or one value, used at every point)",
+                      a.key, a.values.size(), size()));
   }
 }
 

@@ -2,11 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace geartrib::io {
 
@@ -38,7 +38,8 @@ std::string format_text(const Table& t) {
     for (const auto& r : cells) width[i] = std::max(width[i], r[i].size());
   }
   std::string out;
-  for (std::size_t i = 0; i < t.header.size(); ++i) out += fmt::format("{}{:>{}}", i ? "  " : "", t.header[i], width[i]);
+  for (std::size_t i = 0; i < t.header.size(); ++i)
+    out += fmt::format("{}{:>{}}", i ? "  " : "", t.header[i], width[i]);
   out += '\n';
   for (const auto& r : cells) {
     for (std::size_t i = 0; i < r.size(); ++i) out += fmt::format("{}{:>{}}", i ? "  " : "", r[i], width[i]);

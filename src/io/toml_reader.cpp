@@ -50,7 +50,8 @@ void TomlReader::set(std::string_view key, const std::string& value_text) {
     prefix += (prefix.empty() ? "" : ".") + part;
     toml::node* n = t->get(part);
     if (!n) n = &t->insert_or_assign(part, toml::table{}).first->second;
-    if (!n->is_table()) throw InputError(where, 0, prefix, "", "is a value, not a table: cannot set " + std::string(key));
+    if (!n->is_table())
+      throw InputError(where, 0, prefix, "", "is a value, not a table: cannot set " + std::string(key));
     t = n->as_table();
     rest.remove_prefix(dot + 1);
   }
@@ -60,12 +61,11 @@ void TomlReader::set(std::string_view key, const std::string& value_text) {
 void TomlReader::erase(std::string_view key) {
   const auto dot = key.rfind('.');
   toml::node* parent = dot == std::string_view::npos ? &root_ : root_.at_path(key.substr(0, dot)).node();
-  if (parent && parent->is_table()) parent->as_table()->erase(std::string(key.substr(dot == std::string_view::npos ? 0 : dot + 1)));
+  if (parent && parent->is_table())
+    parent->as_table()->erase(std::string(key.substr(dot == std::string_view::npos ? 0 : dot + 1)));
 }
 
-const toml::node* TomlReader::find(std::string_view key) const {
-  return root_.at_path(key).node();
-}
+const toml::node* TomlReader::find(std::string_view key) const { return root_.at_path(key).node(); }
 
 bool TomlReader::has(std::string_view key) const { return find(key) != nullptr; }
 
@@ -203,8 +203,8 @@ std::vector<std::string> TomlReader::string_array(std::string_view key) {
   for (std::size_t i = 0; i < arr->size(); ++i) {
     const toml::node& e = *arr->get(i);
     if (!e.is_string())
-      throw InputError(file_, static_cast<int>(e.source().begin.line), std::string(key) + "[" + std::to_string(i) + "]", "",
-                       "expected a string");
+      throw InputError(file_, static_cast<int>(e.source().begin.line), std::string(key) + "[" + std::to_string(i) + "]",
+                       "", "expected a string");
     out.push_back(e.as_string()->get());
   }
   return out;

@@ -2,8 +2,8 @@
 
 #include "io/hdf5_handles.hpp"
 #include "io/input_error.hpp"
-#include "io/text_lines.hpp"
 #include "io/table_writer.hpp"
+#include "io/text_lines.hpp"
 #include "io/units.hpp"
 
 #include <fmt/format.h>
@@ -60,7 +60,8 @@ bool comment_value(const std::string& line, const std::string& key, std::string&
 bool units_line(const std::string& line, const std::string& file, int n, bool lengths_seen, double& unit) {
   std::string value;
   if (!comment_value(line, "units", value)) return false;
-  if (lengths_seen) throw InputError(file, n, "units", value, "the units line must come before the spacing and the data");
+  if (lengths_seen)
+    throw InputError(file, n, "units", value, "the units line must come before the spacing and the data");
   try {
     unit = unit_factor(value, Dimension::length);
   } catch (const std::invalid_argument& e) {
@@ -71,8 +72,9 @@ bool units_line(const std::string& line, const std::string& file, int n, bool le
 
 void check_enough(const surface::HeightGrid& g, const std::string& file, int line) {
   if (g.size() - g.missing() < 9)
-    throw InputError(file, line, "", "", fmt::format("too few valid points ({} of {}; at least 9 are needed)",
-                                                     g.size() - g.missing(), g.size()));
+    throw InputError(
+        file, line, "", "",
+        fmt::format("too few valid points ({} of {}; at least 9 are needed)", g.size() - g.missing(), g.size()));
 }
 
 surface::HeightGrid read_xyz(const std::filesystem::path& path, const TopographyReadOptions& o) {
@@ -120,7 +122,9 @@ surface::HeightGrid read_xyz(const std::filesystem::path& path, const Topography
       const double h = (u.back() - u.front()) / (u.size() - 1);
       for (std::size_t k = 1; k < u.size(); ++k)
         if (std::abs((u[k] - u[k - 1]) / h - 1.0) > 0.01)
-          throw InputError(file, first_data, name, "", "points are not on a regular grid (spacing varies by more than 1%); resample them (--resample SPACING)");
+          throw InputError(
+              file, first_data, name, "",
+              "points are not on a regular grid (spacing varies by more than 1%); resample them (--resample SPACING)");
     }
     return u;
   };
@@ -183,14 +187,17 @@ surface::HeightGrid read_grid(const std::filesystem::path& path, const Topograph
       else throw InputError(file, n, "", tok, "not a number or a missing-point marker");
     }
     if (!rows.empty() && row.size() != rows.front().size())
-      throw InputError(file, n, "", "", fmt::format("ragged row: {} values, the first row has {}", row.size(), rows.front().size()));
+      throw InputError(file, n, "", "",
+                       fmt::format("ragged row: {} values, the first row has {}", row.size(), rows.front().size()));
     rows.push_back(std::move(row));
   }
   if (rows.empty()) throw InputError(file, n, "", "", "no height rows");
-  if (!(dx > 0.0)) throw InputError(file, spacing_line, "spacing", "", "grid spacing missing: give '# spacing: <length>' or --grid-spacing");
+  if (!(dx > 0.0))
+    throw InputError(file, spacing_line, "spacing", "",
+                     "grid spacing missing: give '# spacing: <length>' or --grid-spacing");
   if (rows.front().size() < 2) throw InputError(file, n, "", "", "a height grid needs at least 2 columns");
-  surface::HeightGrid g = surface::make_grid(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), dx,
-                                             dy > 0.0 ? dy : dx);
+  surface::HeightGrid g =
+      surface::make_grid(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), dx, dy > 0.0 ? dy : dx);
   for (int j = 0; j < g.ny; ++j)
     for (int i = 0; i < g.nx; ++i) {
       const double v = rows[static_cast<std::size_t>(j)][static_cast<std::size_t>(i)];
@@ -209,16 +216,19 @@ surface::HeightGrid read_hdf5(const std::filesystem::path& path) {
   double dx = 0.0, dy = 0.0;
   try {
     hdf5::Handle f(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "file");
-    if (H5Lexists(f, "z", H5P_DEFAULT) <= 0) throw InputError(file, 0, "/z", "", "missing dataset /z (heights [m], ny x nx)");
+    if (H5Lexists(f, "z", H5P_DEFAULT) <= 0)
+      throw InputError(file, 0, "/z", "", "missing dataset /z (heights [m], ny x nx)");
     hdf5::Handle d(H5Dopen2(f, "/z", H5P_DEFAULT), H5Dclose, "dataset /z");
     hdf5::Handle space(H5Dget_space(d), H5Sclose, "dataspace");
-    if (H5Sget_simple_extent_ndims(space) != 2) throw InputError(file, 0, "/z", "", "/z must be a 2-D dataset (ny x nx)");
+    if (H5Sget_simple_extent_ndims(space) != 2)
+      throw InputError(file, 0, "/z", "", "/z must be a 2-D dataset (ny x nx)");
     H5Sget_simple_extent_dims(space, dims, nullptr);
     if (dims[1] < 2 || dims[0] < 1) throw InputError(file, 0, "/z", "", "/z needs at least 2 points along x");
     if (!hdf5::read_number_attribute(d, "dx", dx) || !(dx > 0.0) || !std::isfinite(dx))
       throw InputError(file, 0, "/z dx", fmt::format("{}", dx), "attribute dx (spacing [m]) must be a positive number");
     if (!hdf5::read_number_attribute(d, "dy", dy)) dy = dx;
-    if (!(dy > 0.0) || !std::isfinite(dy)) throw InputError(file, 0, "/z dy", fmt::format("{}", dy), "attribute dy (spacing [m]) must be positive");
+    if (!(dy > 0.0) || !std::isfinite(dy))
+      throw InputError(file, 0, "/z dy", fmt::format("{}", dy), "attribute dy (spacing [m]) must be positive");
     z.resize(static_cast<std::size_t>(dims[0] * dims[1]));
     hdf5::check(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, z.data()), "read /z");
   } catch (const std::runtime_error& e) {
@@ -242,16 +252,23 @@ TopographyFormat topography_format(const std::filesystem::path& file) {
   if (e == ".xyz" || e == ".asc") return TopographyFormat::xyz;
   if (e == ".csv" || e == ".txt" || e == ".grd") return TopographyFormat::grid;
   if (e == ".h5" || e == ".hdf5") return TopographyFormat::hdf5;
-  throw InputError(file.string(), 0, "", "", "unknown topography format (extensions: .xyz .asc, .csv .txt .grd, .h5 .hdf5)");
+  throw InputError(file.string(), 0, "", "",
+                   "unknown topography format (extensions: .xyz .asc, .csv .txt .grd, .h5 .hdf5)");
 }
 
 surface::HeightGrid read_topography(const std::filesystem::path& file, const TopographyReadOptions& o) {
   if (!std::filesystem::exists(file)) throw InputError(file.string(), 0, "", "", "file not found");
   surface::HeightGrid g;
   switch (topography_format(file)) {
-    case TopographyFormat::xyz: g = read_xyz(file, o); break;
-    case TopographyFormat::grid: g = read_grid(file, o); break;
-    case TopographyFormat::hdf5: g = read_hdf5(file); break;
+    case TopographyFormat::xyz:
+      g = read_xyz(file, o);
+      break;
+    case TopographyFormat::grid:
+      g = read_grid(file, o);
+      break;
+    case TopographyFormat::hdf5:
+      g = read_hdf5(file);
+      break;
   }
   if (o.resample > 0.0 && topography_format(file) != TopographyFormat::xyz) {
     g = surface::resample(g, o.resample);
@@ -282,7 +299,8 @@ void write_topography(const std::filesystem::path& file, const surface::HeightGr
       hdf5::string_attribute(f, "content", "surface heights z[j][i] at x = i dx, y = j dy; NaN: missing point");
       hsize_t dims[2] = {static_cast<hsize_t>(g.ny), static_cast<hsize_t>(g.nx)};
       hdf5::Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose, "dataspace");
-      hdf5::Handle d(H5Dcreate2(f, "/z", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose, "dataset /z");
+      hdf5::Handle d(H5Dcreate2(f, "/z", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
+                     "dataset /z");
       std::vector<double> z(g.z);
       for (std::size_t k = 0; k < z.size(); ++k)
         if (!g.valid[k]) z[k] = kNaN;
@@ -300,8 +318,9 @@ void write_topography(const std::filesystem::path& file, const surface::HeightGr
   if (format == TopographyFormat::xyz) {
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i)
-        out += g.ok(i, j) ? fmt::format("{:.10g} {:.10g} {:.10g}\n", i * g.dx / unit, j * g.dy / unit, g.at(i, j) / unit)
-                          : fmt::format("{:.10g} {:.10g} Bad\n", i * g.dx / unit, j * g.dy / unit);
+        out += g.ok(i, j)
+                   ? fmt::format("{:.10g} {:.10g} {:.10g}\n", i * g.dx / unit, j * g.dy / unit, g.at(i, j) / unit)
+                   : fmt::format("{:.10g} {:.10g} Bad\n", i * g.dx / unit, j * g.dy / unit);
   } else {
     out += fmt::format("# spacing: {:.12g} {}\n# dy: {:.12g} {}\n", g.dx / unit, unit_name, g.dy / unit, unit_name);
     const char sep = file.extension() == ".csv" ? ',' : ' ';

@@ -67,18 +67,30 @@ std::string_view trim(std::string_view s) {
 
 std::string_view dimension_name(Dimension d) {
   switch (d) {
-    case Dimension::dimensionless: return "dimensionless number";
-    case Dimension::length: return "length";
-    case Dimension::area: return "area";
-    case Dimension::areal_density: return "areal density";
-    case Dimension::pressure: return "pressure";
-    case Dimension::force: return "force";
-    case Dimension::torque: return "torque";
-    case Dimension::angle: return "angle";
-    case Dimension::angular_speed: return "angular speed";
-    case Dimension::density: return "density";
-    case Dimension::speed: return "speed";
-    case Dimension::inertia: return "moment of inertia";
+    case Dimension::dimensionless:
+      return "dimensionless number";
+    case Dimension::length:
+      return "length";
+    case Dimension::area:
+      return "area";
+    case Dimension::areal_density:
+      return "areal density";
+    case Dimension::pressure:
+      return "pressure";
+    case Dimension::force:
+      return "force";
+    case Dimension::torque:
+      return "torque";
+    case Dimension::angle:
+      return "angle";
+    case Dimension::angular_speed:
+      return "angular speed";
+    case Dimension::density:
+      return "density";
+    case Dimension::speed:
+      return "speed";
+    case Dimension::inertia:
+      return "moment of inertia";
   }
   return "quantity";
 }
@@ -107,8 +119,8 @@ double parse_quantity(std::string_view text, Dimension d) {
   double value = 0.0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
   if (ec != std::errc{} || end == t.data())
-    throw std::invalid_argument("expected '<number> <unit>' for a " + std::string(dimension_name(d)) + " (units: " +
-                                allowed_units(d) + ")");
+    throw std::invalid_argument("expected '<number> <unit>' for a " + std::string(dimension_name(d)) +
+                                " (units: " + allowed_units(d) + ")");
   if (!std::isfinite(value)) throw std::invalid_argument("value must be finite");
   const std::string_view unit = trim(t.substr(static_cast<std::size_t>(end - t.data())));
   if (unit.empty()) return value;  // bare number: SI
@@ -129,18 +141,30 @@ std::optional<AnyQuantity> parse_any_quantity(std::string_view text) {
 
 std::string_view si_symbol(Dimension d) {
   switch (d) {
-    case Dimension::dimensionless: return "1";
-    case Dimension::length: return "m";
-    case Dimension::area: return "m^2";
-    case Dimension::areal_density: return "1/m^2";
-    case Dimension::pressure: return "Pa";
-    case Dimension::force: return "N";
-    case Dimension::torque: return "N m";
-    case Dimension::angle: return "rad";
-    case Dimension::angular_speed: return "rad/s";
-    case Dimension::density: return "kg/m^3";
-    case Dimension::speed: return "m/s";
-    case Dimension::inertia: return "kg m^2";
+    case Dimension::dimensionless:
+      return "1";
+    case Dimension::length:
+      return "m";
+    case Dimension::area:
+      return "m^2";
+    case Dimension::areal_density:
+      return "1/m^2";
+    case Dimension::pressure:
+      return "Pa";
+    case Dimension::force:
+      return "N";
+    case Dimension::torque:
+      return "N m";
+    case Dimension::angle:
+      return "rad";
+    case Dimension::angular_speed:
+      return "rad/s";
+    case Dimension::density:
+      return "kg/m^3";
+    case Dimension::speed:
+      return "m/s";
+    case Dimension::inertia:
+      return "kg m^2";
   }
   return "1";
 }

@@ -8,7 +8,20 @@
 
 namespace geartrib::io {
 
-enum class Dimension { dimensionless, length, area, areal_density, pressure, force, torque, angle, angular_speed, density, speed, inertia };
+enum class Dimension {
+  dimensionless,
+  length,
+  area,
+  areal_density,
+  pressure,
+  force,
+  torque,
+  angle,
+  angular_speed,
+  density,
+  speed,
+  inertia
+};
 
 std::string_view dimension_name(Dimension d);
 // The units accepted for a dimension, comma separated (for error messages and --help).

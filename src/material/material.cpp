@@ -7,9 +7,7 @@
 namespace geartrib {
 
 void Material::validate() const {
-  auto fail = [&](const std::string& rule) {
-    throw std::invalid_argument("material '" + name + "': " + rule);
-  };
+  auto fail = [&](const std::string& rule) { throw std::invalid_argument("material '" + name + "': " + rule); };
   if (!(youngs_modulus > 0.0)) fail("Young's modulus must be positive");
   if (!(poisson_ratio > 0.0 && poisson_ratio < 0.5)) fail("Poisson's ratio must lie in (0, 0.5)");
   if (!(yield_strength > 0.0)) fail("yield strength must be positive");
@@ -27,7 +25,8 @@ void Material::validate() const {
 }
 
 double Material::flow_stress(double plastic_strain) const {
-  if (flow_curve.empty() || plastic_strain <= 0.0) return flow_curve.empty() ? yield_strength : flow_curve.front().stress;
+  if (flow_curve.empty() || plastic_strain <= 0.0)
+    return flow_curve.empty() ? yield_strength : flow_curve.front().stress;
   const auto it = std::upper_bound(flow_curve.begin(), flow_curve.end(), plastic_strain,
                                    [](double e, const FlowPoint& p) { return e < p.plastic_strain; });
   if (it == flow_curve.end()) return flow_curve.back().stress;

@@ -14,13 +14,13 @@ struct FlowPoint {
 
 struct Material {
   std::string name;
-  double youngs_modulus = 0.0;   // E [Pa]
-  double poisson_ratio = 0.0;    // nu [-], in (0, 0.5)
-  double yield_strength = 0.0;   // sigma_s / S_y [Pa]
-  double hardness = 0.0;         // H [Pa]: 2.8 S_y (Tabor, seed section 2), measured, or 2.8 sigma_f(0.08)
+  double youngs_modulus = 0.0;                // E [Pa]
+  double poisson_ratio = 0.0;                 // nu [-], in (0, 0.5)
+  double yield_strength = 0.0;                // sigma_s / S_y [Pa]
+  double hardness = 0.0;                      // H [Pa]: 2.8 S_y (Tabor, seed section 2), measured, or 2.8 sigma_f(0.08)
   std::string hardness_rule = "tabor-yield";  // "tabor-yield" (2.8 S_y), "flow-curve" or "given"
-  double density = 0.0;          // [kg/m^3]
-  std::vector<FlowPoint> flow_curve;  // plastic part of the stress-strain curve (seed section 6)
+  double density = 0.0;                       // [kg/m^3]
+  std::vector<FlowPoint> flow_curve;          // plastic part of the stress-strain curve (seed section 6)
 
   // Throws std::invalid_argument naming the first rule broken (positive moduli, 0 < nu < 0.5,
   // H >= S_y, flow curve starting at zero strain with strictly increasing strain and

@@ -45,7 +45,8 @@ long CvodeIntegrator::integrate(const OdeSystem& system, double t0, double t1, s
   auto ls = owned(SUNLinSol_Dense(yv.get(), mat.get(), ctx.get()), SUNLinSolFree);
   Data data{&system, {}, std::vector<double>(static_cast<std::size_t>(n))};
   auto check = [](int flag, const char* what) {
-    if (flag < 0) throw std::runtime_error(std::string("CVODE: ") + what + " failed (flag " + std::to_string(flag) + ")");
+    if (flag < 0)
+      throw std::runtime_error(std::string("CVODE: ") + what + " failed (flag " + std::to_string(flag) + ")");
   };
   check(CVodeInit(mem.get(), rhs, t0, yv.get()), "CVodeInit");
   check(CVodeSetUserData(mem.get(), &data), "CVodeSetUserData");
@@ -53,7 +54,9 @@ long CvodeIntegrator::integrate(const OdeSystem& system, double t0, double t1, s
   check(CVodeSetLinearSolver(mem.get(), ls.get(), mat.get()), "CVodeSetLinearSolver");
   check(CVodeSetMaxNumSteps(mem.get(), 1000000), "CVodeSetMaxNumSteps");
   check(CVodeSetStopTime(mem.get(), t1), "CVodeSetStopTime");  // the right-hand side jumps at t1
-  check(CVodeSetErrHandlerFn(mem.get(), [](int, const char*, const char*, char*, void*) {}, nullptr), "CVodeSetErrHandlerFn");
+  check(CVodeSetErrHandlerFn(
+            mem.get(), [](int, const char*, const char*, char*, void*) {}, nullptr),
+        "CVodeSetErrHandlerFn");
   realtype t = t0;
   for (double ts : sample_times) {
     if (ts <= t0) {

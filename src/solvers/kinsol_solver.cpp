@@ -45,7 +45,6 @@ int jacobian(N_Vector y, N_Vector, SUNMatrix jac, void* data, N_Vector, N_Vector
   return 0;
 }
 
-
 }  // namespace
 
 NonlinearSolveSummary KinsolSolver::solve(const NonlinearSystem& system, Eigen::VectorXd& y,
@@ -75,7 +74,9 @@ NonlinearSolveSummary KinsolSolver::solve(const NonlinearSystem& system, Eigen::
   check(KINSetScaledStepTol(mem.get(), 1e-15), "KINSetScaledStepTol");
   check(KINSetNumMaxIters(mem.get(), options.max_iterations), "KINSetNumMaxIters");
   check(KINSetMaxSetupCalls(mem.get(), 1), "KINSetMaxSetupCalls");  // exact Newton: fresh Jacobian each step
-  check(KINSetErrHandlerFn(mem.get(), [](int, const char*, const char*, char*, void*) {}, nullptr), "KINSetErrHandlerFn");
+  check(KINSetErrHandlerFn(
+            mem.get(), [](int, const char*, const char*, char*, void*) {}, nullptr),
+        "KINSetErrHandlerFn");
 
   const int flag = KINSol(mem.get(), yv.get(), KIN_LINESEARCH, scale.get(), scale.get());
   long iters = 0;

@@ -73,7 +73,8 @@ CylinderReduction reduce_to_cylinders(const HeightGrid& g, double lay_angle, dou
     for (std::size_t i = 0; i < count; ++i) sd += std::pow(get(r.asperities[i]) - mu, 2);
     sd = count > 1 ? std::sqrt(sd / (count - 1)) : 0.0;
   };
-  stats([](const CylinderAsperityFit& f) { return f.tip_radius; }, r.asperities.size(), r.mean_tip_radius, r.sd_tip_radius);
+  stats([](const CylinderAsperityFit& f) { return f.tip_radius; }, r.asperities.size(), r.mean_tip_radius,
+        r.sd_tip_radius);
   stats([](const CylinderAsperityFit& f) { return f.height; }, r.asperities.size(), r.mean_height, r.sd_height);
   stats([](const CylinderAsperityFit& f) { return f.spacing; }, r.asperities.empty() ? 0 : r.asperities.size() - 1,
         r.mean_spacing, r.sd_spacing);

@@ -9,16 +9,16 @@
 namespace geartrib::surface {
 
 struct CylinderAsperityFit {
-  double centre = 0.0;       // across the lay [m]
-  double height = 0.0;       // tip height above the mean line [m]
-  double tip_radius = 0.0;   // R_m [m]
-  double spacing = 0.0;      // to the next asperity [m] (0 for the last)
+  double centre = 0.0;      // across the lay [m]
+  double height = 0.0;      // tip height above the mean line [m]
+  double tip_radius = 0.0;  // R_m [m]
+  double spacing = 0.0;     // to the next asperity [m] (0 for the last)
 };
 
 struct CylinderReduction {
-  bool lay_along_y = true;               // the lay snapped to the nearer grid axis
-  std::vector<double> profile;           // mean profile across the lay [m]
-  double spacing_step = 0.0;             // its sampling step [m]
+  bool lay_along_y = true;      // the lay snapped to the nearer grid axis
+  std::vector<double> profile;  // mean profile across the lay [m]
+  double spacing_step = 0.0;    // its sampling step [m]
   std::vector<CylinderAsperityFit> asperities;
   double mean_tip_radius = 0.0, sd_tip_radius = 0.0;
   double mean_spacing = 0.0, sd_spacing = 0.0;

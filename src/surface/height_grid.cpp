@@ -192,18 +192,21 @@ HeightGrid resample(const HeightGrid& g, double spacing) {
   const double lx = (g.nx - 1) * g.dx, ly = (g.ny - 1) * g.dy;
   const int nx = static_cast<int>(std::floor(lx / spacing * (1 + 1e-12))) + 1;
   const int ny = static_cast<int>(std::floor(ly / spacing * (1 + 1e-12))) + 1;
-  if (static_cast<double>(nx) * ny > 1e8) throw std::invalid_argument("resampling spacing too small: more than 1e8 grid points");
+  if (static_cast<double>(nx) * ny > 1e8)
+    throw std::invalid_argument("resampling spacing too small: more than 1e8 grid points");
   HeightGrid r = make_grid(std::max(nx, 2), ny, spacing, spacing);
   for (int j = 0; j < r.ny; ++j)
     for (int i = 0; i < r.nx; ++i) {
-      const double u = std::min(i * spacing / g.dx, g.nx - 1.0), v = g.ny > 1 ? std::min(j * spacing / g.dy, g.ny - 1.0) : 0.0;
-      const int i0 = std::min(static_cast<int>(u), g.nx - 2), j0 = g.ny > 1 ? std::min(static_cast<int>(v), g.ny - 2) : 0;
+      const double u = std::min(i * spacing / g.dx, g.nx - 1.0),
+                   v = g.ny > 1 ? std::min(j * spacing / g.dy, g.ny - 1.0) : 0.0;
+      const int i0 = std::min(static_cast<int>(u), g.nx - 2),
+                j0 = g.ny > 1 ? std::min(static_cast<int>(v), g.ny - 2) : 0;
       const int j1 = g.ny > 1 ? j0 + 1 : 0;
       const double fu = u - i0, fv = g.ny > 1 ? v - j0 : 0.0;
       const bool ok = g.ok(i0, j0) && g.ok(i0 + 1, j0) && g.ok(i0, j1) && g.ok(i0 + 1, j1);
       r.valid[static_cast<std::size_t>(j) * r.nx + i] = ok;
-      r.at(i, j) = ok ? (1 - fu) * (1 - fv) * g.at(i0, j0) + fu * (1 - fv) * g.at(i0 + 1, j0) + (1 - fu) * fv * g.at(i0, j1) +
-                            fu * fv * g.at(i0 + 1, j1)
+      r.at(i, j) = ok ? (1 - fu) * (1 - fv) * g.at(i0, j0) + fu * (1 - fv) * g.at(i0 + 1, j0) +
+                            (1 - fu) * fv * g.at(i0, j1) + fu * fv * g.at(i0 + 1, j1)
                       : 0.0;
     }
   return r;
@@ -211,7 +214,8 @@ HeightGrid resample(const HeightGrid& g, double spacing) {
 
 void CleanupOptions::validate() const {
   if (form_degree < 0 || form_degree > 6) throw std::invalid_argument("form degree must lie in [0, 6]");
-  if (!(waviness_cutoff >= 0.0) || !std::isfinite(waviness_cutoff)) throw std::invalid_argument("waviness cut-off must be >= 0");
+  if (!(waviness_cutoff >= 0.0) || !std::isfinite(waviness_cutoff))
+    throw std::invalid_argument("waviness cut-off must be >= 0");
   if (!(outlier_limit == 0.0 || outlier_limit >= 2.0) || !std::isfinite(outlier_limit))
     throw std::invalid_argument("outlier limit must be 0 (off) or at least 2 robust standard deviations");
 }

@@ -9,8 +9,8 @@ namespace geartrib::surface {
 
 struct HeightGrid {
   int nx = 0, ny = 0;
-  double dx = 0.0, dy = 0.0;    // spacing [m]
-  std::vector<double> z;        // heights [m], z[j * nx + i] at x = i dx, y = j dy
+  double dx = 0.0, dy = 0.0;        // spacing [m]
+  std::vector<double> z;            // heights [m], z[j * nx + i] at x = i dx, y = j dy
   std::vector<std::uint8_t> valid;  // 1 where measured, 0 where missing
 
   double& at(int i, int j) { return z[static_cast<std::size_t>(j) * nx + i]; }
@@ -48,11 +48,11 @@ HeightGrid resample(const HeightGrid& g, double spacing);
 // The clean-up pipeline of seed section 4, in this order: outliers masked, missing points filled
 // (optional), polynomial form removed, waviness split off by the Gaussian filter (optional).
 struct CleanupOptions {
-  int form_degree = 2;          // 0: none, 1: plane, 2+: polynomial (an involute flank is curved)
-  double waviness_cutoff = 0;   // Gaussian cut-off lambda_c [m]; 0: no filter
-  double outlier_limit = 0;     // k robust standard deviations; 0: keep all points
-  bool fill = false;            // fill missing points (else they stay masked)
-  void validate() const;        // throws std::invalid_argument
+  int form_degree = 2;         // 0: none, 1: plane, 2+: polynomial (an involute flank is curved)
+  double waviness_cutoff = 0;  // Gaussian cut-off lambda_c [m]; 0: no filter
+  double outlier_limit = 0;    // k robust standard deviations; 0: keep all points
+  bool fill = false;           // fill missing points (else they stay masked)
+  void validate() const;       // throws std::invalid_argument
 };
 struct CleanupReport {
   std::size_t missing_in = 0;   // points missing in the input

@@ -13,22 +13,22 @@ enum class HeightDistribution { gaussian, exponential };
 // One flank's roughness, in one of three forms (SI).
 struct FlankRoughness {
   enum class Form { ra, rq, summits, spectral } form = Form::ra;
-  double summit_radius = 0.0;   // beta [m] (all forms but spectral, where McCool's relations give it)
-  double ra = 0.0;              // [m] (form ra)
-  double rq = 0.0;              // [m] (form rq)
-  double summit_density = 0.0;  // eta [1/m^2] (form summits)
-  double summit_sigma = 0.0;    // std deviation of summit heights [m] (form summits)
+  double summit_radius = 0.0;           // beta [m] (all forms but spectral, where McCool's relations give it)
+  double ra = 0.0;                      // [m] (form ra)
+  double rq = 0.0;                      // [m] (form rq)
+  double summit_density = 0.0;          // eta [1/m^2] (form summits)
+  double summit_sigma = 0.0;            // std deviation of summit heights [m] (form summits)
   double m0 = 0.0, m2 = 0.0, m4 = 0.0;  // spectral moments [m^2], [-], [1/m^2] (form spectral)
 };
 
 // The equivalent rough surface: summits of one radius with normally (or exponentially)
 // distributed heights against a flat.
 struct EquivalentSurface {
-  double summit_density = 0.0;       // eta [1/m^2]
-  double summit_radius = 0.0;        // beta [m]
-  double summit_sigma = 0.0;         // sigma_s [m]
-  double surface_sigma = 0.0;        // sigma of the surface heights (composite Rq) [m]
-  double summit_mean_height = 0.0;   // mean summit height above the mean plane of the surface [m]
+  double summit_density = 0.0;      // eta [1/m^2]
+  double summit_radius = 0.0;       // beta [m]
+  double summit_sigma = 0.0;        // sigma_s [m]
+  double surface_sigma = 0.0;       // sigma of the surface heights (composite Rq) [m]
+  double summit_mean_height = 0.0;  // mean summit height above the mean plane of the surface [m]
   HeightDistribution distribution = HeightDistribution::gaussian;
   // Dimensionless GW product eta sigma_s beta.
   double eta_sigma_beta() const { return summit_density * summit_sigma * summit_radius; }

@@ -65,7 +65,8 @@ SurfaceStatistics surface_statistics(const HeightGrid& g) {
   for (int j = 1; j + 1 < g.ny; ++j)
     for (int i = 1; i + 1 < g.nx; ++i) {
       if (!(g.ok(i - 1, j) && g.ok(i + 1, j) && g.ok(i, j - 1) && g.ok(i, j + 1))) continue;
-      const double zx = (g.at(i + 1, j) - g.at(i - 1, j)) / (2.0 * g.dx), zy = (g.at(i, j + 1) - g.at(i, j - 1)) / (2.0 * g.dy);
+      const double zx = (g.at(i + 1, j) - g.at(i - 1, j)) / (2.0 * g.dx),
+                   zy = (g.at(i, j + 1) - g.at(i, j - 1)) / (2.0 * g.dy);
       sxx += zx * zx, sxy += zx * zy, syy += zy * zy;
       ++ns;
     }
@@ -91,7 +92,8 @@ SurfaceStatistics surface_statistics(const HeightGrid& g) {
         const double zy = (g.at(i, j + 1) - g.at(i, j - 1)) / (2.0 * g.dy);
         const double zxx = (g.at(i + 1, j) - 2.0 * g.at(i, j) + g.at(i - 1, j)) / (g.dx * g.dx);
         const double zyy = (g.at(i, j + 1) - 2.0 * g.at(i, j) + g.at(i, j - 1)) / (g.dy * g.dy);
-        const double zxy = (g.at(i + 1, j + 1) - g.at(i + 1, j - 1) - g.at(i - 1, j + 1) + g.at(i - 1, j - 1)) / (4.0 * g.dx * g.dy);
+        const double zxy =
+            (g.at(i + 1, j + 1) - g.at(i + 1, j - 1) - g.at(i - 1, j + 1) + g.at(i - 1, j - 1)) / (4.0 * g.dx * g.dy);
         const double d1 = c * zx + sn * zy, d2 = c * c * zxx + 2.0 * c * sn * zxy + sn * sn * zyy;
         a2 += d1 * d1, a4 += d2 * d2;
         ++cnt;

@@ -12,9 +12,9 @@ namespace geartrib::surface {
 struct SurfaceStatistics {
   std::size_t points = 0, missing = 0;
   double ra = 0, rq = 0, rsk = 0, rku = 0;  // about the mean plane [m], [-]
-  double rz = 0;           // mean over the profiles across the lay of ISO 4287 Rz (5 sampling lengths) [m]
-  double lay_angle = 0;    // direction of the lay (smallest slope variance) from the x axis [rad], in (-pi/2, pi/2]
-  double m0 = 0;           // variance of heights [m^2]
+  double rz = 0;         // mean over the profiles across the lay of ISO 4287 Rz (5 sampling lengths) [m]
+  double lay_angle = 0;  // direction of the lay (smallest slope variance) from the x axis [rad], in (-pi/2, pi/2]
+  double m0 = 0;         // variance of heights [m^2]
   double m2_along = 0, m4_along = 0;    // slope and curvature variances along the lay [-], [1/m^2]
   double m2_across = 0, m4_across = 0;  // ... across the lay
   // Summits: interior points higher than their eight neighbours.
@@ -31,9 +31,9 @@ SurfaceStatistics surface_statistics(const HeightGrid& g);
 
 // A summit: an interior valid point strictly higher than its eight neighbours (all valid).
 struct Summit {
-  double x = 0, y = 0;   // position [m]
-  double height = 0;     // above `mean_plane` [m]
-  double radius = 0;     // 1 / mean curvature -(z_xx + z_yy)/2 by central differences [m]
+  double x = 0, y = 0;  // position [m]
+  double height = 0;    // above `mean_plane` [m]
+  double radius = 0;    // 1 / mean curvature -(z_xx + z_yy)/2 by central differences [m]
 };
 std::vector<Summit> find_summits(const HeightGrid& g, double mean_plane);
 

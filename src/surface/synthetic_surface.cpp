@@ -15,7 +15,8 @@ constexpr double kPi = std::numbers::pi;
 }
 
 HeightGrid self_affine_surface(const SelfAffineSpec& s) {
-  if (s.nx < 8 || s.ny < 8 || !(s.spacing > 0.0) || !(s.rq > 0.0)) throw std::invalid_argument("bad self-affine surface size");
+  if (s.nx < 8 || s.ny < 8 || !(s.spacing > 0.0) || !(s.rq > 0.0))
+    throw std::invalid_argument("bad self-affine surface size");
   if (!(s.hurst > 0.0 && s.hurst < 1.0)) throw std::invalid_argument("Hurst exponent must lie in (0, 1)");
   if (!(s.cutoff_wavelength >= 2.0 * s.spacing && s.rolloff_wavelength > s.cutoff_wavelength))
     throw std::invalid_argument("need 2 spacings <= cut-off wavelength < roll-off wavelength");

@@ -14,13 +14,13 @@ namespace geartrib::surface {
 // `lay_angle` from the x axis); scaled to the root-mean-square height `rq`.
 struct SelfAffineSpec {
   int nx = 256, ny = 256;
-  double spacing = 0.5e-6;       // [m]
-  double rq = 0.3e-6;            // [m]
+  double spacing = 0.5e-6;  // [m]
+  double rq = 0.3e-6;       // [m]
   double hurst = 0.8;
   double rolloff_wavelength = 30e-6;  // [m]
   double cutoff_wavelength = 2e-6;    // [m], >= 2 spacings
   double anisotropy = 1.0;
-  double lay_angle = 0.0;        // [rad]
+  double lay_angle = 0.0;  // [rad]
   std::uint64_t seed = 1;
 };
 HeightGrid self_affine_surface(const SelfAffineSpec& s);
@@ -30,10 +30,10 @@ HeightGrid self_affine_surface(const SelfAffineSpec& s);
 // `noise_rq`.
 struct HobbedSpec {
   int nx = 512, ny = 64;
-  double spacing = 0.1e-6;      // [m]
-  double wavelength = 5e-6;     // ridge spacing [m]
-  double tip_radius = 6.6e-6;   // [m]
-  double noise_rq = 0.0;        // [m]
+  double spacing = 0.1e-6;     // [m]
+  double wavelength = 5e-6;    // ridge spacing [m]
+  double tip_radius = 6.6e-6;  // [m]
+  double noise_rq = 0.0;       // [m]
   std::uint64_t seed = 1;
 };
 HeightGrid hobbed_surface(const HobbedSpec& s);

@@ -63,10 +63,15 @@ static void hertz_line_contact(benchmark::State& state) {
   double peak = 0.0, half_width = 0.0;
   for (int i = 0; i < n; ++i) {
     peak = std::max(peak, sol.pressure[static_cast<std::size_t>(i)]);
-    if (sol.pressure[static_cast<std::size_t>(i)] > 0.0) half_width = std::max(half_width, std::abs(grid.x(i)) + 0.5 * grid.spacing);
+    if (sol.pressure[static_cast<std::size_t>(i)] > 0.0)
+      half_width = std::max(half_width, std::abs(grid.x(i)) + 0.5 * grid.spacing);
   }
   state.counters["iterations"] = sol.iterations;
-  state.counters["error_peak"] = std::abs(peak / p0 - 1.0);          // against Hertz p0 = 2w/(pi b)
+  state.counters["error_peak"] = std::abs(peak / p0 - 1.0);             // against Hertz p0 = 2w/(pi b)
   state.counters["error_half_width"] = std::abs(half_width / b - 1.0);  // outermost loaded element's edge
 }
-BENCHMARK(hertz_line_contact)->RangeMultiplier(4)->Range(1 << 12, 1 << 18)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(hertz_line_contact)
+    ->RangeMultiplier(4)
+    ->Range(1 << 12, 1 << 18)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);

@@ -19,9 +19,7 @@ const Case& reference_case() {
 constexpr double kSpeed = 1000.0 * 2.0 * std::numbers::pi / 60.0;
 
 const gear::SteadyCycle& reference_cycle(const gear::MeshDynamics& dyn) {
-  static const gear::SteadyCycle r = [&] {
-    return dyn.steady_cycle(*solvers::make_integrator("cvode"), kSpeed);
-  }();
+  static const gear::SteadyCycle r = [&] { return dyn.steady_cycle(*solvers::make_integrator("cvode"), kSpeed); }();
   return r;
 }
 
@@ -38,7 +36,8 @@ void steady_cycle(benchmark::State& state, const char* engine) {
   gear::SteadyCycle c;
   for (auto _ : state) c = dyn.steady_cycle(*integrator, kSpeed);
   double error = 0.0;
-  for (std::size_t i = 0; i < c.force.size(); ++i) error = std::max(error, std::abs(c.force[i] - ref.force[i]) / c.static_force);
+  for (std::size_t i = 0; i < c.force.size(); ++i)
+    error = std::max(error, std::abs(c.force[i] - ref.force[i]) / c.static_force);
   state.counters["rtol_exp"] = -static_cast<double>(state.range(0));
   state.counters["error"] = error;
   state.counters["steps"] = static_cast<double>(c.steps);

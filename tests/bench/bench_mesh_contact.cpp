@@ -80,8 +80,8 @@ void strip_highest_asperity(benchmark::State& state) {
   const Setup& s = setup();
   const contact::RoughLineContact strip(*s.gw, s.mesh.composite_modulus(), s.c.gear_pair.face_width, {}, nullptr);
   const contact::StripResult r = strip.solve(s.line_load, s.radius);
-  const auto side = asperity::side_contact_geometry(s.c.pinion.flank.roughness.summit_radius, s.c.wheel.flank.roughness.summit_radius,
-                                                    s.c.friction_coefficient);
+  const auto side = asperity::side_contact_geometry(s.c.pinion.flank.roughness.summit_radius,
+                                                    s.c.wheel.flank.roughness.summit_radius, s.c.friction_coefficient);
   for (auto _ : state) benchmark::DoNotOptimize(contact::highest_asperity(*s.gw, r, s.c.gear_pair.face_width, &side));
 }
 
