@@ -25,10 +25,19 @@ std::filesystem::path default_case_file() {
   return std::filesystem::path(GEARTRIB_SOURCE_DIR) / local;
 }
 
-Case load_case_reporting(const CaseOptions& o, unsigned parts) {
+std::filesystem::path case_path(const CaseOptions& o) {
+  return o.file.empty() ? default_case_file() : std::filesystem::path(o.file);
+}
+
+std::vector<io::CaseChange> case_changes(const CaseOptions& o) {
   std::vector<io::CaseChange> parsed;
+  parsed.reserve(o.changes.size());
   for (const auto& text : o.changes) parsed.push_back(io::parse_case_change(text));
-  Case c = io::load_case(o.file.empty() ? default_case_file() : std::filesystem::path(o.file), parsed, parts);
+  return parsed;
+}
+
+Case load_case_reporting(const CaseOptions& o, unsigned parts) {
+  Case c = io::load_case(case_path(o), case_changes(o), parts);
   for (const auto& w : c.warnings) std::cerr << w << '\n';
   return c;
 }

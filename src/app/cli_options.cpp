@@ -20,17 +20,17 @@ void add_case_option(CLI::App* cmd, CaseOptions& o) {
 
 void add_table_options(CLI::App* cmd, TableOptions& o) {
   add_output_option(cmd, o.output, "the table, written atomically (default: standard output)");
-  o.csv = add_csv_option(cmd, o.csv_file,
-                         "the table as CSV (header, full precision): to FILE, or without one in place\n"
-                         "of the aligned table");
+  add_csv_option(cmd, o.csv,
+                 "the table as CSV (header, full precision): to FILE, or without one in place\n"
+                 "of the aligned table");
 }
 
 void add_output_option(CLI::App* cmd, std::string& file, const std::string& what) {
   cmd->add_option("-o,--output", file, "FILE: " + what);
 }
 
-CLI::Option* add_csv_option(CLI::App* cmd, std::string& file, const std::string& what) {
-  return cmd->add_option("--csv", file, "[FILE]: " + what)->expected(0, 1);
+void add_csv_option(CLI::App* cmd, CsvOption& csv, const std::string& what) {
+  csv.option = cmd->add_option("--csv", csv.file, "[FILE]: " + what)->expected(0, 1);
 }
 
 void add_quiet_flag(CLI::App* cmd, bool& quiet) {
@@ -42,14 +42,8 @@ void add_threads_option(CLI::App* cmd, int& threads) {
 }
 
 void emit_table(const io::Table& t, const TableOptions& o) {
-  const bool csv_file = !o.csv_file.empty() && o.csv_file != "-";
-  if (csv_file) io::write_file_atomically(o.csv_file, io::format_csv(t));
-  const bool csv_in_place = o.csv_given() && !csv_file;
-  if (csv_file && o.output.empty() && !csv_in_place) {
-    std::cout << io::format_text(t);  // the aligned table still goes to the terminal
-    return;
-  }
-  io::output_table(t, csv_in_place, o.output);
+  if (o.csv.to_file()) io::write_file_atomically(o.csv.file, io::format_csv(t));
+  io::output_table(t, o.csv.in_place(), o.output);
 }
 
 double quantity_option(const std::string& option, const std::string& text, io::Dimension d) {

@@ -26,19 +26,26 @@ struct CaseOptions {
 void add_case_argument(CLI::App* cmd, CaseOptions& o);  // positional CASE and --set
 void add_case_option(CLI::App* cmd, CaseOptions& o);    // --case FILE and --set
 
+// --csv [FILE]: whether it was given, and where the CSV goes.
+struct CsvOption {
+  std::string file;                     // --csv FILE; empty or "-": CSV where the table goes
+  const CLI::Option* option = nullptr;  // set by add_csv_option
+  bool given() const { return option && option->count() > 0; }
+  bool to_file() const { return !file.empty() && file != "-"; }  // a CSV file besides the table
+  bool in_place() const { return given() && !to_file(); }        // CSV instead of the aligned table
+};
+
 // Where a command's table goes: -o FILE (or stdout), and --csv [FILE].
 struct TableOptions {
   std::string output;
-  std::string csv_file;              // --csv FILE; empty or "-": CSV where the table goes
-  const CLI::Option* csv = nullptr;  // set by add_table_options
-  bool csv_given() const { return csv && csv->count() > 0; }
+  CsvOption csv;
 };
 void add_table_options(CLI::App* cmd, TableOptions& o);
 // -o FILE for a command whose result is a file of its own (HDF5, a surface); `what` says which
 // (the help reads "FILE: <what>").
 void add_output_option(CLI::App* cmd, std::string& file, const std::string& what);
 // --csv [FILE] for commands whose table is beside another result (run, sweep): "[FILE]: <what>".
-CLI::Option* add_csv_option(CLI::App* cmd, std::string& file, const std::string& what);
+void add_csv_option(CLI::App* cmd, CsvOption& csv, const std::string& what);
 void add_quiet_flag(CLI::App* cmd, bool& quiet);
 void add_threads_option(CLI::App* cmd, int& threads);
 

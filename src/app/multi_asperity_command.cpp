@@ -152,12 +152,12 @@ void run(const Options& o) {
   totals.add_row("iterations", {static_cast<double>(r.iterations)});
   totals.add_row("complementarity_error", {r.complementarity_error});
   // Two tables, one after the other (a blank line between).
-  const bool csv = o.table.csv_given() && (o.table.csv_file.empty() || o.table.csv_file == "-");
+  const bool csv = o.table.csv.in_place();
   auto both = [&](bool as_csv) {
     return (as_csv ? io::format_csv(t) : io::format_text(t)) + "\n" +
            (as_csv ? io::format_csv(totals) : io::format_text(totals));
   };
-  if (!o.table.csv_file.empty() && o.table.csv_file != "-") io::write_file_atomically(o.table.csv_file, both(true));
+  if (o.table.csv.to_file()) io::write_file_atomically(o.table.csv.file, both(true));
   if (o.table.output.empty()) std::cout << both(csv);
   else io::write_file_atomically(o.table.output, both(csv));
 }

@@ -22,8 +22,7 @@ namespace {
 struct Options {
   CaseOptions case_options;
   std::string output;
-  std::string csv;
-  const CLI::Option* csv_option = nullptr;
+  CsvOption csv;
   std::optional<int> positions;
   std::string fidelity;
   bool quiet = false;
@@ -72,13 +71,12 @@ void run(const Options& o) {
   ProgressBar bar(!o.quiet, "positions");
   const contact::MeshContactResult r = run_mesh_cycle(c, [&](int done, int total) { bar(done, total); });
 
-  const std::string case_file = co.file.empty() ? default_case_file().string() : co.file;
+  const std::string case_file = case_path(co).string();
   const std::filesystem::path out =
       o.output.empty() ? std::filesystem::path(std::filesystem::path(case_file).stem().string() + ".h5")
                        : std::filesystem::path(o.output);
   io::write_mesh_contact_hdf5(out, r, case_file, c);
-  const bool csv_to_stdout = o.csv_option->count() > 0 && (o.csv.empty() || o.csv == "-");
-  if (o.csv_option->count() > 0) {
+  if (o.csv.given()) {
     io::Table t;
     for (const auto* group : {&r.mesh, &r.contact, &r.validity})
       for (const auto& q : *group) t.header.push_back(q.name);
@@ -88,8 +86,8 @@ void run(const Options& o) {
         for (const auto& q : *group) row.push_back(q.values[i]);
       t.rows.push_back(std::move(row));
     }
-    io::output_table(t, true, csv_to_stdout ? "" : o.csv);
-    if (csv_to_stdout) return;  // standard output holds the table only
+    io::output_table(t, true, o.csv.to_file() ? o.csv.file : "");
+    if (o.csv.in_place()) return;  // standard output holds the table only
   }
   for (const auto& w : r.warnings) std::cerr << "warning: " << w << '\n';
   if (!r.verdict.empty()) fmt::print("Validity: {}\n", r.verdict);
@@ -104,7 +102,7 @@ void run(const Options& o) {
             g->flank.roughness.summit_radius * 1e6, g->flank.roughness.summit_sigma * 1e6);
     print_summary(r);
   }
-  fmt::print("wrote {}{}\n", out.string(), o.csv.empty() || o.csv == "-" ? "" : " and " + o.csv);
+  fmt::print("wrote {}{}\n", out.string(), o.csv.to_file() ? " and " + o.csv.file : "");
 }
 
 }  // namespace
@@ -122,9 +120,9 @@ void add_run_command(CLI::App& app) {
       "their times) and prints each quantity's extremes and where on the path they occur.");
   add_case_argument(cmd, o->case_options);
   add_output_option(cmd, o->output, "the HDF5 results (default: <case name>.h5 in the working directory)");
-  o->csv_option = add_csv_option(cmd, o->csv,
-                                 "the per-position table as CSV besides the HDF5: to FILE, or without one to\n"
-                                 "standard output in place of the summary");
+  add_csv_option(cmd, o->csv,
+                 "the per-position table as CSV besides the HDF5: to FILE, or without one to\n"
+                 "standard output in place of the summary");
   cmd->add_option("--positions", o->positions, "N: shorthand for --set contact.positions=N (default 201)")
       ->check(CLI::Range(2, 100000));
   cmd->add_option("--fidelity", o->fidelity, "uncoupled or coupled: shorthand for --set contact.fidelity=...")

@@ -280,9 +280,9 @@ void add_surface_command(CLI::App& app) {
   eq->add_option("--mirror", e->mirror,
                  "Axis the upper flank is mirrored about: x (default), y, or none (already in the lower's frame)")
       ->check(CLI::IsMember({"x", "y", "none"}));
-  e->table.csv = add_csv_option(eq, e->table.csv_file,
-                                "the statistics as CSV: to FILE, or without one to standard output in place\n"
-                                "of the aligned table");
+  add_csv_option(eq, e->table.csv,
+                 "the statistics as CSV: to FILE, or without one to standard output in place\n"
+                 "of the aligned table");
   add_surface_input_options(eq, e->input);
   eq->callback([e] { equivalent(*e); });
 

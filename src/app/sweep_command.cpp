@@ -34,8 +34,7 @@ struct Options {
   std::string shard;
   int threads = 0;
   std::string output;
-  std::string csv;
-  const CLI::Option* csv_option = nullptr;
+  CsvOption csv;
   std::vector<std::string> merge;
   bool quiet = false;
 };
@@ -169,8 +168,8 @@ std::string signature(const std::string& scene, const std::string& plan) {
 
 void write_outputs(const io::ColumnTableFile& f, const Options& o) {
   io::write_column_table_hdf5(o.output.empty() ? "sweep.h5" : o.output, f);
-  if (!o.csv.empty() && o.csv != "-") io::write_file_atomically(o.csv, io::format_csv(f.table));
-  else if (o.csv_option && o.csv_option->count() > 0) std::cout << io::format_csv(f.table);
+  if (o.csv.to_file()) io::write_file_atomically(o.csv.file, io::format_csv(f.table));
+  else if (o.csv.in_place()) std::cout << io::format_csv(f.table);
 }
 
 void print_summary(const io::ColumnTable& t, const std::string& output) {
@@ -253,8 +252,7 @@ void run(const Options& o) {
   for (const auto& s : o.sets) plan.axes.push_back(io::parse_sweep_axis(s));
   plan.validate();
   const io::Shard shard = o.shard.empty() ? io::Shard{} : io::parse_shard(o.shard);
-  const std::filesystem::path case_file =
-      o.case_file.empty() ? default_case_file() : std::filesystem::path(o.case_file);
+  const std::filesystem::path case_file = case_path(CaseOptions{o.case_file, {}});
   // The base case must load: an error there is the user's, not a point's.
   const Case base = load_case_reporting(CaseOptions{case_file.string(), {}});
 
@@ -329,9 +327,9 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--shard", o->shard, "Run only points with index % n == i: i/n with 0 <= i < n");
   add_threads_option(cmd, o->threads);
   add_output_option(cmd, o->output, "the HDF5 table of points (default: sweep.h5)");
-  o->csv_option = add_csv_option(cmd, o->csv,
-                                 "the table of points as CSV besides the HDF5: to FILE, or without one to\n"
-                                 "standard output");
+  add_csv_option(cmd, o->csv,
+                 "the table of points as CSV besides the HDF5: to FILE, or without one to\n"
+                 "standard output");
   cmd->add_option("--merge", o->merge, "Join shard files (all shards of one sweep) into -o instead of running")
       ->check(CLI::ExistingFile);
   add_quiet_flag(cmd, o->quiet);

@@ -167,11 +167,9 @@ Row compare(const std::string& knob, const std::string& setting, const Timed& t,
 }
 
 void run(const Options& o) {
-  const std::filesystem::path case_file =
-      o.case_options.file.empty() ? default_case_file() : std::filesystem::path(o.case_options.file);
+  const std::filesystem::path case_file = case_path(o.case_options);
   const Case base = load_case_reporting(o.case_options);
-  std::vector<io::CaseChange> given;
-  for (const auto& text : o.case_options.changes) given.push_back(io::parse_case_change(text));
+  const std::vector<io::CaseChange> given = case_changes(o.case_options);
   std::vector<Knob> knobs = knobs_of(base);
   if (!o.knobs.empty()) {
     std::erase_if(knobs,
@@ -229,9 +227,9 @@ void run(const Options& o) {
   }
   const std::string& output = o.table.output;
   const bool png = output.size() > 4 && output.substr(output.size() - 4) == ".png";
-  const bool csv_file = !o.table.csv_file.empty() && o.table.csv_file != "-";
-  if (csv_file) io::write_file_atomically(o.table.csv_file, io::format_csv(t));
-  if (o.table.csv_given() && !csv_file && !png) {
+  const CsvOption& csv_option = o.table.csv;
+  if (csv_option.to_file()) io::write_file_atomically(csv_option.file, io::format_csv(t));
+  if (csv_option.in_place() && !png) {
     const std::string text = io::format_csv(t);
     if (output.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
     else io::write_file_atomically(output, text);
@@ -252,9 +250,10 @@ void run(const Options& o) {
   }
   if (png) {
     // The Pareto plot by scripts/plot_tradeoff.py from the CSV table (matplotlib).
-    const std::filesystem::path csv = csv_file ? std::filesystem::path(o.table.csv_file)
-                                               : std::filesystem::path(output.substr(0, output.size() - 4) + ".csv");
-    if (!csv_file) io::write_file_atomically(csv, io::format_csv(t));
+    const std::filesystem::path csv = csv_option.to_file()
+                                          ? std::filesystem::path(csv_option.file)
+                                          : std::filesystem::path(output.substr(0, output.size() - 4) + ".csv");
+    if (!csv_option.to_file()) io::write_file_atomically(csv, io::format_csv(t));
     const std::filesystem::path script = std::filesystem::path(GEARTRIB_SOURCE_DIR) / "scripts/plot_tradeoff.py";
     // Debian's interpreter, where python3-matplotlib installs (a PATH python3 may lack it).
     const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
@@ -291,8 +290,7 @@ void add_tradeoff_command(CLI::App& app) {
   add_output_option(cmd, o->table.output,
                     "the table (default: standard output); a .png name draws the Pareto plot (time against\n"
                     "error) with scripts/plot_tradeoff.py and writes the table beside it as .csv (or to --csv FILE)");
-  o->table.csv =
-      add_csv_option(cmd, o->table.csv_file, "the table as CSV: to FILE, or without one in place of the aligned table");
+  add_csv_option(cmd, o->table.csv, "the table as CSV: to FILE, or without one in place of the aligned table");
   cmd->add_option("--tolerance", o->tolerance, "Relative error a recommended setting may have (default 0.01)")
       ->check(CLI::Range(1e-9, 1.0));
   cmd->add_option("--min-time", o->min_time, "Repeat each run until this much time [s] is spent (default 0.3)")

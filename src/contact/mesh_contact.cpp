@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <initializer_list>
 #include <stdexcept>
 
 namespace geartrib::contact {
@@ -46,6 +47,31 @@ class Stopwatch {
  private:
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
+
+// Each series is filled through the reference add_series() returns: the groups are reserved so
+// that adding a series never moves the earlier ones.
+constexpr std::size_t kMaxSeries = 32;
+std::vector<double>& add_series(std::vector<Series>& g, const char* name, const char* unit) {
+  if (g.size() == g.capacity()) throw std::logic_error("run_mesh_contact: raise kMaxSeries");
+  g.push_back({name, unit, {}});
+  return g.back().values;
+}
+
+// One series per column, a value per row (a position's strip result, validity, ...).
+template <class Row>
+struct Column {
+  const char* name;
+  const char* unit;
+  double (*value)(const Row&);
+};
+template <class Row>
+void add_columns(std::vector<Series>& g, const std::vector<Row>& rows, std::initializer_list<Column<Row>> columns) {
+  for (const Column<Row>& column : columns) {
+    std::vector<double>& v = add_series(g, column.name, column.unit);
+    v.reserve(rows.size());
+    for (const Row& row : rows) v.push_back(column.value(row));
+  }
+}
 }  // namespace
 
 MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
@@ -59,16 +85,9 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   Stopwatch clock;
 
   // Stage 1: kinematics and loading of one pair from A to E.
-  // Each series is filled through the reference add() returns: the groups are reserved so
-  // that adding a series never moves the earlier ones.
-  constexpr std::size_t kMaxSeries = 32;
   r.mesh.reserve(kMaxSeries);
   r.contact.reserve(kMaxSeries);
-  auto add = [](std::vector<Series>& g, const char* name, const char* unit) -> std::vector<double>& {
-    if (g.size() == g.capacity()) throw std::logic_error("run_mesh_contact: raise kMaxSeries");
-    g.push_back({name, unit, {}});
-    return g.back().values;
-  };
+  const auto add = add_series;
   std::vector<double> s_m, share, line_load, r_eq, p0, b_h;
   {
     auto& s_v = add(r.mesh, "s_m", "m");
@@ -164,24 +183,17 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
     if (progress) progress(i + 1, n);
   }
   r.stages.push_back({cs.coupled ? "strip_contact_coupled" : "strip_contact_uncoupled", clock.lap()});
-  if (cs.real_area) {
-    auto& a = add(r.contact, "real_area_ratio", "1");
-    auto& ap = add(r.contact, "real_area_per_width_m", "m");
-    auto& pr = add(r.contact, "mean_real_pressure_Pa", "Pa");
-    auto& nc = add(r.contact, "contacts_per_width_per_m", "1/m");
-    auto& pn = add(r.contact, "max_nominal_pressure_Pa", "Pa");
-    auto& hw = add(r.contact, "contact_halfwidth_m", "m");
-    auto& sep = add(r.contact, "min_separation_m", "m");
-    for (const auto& st : strips) {
-      a.push_back(st.real_area_ratio);
-      ap.push_back(st.real_area_per_width);
-      pr.push_back(st.mean_real_pressure);
-      nc.push_back(st.contacts_per_width);
-      pn.push_back(st.max_nominal_pressure);
-      hw.push_back(st.contact_half_width);
-      sep.push_back(st.min_separation);
-    }
-  }
+  using StripColumn = Column<StripResult>;
+  if (cs.real_area)
+    add_columns<StripResult>(
+        r.contact, strips,
+        {StripColumn{"real_area_ratio", "1", [](const StripResult& st) { return st.real_area_ratio; }},
+         StripColumn{"real_area_per_width_m", "m", [](const StripResult& st) { return st.real_area_per_width; }},
+         StripColumn{"mean_real_pressure_Pa", "Pa", [](const StripResult& st) { return st.mean_real_pressure; }},
+         StripColumn{"contacts_per_width_per_m", "1/m", [](const StripResult& st) { return st.contacts_per_width; }},
+         StripColumn{"max_nominal_pressure_Pa", "Pa", [](const StripResult& st) { return st.max_nominal_pressure; }},
+         StripColumn{"contact_halfwidth_m", "m", [](const StripResult& st) { return st.contact_half_width; }},
+         StripColumn{"min_separation_m", "m", [](const StripResult& st) { return st.min_separation; }}});
   if (cs.real_area) {
     // Greenwood-Williamson sums independent summits; a real area beyond the nominal one means the
     // summation (or the asperity model's area law, extrapolated) has left its validity.
@@ -194,14 +206,12 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
                            " positions): the summits' areas overlap; the " + r.asperity_model +
                            " model's area law is outside its fitted range here");
   }
-  if (cs.plastic_fraction) {
-    auto& pa = add(r.contact, "plastic_area_fraction", "1");
-    auto& pc = add(r.contact, "plastic_contact_fraction", "1");
-    for (const auto& st : strips) {
-      pa.push_back(st.plastic_area_fraction);
-      pc.push_back(st.plastic_contact_fraction);
-    }
-  }
+  if (cs.plastic_fraction)
+    add_columns<StripResult>(
+        r.contact, strips,
+        {StripColumn{"plastic_area_fraction", "1", [](const StripResult& st) { return st.plastic_area_fraction; }},
+         StripColumn{"plastic_contact_fraction", "1",
+                     [](const StripResult& st) { return st.plastic_contact_fraction; }}});
 
   // Where the answer holds: per position, and one verdict for the run (cheap: one law
   // evaluation per position).
@@ -210,30 +220,25 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
     std::vector<PositionValidity> pv;
     pv.reserve(strips.size());
     for (const auto& st : strips) pv.push_back(position_validity(gw, st, mesh.pair().spec().face_width));
-    auto& psi = add(r.validity, "plasticity_index", "1");
-    auto& sep = add(r.validity, "separation_over_summit_sigma", "1");
-    auto& ds = add(r.validity, "max_delta_star", "1");
-    auto& dr = add(r.validity, "max_interference_over_summit_radius", "1");
-    auto& ar = add(r.validity, "max_contact_radius_over_summit_radius", "1");
-    auto& as = add(r.validity, "max_contact_radius_over_half_summit_spacing", "1");
-    auto& f1 = add(r.validity, "flag_beyond_fitted_range", "1");
-    auto& f2 = add(r.validity, "flag_beyond_paraboloid", "1");
-    auto& f3 = add(r.validity, "flag_fully_plastic_limit", "1");
-    auto& f4 = add(r.validity, "flag_summits_interact", "1");
-    auto& f5 = add(r.validity, "flag_deep_separation", "1");
-    for (const auto& v : pv) {
-      psi.push_back(r.plasticity_index);
-      sep.push_back(v.separation_over_sigma);
-      ds.push_back(v.max_delta_star);
-      dr.push_back(v.max_interference_over_radius);
-      ar.push_back(v.max_contact_radius_over_radius);
-      as.push_back(v.max_contact_radius_over_half_spacing);
-      f1.push_back(v.beyond_fitted_range);
-      f2.push_back(v.beyond_paraboloid);
-      f3.push_back(v.fully_plastic_limit);
-      f4.push_back(v.summits_interact);
-      f5.push_back(v.deep_separation);
-    }
+    add_series(r.validity, "plasticity_index", "1").assign(pv.size(), r.plasticity_index);
+    using V = PositionValidity;
+    add_columns<V>(
+        r.validity, pv,
+        {Column<V>{"separation_over_summit_sigma", "1", [](const V& v) { return v.separation_over_sigma; }},
+         Column<V>{"max_delta_star", "1", [](const V& v) { return v.max_delta_star; }},
+         Column<V>{"max_interference_over_summit_radius", "1",
+                   [](const V& v) { return v.max_interference_over_radius; }},
+         Column<V>{"max_contact_radius_over_summit_radius", "1",
+                   [](const V& v) { return v.max_contact_radius_over_radius; }},
+         Column<V>{"max_contact_radius_over_half_summit_spacing", "1",
+                   [](const V& v) { return v.max_contact_radius_over_half_spacing; }},
+         Column<V>{"flag_beyond_fitted_range", "1",
+                   [](const V& v) { return static_cast<double>(v.beyond_fitted_range); }},
+         Column<V>{"flag_beyond_paraboloid", "1", [](const V& v) { return static_cast<double>(v.beyond_paraboloid); }},
+         Column<V>{"flag_fully_plastic_limit", "1",
+                   [](const V& v) { return static_cast<double>(v.fully_plastic_limit); }},
+         Column<V>{"flag_summits_interact", "1", [](const V& v) { return static_cast<double>(v.summits_interact); }},
+         Column<V>{"flag_deep_separation", "1", [](const V& v) { return static_cast<double>(v.deep_separation); }}});
     auto values = [&](const char* name) {
       const Series* s = r.find(name);
       return s ? s->values : std::vector<double>{};
@@ -257,15 +262,15 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
     if (side)
       geometry = asperity::side_contact_geometry(c.pinion.flank.roughness.summit_radius,
                                                  c.wheel.flank.roughness.summit_radius, c.friction_coefficient);
-    auto& ai = add(r.contact, "max_asperity_interference_m", "m");
-    auto& ap = add(r.contact, "max_asperity_pressure_Pa", "Pa");
-    auto& av = add(r.contact, "max_asperity_von_mises_Pa", "Pa");
-    for (const auto& st : strips) {
-      const HighestAsperity h = highest_asperity(gw, st, mesh.pair().spec().face_width, side ? &geometry : nullptr);
-      ai.push_back(h.interference);
-      ap.push_back(h.peak_pressure);
-      av.push_back(h.von_mises);
-    }
+    std::vector<HighestAsperity> highest;
+    highest.reserve(strips.size());
+    for (const auto& st : strips)
+      highest.push_back(highest_asperity(gw, st, mesh.pair().spec().face_width, side ? &geometry : nullptr));
+    using H = HighestAsperity;
+    add_columns<H>(r.contact, highest,
+                   {Column<H>{"max_asperity_interference_m", "m", [](const H& h) { return h.interference; }},
+                    Column<H>{"max_asperity_pressure_Pa", "Pa", [](const H& h) { return h.peak_pressure; }},
+                    Column<H>{"max_asperity_von_mises_Pa", "Pa", [](const H& h) { return h.von_mises; }}});
     r.stages.push_back({side ? "asperity_stress_side_contact" : "asperity_stress_normal_contact", clock.lap()});
   }
   return r;

@@ -109,8 +109,7 @@ void read_parameter(TomlReader& r, const Parameter& p, int gear, Case& c, unsign
   const bool flank_row = key.find(".flank.") != std::string::npos;  // forms and topography: read_flank's rules
   if (!r.has(key)) {
     if (p.required_by & parts) r.fail(key, "missing required key (" + p.meaning + ")");
-    if (!flank_row && p.kind != ParameterKind::text && p.required_by == 0)
-      c.parameters.push_back({key, p.format(p.get(c, gear)), "default"});
+    if (!flank_row && p.defaulted()) c.parameters.push_back({key, p.format(p.get(c, gear)), "default"});
     return;
   }
   ParameterValue v;

@@ -545,8 +545,6 @@ std::vector<std::vector<std::string>> schema_rows() {
         kind = "number";
         break;
     }
-    const bool has_default = p.has_default && p.required_by == 0 && p.kind != ParameterKind::model_constants &&
-                             p.kind != ParameterKind::text;
     std::string range = p.range_text();
     if (!p.choices.empty()) {
       std::string names;
@@ -557,7 +555,8 @@ std::vector<std::vector<std::string>> schema_rows() {
     for (const auto& a : p.aliases) aliases += (aliases.empty() ? "" : " ") + a;
     for (const auto& a : p.gear_aliases) aliases += (aliases.empty() ? "" : " ") + a;
     rows.push_back({p.key, kind, p.kind == ParameterKind::quantity ? std::string(si_symbol(p.dimension)) : "",
-                    has_default ? p.format(p.get(defaults, 0)) : "", range, parts(p.required_by), aliases, p.meaning});
+                    p.defaulted() ? p.format(p.get(defaults, 0)) : "", range, parts(p.required_by), aliases,
+                    p.meaning});
   }
   return rows;
 }

@@ -68,6 +68,10 @@ struct Parameter {
   std::string range_text() const;
   bool in_range(double v) const;
   bool per_gear() const { return key.rfind("{gear}.", 0) == 0; }
+  // An absent key takes a default value (the schema shows it, the reader records it).
+  bool defaulted() const {
+    return has_default && required_by == 0 && kind != ParameterKind::text && kind != ParameterKind::model_constants;
+  }
   // The key for gear 0 (pinion) or 1 (wheel); the key itself for other rows.
   std::string key_for(int gear) const;
   // The value as a case file would write it, SI unit appended ("0.006 m", "iso", "[a, b]").
