@@ -113,7 +113,7 @@ check bad-range 2 "MIN:MAX:COUNT" -- "$bin" asperity --range 1:0:5
 check bad-contact 2 "" -- "$bin" asperity --contact sideways
 check missing-case 2 "file not found" -- "$bin" asperity --case "$tmp/none.toml"
 mkdir -p "$tmp/gears" "$tmp/materials"
-cp gears/m6z30.toml "$tmp/gears/"
+cp gears/m6z30.toml "$tmp/gears/" && cp -r lubricants "$tmp/"
 sed 's/youngs_modulus = "206 GPa"/youngs_modulus = "-206 GPa"/' materials/steel-45.toml > "$tmp/materials/steel-45.toml"
 check negative-modulus 2 "steel-45.toml:[0-9]+: key 'youngs_modulus' = \"-206 GPa\": must be positive" -- \
   "$bin" asperity --case "$tmp/gears/m6z30.toml"
@@ -122,7 +122,7 @@ check negative-modulus 2 "steel-45.toml:[0-9]+: key 'youngs_modulus' = \"-206 GP
 bad_case() {  # bad_case NAME FILE SED_EXPR PATTERN
   local name="$1" file="$2" expr="$3" pattern="$4"
   rm -rf "$tmp/b" && mkdir -p "$tmp/b/gears" "$tmp/b/materials"
-  cp gears/m6z30.toml "$tmp/b/gears/" && cp materials/steel-45.toml "$tmp/b/materials/"
+  cp gears/m6z30.toml "$tmp/b/gears/" && cp materials/steel-45.toml "$tmp/b/materials/" && cp -r lubricants "$tmp/b/"
   sed -i "$expr" "$tmp/b/$file"
   check "$name" 2 "$pattern" -- "$bin" asperity --case "$tmp/b/gears/m6z30.toml"
 }
@@ -140,6 +140,31 @@ bad_case tip-interference gears/m6z30.toml '0,/teeth = 30/s//teeth = 8/; 0,/bore
   "key 'wheel.teeth'.*no involute exists"
 bad_case jammed gears/m6z30.toml 's/^# center_distance = "180 mm"/center_distance = "179 mm"/' \
   "m6z30.toml:[0-9]+: key 'gear_pair.center_distance' = \"179 mm\": centre distance 179 mm is below the zero-backlash"
+
+# The lubricated run's input (issue 16): exit 2 naming the key, nothing written.
+bad_case lub-viscosity gears/m6z30.toml 's#^file = "../lubricants/mineral-vg220.toml"#dynamic_viscosity = "-0.04 Pa s"\npressure_viscosity_coefficient = "2e-8 1/Pa"#' \
+  "m6z30.toml:[0-9]+: key 'lubricant.dynamic_viscosity' = \"-0.04 Pa s\": must be positive"
+bad_case lub-alpha gears/m6z30.toml 's#^file = "../lubricants/mineral-vg220.toml"#dynamic_viscosity = "0.04 Pa s"\npressure_viscosity_coefficient = 0#' \
+  "key 'lubricant.pressure_viscosity_coefficient' = 0: must be positive"
+bad_case lub-both-forms gears/m6z30.toml 's#^\[lubricant\]#[lubricant]\ndynamic_viscosity = "0.04 Pa s"#' \
+  "key 'lubricant.dynamic_viscosity' = \"0.04 Pa s\": the lubricant file gives the oil's data"
+bad_case lub-hot-oil gears/m6z30.toml 's#^oil_temperature = "70 degC"#oil_temperature = "300 degC"#' \
+  "key 'operating.oil_temperature' = \"300 degC\": 300.0 degC is beyond the lubricant's data range"
+bad_case lub-no-oil-temperature gears/m6z30.toml '/^oil_temperature/d' \
+  "key 'operating.oil_temperature'.*missing required key"
+bad_case lub-boundary-mu gears/m6z30.toml 's/^mu = 0.1 /mu = 1.5 /' \
+  "key 'friction.mu' = 1.5: must lie in \\[0, 1\\]"
+bad_case lub-file-viscosity lubricants/mineral-vg220.toml 's#^kinematic_viscosity_40C = "220 mm^2/s"#kinematic_viscosity_40C = "-220 mm^2/s"#' \
+  "mineral-vg220.toml:[0-9]+: key 'kinematic_viscosity_40C' = \"-220 mm\\^2/s\": must be positive"
+bad_case lub-no-thermal-data materials/steel-45.toml '/^thermal_conductivity/d' \
+  "key 'pinion.material'.*thermal_conductivity and specific_heat"
+# Warned, not refused: 130 degC lies 10 K beyond the oil's data (Walther extrapolated).
+rm -rf "$tmp/w" && mkdir -p "$tmp/w/gears" && cp -r materials lubricants "$tmp/w/"
+sed 's#^oil_temperature = "70 degC"#oil_temperature = "130 degC"#' gears/m6z30.toml > "$tmp/w/gears/m6z30.toml"
+check lub-warm-oil-warned 0 "warning: key 'operating.oil_temperature': 130.0 degC lies outside" -- \
+  "$bin" run "$tmp/w/gears/m6z30.toml" -o "$tmp/w/out.h5" -q
+# A dry run needs no lubricant: the seed's dry scene has no [lubricant] and writes no /lubrication.
+check dry-no-lubricant 0 "wrote" -- "$bin" run gears/m6z30-dry.toml -o "$tmp/dry.h5" -q
 
 # Output files: written whole, atomically; nothing written on error.
 check output-file 0 "" -- "$bin" asperity --csv -o "$tmp/out.csv" --delta-star 1,2

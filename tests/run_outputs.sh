@@ -46,6 +46,17 @@ regime = v.attrs["regime"]
 assert (regime.decode() if isinstance(regime, bytes) else regime) == "fully plastic"
 verdict = v.attrs["verdict"]
 assert "201 of 201 positions beyond continuous" in (verdict.decode() if isinstance(verdict, bytes) else verdict)
+# The default scene runs lubricated: /lubrication with units, shares in [0, 1] adding to 1, the
+# film and temperatures positive, wear zero only near the pitch point.
+lub = f["lubrication"]
+for n in ["film_m", "lambda", "asperity_load_share", "film_load_share", "friction_coefficient", "power_loss_W",
+          "flash_temperature_K", "contact_temperature_K", "iso_film_hy_m", "iso_lambda_gf", "wear_depth_pinion_m",
+          "wear_depth_wheel_m", "separation_m", "ehl_regime", "flag_low_peclet"]:
+    assert lub[n].shape == (201,) and np.all(np.isfinite(lub[n][()])) and "units" in lub[n].attrs, n
+a, fs = lub["asperity_load_share"][()], lub["film_load_share"][()]
+assert np.all((a >= 0) & (a <= 1)) and np.allclose(a + fs, 1.0, rtol=0, atol=1e-15)
+assert np.all(lub["film_m"][()] > 0) and np.all(lub["contact_temperature_K"][()] >= lub.attrs["bulk_temperature_K"])
+assert lub.attrs["oil_temperature_K"] == 343.15 and lub.attrs["iso_mean_friction"] > 0
 PY
 "$bin" run -o "$tmp/v.h5" --positions 11 2>/dev/null | grep -c "^Validity: fully plastic regime" | grep -qx 1 \
   && ok verdict-printed-once || bad verdict-printed-once
@@ -65,7 +76,7 @@ PY
 
 # Only what the case asks for: real area only, mu = 0 (no side contact), coupled fidelity.
 mkdir -p "$tmp/g"
-sed -e 's/^outputs = .*/outputs = ["real_area"]/' -e 's#"../materials/#"'"$PWD"'/materials/#' gears/m6z30.toml > "$tmp/g/area.toml"
+sed -e 's/^outputs = .*/outputs = ["real_area"]/' -e 's#"../materials/#"'"$PWD"'/materials/#' -e 's#"../lubricants/#"'"$PWD"'/lubricants/#' gears/m6z30.toml > "$tmp/g/area.toml"
 "$bin" run -q "$tmp/g/area.toml" -o "$tmp/area.h5" >/dev/null && ok run-area-only || bad run-area-only
 "$py" - "$tmp/area.h5" <<'PY' && ok outputs-gated || bad outputs-gated
 import sys, h5py
@@ -75,7 +86,7 @@ assert "max_asperity_von_mises_Pa" not in f["contact"]
 names = [n.decode() if isinstance(n, bytes) else n for n in f["meta/stage_names"][()]]
 assert not any(n.startswith("asperity_stress") for n in names), names
 PY
-sed -e 's/^mu = 0.1 .*/mu = 0.0/' -e 's#"../materials/#"'"$PWD"'/materials/#' gears/m6z30.toml > "$tmp/g/frictionless.toml"
+sed -e 's/^mu = 0.1 .*/mu = 0.0/' -e 's#"../materials/#"'"$PWD"'/materials/#' -e 's#"../lubricants/#"'"$PWD"'/lubricants/#' gears/m6z30.toml > "$tmp/g/frictionless.toml"
 "$bin" run -q "$tmp/g/frictionless.toml" -o "$tmp/mu0.h5" --positions 11 >/dev/null && ok run-mu0 || bad run-mu0
 "$py" -c "
 import h5py
@@ -94,7 +105,7 @@ assert 'strip_contact_coupled' in names, names
 " && ok coupled-recorded || bad coupled-recorded
 
 # Dynamic loads: a case asking for dynamics records the stage and the dynamic load factor.
-sed -e 's/^dynamics = "none" .*/dynamics = "odeint"/' -e 's#"../materials/#"'"$PWD"'/materials/#' gears/m6z30.toml > "$tmp/g/dynamic.toml"
+sed -e 's/^dynamics = "none" .*/dynamics = "odeint"/' -e 's#"../materials/#"'"$PWD"'/materials/#' -e 's#"../lubricants/#"'"$PWD"'/lubricants/#' gears/m6z30.toml > "$tmp/g/dynamic.toml"
 "$bin" run -q "$tmp/g/dynamic.toml" -o "$tmp/dynamic.h5" --positions 21 >/dev/null && ok run-dynamic || bad run-dynamic
 "$py" -c "
 import h5py, numpy as np

@@ -7,7 +7,7 @@ set -u
 bin="$1"
 source "$(dirname "$0")/cli_support.sh"
 # 2 x 2 x 2 points, 21 positions each (fast); the same plan below in shards.
-plan=(--set module=4mm,8mm --set face_width=40mm:80mm:2 --set rq=0.01um,0.8um --set positions=21)
+plan=(gears/m6z30-dry.toml --set module=4mm,8mm --set face_width=40mm:80mm:2 --set rq=0.01um,0.8um --set positions=21)
 check full 0 "8 points, 0 failed" -- "$bin" sweep "${plan[@]}" --threads 2 -o "$tmp/full.h5" --csv "$tmp/full.csv"
 check shard0 0 "4 points" -- "$bin" sweep "${plan[@]}" --shard 0/2 -o "$tmp/s0.h5"
 check shard1 0 "4 points" -- "$bin" sweep "${plan[@]}" --shard 1/2 -o "$tmp/s1.h5"

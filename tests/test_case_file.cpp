@@ -27,7 +27,7 @@ std::string read(const std::filesystem::path& p) {
   return ss.str();
 }
 
-// A scratch copy of gears/ and materials/ in which one file's text is edited.
+// A scratch copy of gears/, materials/ and lubricants/ in which one file's text is edited.
 class BadInput : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -38,6 +38,7 @@ class BadInput : public ::testing::Test {
     std::filesystem::create_directories(dir_ / "materials");
     std::filesystem::copy_file(test::source_dir() / "gears/m6z30.toml", dir_ / "gears/m6z30.toml");
     std::filesystem::copy_file(test::source_dir() / "materials/steel-45.toml", dir_ / "materials/steel-45.toml");
+    std::filesystem::copy(test::source_dir() / "lubricants", dir_ / "lubricants");
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
   void edit(const std::string& rel, const std::string& from, const std::string& to) {

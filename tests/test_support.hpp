@@ -10,7 +10,13 @@
 namespace geartrib::test {
 
 inline std::filesystem::path source_dir() { return GEARTRIB_SOURCE_DIR; }
+// The seed's own scene: its pair dry, the whole Hertz load on the asperities.
 inline const Case& seed_case() {
+  static const Case c = io::load_case(source_dir() / "gears/m6z30-dry.toml");
+  return c;
+}
+// The default case: the same pair lubricated (ISO VG 220 at 70 degC, assumed).
+inline const Case& lubricated_case() {
   static const Case c = io::load_case(source_dir() / "gears/m6z30.toml");
   return c;
 }

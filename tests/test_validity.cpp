@@ -143,7 +143,7 @@ TEST(Quadrature, PanelsAtBreakpointsConverge) {
 TEST(Quadrature, JacksonGreenPlasticFractionConvergedAtTheDefault) {
   // Issue 14: on the default case Jackson-Green's plastic area fraction at the default 128 height
   // points within 1e-5 of 2048 points, at every position.
-  const Case c = io::load_case(test::source_dir() / "gears/m6z30.toml", {{"model", "jackson-green"}});
+  const Case c = io::load_case(test::source_dir() / "gears/m6z30-dry.toml", {{"model", "jackson-green"}});
   Case fine = c;
   fine.contact.height_points = 2048;
   const gear::GearMesh mesh(c);
@@ -181,7 +181,7 @@ TEST(Validity, SeedCaseIsFullyPlasticAndOutsideTheRanges) {
 
 TEST(Validity, SmoothLightlyLoadedCaseIsElasticAndWithinRange) {
   // A mirror-like surface (psi 0.39) at a light load: no flag, no position beyond delta_c, regime elastic.
-  const Case c = io::load_case(test::source_dir() / "gears/m6z30.toml",
+  const Case c = io::load_case(test::source_dir() / "gears/m6z30-dry.toml",
                                {{"ra", "0.005 um"}, {"summit_radius", "1000 um"}, {"torque", "5 N m"}});
   const gear::GearMesh mesh(c);
   const auto r = contact::run_mesh_contact(c, mesh, nullptr, {}, 11);
@@ -198,7 +198,7 @@ TEST(EquivalentSurface, SpectralFlanksUseOneRadius) {
   std::filesystem::create_directories(dir / "materials");
   std::filesystem::copy_file(test::source_dir() / "materials/steel-45.toml", dir / "materials/steel-45.toml",
                              std::filesystem::copy_options::overwrite_existing);
-  std::string text = source_text("gears/m6z30.toml");
+  std::string text = source_text("gears/m6z30-dry.toml");
   auto replace = [&](const std::string& from, const std::string& to) { replace_once(text, from, to); };
   replace("summit_radius = \"1.65 um\"", "m0 = \"0.5 um^2\"\nm2 = 0.002\nm4 = \"1e8 1/m^2\"");
   replace("summit_radius = \"1.75 um\"", "m0 = \"0.3 um^2\"\nm2 = 0.001\nm4 = \"2e8 1/m^2\"");

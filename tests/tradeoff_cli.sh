@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `geartrib tradeoff` on the default case, three knobs (positions, height_points, asperity_model;
+# `geartrib tradeoff` on the seed's dry scene (gears/m6z30-dry.toml), three knobs (positions, height_points, asperity_model;
 # --min-time 0: one run per setting, a few seconds in all): the table's shape, the recommendation
 # rule against the printed table, and the error metric against one computed here from the
 # per-position results of `geartrib run` at a setting and at the knob's reference
@@ -8,7 +8,7 @@
 set -u
 bin="$1"
 source "$(dirname "$0")/cli_support.sh"
-knobs=(--knob positions --knob height_points --knob asperity_model)
+knobs=(gears/m6z30-dry.toml --knob positions --knob height_points --knob asperity_model)
 check table 0 "^knob,setting,time_s,error_real_area,error_plastic_fraction,error_peak_stress,note" -- \
   bash -c '"$0" tradeoff --min-time 0 -q "${@:2}" --csv > "$1" && cat "$1"' "$bin" "$tmp/table.csv" "${knobs[@]}"
 check text 0 "^Recommended \(cheapest within 1% of each knob's reference on all three outputs\):" -- \
@@ -21,7 +21,7 @@ check unknown-knob 2 "none of the names is a knob" -- "$bin" tradeoff --min-time
 # path minimum, mean and maximum only), height_points 8 against 1024 and the ceb and hertz models
 # against the case's continuous one (same positions: pointwise too).
 for s in contact.positions=11 contact.positions=801 contact.height_points=8 contact.height_points=1024 asperity.model=ceb asperity.model=hertz asperity.model=continuous; do
-  "$bin" run -q --set "$s" -o "$tmp/$s.h5" >/dev/null 2>&1 || { echo "FAIL run --set $s"; fail=1; }
+  "$bin" run gears/m6z30-dry.toml -q --set "$s" -o "$tmp/$s.h5" >/dev/null 2>&1 || { echo "FAIL run --set $s"; fail=1; }
 done
 
 /usr/bin/python3 - "$tmp" <<'PY' || fail=1

@@ -46,9 +46,9 @@ void print_summary(const contact::MeshContactResult& r) {
       r.asperity_model, r.fidelity);
   fmt::print("{:<30} {:>6} {:>12} {:>9} {:>3} {:>12} {:>9} {:>3}\n", "quantity", "unit", "min", "at s mm", "", "max",
              "at s mm", "");
-  for (const auto* group : {&r.mesh, &r.contact})
+  for (const auto* group : {&r.mesh, &r.contact, &r.lubrication})
     for (const auto& q : *group) {
-      if (q.name == "s_m") continue;
+      if (q.name == "s_m" || q.name == "ehl_regime" || q.name.rfind("flag_", 0) == 0) continue;
       std::size_t lo = 0, hi = 0;
       for (std::size_t i = 1; i < q.values.size(); ++i) {
         if (q.values[i] < q.values[lo]) lo = i;
@@ -57,6 +57,29 @@ void print_summary(const contact::MeshContactResult& r) {
       fmt::print("{:<30} {:>6} {:>12.5g} {:>9.3f} {:>3} {:>12.5g} {:>9.3f} {:>3}\n", q.name, q.unit, q.values[lo],
                  s[lo] * 1e3, point_at(r.path, s[lo], step), q.values[hi], s[hi] * 1e3, point_at(r.path, s[hi], step));
     }
+  if (r.lubrication_summary) {
+    const auto& l = *r.lubrication_summary;
+    constexpr double kC = 273.15;
+    fmt::print(
+        "Lubricated: {}; oil {:.1f} degC, bulk {:.1f} degC{}; eta {:.4g} mPa s, alpha {:.4g} 1/GPa at bulk; film {} "
+        "with {} inlet heating\n",
+        l.lubricant, l.oil_temperature - kC, l.bulk_temperature - kC,
+        l.bulk_estimated ? " (ISO/TS 6336-20 estimate)" : "", l.dynamic_viscosity * 1e3, l.pressure_viscosity * 1e9,
+        l.film_formula, l.inlet_heating);
+    fmt::print("{:<4} {:>9} {:>10} {:>8} {:>12} {:>10} {:>10}\n", "pt", "s mm", "film um", "lambda", "ISO h_Y um",
+               "lambda_GF", "asp share");
+    for (const auto& p : l.points)
+      fmt::print("{:<4} {:>9.3f} {:>10.4f} {:>8.3f} {:>12.4f} {:>10.3f} {:>10.3f}\n", p.name, p.s * 1e3, p.film * 1e6,
+                 p.lambda, p.iso_film * 1e6, p.iso_lambda, p.asperity_share);
+    fmt::print(
+        "Friction: ISO/TS 6336-20 mu_m {:.4f}; power loss {:.4g} W mean of {:.4g} W input ({:.3f}%); gear loss factor "
+        "H_V {:.4f} (path), {:.4f} (Ohlendorf)\n",
+        l.iso_friction, l.mean_power_loss, l.input_power, 100.0 * l.mean_power_loss / l.input_power, l.loss_factor_path,
+        l.loss_factor_ohlendorf);
+    if (l.iso_scuffing_safety > 0.0)
+      fmt::print("Scuffing (flash-temperature method): safety S_B {:.3g} (ISO mu_m), {:.3g} (local friction)\n",
+                 l.iso_scuffing_safety, l.scuffing_safety);
+  }
   fmt::print("stages:");
   for (const auto& st : r.stages) fmt::print(" {} {:.3f} s;", st.name, st.seconds);
   fmt::print("\n");
@@ -78,11 +101,11 @@ void run(const Options& o) {
   io::write_mesh_contact_hdf5(out, r, case_file, c);
   if (o.csv.given()) {
     io::Table t;
-    for (const auto* group : {&r.mesh, &r.contact, &r.validity})
+    for (const auto* group : {&r.mesh, &r.contact, &r.validity, &r.lubrication})
       for (const auto& q : *group) t.header.push_back(q.name);
     for (std::size_t i = 0; i < r.mesh.front().values.size(); ++i) {
       std::vector<double> row;
-      for (const auto* group : {&r.mesh, &r.contact, &r.validity})
+      for (const auto* group : {&r.mesh, &r.contact, &r.validity, &r.lubrication})
         for (const auto& q : *group) row.push_back(q.values[i]);
       t.rows.push_back(std::move(row));
     }

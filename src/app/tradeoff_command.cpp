@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <tuple>
 
 namespace geartrib::app {
 
@@ -90,6 +91,18 @@ std::vector<Knob> knobs_of(const Case& c) {
     if (m != c.asperity.model) model.settings.push_back({m, {{"asperity.model", m}}});
   model.settings.push_back({c.asperity.model, {{"asperity.model", c.asperity.model}}});
   out.push_back(model);
+  // Lubricated: the film formulas and inlet-heating corrections (physics choices; the case's own
+  // last, the reference), through the asperities' share of the load they leave.
+  if (c.lubrication.lubricated)
+    for (const auto& [name, key, own] :
+         {std::tuple{"film_formula", "lubrication.film_formula", c.lubrication.film_formula},
+          std::tuple{"inlet_heating", "lubrication.inlet_heating", c.lubrication.inlet_heating}}) {
+      Knob k{name, {}, true};
+      for (const auto& v : row(key).choices)
+        if (v != own) k.settings.push_back({v, {{key, v}}});
+      k.settings.push_back({own, {{key, own}}});
+      out.push_back(k);
+    }
   return out;
 }
 

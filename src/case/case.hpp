@@ -4,6 +4,7 @@
 // takes the pieces it needs from here.
 #pragma once
 
+#include "lubrication/lubricant.hpp"
 #include "material/material.hpp"
 #include "surface/height_grid.hpp"
 #include "surface/rough_surface.hpp"
@@ -64,8 +65,22 @@ struct GearSpec {
 };
 
 struct OperatingPoint {
-  double pinion_torque = 0.0;  // [N m]
-  double pinion_speed = 0.0;   // [rad/s]
+  double pinion_torque = 0.0;     // [N m]
+  double pinion_speed = 0.0;      // [rad/s]
+  double oil_temperature = 0.0;   // theta_oil, the inlet (sump or spray) oil [K]; lubricated runs only
+  double bulk_temperature = 0.0;  // theta_M of the flanks [K]; 0: the ISO/TS 6336-20 estimate
+};
+
+// The lubricated mesh cycle: the oil (a lubricant file, or eta and alpha at the oil temperature
+// given in the case) and the models along the path. A case without [lubricant] runs dry.
+struct LubricationCase {
+  bool lubricated = false;     // the case has a [lubricant] table
+  std::string lubricant_file;  // as written in the case (relative to it); empty: the fixed form
+  lubrication::Lubricant lubricant;
+  std::string film_formula = "dowson-higginson";  // lubrication/ehl_film.hpp
+  std::string inlet_heating = "gupta";
+  double wear_coefficient = 1e-17;    // Archard's dimensional k [m^2/N = m^3/(N m)] (assumed order, mild wear)
+  double scuffing_temperature = 0.0;  // theta_S [K]; 0: no scuffing safety
 };
 
 // Single-asperity settings: the model by name, per-model constant overrides, the measured
@@ -131,7 +146,8 @@ struct Case {
   GearSpec pinion;
   GearSpec wheel;
   OperatingPoint operating;
-  double friction_coefficient = 0.0;  // mu [-] of the asperity side contact
+  double friction_coefficient = 0.0;  // mu [-] of the asperity side contact; the boundary coefficient when lubricated
+  LubricationCase lubrication;
   MeshSettings mesh;
   DynamicsCase dynamics;
   RoughnessSettings roughness;

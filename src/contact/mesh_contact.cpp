@@ -3,6 +3,7 @@
 #include "asperity/case_setup.hpp"
 #include "asperity/side_contact.hpp"
 #include "contact/greenwood_williamson.hpp"
+#include "contact/mesh_lubrication.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "contact/validity.hpp"
 #include "gear/mesh_dynamics.hpp"
@@ -16,7 +17,7 @@
 namespace geartrib::contact {
 
 const Series* MeshContactResult::find(const std::string& name) const {
-  for (const auto* group : {&mesh, &contact, &validity})
+  for (const auto* group : {&mesh, &contact, &validity, &lubrication})
     for (const auto& s : *group)
       if (s.name == name) return &s;
   return nullptr;
@@ -171,6 +172,17 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   const GreenwoodWilliamson gw(r.surface, *model, pair, 1.5 * p_max + 1.0, gwo);
   r.stages.push_back({"surface_table", clock.lap()});
 
+  // Lubricated: the film and the load it leaves to the asperities at every position.
+  std::optional<PathState> path_state;
+  std::optional<MeshLubrication> lubricated;
+  if (c.lubrication.lubricated) {
+    auto series = [&](const char* name) { return r.find(name)->values; };
+    path_state =
+        PathState{s_m, line_load, series("hertz_halfwidth_m"), p0, r_eq, series("v1_m_per_s"), series("v2_m_per_s")};
+    lubricated.emplace(c, mesh, *path_state, gw);
+    r.stages.push_back({"film_and_load_sharing", clock.lap()});
+  }
+
   // Stage 3: the rough line contact across the strip at every position.
   StripOptions so;
   so.fidelity = cs.coupled ? StripFidelity::coupled : StripFidelity::uncoupled;
@@ -179,7 +191,8 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   const RoughLineContact strip(gw, mesh.composite_modulus(), mesh.pair().spec().face_width, so, solver);
   std::vector<StripResult> strips;
   for (int i = 0; i < n; ++i) {
-    strips.push_back(strip.solve(line_load[static_cast<std::size_t>(i)], r_eq[static_cast<std::size_t>(i)]));
+    const auto k = static_cast<std::size_t>(i);
+    strips.push_back(strip.solve(line_load[k], r_eq[k], lubricated ? lubricated->asperity_shares()[k] : 1.0));
     if (progress) progress(i + 1, n);
   }
   r.stages.push_back({cs.coupled ? "strip_contact_coupled" : "strip_contact_uncoupled", clock.lap()});
@@ -272,6 +285,10 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
                     Column<H>{"max_asperity_pressure_Pa", "Pa", [](const H& h) { return h.peak_pressure; }},
                     Column<H>{"max_asperity_von_mises_Pa", "Pa", [](const H& h) { return h.von_mises; }}});
     r.stages.push_back({side ? "asperity_stress_side_contact" : "asperity_stress_normal_contact", clock.lap()});
+  }
+  if (lubricated) {
+    lubricated->finish(r);
+    r.stages.push_back({"friction_temperature_wear", clock.lap()});
   }
   return r;
 }

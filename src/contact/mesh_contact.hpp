@@ -9,6 +9,7 @@
 #include "surface/rough_surface.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,12 +33,39 @@ struct StageTiming {
   double seconds = 0.0;
 };
 
+// The lubricated cycle's findings along the path (a case with [lubricant]).
+struct LubricationSummary {
+  std::string lubricant;  // its name
+  std::string film_formula, inlet_heating;
+  double oil_temperature = 0.0;        // [K]
+  double bulk_temperature = 0.0;       // [K]
+  bool bulk_estimated = false;         // from the ISO/TS 6336-20 estimate
+  double dynamic_viscosity = 0.0;      // eta at the bulk temperature [Pa s]
+  double pressure_viscosity = 0.0;     // alpha at the bulk temperature [1/Pa]
+  double iso_friction = 0.0;           // ISO/TS 6336-20 mu_m
+  double composite_rq = 0.0;           // [m]
+  double mean_ra = 0.0;                // (Ra1 + Ra2)/2 [m]
+  double mean_power_loss = 0.0;        // over one mesh cycle, all pairs [W]
+  double input_power = 0.0;            // T1 omega1 [W]
+  double loss_factor_path = 0.0;       // H_V from the computed path: (1/p_b) int (w/w_t)(|v_s|/v_b) ds
+  double loss_factor_ohlendorf = 0.0;  // Ohlendorf's closed form pi (u + 1)/(z1 u)(1 - eps + eps1^2 + eps2^2)
+  double iso_scuffing_safety = 0.0;    // ISO/TS 6336-20 flash-temperature method; 0: no scuffing temperature
+  double scuffing_safety = 0.0;        // the same with the model's local friction
+  struct NamedPoint {
+    std::string name;  // A, AB, B, C, D, DE, E
+    double s = 0.0, film = 0.0, lambda = 0.0, iso_film = 0.0, iso_lambda = 0.0, asperity_share = 0.0;
+  };
+  std::vector<NamedPoint> points;  // ISO/TS 6336-22's points, interpolated from the path
+};
+
 struct MeshContactResult {
-  std::vector<Series> mesh;      // kinematics and loading: s_m, load_share, hertz_p0_Pa, ...
-  std::vector<Series> contact;   // rough contact: real_area_ratio, plastic_area_fraction, ...
-  std::vector<Series> validity;  // where the models hold: separation_over_sigma, flags, ... (validity.hpp)
-  std::string regime;            // "elastic", "elastic-plastic" or "fully plastic"
-  std::string verdict;           // one paragraph: the regime and every validity rule broken, and where
+  std::vector<Series> mesh;         // kinematics and loading: s_m, load_share, hertz_p0_Pa, ...
+  std::vector<Series> contact;      // rough contact: real_area_ratio, plastic_area_fraction, ...
+  std::vector<Series> validity;     // where the models hold: separation_over_sigma, flags, ... (validity.hpp)
+  std::vector<Series> lubrication;  // lubricated runs: film, lambda, shares, friction, temperatures, wear
+  std::optional<LubricationSummary> lubrication_summary;
+  std::string regime;   // "elastic", "elastic-plastic" or "fully plastic"
+  std::string verdict;  // one paragraph: the regime and every validity rule broken, and where
   struct FlagCount {
     std::string name;
     int positions = 0;
@@ -51,7 +79,7 @@ struct MeshContactResult {
   std::string fidelity;
   // Findings that make a result doubtful (e.g. a real area larger than the nominal one).
   std::vector<std::string> warnings;
-  const Series* find(const std::string& name) const;  // in mesh, contact, then validity; nullptr if absent
+  const Series* find(const std::string& name) const;  // in mesh, contact, validity, lubrication; nullptr if absent
 };
 
 // progress(done, total) is called after each position. positions <= 0: the case's number.

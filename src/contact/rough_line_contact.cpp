@@ -58,21 +58,23 @@ RoughLineContact::RoughLineContact(const GreenwoodWilliamson& gw, double composi
     throw std::invalid_argument("the coupled fidelity needs a nonlinear solver");
 }
 
-StripResult RoughLineContact::solve(double w, double radius) const {
+StripResult RoughLineContact::solve(double w, double radius, double share) const {
   if (!(w >= 0.0 && std::isfinite(w))) throw std::invalid_argument("line load must be finite and >= 0");
   if (!(radius > 0.0)) throw std::invalid_argument("equivalent radius must be positive");
-  return options_.fidelity == StripFidelity::uncoupled || w == 0.0 ? uncoupled(w, radius) : coupled(w, radius);
+  if (!(share >= 0.0 && share <= 1.0)) throw std::invalid_argument("asperity share must lie in [0, 1]");
+  if (options_.fidelity == StripFidelity::uncoupled || w == 0.0 || share == 0.0) return uncoupled(w, radius, share);
+  return coupled(share * w, radius);
 }
 
-StripResult RoughLineContact::uncoupled(double w, double radius) const {
+StripResult RoughLineContact::uncoupled(double w, double radius, double share) const {
   StripResult r;
   const double b = asperity::hertz_half_width(w, radius, modulus_);
-  const double p0 = b > 0.0 ? 2.0 * w / (kPi * b) : 0.0;
+  const double p0 = b > 0.0 ? share * 2.0 * w / (kPi * b) : 0.0;
   r.hertz_half_width = b;
   r.max_nominal_pressure = p0;
   r.min_separation = gw_.separation_for_pressure(p0);
   r.contact_half_width = b;
-  if (w == 0.0) return r;
+  if (w == 0.0 || share == 0.0) return r;
   // x = b sin(theta): the Hertz pressure p0 cos(theta) and dx = b cos(theta) d(theta) are smooth;
   // composite 8-point Gauss-Legendre over theta in (-pi/2, pi/2).
   using Gauss = boost::math::quadrature::gauss<double, 8>;

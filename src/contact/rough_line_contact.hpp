@@ -50,11 +50,14 @@ class RoughLineContact {
   RoughLineContact(const GreenwoodWilliamson& gw, double composite_modulus, double face_width,
                    const StripOptions& options, const NonlinearSolver* solver);
   // line_load w [N/m] on equivalent radius R [m]. Throws std::runtime_error when the coupled
-  // solve does not converge (never returns an unconverged answer).
-  StripResult solve(double line_load, double radius) const;
+  // solve does not converge (never returns an unconverged answer). asperity_share in [0, 1]: the
+  // share of the load the asperities carry in mixed lubrication (the film carries the rest);
+  // uncoupled, the asperities take that share of the Hertz pressure over the same width
+  // (Johnson, Greenwood & Poon 1972); coupled, the coupled contact of that share of the load.
+  StripResult solve(double line_load, double radius, double asperity_share = 1.0) const;
 
  private:
-  StripResult uncoupled(double w, double radius) const;
+  StripResult uncoupled(double w, double radius, double share) const;
   StripResult coupled(double w, double radius) const;
 
   const GreenwoodWilliamson& gw_;

@@ -45,6 +45,10 @@ Material load_material(const std::filesystem::path& file) {
   if (named == "tabor-yield" || named == "flow-curve") m.hardness_rule = named;
   else if (r.has("hardness")) m.hardness_rule = "given";
   m.density = positive_quantity(r, "density", Dimension::density);
+  // Thermal data: optional, for the flash temperature of a lubricated run.
+  if (r.has("thermal_conductivity"))
+    m.thermal_conductivity = positive_quantity(r, "thermal_conductivity", Dimension::thermal_conductivity);
+  if (r.has("specific_heat")) m.specific_heat = positive_quantity(r, "specific_heat", Dimension::specific_heat);
   if (r.has("flow_curve")) {
     r.string("flow_curve.source");
     const auto stress = r.quantity_array("flow_curve.stress", Dimension::pressure);
@@ -75,6 +79,40 @@ Material load_material(const std::filesystem::path& file) {
   r.check_all_used();
   m.validate();
   return m;
+}
+
+lubrication::Lubricant load_lubricant(const std::filesystem::path& file) {
+  TomlReader r(file);
+  lubrication::Lubricant l;
+  l.name = r.string("name");
+  l.source = r.string("source");
+  try {
+    l.base_oil = lubrication::base_oil_from_name(r.string("base_oil"));
+  } catch (const std::invalid_argument& e) {
+    r.fail("base_oil", e.what());
+  }
+  l.kinematic_viscosity_40 = positive_quantity(r, "kinematic_viscosity_40C", Dimension::kinematic_viscosity);
+  l.kinematic_viscosity_100 = positive_quantity(r, "kinematic_viscosity_100C", Dimension::kinematic_viscosity);
+  l.density_15 = positive_quantity(r, "density_15C", Dimension::density);
+  l.density_temperature_coefficient = r.quantity("density_temperature_coefficient", Dimension::inverse_temperature);
+  if (r.has("pressure_viscosity_coefficient")) {
+    l.pressure_viscosity = positive_quantity(r, "pressure_viscosity_coefficient", Dimension::inverse_pressure);
+    l.pressure_viscosity_temperature = positive_quantity(r, "pressure_viscosity_temperature", Dimension::temperature);
+  }
+  l.thermal_conductivity = positive_quantity(r, "thermal_conductivity", Dimension::thermal_conductivity);
+  l.specific_heat = positive_quantity(r, "specific_heat", Dimension::specific_heat);
+  l.eyring_stress = positive_quantity(r, "eyring_stress", Dimension::pressure);
+  l.limiting_shear_coefficient = r.number("limiting_shear_coefficient");
+  l.min_temperature = positive_quantity(r, "min_temperature", Dimension::temperature);
+  l.max_temperature = positive_quantity(r, "max_temperature", Dimension::temperature);
+  try {
+    l.validate();
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    r.fail(what.substr(0, what.find(':')), what.substr(what.find(':') + 2));
+  }
+  r.check_all_used();
+  return l;
 }
 
 CaseChange parse_case_change(const std::string& text) {
@@ -260,6 +298,14 @@ const std::vector<std::vector<std::string>>& roughness_forms() {
 }
 
 void apply_change(TomlReader& r, const std::string& key, const std::string& value) {
+  // The lubricant's two forms replace each other: a file, or eta and alpha given in the case.
+  if (key == "lubricant.file") {
+    for (const char* k : {"dynamic_viscosity", "pressure_viscosity_coefficient", "temperature_viscosity_coefficient",
+                          "thermal_conductivity", "eyring_stress", "limiting_shear_coefficient", "base_oil"})
+      r.erase(std::string("lubricant.") + k);
+  } else if (key.rfind("lubricant.", 0) == 0) {
+    r.erase("lubricant.file");
+  }
   // pinion.flank.rq = ... replaces the flank's other roughness forms.
   for (const char* gear : {"pinion.flank.", "wheel.flank."}) {
     const std::string flank(gear);
@@ -276,6 +322,71 @@ void apply_change(TomlReader& r, const std::string& key, const std::string& valu
     if (leaf == "m0" || leaf == "m2" || leaf == "m4") r.erase(flank + "summit_radius");  // the moments give it
   }
   r.set(key, value);
+}
+
+// Extrapolating Walther's law this far beyond a lubricant's data range is refused; within it, warned.
+constexpr double kColdExtrapolation = 40.0, kHotExtrapolation = 60.0;  // [K]
+
+// [lubricant] given: the oil from its file or the fixed form, its temperatures checked against the
+// data range, and the bodies' thermal data the flash temperature needs.
+void read_lubrication(TomlReader& r, Case& c) {
+  LubricationCase& lc = c.lubrication;
+  lc.lubricated = true;
+  if (!r.has("operating.oil_temperature"))
+    r.fail("operating.oil_temperature", "missing required key (a lubricated run needs the oil temperature)");
+  const char* const fixed_keys[] = {"dynamic_viscosity",
+                                    "pressure_viscosity_coefficient",
+                                    "temperature_viscosity_coefficient",
+                                    "thermal_conductivity",
+                                    "eyring_stress",
+                                    "limiting_shear_coefficient",
+                                    "base_oil"};
+  if (!lc.lubricant_file.empty()) {
+    for (const char* k : fixed_keys)
+      if (r.has(std::string("lubricant.") + k))
+        r.fail(std::string("lubricant.") + k,
+               "the lubricant file gives the oil's data; remove this key or lubricant.file");
+    const auto path = r.directory() / lc.lubricant_file;
+    if (!std::filesystem::exists(path)) r.fail("lubricant.file", "lubricant file not found: " + path.string());
+    lc.lubricant = load_lubricant(path);
+  } else {
+    for (const char* k : {"dynamic_viscosity", "pressure_viscosity_coefficient"})
+      if (!r.has(std::string("lubricant.") + k))
+        r.fail(std::string("lubricant.") + k,
+               "missing required key (give lubricant.file, or the oil's dynamic_viscosity and "
+               "pressure_viscosity_coefficient at the oil temperature)");
+    lc.lubricant.name = "given in the case at the oil temperature";
+    lc.lubricant.min_temperature = lc.lubricant.max_temperature = c.operating.oil_temperature;
+  }
+  const auto& l = lc.lubricant;
+  auto check_temperature = [&](const char* key, double t) {
+    if (l.fixed()) return;
+    if (t < l.min_temperature - kColdExtrapolation || t > l.max_temperature + kHotExtrapolation)
+      r.fail(key, fmt::format("{:.1f} degC is beyond the lubricant's data range [{:.1f}, {:.1f}] degC by more than "
+                              "{:g} K below or {:g} K above: Walther's law is not extrapolated that far",
+                              t - 273.15, l.min_temperature - 273.15, l.max_temperature - 273.15, kColdExtrapolation,
+                              kHotExtrapolation));
+    if (t < l.min_temperature || t > l.max_temperature)
+      c.warnings.push_back(
+          fmt::format("{}: warning: key '{}': {:.1f} degC lies outside {}'s data range [{:.1f}, "
+                      "{:.1f}] degC; its viscosity is extrapolated",
+                      r.where(key), key, t - 273.15, l.name, l.min_temperature - 273.15, l.max_temperature - 273.15));
+  };
+  check_temperature("operating.oil_temperature", c.operating.oil_temperature);
+  if (c.operating.bulk_temperature > 0.0) {
+    if (c.operating.bulk_temperature < c.operating.oil_temperature)
+      r.fail("operating.bulk_temperature", "must not be below the oil temperature (or 0 for the ISO estimate)");
+    check_temperature("operating.bulk_temperature", c.operating.bulk_temperature);
+  }
+  if (lc.scuffing_temperature > 0.0 && !(lc.scuffing_temperature > c.operating.oil_temperature))
+    r.fail("lubrication.scuffing_temperature", "must exceed the oil temperature (or be 0: no safety)");
+  for (int gear = 0; gear < 2; ++gear) {
+    const Material& m = (gear == 0 ? c.pinion : c.wheel).material;
+    if (!(m.thermal_conductivity > 0.0 && m.specific_heat > 0.0))
+      r.fail(gear == 0 ? "pinion.material" : "wheel.material",
+             "the material file must give thermal_conductivity and specific_heat (a lubricated run computes "
+             "the flash temperature)");
+  }
 }
 
 }  // namespace
@@ -315,6 +426,7 @@ Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>&
     if (!std::filesystem::exists(path)) r.fail(key, "material file not found: " + path.string());
     g.material = load_material(path);
   }
+  if (r.has("lubricant")) read_lubrication(r, c);
   if (r.is_string("asperity.cylinder.yield_constant")) {
     // green-2005: Green's plane-strain C_L(nu) of the softer body.
     const auto& soft = c.pinion.material.hardness <= c.wheel.material.hardness ? c.pinion.material : c.wheel.material;

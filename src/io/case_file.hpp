@@ -27,6 +27,9 @@ CaseChange parse_case_change(const std::string& text);
 // without a default is required only when one of them needs it. Every key's value and origin is
 // recorded in Case::parameters.
 Material load_material(const std::filesystem::path& file);
+// lubricants/*.toml: every value required (lubricants/README.md), the pressure-viscosity
+// coefficient optional (the ISO/TR 15144-1 correlation without it).
+lubrication::Lubricant load_lubricant(const std::filesystem::path& file);
 Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>& changes = {},
                unsigned parts = kAllParts);
 

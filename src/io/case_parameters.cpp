@@ -3,6 +3,7 @@
 #include "asperity/model.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/rough_line_contact.hpp"
+#include "lubrication/ehl_film.hpp"
 
 #include <fmt/format.h>
 
@@ -320,13 +321,104 @@ std::vector<Parameter> build_table() {
       .alias({"speed"})
       .doc("Pinion speed n1");
 
+  add(quantity(
+          "operating.oil_temperature", D::temperature,
+          [](auto& c, int) -> auto& { return c.operating.oil_temperature; }))
+      .positive()
+      .no_default()
+      .alias({"oil_temperature"})
+      .doc("Oil (inlet) temperature; required with [lubricant]");
+  add(quantity(
+          "operating.bulk_temperature", D::temperature,
+          [](auto& c, int) -> auto& { return c.operating.bulk_temperature; }))
+      .non_negative()
+      .alias({"bulk_temperature"})
+      .doc(
+          "Flanks' bulk temperature theta_M (film viscosity, contact temperature); 0: the ISO/TS 6336-20 "
+          "estimate oil + 0.47 x mean flash temperature");
+
+  // [lubricant]: a file, or the oil at the oil temperature given here (the fixed form).
+  add(text(
+          "lubricant.file", K::text, [](auto& c, int) -> auto& { return c.lubrication.lubricant_file; }))
+      .alias({"lubricant"})
+      .doc(
+          "Lubricant file (lubricants/*.toml, relative to the case); or give dynamic_viscosity and "
+          "pressure_viscosity_coefficient here");
+  add(quantity(
+          "lubricant.dynamic_viscosity", D::dynamic_viscosity,
+          [](auto& c, int) -> auto& { return c.lubrication.lubricant.fixed_dynamic_viscosity; }))
+      .positive()
+      .no_default()
+      .alias({"viscosity"})
+      .doc("Fixed form: eta at the oil temperature (the film uses it at every temperature)");
+  add(quantity(
+          "lubricant.pressure_viscosity_coefficient", D::inverse_pressure,
+          [](auto& c, int) -> auto& { return c.lubrication.lubricant.pressure_viscosity; }))
+      .positive()
+      .no_default()
+      .alias({"alpha"})
+      .doc("Fixed form: pressure-viscosity coefficient alpha at the oil temperature");
+  add(quantity(
+          "lubricant.temperature_viscosity_coefficient", D::inverse_temperature,
+          [](auto& c, int) -> auto& { return c.lubrication.lubricant.fixed_temperature_viscosity; }))
+      .non_negative()
+      .doc(
+          "Fixed form: beta = -d ln(eta)/dT for the inlet-heating correction (typical mineral oil at 70 degC; "
+          "assumed)");
+  add(quantity(
+          "lubricant.thermal_conductivity", D::thermal_conductivity,
+          [](auto& c, int) -> auto& { return c.lubrication.lubricant.thermal_conductivity; }))
+      .positive()
+      .doc("Fixed form: the oil's thermal conductivity (typical mineral oil; assumed)");
+  add(quantity(
+          "lubricant.eyring_stress", D::pressure,
+          [](auto& c, int) -> auto& { return c.lubrication.lubricant.eyring_stress; }))
+      .positive()
+      .doc("Fixed form: Eyring stress tau_0 of the film's traction (typical; assumed)");
+  add(number(
+          "lubricant.limiting_shear_coefficient",
+          [](auto& c, int) -> auto& { return c.lubrication.lubricant.limiting_shear_coefficient; }))
+      .range(0.0, 1.0, true, false)
+      .doc("Fixed form: limiting shear stress over pressure (typical mineral oil; assumed)");
+  add(mapped_choice(
+          "lubricant.base_oil", {"mineral", "pao", "ester", "polyglycol"},
+          [](auto& c, int) -> auto& { return c.lubrication.lubricant.base_oil; },
+          [](const std::string& t) { return lubrication::base_oil_from_name(t); },
+          [](lubrication::BaseOil b) { return std::string(lubrication::base_oil_name(b)); }))
+      .doc("Fixed form: base stock, for the ISO/TS 6336-20 lubricant factor X_L");
+
+  // [lubrication]: the models along the path.
+  add(text(
+          "lubrication.film_formula", K::choice, [](auto& c, int) -> auto& { return c.lubrication.film_formula; }))
+      .choices(lubrication::film_formula_names(), "film formula")
+      .alias({"film_formula"})
+      .doc("Smooth EHL film: Dowson-Higginson minimum, Pan-Hamrock minimum or central, Dowson-Toyoda central");
+  add(text(
+          "lubrication.inlet_heating", K::choice, [](auto& c, int) -> auto& { return c.lubrication.inlet_heating; }))
+      .choices(lubrication::inlet_heating_names(), "inlet-heating correction")
+      .alias({"inlet_heating"})
+      .doc("Inlet shear-heating correction of the film: Gupta et al. 1992, Murch-Wilson 1975 or none");
+  add(quantity(
+          "lubrication.wear_coefficient", D::inverse_pressure,
+          [](auto& c, int) -> auto& { return c.lubrication.wear_coefficient; }))
+      .non_negative()
+      .alias({"wear_coefficient"})
+      .doc("Archard's dimensional wear coefficient k of the asperity contacts (order of mild wear; assumed)");
+  add(quantity(
+          "lubrication.scuffing_temperature", D::temperature,
+          [](auto& c, int) -> auto& { return c.lubrication.scuffing_temperature; }))
+      .non_negative()
+      .doc("Scuffing temperature theta_S for the ISO/TS 6336-20 flash-temperature safety; 0: none");
+
   // [friction]
   add(number(
           "friction.mu", [](auto& c, int) -> auto& { return c.friction_coefficient; }))
       .range(0.0, 1.0)
       .required(kFrictionPart)
       .alias({"mu"})
-      .doc("Coulomb friction coefficient of the asperity side contact (seed section 4)");
+      .doc(
+          "Coulomb friction coefficient of the asperity contacts: side contact (seed section 4) and the "
+          "boundary coefficient of a lubricated run");
 
   // [mesh]
   add(text(

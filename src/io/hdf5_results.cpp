@@ -42,6 +42,32 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
       for (const auto& f : r.flag_counts) number_attribute(validity, "positions_" + f.name, f.positions);
     }
   }
+  if (r.lubrication_summary) {
+    const auto& l = *r.lubrication_summary;
+    Handle lub(H5Gcreate2(file, "/lubrication", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /lubrication");
+    for (const auto& s : r.lubrication) hdf5::number_dataset(lub, s.name, s.values, s.unit);
+    string_attribute(lub, "lubricant", l.lubricant);
+    string_attribute(lub, "film_formula", l.film_formula);
+    string_attribute(lub, "inlet_heating", l.inlet_heating);
+    string_attribute(lub, "ehl_regime_codes",
+                     "0 rigid-isoviscous, 1 rigid-piezoviscous, 2 elastic-isoviscous, 3 elastic-piezoviscous");
+    number_attribute(lub, "oil_temperature_K", l.oil_temperature);
+    number_attribute(lub, "bulk_temperature_K", l.bulk_temperature);
+    number_attribute(lub, "bulk_temperature_estimated", l.bulk_estimated ? 1.0 : 0.0);
+    number_attribute(lub, "dynamic_viscosity_at_bulk_Pa_s", l.dynamic_viscosity);
+    number_attribute(lub, "pressure_viscosity_at_bulk_per_Pa", l.pressure_viscosity);
+    number_attribute(lub, "iso_mean_friction", l.iso_friction);
+    number_attribute(lub, "composite_rq_m", l.composite_rq);
+    number_attribute(lub, "mean_ra_m", l.mean_ra);
+    number_attribute(lub, "mean_power_loss_W", l.mean_power_loss);
+    number_attribute(lub, "input_power_W", l.input_power);
+    number_attribute(lub, "gear_loss_factor_path", l.loss_factor_path);
+    number_attribute(lub, "gear_loss_factor_ohlendorf", l.loss_factor_ohlendorf);
+    if (l.iso_scuffing_safety > 0.0) {
+      number_attribute(lub, "iso_scuffing_safety", l.iso_scuffing_safety);
+      number_attribute(lub, "scuffing_safety", l.scuffing_safety);
+    }
+  }
   {
     hdf5::string_dataset(file, "/scene", c.source_text);
     Handle scene(H5Dopen2(file, "/scene", H5P_DEFAULT), H5Dclose, "/scene");

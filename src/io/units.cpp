@@ -14,12 +14,13 @@ struct UnitEntry {
   std::string_view symbol;
   Dimension dimension;
   double to_si;
+  double offset = 0.0;  // SI = value * to_si + offset (degC only)
 };
 
 constexpr double kPi = std::numbers::pi;
 
 // The whole table. Symbols are matched exactly (case-sensitive: "MPa" is not "mpa").
-constexpr std::array<UnitEntry, 35> kUnits{{
+constexpr std::array<UnitEntry, 56> kUnits{{
     {"m", Dimension::length, 1.0},
     {"mm", Dimension::length, 1e-3},
     {"um", Dimension::length, 1e-6},
@@ -53,6 +54,27 @@ constexpr std::array<UnitEntry, 35> kUnits{{
     {"kg m^2", Dimension::inertia, 1.0},
     {"kg*m^2", Dimension::inertia, 1.0},
     {"mm/s", Dimension::speed, 1e-3},
+    {"K", Dimension::temperature, 1.0},
+    {"degC", Dimension::temperature, 1.0, 273.15},
+    {"m^2/s", Dimension::kinematic_viscosity, 1.0},
+    {"mm^2/s", Dimension::kinematic_viscosity, 1e-6},
+    {"cSt", Dimension::kinematic_viscosity, 1e-6},
+    {"Pa s", Dimension::dynamic_viscosity, 1.0},
+    {"mPa s", Dimension::dynamic_viscosity, 1e-3},
+    {"cP", Dimension::dynamic_viscosity, 1e-3},
+    {"1/Pa", Dimension::inverse_pressure, 1.0},
+    {"1/MPa", Dimension::inverse_pressure, 1e-6},
+    {"1/GPa", Dimension::inverse_pressure, 1e-9},
+    {"m^2/N", Dimension::inverse_pressure, 1.0},
+    {"mm^2/N", Dimension::inverse_pressure, 1e-6},
+    {"m^3/(N m)", Dimension::inverse_pressure, 1.0},
+    {"mm^3/(N m)", Dimension::inverse_pressure, 1e-9},
+    {"1/K", Dimension::inverse_temperature, 1.0},
+    {"W/(m K)", Dimension::thermal_conductivity, 1.0},
+    {"W/m/K", Dimension::thermal_conductivity, 1.0},
+    {"J/(kg K)", Dimension::specific_heat, 1.0},
+    {"J/kg/K", Dimension::specific_heat, 1.0},
+    {"kJ/(kg K)", Dimension::specific_heat, 1e3},
     {"1", Dimension::dimensionless, 1.0},
     {"%", Dimension::dimensionless, 1e-2},
 }};
@@ -91,6 +113,20 @@ std::string_view dimension_name(Dimension d) {
       return "speed";
     case Dimension::inertia:
       return "moment of inertia";
+    case Dimension::temperature:
+      return "temperature";
+    case Dimension::kinematic_viscosity:
+      return "kinematic viscosity";
+    case Dimension::dynamic_viscosity:
+      return "dynamic viscosity";
+    case Dimension::inverse_pressure:
+      return "inverse pressure";
+    case Dimension::inverse_temperature:
+      return "inverse temperature";
+    case Dimension::thermal_conductivity:
+      return "thermal conductivity";
+    case Dimension::specific_heat:
+      return "specific heat";
   }
   return "quantity";
 }
@@ -124,7 +160,10 @@ double parse_quantity(std::string_view text, Dimension d) {
   if (!std::isfinite(value)) throw std::invalid_argument("value must be finite");
   const std::string_view unit = trim(t.substr(static_cast<std::size_t>(end - t.data())));
   if (unit.empty()) return value;  // bare number: SI
-  return value * unit_factor(unit, d);
+  const double factor = unit_factor(unit, d);
+  for (const auto& u : kUnits)
+    if (u.symbol == unit) return value * factor + u.offset;
+  return value * factor;
 }
 
 std::optional<AnyQuantity> parse_any_quantity(std::string_view text) {
@@ -135,7 +174,7 @@ std::optional<AnyQuantity> parse_any_quantity(std::string_view text) {
   const std::string_view unit = trim(t.substr(static_cast<std::size_t>(end - t.data())));
   if (unit.empty()) return AnyQuantity{value, Dimension::dimensionless};
   for (const auto& u : kUnits)
-    if (u.symbol == unit) return AnyQuantity{value * u.to_si, u.dimension};
+    if (u.symbol == unit) return AnyQuantity{value * u.to_si + u.offset, u.dimension};
   return std::nullopt;
 }
 
@@ -165,6 +204,20 @@ std::string_view si_symbol(Dimension d) {
       return "m/s";
     case Dimension::inertia:
       return "kg m^2";
+    case Dimension::temperature:
+      return "K";
+    case Dimension::kinematic_viscosity:
+      return "m^2/s";
+    case Dimension::dynamic_viscosity:
+      return "Pa s";
+    case Dimension::inverse_pressure:
+      return "1/Pa";
+    case Dimension::inverse_temperature:
+      return "1/K";
+    case Dimension::thermal_conductivity:
+      return "W/(m K)";
+    case Dimension::specific_heat:
+      return "J/(kg K)";
   }
   return "1";
 }

@@ -20,7 +20,14 @@ enum class Dimension {
   angular_speed,
   density,
   speed,
-  inertia
+  inertia,
+  temperature,           // K; degC carries an offset
+  kinematic_viscosity,   // m^2/s
+  dynamic_viscosity,     // Pa s
+  inverse_pressure,      // 1/Pa: pressure-viscosity coefficient, Archard wear coefficient (m^2/N)
+  inverse_temperature,   // 1/K
+  thermal_conductivity,  // W/(m K)
+  specific_heat          // J/(kg K)
 };
 
 std::string_view dimension_name(Dimension d);

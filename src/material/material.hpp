@@ -20,6 +20,8 @@ struct Material {
   double hardness = 0.0;                      // H [Pa]: 2.8 S_y (Tabor, seed section 2), measured, or 2.8 sigma_f(0.08)
   std::string hardness_rule = "tabor-yield";  // "tabor-yield" (2.8 S_y), "flow-curve" or "given"
   double density = 0.0;                       // [kg/m^3]
+  double thermal_conductivity = 0.0;          // lambda [W/(m K)]; 0: not given (flash temperature needs it)
+  double specific_heat = 0.0;                 // c [J/(kg K)]; 0: not given
   std::vector<FlowPoint> flow_curve;          // plastic part of the stress-strain curve (seed section 6)
 
   // Throws std::invalid_argument naming the first rule broken (positive moduli, 0 < nu < 0.5,

@@ -34,7 +34,7 @@ start="[asperity.constants.continuous]
 plastic_onset = 1.0
 plastic_scale = 3.0
 plastic_exponent = 3.0"
-printf '%s\n%s\n' "$(cat gears/m6z30.toml)" "$start" > "$tmp/gears/start.toml"
+printf '%s\n%s\n' "$(cat gears/m6z30-dry.toml)" "$start" > "$tmp/gears/start.toml"
 "$bin" fit --model continuous --case "$tmp/gears/start.toml" \
   --data "$here/ccx-perfectly-plastic.csv" --data "$here/ccx-perfectly-plastic-onset.csv" \
   --free plastic_scale,plastic_exponent --observe plastic_area_fraction \
@@ -44,7 +44,7 @@ printf '%s\n%s\n' "$(cat gears/m6z30.toml)" "$start" > "$tmp/gears/start.toml"
   --free plastic_scale,plastic_exponent --observe plastic_area_fraction \
   --report "$reports/continuous-core-fit-hardening.txt" -o "$reports/continuous-core-fit-hardening.toml" -q
 # Step 2 starts from a case whose continuous constants carry step 1's core.
-cat gears/m6z30.toml "$reports/continuous-core-fit.toml" > "$tmp/gears/case.toml"
+cat gears/m6z30-dry.toml "$reports/continuous-core-fit.toml" > "$tmp/gears/case.toml"
 "$bin" fit --model continuous --case "$tmp/gears/case.toml" \
   --data "$here/kogut-etsion-2002.csv" --data "$here/jackson-green-2005.csv" \
   --free area_scale,area_exponent,pressure_scale,pressure_exponent --observe load_star,area_star \

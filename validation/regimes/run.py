@@ -5,7 +5,7 @@ Usage: validation/regimes/run.py path/to/geartrib [--write]
 
 For each finish (README.md: sources and assumptions) and both hardness choices of the 45 steel
 (hardness = "tabor-yield", 2.8 S_y, and "flow-curve", Tabor's 2.8 x the flow stress at 0.08), runs
-`geartrib run` on gears/m6z30.toml with the finish's roughness and reads, at the points A..E of
+`geartrib run` on gears/m6z30-dry.toml (the seed's dry scene) with the finish's roughness and reads, at the points A..E of
 the path, the plasticity index, real-area ratio, plastic area fraction, plastic contact fraction,
 separation over summit sigma and the validity flags, and the run's regime. Compares them with
 expected.csv (relative 1e-6: the runs are deterministic, the margin covers a libm difference) and
@@ -43,7 +43,7 @@ def scene(tmp, hardness):
     """A copy of the default case whose material takes the hardness choice."""
     os.makedirs(os.path.join(tmp, "gears"), exist_ok=True)
     os.makedirs(os.path.join(tmp, "materials"), exist_ok=True)
-    shutil.copy(os.path.join(ROOT, "gears/m6z30.toml"), os.path.join(tmp, "gears/m6z30.toml"))
+    shutil.copy(os.path.join(ROOT, "gears/m6z30-dry.toml"), os.path.join(tmp, "gears/m6z30.toml"))
     with open(os.path.join(ROOT, "materials/steel-45.toml")) as f:
         text = f.read()
     marker = '# hardness = "1.17 GPa"'

@@ -1,0 +1,73 @@
+// A lubricant's properties against temperature, SI: kinematic viscosity by Walther's law through
+// the 40 and 100 degC values (ASTM D341), density by a linear law, the pressure-viscosity
+// coefficient measured or from the ISO/TR 15144-1 correlation, and the thermal and traction data
+// the film, friction and inlet-heating models need. Read from lubricants/*.toml or a case's
+// [lubricant] table by io::load_case.
+#pragma once
+
+#include <string>
+
+namespace geartrib::lubrication {
+
+// The base stock, which selects the ISO/TS 6336-20 lubricant factor X_L of the mean friction.
+enum class BaseOil { mineral, pao, ester, polyglycol };
+BaseOil base_oil_from_name(const std::string& name);  // throws std::invalid_argument
+const char* base_oil_name(BaseOil b);
+// ISO/TS 6336-20 (ISO/TR 13989-1) X_L: mineral 1.0, polyalphaolefin 0.8, ester (non-water-soluble
+// polyglycol class) 0.7, water-soluble polyglycol 0.6 -- as those documents tabulate them.
+double iso_lubricant_factor(BaseOil b);
+
+struct Lubricant {
+  static constexpr double kWaltherOffset = 0.7;  // cSt, ASTM D341 for nu >= 2 cSt
+  std::string name;
+  std::string source;
+  BaseOil base_oil = BaseOil::mineral;
+  // Temperature-dependent form (a lubricant file): Walther through these two points.
+  double kinematic_viscosity_40 = 0.0;              // nu at 40 degC [m^2/s]
+  double kinematic_viscosity_100 = 0.0;             // nu at 100 degC [m^2/s]
+  double density_15 = 0.0;                          // rho at 15 degC [kg/m^3]
+  double density_temperature_coefficient = 6.4e-4;  // c of rho = rho15 (1 - c (T - 15 degC)) [1/K]
+  double pressure_viscosity = 0.0;  // alpha measured at pressure_viscosity_temperature [1/Pa]; 0: ISO/TR 15144-1
+  double pressure_viscosity_temperature = 313.15;  // [K]
+  // Fixed form (a case giving the oil at its inlet temperature): eta and alpha constant.
+  double fixed_dynamic_viscosity = 0.0;  // [Pa s]; > 0 selects the fixed form
+  // The defaults below are the fixed form's (typical mineral gear oil, assumed); a lubricant file
+  // gives every value itself.
+  double fixed_temperature_viscosity = 0.03;  // beta = -d ln(eta)/dT of the fixed form [1/K]
+  double thermal_conductivity = 0.13;         // k_f [W/(m K)]
+  double specific_heat = 0.0;                 // c_p [J/(kg K)]
+  double eyring_stress = 5e6;                 // tau_0 [Pa]
+  double limiting_shear_coefficient = 0.075;  // Lambda = tau_L / p [-]
+  double min_temperature = 253.15;            // range of the data [K]
+  double max_temperature = 423.15;
+
+  bool fixed() const { return fixed_dynamic_viscosity > 0.0; }
+  // Throws std::invalid_argument naming the member and the rule (positive viscosities with
+  // nu40 > nu100 >= 2 cSt, positive thermal data, 0 <= Lambda <= 1, min < max temperature).
+  void validate() const;
+};
+
+// The oil as a contact sees it at one temperature.
+struct OilState {
+  double temperature = 0.0;                 // [K]
+  double dynamic_viscosity = 0.0;           // eta_0 [Pa s]
+  double pressure_viscosity = 0.0;          // alpha [1/Pa]
+  double temperature_viscosity = 0.0;       // beta = -d ln(eta)/dT [1/K]
+  double density = 0.0;                     // [kg/m^3]
+  double thermal_conductivity = 0.0;        // [W/(m K)]
+  double eyring_stress = 0.0;               // [Pa]
+  double limiting_shear_coefficient = 0.0;  // [-]
+  double iso_lubricant_factor = 1.0;        // X_L
+};
+
+// nu(T) [m^2/s] by Walther (ASTM D341): log10 log10(nu_cSt + 0.7) = A - B log10(T/K).
+double kinematic_viscosity(const Lubricant& l, double temperature);
+double density(const Lubricant& l, double temperature);
+// ISO/TR 15144-1 (and ISO/TS 6336-22): alpha_38 = 2.657e-8 eta_38^0.1348 (eta in N s/m^2, alpha in
+// m^2/N: 1.9e-8 for an ISO VG 100 mineral oil, the typical measured value; eta in mPa s would give
+// 4.9e-8, twice any measurement) and alpha(T) = alpha_38 (1 + 516 (1/T - 1/311 K)). A measured
+// alpha is carried to T by the same temperature law.
+double pressure_viscosity_coefficient(const Lubricant& l, double temperature);
+OilState oil_state(const Lubricant& l, double temperature);
+
+}  // namespace geartrib::lubrication
