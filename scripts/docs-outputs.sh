@@ -29,7 +29,7 @@ mkdir -p "$out" "$fig" "$root/docs/reference"
 # a user types them from the source tree and their files do not land in it.
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-for d in gears materials validation scripts; do ln -s "$root/$d" "$work/$d"; done
+for d in gears materials lubricants validation scripts; do ln -s "$root/$d" "$work/$d"; done
 cd "$work"
 
 times="$work/.times.tsv"   # page, command, seconds
@@ -73,6 +73,9 @@ ex run run -o m6z30.h5 --csv m6z30.csv
 blank run
 sh_ex run "/usr/bin/python3 scripts/plot_mesh.py m6z30.h5 plots/ && ls plots | head -5"
 cp plots/overview.png "$fig/run-overview.png"
+cp plots/lubrication.png "$fig/run-lubrication.png"
+blank run
+ex run run gears/m6z30-dry.toml -o m6z30-dry.h5
 
 fresh sweep
 ex sweep sweep --set module=4mm,6mm,8mm --set face_width=40mm:80mm:3 --set rq=0.2um,0.8um -o sweep.h5 --csv sweep.csv
@@ -89,6 +92,11 @@ PY
 blank sweep
 sh_ex sweep "/usr/bin/python3 scripts/plot_design_sweep.py sweep.csv hertz_p0_Pa_max module face_width -o p0.png"
 cp p0.png "$fig/sweep-hertz-p0.png"
+blank sweep
+echo "(a Stribeck curve: the lubricated default case over speed, ground flanks, bulk temperature fixed)" >> "$out/sweep.txt"
+ex sweep sweep --set speed=1rpm,3rpm,10rpm,30rpm,100rpm,300rpm,1000rpm,3000rpm,10000rpm --set ra=0.2um --set bulk_temperature=80degC --set positions=41 -o stribeck.h5 --csv stribeck.csv
+sh_ex sweep "/usr/bin/python3 scripts/plot_stribeck.py stribeck.csv stribeck.png"
+cp stribeck.png "$fig/stribeck.png"
 
 fresh tradeoff
 ex tradeoff tradeoff --knob positions --knob height_points --knob table_points --knob strip_points -o tradeoff.png

@@ -3,9 +3,10 @@
 
 Usage: scripts/plot_mesh.py RESULTS.h5 OUTDIR
 
-Draws every /mesh and /contact quantity against the position s on the line of action (mm) as
-OUTDIR/<group>_<name>.png, with the points A..E marked, and OUTDIR/overview.png with the main
-quantities stacked. Needs Debian's python3-h5py and python3-matplotlib (scripts/setup.sh
+Draws every /mesh, /contact and /lubrication quantity against the position s on the line of
+action (mm) as OUTDIR/<group>_<name>.png, with the points A..E marked, OUTDIR/overview.png with
+the main quantities stacked and, for a lubricated run, OUTDIR/lubrication.png: film and lambda,
+the load shares, friction, flash and contact temperature, wear depth per engagement. Needs Debian's python3-h5py and python3-matplotlib (scripts/setup.sh
 installs them); run with /usr/bin/python3.
 """
 import os
@@ -19,6 +20,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 OVERVIEW = [("mesh", "load_share"), ("mesh", "hertz_p0_Pa"), ("contact", "real_area_ratio"),
             ("contact", "plastic_area_fraction"), ("contact", "max_asperity_von_mises_Pa"), ("mesh", "srr")]
+# Lubricated runs: each panel one or more /lubrication series sharing a unit.
+LUBRICATION = [("film [um]", 1e6, ["film_m", "iso_film_hy_m"]),
+               ("lambda [1]", 1.0, ["lambda", "iso_lambda_gf"]),
+               ("load share [1]", 1.0, ["asperity_load_share", "film_load_share"]),
+               ("friction [1]", 1.0, ["friction_coefficient", "iso_friction_coefficient"]),
+               ("temperature [degC]", 1.0, ["contact_temperature_K", "iso_contact_temperature_K"]),
+               ("wear per engagement [nm]", 1e9, ["wear_depth_pinion_m", "wear_depth_wheel_m"])]
 
 
 def text(value):
@@ -52,7 +60,7 @@ def main(argv):
         points = [(p, f["mesh"].attrs[f"s_{p}_m"] * 1e3) for p in "ABCDE"]
         title = f"{text(f['meta'].attrs['asperity_model'])}, {text(f['meta'].attrs['fidelity'])} strip"
         series = {}
-        for group in ("mesh", "contact", "contact/validity"):
+        for group in ("mesh", "contact", "contact/validity", "lubrication"):
             if group not in f:
                 continue
             for name, data in f[group].items():
@@ -86,6 +94,24 @@ def main(argv):
         fig.suptitle(title, fontsize=9)
         fig.tight_layout()
         out = os.path.join(outdir, "overview.png")
+        fig.savefig(out)
+        plt.close(fig)
+        written.append(out)
+    if any(g == "lubrication" for g, _ in series):
+        fig, axes = plt.subplots(len(LUBRICATION), 1, figsize=(7.0, 1.9 * len(LUBRICATION)), dpi=110, sharex=True)
+        for ax, (label, scale, names) in zip(axes, LUBRICATION):
+            for k, name in enumerate(names):
+                values, _ = series[("lubrication", name)]
+                shown = values - 273.15 if name.endswith("_K") else values * scale
+                ax.plot(s, shown, color=f"C{k}", label=name)
+            mark_points(ax, points)
+            ax.set_ylabel(label, fontsize=8)
+            ax.legend(fontsize=7, loc="best")
+            ax.grid(True, alpha=0.3)
+        axes[-1].set_xlabel("position on the line of action s [mm]")
+        fig.suptitle(f"lubricated: {title}", fontsize=9)
+        fig.tight_layout()
+        out = os.path.join(outdir, "lubrication.png")
         fig.savefig(out)
         plt.close(fig)
         written.append(out)

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
 namespace geartrib::contact {
 
 namespace lub = lubrication;
@@ -215,6 +217,30 @@ void MeshLubrication::finish(MeshContactResult& r) const {
     sum.points.push_back({name, s, at(p.s, film_, s), at(p.s, lambda, s), at(p.s, hy, s), at(p.s, lambda_gf, s),
                           at(p.s, asperity_share_, s)});
   r.lubrication_summary = std::move(sum);
+
+  // Where the lubricated models leave their ranges: said, not silent.
+  const auto& l = c.lubrication.lubricant;
+  if (!l.fixed()) {
+    constexpr double kC = 273.15;
+    if (bulk_temperature_ < l.min_temperature || bulk_temperature_ > l.max_temperature)
+      r.warnings.push_back(
+          fmt::format("bulk temperature {:.1f} degC{} lies outside {}'s data range [{:.0f}, {:.0f}] "
+                      "degC: the film's viscosity is extrapolated (Walther)",
+                      bulk_temperature_ - kC, bulk_estimated_ ? " (ISO estimate)" : "", l.name, l.min_temperature - kC,
+                      l.max_temperature - kC));
+    const double hottest = *std::max_element(iso_contact_t.begin(), iso_contact_t.end());
+    if (hottest > l.max_temperature)
+      r.warnings.push_back(
+          fmt::format("ISO/TS 6336-22 h_Y evaluates the oil at contact temperatures up to {:.1f} degC, "
+                      "beyond {}'s data ({:.0f} degC): its sliding parameter S_GF is extrapolated",
+                      hottest - kC, l.name, l.max_temperature - kC));
+  }
+  const auto low = static_cast<int>(std::count(peclet.begin(), peclet.end(), 1.0));
+  if (low > 0)
+    r.warnings.push_back(
+        fmt::format("{} of {} positions with a Peclet number below {:g} (flag_low_peclet): Blok's "
+                    "flash temperature assumes fast-moving surfaces and overestimates there",
+                    low, n, lub::kMinBlokPeclet));
 }
 
 }  // namespace geartrib::contact

@@ -40,7 +40,7 @@ double smooth_film(FilmFormula f, const EhlGroups& g, double radius);
 
 // Inlet shear heating: the film times a factor phi_T <= 1 of the thermal loading
 // L = beta eta0 u^2 / k_f (beta = -d ln eta/dT, k_f the oil's conductivity):
-//  - gupta (default): Gupta, Cheng, Zhu & Wedeven, J. Tribol. 114 (1992):
+//  - gupta (default): Gupta, Cheng, Zhu, Forster & Schrand, Tribol. Trans. 35 (1992) 269-274:
 //    phi_T = (1 - 13.2 (p_h/E') L^0.42) / (1 + 0.213 (1 + 2.23 SRR^0.83) L^0.64), floored at 0.05;
 //  - murch-wilson: Murch & Wilson, J. Lubr. Technol. 97 (1975), pure rolling: 3.94/(3.94 + L^0.62);
 //  - none: 1.

@@ -1,7 +1,7 @@
 // The mesh cycle's hot kernels on the seed's case, so that regressions show: the summit-height
 // quadrature at one separation, the pressure-separation table, the separation inversion, one
 // strip (uncoupled, coupled), the highest asperity's stresses, and the whole cycle as `geartrib
-// run` does it. Run: ./build/tests/geartrib_bench --benchmark_filter='gw_|strip_|cycle'
+// run` does it, dry and lubricated. Run: ./build/tests/geartrib_bench --benchmark_filter='gw_|strip_|cycle'
 #include "asperity/case_setup.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
@@ -87,13 +87,26 @@ void strip_highest_asperity(benchmark::State& state) {
 
 void cycle(benchmark::State& state) {
   Case c = setup().c;
+  c.lubrication.lubricated = false;  // the dry cycle (the seed's scene)
   c.contact.coupled = state.range(0) == 1;
   const solvers::KinsolSolver kinsol;
   for (auto _ : state)
     benchmark::DoNotOptimize(contact::run_mesh_contact(c, setup().mesh, c.contact.coupled ? &kinsol : nullptr));
 }
+// The lubricated cycle against the dry one at the same positions (issue 16: at most twice the
+// dry cycle's time): the default case with and without its [lubricant].
+void cycle_lubricated(benchmark::State& state) {
+  Case c = setup().c;
+  c.lubrication.lubricated = state.range(0) == 1;
+  const int positions = static_cast<int>(state.range(1));
+  for (auto _ : state) benchmark::DoNotOptimize(contact::run_mesh_contact(c, setup().mesh, nullptr, {}, positions));
+}
 }  // namespace
 
+BENCHMARK(cycle_lubricated)
+    ->ArgsProduct({{0, 1}, {201, 1000}})
+    ->ArgNames({"lubricated", "positions"})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(gw_quadrature)->RangeMultiplier(4)->Range(16, 1024)->Unit(benchmark::kMicrosecond);
 BENCHMARK(gw_table)->RangeMultiplier(4)->Range(4, 256)->Unit(benchmark::kMillisecond);
 BENCHMARK(gw_separation_inversion);
