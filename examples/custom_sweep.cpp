@@ -2,8 +2,8 @@
 //
 // `geartrib sweep` varies the keys of a case file from the command line. In a program you can
 // do the same by changing the Case struct itself, then running the mesh-cycle contact for each
-// variant. Here we ask a design question about the seed's gear pair (gears/m6z30.toml): how does
-// the real contact area respond to the transmitted torque, and to a finer flank finish?
+// variant. Here we ask a design question about the seed's gear pair dry (gears/m6z30-dry.toml, the seed's scene): how
+// does the real contact area respond to the transmitted torque, and to a finer flank finish?
 //
 // For every (torque, Ra) we
 //   1. copy the loaded case and change its operating point and both flanks' roughness,
@@ -12,7 +12,7 @@
 //      call `geartrib run` makes),
 //   4. pick a few numbers out of the result's named series and print one table row.
 //
-// Usage: custom_sweep [gears/m6z30.toml]
+// Usage: custom_sweep [gears/m6z30-dry.toml]
 #include "contact/mesh_contact.hpp"
 #include "gear/gear_mesh.hpp"
 #include "io/case_file.hpp"
@@ -24,7 +24,7 @@
 using namespace geartrib;
 
 int main(int argc, char** argv) {
-  const std::string file = argc > 1 ? argv[1] : GEARTRIB_DATA_DIR "/gears/m6z30.toml";
+  const std::string file = argc > 1 ? argv[1] : GEARTRIB_DATA_DIR "/gears/m6z30-dry.toml";
   const Case base = io::load_case(file);
 
   std::printf("%10s %8s %8s %11s %11s %10s %14s\n", "torque Nm", "Ra um", "psi", "max p0 MPa", "mean Ar/An",
