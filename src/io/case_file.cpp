@@ -349,6 +349,18 @@ void read_lubrication(TomlReader& r, Case& c) {
     const auto path = r.directory() / lc.lubricant_file;
     if (!std::filesystem::exists(path)) r.fail("lubricant.file", "lubricant file not found: " + path.string());
     lc.lubricant = load_lubricant(path);
+    // The oil's data as run are the file's: its values and origin replace the fixed form's
+    // defaults in the record (beta comes from Walther's law, not a key).
+    std::erase_if(c.parameters, [](const ResolvedParameter& p) {
+      return p.key == "lubricant.temperature_viscosity_coefficient" || p.key == "lubricant.dynamic_viscosity" ||
+             p.key == "lubricant.pressure_viscosity_coefficient";
+    });
+    for (ResolvedParameter& p : c.parameters)
+      if (p.key.rfind("lubricant.", 0) == 0 && p.key != "lubricant.file") {
+        const Parameter& row = *find_parameter(p.key).parameter;
+        p.value = row.format(row.get(c, -1));
+        p.origin = path.string();
+      }
   } else {
     for (const char* k : {"dynamic_viscosity", "pressure_viscosity_coefficient"})
       if (!r.has(std::string("lubricant.") + k))
