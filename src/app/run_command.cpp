@@ -101,11 +101,11 @@ void run(const Options& o) {
   io::write_mesh_contact_hdf5(out, r, case_file, c);
   if (o.csv.given()) {
     io::Table t;
-    for (const auto* group : {&r.mesh, &r.contact, &r.validity, &r.lubrication})
+    for (const auto* group : r.groups())
       for (const auto& q : *group) t.header.push_back(q.name);
     for (std::size_t i = 0; i < r.mesh.front().values.size(); ++i) {
       std::vector<double> row;
-      for (const auto* group : {&r.mesh, &r.contact, &r.validity, &r.lubrication})
+      for (const auto* group : r.groups())
         for (const auto& q : *group) row.push_back(q.values[i]);
       t.rows.push_back(std::move(row));
     }
@@ -138,8 +138,12 @@ void add_run_command(CLI::App& app) {
       "For each position: the kinematics and load (share, line load, Hertz strip, speeds) and the rough\n"
       "contact across the strip: real-area ratio, real area per face width, mean real pressure, contacts,\n"
       "plastic share of the real area and of the contacts, and the highest asperity's peak pressure and\n"
-      "von Mises stress. Computes only the outputs the case asks for ([contact] outputs). Writes HDF5\n"
-      "(/mesh, /contact with units, /scene and /parameters: the case as it ran, /meta with the stages and\n"
+      "von Mises stress. Computes only the outputs the case asks for ([contact] outputs).\n"
+      "A case with [lubricant] runs lubricated: the EHL film (with inlet heating), lambda, the load the\n"
+      "film leaves to the asperities (the /contact outputs are then the asperities' share), friction,\n"
+      "power loss, flash and contact temperature, wear per engagement, and the ISO/TS 6336-20/22 values\n"
+      "beside them (docs/theory/lubrication.md: each model's range). Writes HDF5 (/mesh, /contact,\n"
+      "/lubrication with units, /scene and /parameters: the case as it ran, /meta with the stages and\n"
       "their times) and prints each quantity's extremes and where on the path they occur.");
   add_case_argument(cmd, o->case_options);
   add_output_option(cmd, o->output, "the HDF5 results (default: <case name>.h5 in the working directory)");

@@ -73,7 +73,7 @@ PointResult run_point(const std::filesystem::path& case_file, const std::vector<
     p.regime = r.regime;
     p.verdict = r.verdict;
     p.flag_counts = r.flag_counts;
-    for (const auto* group : {&r.mesh, &r.contact, &r.validity, &r.lubrication})
+    for (const auto* group : r.groups())
       for (const auto& q : *group) {
         if (q.name == "s_m" || q.name == "roll_angle_rad") continue;                  // the path itself
         if (q.name.rfind("flag_", 0) == 0 || q.name == "plasticity_index") continue;  // counted below / a column

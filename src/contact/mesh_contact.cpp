@@ -5,19 +5,19 @@
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_lubrication.hpp"
 #include "contact/rough_line_contact.hpp"
+#include "contact/series_columns.hpp"
 #include "contact/validity.hpp"
 #include "gear/mesh_dynamics.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <initializer_list>
 #include <stdexcept>
 
 namespace geartrib::contact {
 
 const Series* MeshContactResult::find(const std::string& name) const {
-  for (const auto* group : {&mesh, &contact, &validity, &lubrication})
+  for (const auto* group : groups())
     for (const auto& s : *group)
       if (s.name == name) return &s;
   return nullptr;
@@ -49,30 +49,6 @@ class Stopwatch {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-// Each series is filled through the reference add_series() returns: the groups are reserved so
-// that adding a series never moves the earlier ones.
-constexpr std::size_t kMaxSeries = 32;
-std::vector<double>& add_series(std::vector<Series>& g, const char* name, const char* unit) {
-  if (g.size() == g.capacity()) throw std::logic_error("run_mesh_contact: raise kMaxSeries");
-  g.push_back({name, unit, {}});
-  return g.back().values;
-}
-
-// One series per column, a value per row (a position's strip result, validity, ...).
-template <class Row>
-struct Column {
-  const char* name;
-  const char* unit;
-  double (*value)(const Row&);
-};
-template <class Row>
-void add_columns(std::vector<Series>& g, const std::vector<Row>& rows, std::initializer_list<Column<Row>> columns) {
-  for (const Column<Row>& column : columns) {
-    std::vector<double>& v = add_series(g, column.name, column.unit);
-    v.reserve(rows.size());
-    for (const Row& row : rows) v.push_back(column.value(row));
-  }
-}
 }  // namespace
 
 MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
@@ -86,8 +62,6 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   Stopwatch clock;
 
   // Stage 1: kinematics and loading of one pair from A to E.
-  r.mesh.reserve(kMaxSeries);
-  r.contact.reserve(kMaxSeries);
   const auto add = add_series;
   std::vector<double> s_m, share, line_load, r_eq, p0, b_h;
   {
@@ -192,7 +166,7 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   std::vector<StripResult> strips;
   for (int i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    strips.push_back(strip.solve(line_load[k], r_eq[k], lubricated ? lubricated->asperity_shares()[k] : 1.0));
+    strips.push_back(strip.solve(line_load[k], r_eq[k], lubricated ? lubricated->asperity_share(k) : 1.0));
     if (progress) progress(i + 1, n);
   }
   r.stages.push_back({cs.coupled ? "strip_contact_coupled" : "strip_contact_uncoupled", clock.lap()});
@@ -229,7 +203,6 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   // Where the answer holds: per position, and one verdict for the run (cheap: one law
   // evaluation per position).
   {
-    r.validity.reserve(kMaxSeries);
     std::vector<PositionValidity> pv;
     pv.reserve(strips.size());
     for (const auto& st : strips) pv.push_back(position_validity(gw, st, mesh.pair().spec().face_width));

@@ -8,6 +8,7 @@
 #include "gear/gear_mesh.hpp"
 #include "surface/rough_surface.hpp"
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -80,6 +81,8 @@ struct MeshContactResult {
   // Findings that make a result doubtful (e.g. a real area larger than the nominal one).
   std::vector<std::string> warnings;
   const Series* find(const std::string& name) const;  // in mesh, contact, validity, lubrication; nullptr if absent
+  // Every group, in the order of the CSV columns and of find().
+  std::array<const std::vector<Series>*, 4> groups() const { return {&mesh, &contact, &validity, &lubrication}; }
 };
 
 // progress(done, total) is called after each position. positions <= 0: the case's number.

@@ -24,10 +24,24 @@ class MeshLubrication {
  public:
   // Film, regime and load shares at every position (before the strips are solved).
   MeshLubrication(const Case& c, const gear::GearMesh& mesh, const PathState& path, const GreenwoodWilliamson& gw);
-  // The asperities' share of the load at each position, for the strip contact.
-  const std::vector<double>& asperity_shares() const { return asperity_share_; }
+  // The asperities' share of the load at position i, for the strip contact.
+  double asperity_share(std::size_t i) const { return positions_[i].asperity_share; }
   // Friction, temperatures, wear and losses; fills r.lubrication and r.lubrication_summary.
-  void finish(MeshContactResult& r) const;
+  void finish(MeshContactResult& r);
+
+  // One position's lubricated state (SI); the constructor fills the film and the shares, finish()
+  // the rest. Each field is one /lubrication series.
+  struct Position {
+    double film_isothermal = 0.0, heating_factor = 1.0, film = 0.0, regime = 0.0;
+    double asperity_share = 0.0;
+    double separation = 0.0;    // mean planes' separation [m]
+    double film_gap = 0.0;      // the film's gap: the separation, or above the dry contact's [m]
+    double gap_from_dry = 0.0;  // 1 where the dry contact's separation is negative
+    double iso_flash = 0.0;     // flash temperature with the ISO mean coefficient [K]
+    double friction = 0.0, film_traction = 0.0, flash = 0.0, contact_temperature = 0.0, iso_contact_temperature = 0.0,
+           power_loss = 0.0, wear_pinion = 0.0, wear_wheel = 0.0, iso_film = 0.0, iso_lambda = 0.0, lambda = 0.0,
+           low_peclet = 0.0;
+  };
 
  private:
   const Case& case_;
@@ -42,11 +56,7 @@ class MeshLubrication {
   double bulk_temperature_ = 0.0;
   bool bulk_estimated_ = false;
   double composite_rq_ = 0.0, mean_ra_ = 0.0;
-  std::vector<double> film_isothermal_, heating_factor_, film_, regime_, iso_flash_;
-  std::vector<double> asperity_share_;
-  std::vector<double> separation_;    // mean planes' separation [m]
-  std::vector<double> film_gap_;      // the film's gap: the separation, or above the dry contact's (flag) [m]
-  std::vector<double> gap_from_dry_;  // 1 where the dry contact's separation is negative
+  std::vector<Position> positions_;
 };
 
 // (Ra1 + Ra2)/2 of a case's flanks [m]: the given Ra, or Rq/1.2533 (Gaussian), or for summit and

@@ -297,13 +297,23 @@ const std::vector<std::vector<std::string>>& roughness_forms() {
   return forms;
 }
 
+// The lubricant's fixed form: the table's [lubricant] rows other than the file.
+bool fixed_lubricant_key(std::string_view key) { return key.starts_with("lubricant.") && key != "lubricant.file"; }
+const std::vector<std::string>& fixed_lubricant_keys() {
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> k;
+    for (const Parameter& p : case_parameters())
+      if (fixed_lubricant_key(p.key)) k.push_back(p.key);
+    return k;
+  }();
+  return keys;
+}
+
 void apply_change(TomlReader& r, const std::string& key, const std::string& value) {
   // The lubricant's two forms replace each other: a file, or eta and alpha given in the case.
   if (key == "lubricant.file") {
-    for (const char* k : {"dynamic_viscosity", "pressure_viscosity_coefficient", "temperature_viscosity_coefficient",
-                          "thermal_conductivity", "eyring_stress", "limiting_shear_coefficient", "base_oil"})
-      r.erase(std::string("lubricant.") + k);
-  } else if (key.rfind("lubricant.", 0) == 0) {
+    for (const std::string& k : fixed_lubricant_keys()) r.erase(k);
+  } else if (fixed_lubricant_key(key)) {
     r.erase("lubricant.file");
   }
   // pinion.flank.rq = ... replaces the flank's other roughness forms.
@@ -334,18 +344,9 @@ void read_lubrication(TomlReader& r, Case& c) {
   lc.lubricated = true;
   if (!r.has("operating.oil_temperature"))
     r.fail("operating.oil_temperature", "missing required key (a lubricated run needs the oil temperature)");
-  const char* const fixed_keys[] = {"dynamic_viscosity",
-                                    "pressure_viscosity_coefficient",
-                                    "temperature_viscosity_coefficient",
-                                    "thermal_conductivity",
-                                    "eyring_stress",
-                                    "limiting_shear_coefficient",
-                                    "base_oil"};
   if (!lc.lubricant_file.empty()) {
-    for (const char* k : fixed_keys)
-      if (r.has(std::string("lubricant.") + k))
-        r.fail(std::string("lubricant.") + k,
-               "the lubricant file gives the oil's data; remove this key or lubricant.file");
+    for (const std::string& k : fixed_lubricant_keys())
+      if (r.has(k)) r.fail(k, "the lubricant file gives the oil's data; remove this key or lubricant.file");
     const auto path = r.directory() / lc.lubricant_file;
     if (!std::filesystem::exists(path)) r.fail("lubricant.file", "lubricant file not found: " + path.string());
     lc.lubricant = load_lubricant(path);
@@ -356,7 +357,7 @@ void read_lubrication(TomlReader& r, Case& c) {
              p.key == "lubricant.pressure_viscosity_coefficient";
     });
     for (ResolvedParameter& p : c.parameters)
-      if (p.key.rfind("lubricant.", 0) == 0 && p.key != "lubricant.file") {
+      if (fixed_lubricant_key(p.key)) {
         const Parameter& row = *find_parameter(p.key).parameter;
         p.value = row.format(row.get(c, -1));
         p.origin = path.string();

@@ -89,7 +89,6 @@ void Lubricant::validate() const {
 }
 
 double kinematic_viscosity(const Lubricant& l, double t) {
-  if (l.fixed()) return l.fixed_dynamic_viscosity / (l.density_15 > 0.0 ? density(l, t) : 1.0);
   const Walther w = walther(l);
   return (std::pow(10.0, std::pow(10.0, w.a - w.b * std::log10(t))) - Lubricant::kWaltherOffset) * kCentistokes;
 }

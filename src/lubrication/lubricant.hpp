@@ -60,7 +60,8 @@ struct OilState {
   double iso_lubricant_factor = 1.0;        // X_L
 };
 
-// nu(T) [m^2/s] by Walther (ASTM D341): log10 log10(nu_cSt + 0.7) = A - B log10(T/K).
+// nu(T) [m^2/s] by Walther (ASTM D341): log10 log10(nu_cSt + 0.7) = A - B log10(T/K). The
+// temperature-dependent form only (the fixed form has no density law: use oil_state).
 double kinematic_viscosity(const Lubricant& l, double temperature);
 double density(const Lubricant& l, double temperature);
 // ISO/TR 15144-1 (and ISO/TS 6336-22): alpha_38 = 2.657e-8 eta_38^0.1348 (eta in N s/m^2, alpha in

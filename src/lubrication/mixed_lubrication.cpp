@@ -11,13 +11,9 @@ namespace geartrib::lubrication {
 
 LoadShare share_load(double h_smooth, double e, const std::function<double(double)>& asperity_separation) {
   if (!(e > 0.0)) throw std::invalid_argument("share_load: the film exponent must be positive");
+  const auto dry = [&] { return LoadShare{1.0, 0.0, asperity_separation(1.0)}; };
+  if (!(h_smooth > 0.0)) return dry();  // no film
   LoadShare s;
-  if (!(h_smooth > 0.0)) {  // no film: the dry contact
-    s.asperity_share = 1.0;
-    s.film_share = 0.0;
-    s.film_thickness = asperity_separation(1.0);
-    return s;
-  }
   if (h_smooth >= asperity_separation(0.0)) {  // the smooth film clears the highest summits
     s.film_thickness = h_smooth;
     return s;
@@ -28,24 +24,14 @@ LoadShare share_load(double h_smooth, double e, const std::function<double(doubl
   auto g = [&](double x) { return h_smooth * std::exp(-e * x) - asperity_separation(-std::expm1(x)); };
   double lo = -1.0;
   while (g(lo) < 0.0 && lo > -700.0) lo *= 2.0;
-  if (g(lo) < 0.0) {  // film share below e^-700: the asperities carry all (a denormal film share)
-    s.asperity_share = 1.0;
-    s.film_share = 0.0;
-    s.film_thickness = asperity_separation(1.0);
-    return s;
-  }
+  if (g(lo) < 0.0) return dry();  // film share below e^-700: the asperities carry all
   std::uintmax_t iterations = 200;
   const auto [a, b] = boost::math::tools::toms748_solve(
       g, lo, 0.0, [](double l, double h) { return std::abs(h - l) <= 1e-13 * std::max(1.0, std::abs(l)); }, iterations);
   const double x = 0.5 * (a + b);
-  if (std::exp(x) <= kNegligibleFilmShare) {
-    // A film carrying less than this is no film: far below what the asperity side resolves (its
-    // pressure-separation table interpolates to ~1e-4), and the limit the dry contact must meet.
-    s.asperity_share = 1.0;
-    s.film_share = 0.0;
-    s.film_thickness = asperity_separation(1.0);
-    return s;
-  }
+  // A film carrying less than kNegligibleFilmShare is no film: far below what the asperity side
+  // resolves (its pressure-separation table interpolates to ~1e-4), and the limit the dry contact must meet.
+  if (std::exp(x) <= kNegligibleFilmShare) return dry();
   s.film_share = std::exp(x);
   s.asperity_share = -std::expm1(x);
   s.film_thickness = h_smooth * std::exp(-e * x);
