@@ -17,7 +17,8 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefi
                 COMMAND_ERROR_IS_FATAL ANY)
 foreach(f include/geartrib/gear/spur_pair.hpp include/geartrib/io/case_file.hpp
           share/geartrib/gears/m6z30.toml share/geartrib/materials/steel-45.toml share/geartrib/lubricants/mineral-vg220.toml
-          lib/cmake/geartrib/geartribConfig.cmake lib/cmake/geartrib/geartribConfigVersion.cmake bin/geartrib)
+          lib/cmake/geartrib/geartribConfig.cmake lib/cmake/geartrib/geartribConfigVersion.cmake bin/geartrib
+          lib/geartrib/geartrib-fit.so)
   if(NOT EXISTS ${prefix}/${f})
     message(FATAL_ERROR "not installed: ${f}")
   endif()
@@ -57,4 +58,10 @@ foreach(check "single_asperity:delta_c = 0.0746 nm" "mesh_position:Hertz p0 = 58
 endforeach()
 
 execute_process(COMMAND ${prefix}/bin/geartrib --help OUTPUT_QUIET COMMAND_ERROR_IS_FATAL ANY)
+# The fit command's module, loaded from <prefix>/lib/geartrib.
+execute_process(COMMAND ${prefix}/bin/geartrib fit --list kogut-etsion OUTPUT_VARIABLE out ERROR_VARIABLE err
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "load_coefficient_1")
+  message(FATAL_ERROR "installed geartrib fit (exit ${rc}):\n${out}${err}")
+endif()
 message(STATUS "installed geartrib and examples built against it: ok")

@@ -38,6 +38,8 @@ check kinematics-bad-sharing 2 "" -- "$bin" kinematics --load-sharing equal
 check multi-columns 0 "^asperity,load_N_per_m,contact_width_m,max_pressure_Pa,max_surface_von_mises_Pa,max_deformation_m" -- \
   "$bin" multi-asperity --layout LHL --height-step 1 --spacing 0.5um --delta-pc 0.5797nm --elements 2048 --csv
 check multi-totals 0 "^inflection_depth_m," -- "$bin" multi-asperity --layout HLH --delta-pc 0.5797nm --elements 2048 --csv
+# The solve's cost beside its time: FFT count, one transform's time, their product.
+check multi-cost 0 "^fft_time_s," -- "$bin" multi-asperity --layout HLH --delta-pc 0.5797nm --elements 2048 --csv
 check multi-single 0 "^1H," -- "$bin" multi-asperity --layout H --delta-pc 0.5797nm --elements 2048 --csv
 # The boundary elements' modulus is named: composite E_t = 113.19 GPa by default, E/(1 - nu^2) = 226.37 GPa on request.
 check multi-composite 0 "^modulus_composite_Pa,1.1318" -- "$bin" multi-asperity --layout H --delta-pc 0.5797nm --elements 2048 --csv

@@ -8,10 +8,11 @@ bin="$1"
 source "$(dirname "$0")/cli_support.sh"
 # 2 x 2 x 2 points, 21 positions each (fast); the same plan below in shards.
 plan=(gears/m6z30-dry.toml --set module=4mm,8mm --set face_width=40mm:80mm:2 --set rq=0.01um,0.8um --set positions=21)
-check full 0 "8 points, 0 failed" -- "$bin" sweep "${plan[@]}" --threads 2 -o "$tmp/full.h5" --csv "$tmp/full.csv"
+# The summary line: the points, their wall time and threads, and the process's peak memory.
+check full 0 "8 points, 0 failed; [0-9.e+-]+ s on 2 threads, peak memory [0-9]+ MB" -- "$bin" sweep "${plan[@]}" --threads 2 -o "$tmp/full.h5" --csv "$tmp/full.csv"
 check shard0 0 "4 points" -- "$bin" sweep "${plan[@]}" --shard 0/2 -o "$tmp/s0.h5"
 check shard1 0 "4 points" -- "$bin" sweep "${plan[@]}" --shard 1/2 -o "$tmp/s1.h5"
-check merge 0 "8 points" -- "$bin" sweep --merge "$tmp/s1.h5" "$tmp/s0.h5" -o "$tmp/merged.h5" --csv "$tmp/merged.csv"
+check merge 0 "8 points, 0 failed; peak memory [0-9]+ MB" -- "$bin" sweep --merge "$tmp/s1.h5" "$tmp/s0.h5" -o "$tmp/merged.h5" --csv "$tmp/merged.csv"
 check merge-missing-shard 2 "shard 1/2 is missing" -- "$bin" sweep --merge "$tmp/s0.h5" -o "$tmp/bad.h5"
 "$bin" run -q --set positions=5 -o "$tmp/run.h5" >/dev/null
 check merge-not-a-sweep 2 "not a readable geartrib sweep file" -- "$bin" sweep --merge "$tmp/run.h5" -o "$tmp/bad.h5"

@@ -1,11 +1,14 @@
 // Plane-strain boundary elements: convolution, Hertz line contact, subsurface stresses,
-// convergence, controls, the plastic cap, the periodic kernel.
+// convergence, controls, the plastic cap, the periodic kernel, the solver's options and cost.
 #include "asperity/critical.hpp"
 #include "contact/half_plane_bem.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <numbers>
+#include <string>
 
 using namespace geartrib::contact;
 
@@ -156,4 +159,110 @@ TEST(HalfPlaneBem, PeriodicArrayOfCylindersCarriesTheLoad) {
   EXPECT_LT(s.complementarity_error, 1e-10);
   const double pmax = *std::max_element(s.pressure.begin(), s.pressure.end());
   EXPECT_NEAR(pmax / p0, 1.0, 0.02);
+}
+
+TEST(ToeplitzConvolution, SpectralFactorAndTransformCount) {
+  // A factor of 1/m (m the FFT length) is the identity: the round trip's rounding, ~1e-16 per
+  // transform stage, on values of order 1 (hence 1e-13). Each product is two transforms.
+  const int n = 37;
+  std::vector<double> k(2 * n - 1, 1.0), in(n), out(n);
+  for (int i = 0; i < n; ++i) in[i] = std::cos(0.7 * i);
+  const ToeplitzConvolution conv(k, n, false);
+  const std::vector<double> identity(conv.fft_size() / 2 + 1, 1.0 / conv.fft_size());
+  const long before = ToeplitzConvolution::transforms();
+  conv.apply_spectral(in.data(), out.data(), identity);
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(out[i], in[i], 1e-13);
+  conv.apply(in.data(), out.data());
+  EXPECT_EQ(ToeplitzConvolution::transforms() - before, 4);
+  EXPECT_THROW(conv.apply_spectral(in.data(), out.data(), std::vector<double>(3, 1.0)), std::invalid_argument);
+}
+
+namespace {
+// Three cylinders, the middle one lower, pressed by a flat beyond the plastic cap.
+struct ThreeCylinders {
+  HalfPlaneGrid grid{-3e-6, 6e-6 / 8192, 8192};
+  std::vector<double> gap;
+  double approach = 8e-9;
+  ThreeCylinders() {
+    for (int i = 0; i < grid.size; ++i) {
+      double y = -4e-6;
+      for (double c : {-0.5e-6, 0.0, 0.5e-6})
+        y = std::max(y, (c == 0.0 ? -1e-9 : 0.0) - (grid.x(i) - c) * (grid.x(i) - c) / (2.0 * 6.6e-6));
+      gap.push_back(-y);
+    }
+  }
+  BemSolution solve(bool precondition, int coarse_elements, bool overlap_start) const {
+    BemOptions opt;
+    opt.pressure_cap = 1.1704e9;
+    opt.reference_length = 50e-6;
+    opt.precondition = precondition;
+    opt.coarse_elements = coarse_elements;
+    opt.overlap_start = overlap_start;
+    return HalfPlaneBem(grid, kEstar, opt).solve_approach(gap, approach);
+  }
+};
+}  // namespace
+
+TEST(HalfPlaneBem, SolverOptionsReachTheSameAnswer) {
+  // The plain solver (zero start, unpreconditioned conjugate gradients) and every option alone
+  // and together converge to the same pressure: the tolerance 1e-10 of the gap's relief (4 um)
+  // is 4e-16 m of gap, some 1e-7 of the approach. Loads to 1e-6 relative (observed < 1e-9);
+  // each element's pressure to 1e-4 of the cap (one element's stiffness E*/h times the gap
+  // tolerance is ~1e-4 of it; observed ~5e-6); the contact to one element (observed equal).
+  const ThreeCylinders study;
+  const BemSolution plain = study.solve(false, 0, false);
+  EXPECT_LT(plain.complementarity_error, 1e-10);
+  EXPECT_GT(plain.capped_elements, 0);
+  EXPECT_EQ(plain.coarse_iterations, 0);
+  struct Variant {
+    bool precondition;
+    int coarse_elements;
+    bool overlap_start;
+  };
+  for (const Variant v : {Variant{true, 0, false}, Variant{false, 1024, false}, Variant{false, 0, true},
+                          Variant{true, 1024, true}, Variant{true, 4096, true}}) {
+    const BemSolution s = study.solve(v.precondition, v.coarse_elements, v.overlap_start);
+    const std::string name =
+        fmt::format("precondition {} coarse {} overlap {}", v.precondition, v.coarse_elements, v.overlap_start);
+    EXPECT_LT(s.complementarity_error, 1e-10) << name;
+    EXPECT_NEAR(s.line_load / plain.line_load, 1.0, 1e-6) << name;
+    EXPECT_NEAR(s.contact_elements, plain.contact_elements, 1) << name;
+    EXPECT_EQ(s.capped_elements > 0, plain.capped_elements > 0) << name;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < s.pressure.size(); ++i)
+      worst = std::max(worst, std::abs(s.pressure[i] - plain.pressure[i]));
+    EXPECT_LT(worst, 1e-4 * 1.1704e9) << name;
+    EXPECT_EQ(s.coarse_iterations > 0, v.coarse_elements > 0) << name;
+  }
+}
+
+TEST(HalfPlaneBem, FastSolverNeedsFewIterationsAndCountsItsCost) {
+  // All the options together: on the finest grid a few iterations where the plain solver needs
+  // many (observed 8 against 58 at 8192 elements; a third leaves a margin), the FFTs counted,
+  // their time within the solve's.
+  const ThreeCylinders study;
+  const BemSolution plain = study.solve(false, 0, false), fast = study.solve(true, 1024, true);
+  EXPECT_LT(3 * fast.iterations, plain.iterations);
+  EXPECT_GT(fast.transforms, 0);
+  EXPECT_GT(fast.transform_seconds, 0.0);
+  EXPECT_LE(fast.transform_seconds, fast.seconds);
+}
+
+TEST(HalfPlaneBem, SubsurfaceStressFieldEqualsTheDirectSum) {
+  // The field by edges and far-field clusters against the element-by-element sum, everywhere
+  // from a tenth of an element to 10 um deep: within 1e-12 of the peak pressure (the direct
+  // sum's own rounding is ~3e-13 of it against a long-double sum, the field's ~3e-15).
+  const ThreeCylinders study;
+  const BemSolution s = study.solve(true, 1024, true);
+  const SubsurfaceStressField field(study.grid, s.pressure);
+  const double peak = *std::max_element(s.pressure.begin(), s.pressure.end());
+  for (double x : {-2e-6, -0.55e-6, -0.5e-6, -0.45e-6, -0.2e-6, 0.0, 0.1e-6, 0.5e-6, 1.9e-6})
+    for (double z : {0.1 * study.grid.spacing, 0.5 * study.grid.spacing, 1e-9, 2e-8, 1e-7, 5e-7, 2e-6, 1e-5}) {
+      const PlaneStrainStress a = subsurface_stress(study.grid, s.pressure, x, z, 0.3), b = field.at(x, z, 0.3);
+      EXPECT_NEAR(b.xx, a.xx, 1e-12 * peak) << x << " " << z;
+      EXPECT_NEAR(b.zz, a.zz, 1e-12 * peak) << x << " " << z;
+      EXPECT_NEAR(b.xz, a.xz, 1e-12 * peak) << x << " " << z;
+      EXPECT_NEAR(b.yy, a.yy, 1e-12 * peak) << x << " " << z;
+    }
+  EXPECT_THROW(field.at(0.0, 0.0, 0.3), std::invalid_argument);
 }

@@ -89,3 +89,37 @@ TEST(MultiAsperity, MeasuredProfileReproducesTheLayoutItDescribes) {
   measured.profile[1].tip_radius = 0.0;
   EXPECT_THROW(solve_multi_asperity(measured), std::invalid_argument);
 }
+
+TEST(MultiAsperity, ColdAndCoarseStartsGiveTheSameStudy) {
+  // The default solver (preconditioned, started from 4096 elements and the rigid overlap) and
+  // the plain one (zero start, no preconditioner) on the HLH study at 8192 elements: both stop
+  // within the tolerance (1e-10 of the 4 um relief, ~1e-7 of the approach) of one solution.
+  // Loads to 1e-6 relative (observed 4e-8); contact widths to one element (observed equal);
+  // peak pressures and stresses to 1e-4 (one element's stiffness E*/h times the gap tolerance
+  // is ~1e-4 of the peak; observed 2e-6).
+  const MultiAsperitySpec fast = spec("HLH", 1.0, 0.5e-6);
+  MultiAsperitySpec plain = fast;
+  plain.precondition = false;
+  plain.coarse_elements = 0;
+  plain.overlap_start = false;
+  const MultiAsperityResult a = solve_multi_asperity(fast), b = solve_multi_asperity(plain);
+  EXPECT_GT(a.coarse_iterations, 0);
+  EXPECT_EQ(b.coarse_iterations, 0);
+  EXPECT_LT(a.iterations, b.iterations);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(a.asperities[k].load / b.asperities[k].load, 1.0, 1e-6) << k;
+    EXPECT_NEAR(a.asperities[k].contact_width, b.asperities[k].contact_width, 1.01 * a.grid.spacing) << k;
+    EXPECT_NEAR(a.asperities[k].max_pressure / b.asperities[k].max_pressure, 1.0, 1e-4) << k;
+    EXPECT_NEAR(a.asperities[k].max_surface_von_mises / b.asperities[k].max_surface_von_mises, 1.0, 1e-4) << k;
+  }
+  EXPECT_NEAR(a.midpoint_von_mises[0] / b.midpoint_von_mises[0], 1.0, 1e-4);
+  EXPECT_NEAR(a.inflection_von_mises / b.inflection_von_mises, 1.0, 1e-4);
+  EXPECT_EQ(a.inflection_depth, b.inflection_depth);  // the same sample of the depth profile
+  // The cost is counted: FFTs within the solve, the solve within the study.
+  EXPECT_GT(a.transforms, 0);
+  EXPECT_LE(a.transform_seconds, a.solve_seconds);
+  EXPECT_LE(a.solve_seconds, a.seconds);
+  MultiAsperitySpec bad = fast;
+  bad.coarse_elements = -1;
+  EXPECT_THROW(solve_multi_asperity(bad), std::invalid_argument);
+}

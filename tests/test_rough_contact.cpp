@@ -1,5 +1,7 @@
 // Greenwood-Williamson statistics and the rough line contact across the Hertzian strip.
+#include "contact/mesh_contact.hpp"
 #include "contact/rough_line_contact.hpp"
+#include "gear/gear_mesh.hpp"
 #include "solvers/kinsol_solver.hpp"
 #include "test_support.hpp"
 
@@ -160,6 +162,48 @@ TEST(RoughLineContact, CoupledTendsToHertzAsRoughnessVanishes) {
   (void)b;
 }
 
+// A path's positions solved in order from the previous one (warm: its separations, its factorised
+// Jacobian) give the answers of solves from the Hertz pressure (cold). The loads follow a mesh
+// cycle's shape: a rise, a plateau, then a drop by 40% between neighbours (a load-sharing step).
+TEST(RoughLineContact, CoupledWarmStartsAgreeWithColdStarts) {
+  const auto model = asperity::make_asperity_model("continuous");
+  const GreenwoodWilliamson gw(make_surface(1.418e-6, 0.849e-6, 0.05), *model, test::seed_pair(), 2e9, {});
+  const solvers::KinsolSolver kinsol;
+  StripOptions opt;
+  opt.fidelity = StripFidelity::coupled;
+  const RoughLineContact strip(gw, 113.19e9, 0.08, opt, &kinsol);
+  CoupledStripState state;
+  const int positions = 41;
+  const double sigma = gw.surface().summit_sigma;
+  for (int k = 0; k < positions; ++k) {
+    const double s = k / (positions - 1.0);
+    const double share = s < 0.3 ? 1.0 / 3.0 + 2.0 / 3.0 * s / 0.3 : (s < 0.7 ? 1.0 : 0.6);
+    const double w = 1.5e5 * share, radius = 0.012 + 0.0035 * std::sin(kPi * s);
+    const StripResult cold = strip.solve(w, radius);
+    const StripResult warm = strip.solve(w, radius, 1.0, &state);
+    // Both stop at |F| <= 1e-10, KinsolSolver accepting up to 1e-9: separations (in sigma) and
+    // the relative load each within ~1e-9 of the exact discrete solution, from either side. The
+    // Jacobian's conditioning magnifies that little here (measured: 6e-11 relative in the
+    // integrals, 5e-11 sigma in the separation); 1e-8 is the acceptance times 10.
+    for (auto f : {&StripResult::line_load, &StripResult::real_area_per_width, &StripResult::contacts_per_width,
+                   &StripResult::plastic_area_fraction, &StripResult::plastic_contact_fraction,
+                   &StripResult::mean_real_pressure, &StripResult::max_nominal_pressure})
+      EXPECT_NEAR(warm.*f / (cold.*f), 1.0, 1e-8) << k;
+    EXPECT_NEAR(warm.min_separation, cold.min_separation, 1e-8 * sigma) << k;
+    ASSERT_EQ(warm.x.size(), cold.x.size());
+    for (std::size_t i = 0; i < warm.x.size(); ++i)
+      EXPECT_NEAR(warm.nominal_pressure[i], cold.nominal_pressure[i], 1e-8 * cold.max_nominal_pressure) << k;
+    // The contact half-width is an element edge: the 99.9% load crossing may fall on either
+    // side of one within the tolerance, so one element.
+    EXPECT_NEAR(warm.contact_half_width, cold.contact_half_width, 1.001 * (warm.x[1] - warm.x[0])) << k;
+  }
+  // The warm path did its work: every solve after the first from its predecessor, and far fewer
+  // Jacobians than solves (one per position and Newton step when cold).
+  EXPECT_EQ(state.cold_solves(), 1);
+  EXPECT_EQ(state.warm_solves(), positions - 1);
+  EXPECT_LT(state.jacobians(), positions);
+}
+
 TEST(EquivalentSurface, FromRaAndSummitRadii) {
   // The seed's flanks: Ra 0.8 um each -> Rq = sqrt(pi/2) Ra = 1.00265 um; composite
   // sqrt(2) x 1.00265 = 1.41796 um; beta = 1.65 x 1.75/3.4 = 0.849265 um; eta = 0.05/(sigma_s beta).
@@ -220,4 +264,110 @@ TEST(EquivalentSurface, SummitStatisticsAndMixedFormsRejected) {
   EXPECT_NEAR(s.summit_density, 2e10, 1e-3);
   b.form = surface::FlankRoughness::Form::ra;
   EXPECT_THROW(surface::equivalent_surface(a, b, surface::HeightDistribution::gaussian), std::invalid_argument);
+}
+
+TEST(GreenwoodWilliamson, SharedNodeTableEqualsTheDirectQuadrature) {
+  // The Gaussian table is built on nodes shared by its separations (one model evaluation per
+  // node, the density by recurrence); at its nodes it must equal the direct quadrature per
+  // separation. The direct rule cuts the height distribution at 8.5 sigma, which shows (above
+  // 1e-8) for separations beyond 5 sigma, pressures below ~1e-8 of the table's top (skipped:
+  // the shared rule keeps the whole Gaussian there). Measured against a
+  // 4096-point reference, the shared rule is within 7e-9 for pressure and area and 3e-8 for
+  // the plastic area, the direct rule within 1e-10 and 6e-7 (the plastic share's steep onset):
+  // tolerances 1e-8 and 1e-6.
+  const auto surf = make_surface(1.418e-6, 0.849e-6, 0.05);
+  for (const char* name : {"continuous", "kogut-etsion", "hertz"}) {
+    const auto model = asperity::make_asperity_model(name);
+    const GreenwoodWilliamson gw(surf, *model, test::seed_pair(), 3e9, {});
+    const double step = surf.summit_sigma / GreenwoodWilliamsonOptions{}.table_points_per_sigma;
+    int checked = 0;
+    for (int k = 0;; k += 7) {
+      const double d = gw.contact_onset() - k * step;
+      const SurfaceContact t = gw.interpolate(d), q = gw.at_separation(d);
+      if (q.nominal_pressure > 1.05 * 3e9) break;
+      if (d > 5.0 * surf.summit_sigma) continue;
+      EXPECT_NEAR(t.nominal_pressure / q.nominal_pressure, 1.0, 1e-8) << name << " " << k;
+      EXPECT_NEAR(t.real_area_ratio / q.real_area_ratio, 1.0, 1e-8) << name << " " << k;
+      if (q.plastic_area_ratio > 1e-12 * q.real_area_ratio) {
+        EXPECT_NEAR(t.plastic_area_ratio / q.plastic_area_ratio, 1.0, 1e-6) << name << " " << k;
+      }
+      ++checked;
+    }
+    EXPECT_GT(checked, 20) << name;
+  }
+}
+
+TEST(GreenwoodWilliamson, CubicCellsEqualTheExactLookup) {
+  // at_pressure: cubic Hermite cells of at most 2% in pressure on each segment's power law.
+  // Hermite error ~ (0.02)^4/384 x (a few) ~ 1e-8 of the value at most; 2e-8 allowed.
+  // Below the cells' floor and beyond the table: the exact route itself (equal).
+  for (const auto distribution : {surface::HeightDistribution::gaussian, surface::HeightDistribution::exponential}) {
+    for (const char* name : {"continuous", "kogut-etsion", "jackson-green"}) {
+      const auto model = asperity::make_asperity_model(name);
+      const GreenwoodWilliamson gw(make_surface(1.418e-6, 0.849e-6, 0.05, distribution), *model, test::seed_pair(), 3e9,
+                                   {});
+      const double top = gw.max_pressure();
+      for (double p : test::log_space(1e-9 * top, 1.2 * top, 1777)) {
+        const ContactAtPressure f = gw.at_pressure(p);
+        const SurfaceContact e = gw.interpolate(gw.separation_for_pressure(p));
+        const bool exact_route = p < GreenwoodWilliamson::kCellFloor * top || p >= top;
+        const double tol = exact_route ? 0.0 : 2e-8;
+        auto near = [&](double x, double y) { return std::abs(x - y) <= tol * std::abs(y); };
+        EXPECT_TRUE(near(f.real_area_ratio, e.real_area_ratio)) << name << " " << p;
+        EXPECT_TRUE(near(f.contact_density, e.contact_density)) << name << " " << p;
+        EXPECT_TRUE(near(f.plastic_area_ratio, e.plastic_area_ratio)) << name << " " << p;
+        EXPECT_TRUE(near(f.plastic_contact_density, e.plastic_contact_density)) << name << " " << p;
+      }
+    }
+  }
+}
+
+TEST(MeshContact, FastPathsEqualTheExactPathOnTheDefaultCase) {
+  // The default case (lubricated, continuous model, asperity stresses) with the cubic strip
+  // look-up and the von Mises table, against the exact look-up and the maximisation at every
+  // position: every output within 1e-6 relative (measured: 1e-10).
+  const Case& fast = test::lubricated_case();
+  Case exact = fast;
+  exact.contact.exact_strip_lookup = true;
+  exact.contact.stress_table = 0;
+  ASSERT_FALSE(fast.contact.exact_strip_lookup);
+  ASSERT_GT(fast.contact.stress_table, 0);
+  for (const double ra : {0.8e-6, 0.1e-6}) {  // fully plastic (the default flanks) and elastic-plastic
+    Case f = fast, e = exact;
+    for (Case* c : {&f, &e}) {
+      c->pinion.flank.roughness.ra = ra;
+      c->wheel.flank.roughness.ra = ra;
+    }
+    const gear::GearMesh mesh_f(f), mesh_e(e);
+    const MeshContactResult rf = run_mesh_contact(f, mesh_f, nullptr, {}, 201);
+    const MeshContactResult re = run_mesh_contact(e, mesh_e, nullptr, {}, 201);
+    int compared = 0;
+    for (const auto* group : re.groups())
+      for (const auto& s : *group) {
+        const Series* t = rf.find(s.name);
+        ASSERT_NE(t, nullptr) << s.name;
+        ASSERT_EQ(t->values.size(), s.values.size()) << s.name;
+        for (std::size_t i = 0; i < s.values.size(); ++i)
+          EXPECT_NEAR(t->values[i], s.values[i], 1e-6 * std::abs(s.values[i])) << s.name << " " << i << " " << ra;
+        ++compared;
+      }
+    EXPECT_GT(compared, 40);
+  }
+}
+
+TEST(MeshContact, ToothPairStiffnessOnlyWhenAskedOrUsed) {
+  // ISO load sharing needs no tooth stiffness: the series is written only when contact.outputs
+  // asks for it, and then equals the mesh analysis' sum over the pairs in contact.
+  Case c = test::seed_case();
+  ASSERT_FALSE(c.contact.mesh_stiffness);
+  c.contact.real_area = c.contact.plastic_fraction = c.contact.asperity_stress = false;
+  const gear::GearMesh mesh(c);
+  ASSERT_EQ(mesh.analysis().method(), gear::LoadSharing::iso);
+  EXPECT_EQ(run_mesh_contact(c, mesh, nullptr, {}, 11).find("mesh_stiffness_N_per_m"), nullptr);
+  c.contact.mesh_stiffness = true;
+  const MeshContactResult r = run_mesh_contact(c, mesh, nullptr, {}, 11);
+  const Series* k = r.find("mesh_stiffness_N_per_m");
+  ASSERT_NE(k, nullptr);
+  const auto& s = r.find("s_m")->values;
+  for (std::size_t i = 0; i < s.size(); ++i) EXPECT_EQ(k->values[i], mesh.analysis().at(s[i]).mesh_stiffness) << i;
 }

@@ -151,6 +151,15 @@ void run(const Options& o) {
   totals.add_row("element_width_m", {r.grid.spacing});
   totals.add_row("iterations", {static_cast<double>(r.iterations)});
   totals.add_row("complementarity_error", {r.complementarity_error});
+  // The cost: iterations on the coarser grids that started the solve, its FFTs (count, one
+  // transform's mean time, their product) beside the solve's and the whole study's wall time.
+  totals.add_row("coarse_iterations", {static_cast<double>(r.coarse_iterations)});
+  totals.add_row("fft_transforms", {static_cast<double>(r.transforms)});
+  const double one = r.transforms > 0 ? r.transform_seconds / static_cast<double>(r.transforms) : 0.0;
+  totals.add_row("fft_transform_time_s", {one});
+  totals.add_row("fft_time_s", {one * static_cast<double>(r.transforms)});
+  totals.add_row("solve_time_s", {r.solve_seconds});
+  totals.add_row("study_time_s", {r.seconds});
   // Two tables, one after the other (a blank line between).
   const bool csv = o.table.csv.in_place();
   auto both = [&](bool as_csv) {

@@ -23,6 +23,9 @@
 #include <mutex>
 #include <thread>
 
+#include <sched.h>
+#include <sys/resource.h>
+
 namespace geartrib::app {
 
 namespace {
@@ -172,10 +175,28 @@ void write_outputs(const io::ColumnTableFile& f, const Options& o) {
   else if (o.csv.in_place()) std::cout << io::format_csv(f.table);
 }
 
-void print_summary(const io::ColumnTable& t, const std::string& output) {
+// The process's peak resident memory so far [MB] (getrusage; Linux gives ru_maxrss in KiB).
+double peak_memory_mb() {
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) != 0) return std::nan("");
+  return static_cast<double>(usage.ru_maxrss) * 1024.0 / 1e6;
+}
+
+// The cores this process may run on (its CPU affinity: a container's or taskset's share, not
+// the machine's), at least 1.
+int available_cores() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0) return CPU_COUNT(&set);
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+// `how`: the run's wall time and threads (empty for a merge).
+void print_summary(const io::ColumnTable& t, const std::string& output, const std::string& how = "") {
   const io::Column* status = t.find("status");
   const auto failed = static_cast<std::size_t>(std::count(status->texts.begin(), status->texts.end(), "error"));
-  fmt::print("wrote {} ({} points, {} failed)\n", output, t.rows(), failed);
+  fmt::print("wrote {} ({} points, {} failed; {}peak memory {:.0f} MB)\n", output, t.rows(), failed, how,
+             peak_memory_mb());
   const io::Column* message = t.find("message");
   for (std::size_t i = 0; i < t.rows(); ++i)
     if (status->texts[i] == "error")
@@ -260,12 +281,14 @@ void run(const Options& o) {
   for (std::size_t i = 0; i < plan.size(); ++i)
     if (shard.owns(i)) mine.push_back(i);
   const int threads =
-      std::max(1, std::min<int>(o.threads > 0 ? o.threads : static_cast<int>(std::thread::hardware_concurrency()),
-                                static_cast<int>(mine.size())));
+      std::max(1, std::min<int>(o.threads > 0 ? o.threads : available_cores(), static_cast<int>(mine.size())));
   if (!o.quiet)
     std::cerr << fmt::format("sweep: {} points ({}), {} in this shard {}/{}, {} threads\n", plan.size(),
                              plan.describe(), mine.size(), shard.index, shard.count, threads);
+  const auto start = std::chrono::steady_clock::now();
   std::vector<PointResult> results(mine.size());
+  // Dynamic scheduling: each thread takes the next point when done with its last, so points of
+  // unequal cost (fidelity, positions, failing early) balance over the threads.
   std::atomic<std::size_t> next{0}, done{0};
   ProgressBar bar(!o.quiet, "points");
   std::vector<std::jthread> pool;
@@ -291,7 +314,11 @@ void run(const Options& o) {
                   {"signature", signature(base.source_text, plan.describe())},
                   {"mean", "trapezoidal mean over the evenly spaced positions A -> E"}};
   write_outputs(f, o);
-  if (!o.quiet) print_summary(f.table, o.output.empty() ? "sweep.h5" : o.output);
+  if (!o.quiet)
+    print_summary(
+        f.table, o.output.empty() ? "sweep.h5" : o.output,
+        fmt::format("{:.3g} s on {} threads, ",
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), threads));
 }
 
 }  // namespace

@@ -63,6 +63,8 @@ std::vector<Knob> knobs_of(const Case& c) {
   out.push_back(ladder("height_points", "contact.height_points"));
   out.push_back(ladder("table_points", "contact.table_points"));
   out.push_back(ladder("strip_points", "contact.strip_points"));
+  if (!c.contact.coupled) out.push_back(ladder("strip_lookup", "contact.strip_lookup"));
+  if (c.contact.asperity_stress) out.push_back(ladder("stress_table", "contact.stress_table"));
   Knob fidelity{"fidelity", {{"uncoupled", {{"contact.fidelity", "uncoupled"}}}}, false};
   for (const auto& n : row("contact.coupled_nodes").ladder)
     fidelity.settings.push_back({"coupled " + n, {{"contact.fidelity", "coupled"}, {"contact.coupled_nodes", n}}});
@@ -288,7 +290,9 @@ void add_tradeoff_command(CLI::App& app) {
       "tradeoff",
       "The speed/accuracy trade of the mesh cycle, measured on a case. Knobs: positions along A -> E,\n"
       "height_points (summit-height quadrature), table_points (pressure-separation table per sigma),\n"
-      "strip_points (uncoupled quadrature across the Hertz strip), fidelity (uncoupled, coupled with N\n"
+      "strip_points (uncoupled quadrature across the Hertz strip), strip_lookup (cubic cells or the exact\n"
+      "table inversion), stress_table (intervals of the normalised von Mises table, 0: exact maximisation),\n"
+      "fidelity (uncoupled, coupled with N\n"
       "nodes), integrator (odeint/cvode and tolerance of the dynamic cycle; recommended only when the case\n"
       "asks for dynamics); reported as physics choices, not recommended: dynamics (static against the\n"
       "dynamic cycle) and asperity_model. Each setting runs with the other knobs as the case has them and\n"

@@ -23,6 +23,13 @@ AxisStress hertz_axis_stress(double z_over_a, double nu);
 // rho = sqrt(c^2 + z^2).
 AxisStress uniform_disc_axis_stress(double z_over_c, double nu);
 
+// The Hertz pressure sqrt(1 - r^2/a^2) (per unit p_e) restricted to the annulus c <= r <= a, at
+// depth z/a, c/a in [0, 1]: the kernel integrated in closed form. With X = (1 - c^2)/(c^2 + z^2)
+// (lengths over a) and s = sqrt(X): sigma_z = -z^3 s^3/(1 + z^2), sigma_r = -(1+nu) z (s - atan s)
+// - sigma_z/2 (u = r^2: int sqrt(1-u) (u+z^2)^(-5/2) du = -2/(3(1+z^2)) X^(3/2) and
+// int sqrt(1-u) (u+z^2)^(-3/2) du = 2 (atan s - s)). c = 0 gives hertz_axis_stress.
+AxisStress hertz_annulus_axis_stress(double z_over_a, double c_over_a, double nu);
+
 // Point-load kernel of Boussinesq on the axis: stresses at depth z [m] from a unit normal
 // force at horizontal distance r [m] (ring average; Johnson eq. 3.21):
 // sigma_z = -3 z^3 / (2 pi rho^5); sigma_r = [-(1+nu) z/(pi rho^3) + 3 z^3/(2 pi rho^5)] / 2.

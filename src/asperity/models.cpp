@@ -75,7 +75,8 @@ PressureProfile AsperityModel::profile(double plastic_share, double load, double
   return two_zone_profile(a, area > 0.0 ? load / area : 0.0, plastic_share);
 }
 
-AsperityState AsperityModel::evaluate(const ContactPair& pair, double delta, Detail detail) const {
+AsperityState AsperityModel::evaluate(const ContactPair& pair, double delta, Detail detail,
+                                      VonMisesTable* stress_table) const {
   if (!(delta >= 0.0) || !std::isfinite(delta))
     throw std::invalid_argument("interference must be finite and non-negative");
   const Critical crit = critical(pair);
@@ -101,7 +102,10 @@ AsperityState AsperityModel::evaluate(const ContactPair& pair, double delta, Det
   s.plastic_radius = prof.core_radius;
   s.max_pressure = prof.max_pressure();
   if (detail == Detail::profile) return s;
-  const VonMisesMaximum vm = prof.von_mises_maximum(pair.poisson_ratio);
+  if (stress_table && stress_table->poisson_ratio() != pair.poisson_ratio)
+    throw std::invalid_argument("the von Mises table was built for another Poisson's ratio");
+  const VonMisesMaximum vm = stress_table ? stress_table->at(s.contact_radius, s.mean_pressure, s.plastic_fraction)
+                                          : prof.von_mises_maximum(pair.poisson_ratio);
   s.max_von_mises = vm.value;
   s.von_mises_depth = vm.depth;
   return s;

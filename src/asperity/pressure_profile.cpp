@@ -3,8 +3,6 @@
 #include "asperity/axis_stress.hpp"
 #include "core/maximize.hpp"
 
-#include <boost/math/quadrature/gauss_kronrod.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -44,24 +42,8 @@ AxisStress PressureProfile::axis_stress(double depth, double nu) const {
     s.axial += scale * t.axial;
   };
   if (core_radius > 0.0) add(uniform_disc_axis_stress(depth / core_radius, nu), core_pressure);
-  if (core_radius < a && annulus_peak != 0.0) {
-    add(hertz_axis_stress(depth / a, nu), annulus_peak);
-    if (core_radius > 0.0) {
-      // Inner cap of the Hertz distribution, r = a sin t so that the integrand stays smooth.
-      const double t_max = std::asin(std::min(1.0, core_radius / a));
-      auto component = [&](bool radial) {
-        auto f = [&](double t) {
-          const double r = a * std::sin(t);
-          const double p = annulus_peak * std::cos(t);
-          const AxisStress k = boussinesq_axis_kernel(r, depth, nu);
-          return p * (radial ? k.radial : k.axial) * 2.0 * kPi * r * a * std::cos(t);
-        };
-        return boost::math::quadrature::gauss_kronrod<double, 31>::integrate(f, 0.0, t_max, 12, 1e-11);
-      };
-      s.radial -= component(true);
-      s.axial -= component(false);
-    }
-  }
+  if (core_radius < a && annulus_peak != 0.0)
+    add(hertz_annulus_axis_stress(depth / a, core_radius / a, nu), annulus_peak);
   return s;
 }
 

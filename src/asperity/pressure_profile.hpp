@@ -26,9 +26,8 @@ struct PressureProfile {
   double max_pressure() const;
   // Plastic share of the contact area (r_p/a)^2.
   double plastic_fraction() const;
-  // Elastic stresses on the axis at depth z [m], superposing the uniform core (closed form),
-  // the full Hertz distribution (closed form) and minus its inner cap r < r_p (adaptive
-  // Gauss-Kronrod over the Boussinesq kernel).
+  // Elastic stresses on the axis at depth z [m], superposing the uniform core and the Hertz-type
+  // annulus, both in closed form (axis_stress.hpp).
   AxisStress axis_stress(double depth, double nu) const;
   // Largest von Mises stress of that elastic field on the axis, and its depth.
   VonMisesMaximum von_mises_maximum(double nu) const;

@@ -53,6 +53,10 @@ SideContactGeometry side_contact_geometry(double r1, double r2, double mu) {
   g.radius_y = r / c;
   g.radius_0 = g.radius_x;
   g.radius_mean = std::sqrt(g.radius_x * g.radius_y);
+  const EllipticHertz unit = elliptic_hertz(g.radius_x, g.radius_y, 1.0, 1.0);
+  g.load_ratio = unit.load / hertz_load(1.0, g.radius_0, 1.0);
+  g.area_ratio = unit.area() / (kPi * g.radius_0);
+  g.aspect = std::sqrt(1.0 - unit.eccentricity * unit.eccentricity);
   return g;
 }
 
@@ -85,18 +89,15 @@ EllipticHertz elliptic_hertz(double rx, double ry, double modulus, double delta)
 }
 
 SideContactState evaluate_side_contact(const AsperityModel& model, const ContactPair& pair,
-                                       const SideContactGeometry& g, double applied_delta, Detail detail) {
+                                       const SideContactGeometry& g, double applied_delta, Detail detail,
+                                       VonMisesTable* stress_table) {
   const ContactPair pair0 = with_radius(pair, g.radius_0);
   SideContactState s;
   s.theta = g.theta;
   s.applied_delta = applied_delta;
   const double delta_n = applied_delta * std::cos(g.theta);
-  s.normal = model.evaluate(pair0, delta_n, detail);
-  // Elliptical / circular (R0) Hertz ratios, independent of delta (both scale as delta^3/2, delta).
-  const EllipticHertz unit = elliptic_hertz(g.radius_x, g.radius_y, pair.modulus, 1.0);
-  const double load_ratio = unit.load / hertz_load(1.0, g.radius_0, pair.modulus);
-  const double area_ratio = unit.area() / (kPi * g.radius_0);
-  const double aspect = std::sqrt(1.0 - unit.eccentricity * unit.eccentricity);  // b/a
+  s.normal = model.evaluate(pair0, delta_n, detail, stress_table);
+  const double load_ratio = g.load_ratio, area_ratio = g.area_ratio, aspect = g.aspect;
   AsperityState& n = s.normal;
   n.load *= load_ratio;
   n.area *= area_ratio;

@@ -18,6 +18,11 @@ struct SideContactGeometry {
   double radius_y = 0.0;     // equivalent radius across it: R/cos theta [m]
   double radius_0 = 0.0;     // the seed's R0 = R1' R2'/(R1' + R2'), R_i' = R_i/cos^3 theta: = radius_x
   double radius_mean = 0.0;  // sqrt(R_x R_y), the Hertz equivalent radius of the ellipse [m]
+  // Elliptical-to-circular (R0) Hertz ratios at the same approach, independent of the approach
+  // and of the modulus (both contacts scale as delta^3/2 and delta).
+  double load_ratio = 1.0;
+  double area_ratio = 1.0;
+  double aspect = 1.0;  // b/a of the contact ellipse
 };
 
 // Principal radii of a paraboloid of tip radius R at the point where its normal is tilted by
@@ -58,6 +63,6 @@ struct SideContactState {
 };
 SideContactState evaluate_side_contact(const AsperityModel& model, const ContactPair& pair,
                                        const SideContactGeometry& geometry, double applied_delta,
-                                       Detail detail = Detail::full);
+                                       Detail detail = Detail::full, VonMisesTable* stress_table = nullptr);
 
 }  // namespace geartrib::asperity

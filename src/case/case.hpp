@@ -114,11 +114,14 @@ struct ContactSettings {
   bool real_area = true;  // outputs asked for
   bool plastic_fraction = true;
   bool asperity_stress = true;
-  int positions = 201;      // along A -> E of one tooth pair
-  int strip_points = 64;    // uncoupled quadrature across the strip
-  int height_points = 128;  // GW quadrature over summit heights
-  int table_points = 32;    // GW pressure-separation table points per summit sigma
-  int coupled_nodes = 128;  // coupled pressure elements
+  bool mesh_stiffness = false;      // the tooth-pair stiffness along the path (needed anyway by stiffness load sharing)
+  int positions = 201;              // along A -> E of one tooth pair
+  int strip_points = 64;            // uncoupled quadrature across the strip
+  int height_points = 128;          // GW quadrature over summit heights
+  int table_points = 32;            // GW pressure-separation table points per summit sigma
+  int coupled_nodes = 128;          // coupled pressure elements
+  bool exact_strip_lookup = false;  // "cubic" cells in the pressure (false) or "exact": the table's inversion
+  int stress_table = 64;  // von Mises table intervals over sqrt(plastic share); 0: exact maximisation each time
 };
 
 // Mesh dynamics: the engine (none: static load sharing) and the model's data.

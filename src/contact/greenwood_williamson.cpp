@@ -57,13 +57,188 @@ GreenwoodWilliamson::GreenwoodWilliamson(const surface::EquivalentSurface& surfa
   }
   step_ = s / options_.table_points_per_sigma;
   // From no contact downward until the pressure exceeds what the caller needs.
-  for (int k = 0;; ++k) {
-    const double d = z_high_ - k * step_;
+  const double target = 1.05 * max_pressure;
+  if (surface_.distribution == surface::HeightDistribution::gaussian) {
+    // Stride down by sigma (direct quadrature) to the depth the table must reach; within
+    // kSharedDepth, build the table on nodes shared by all its separations (gaussian_table).
+    double d = z_high_;
+    while (at_separation(d).nominal_pressure < target && z_high_ - d <= kSharedDepth * s) d -= s;
+    if (z_high_ - d <= kSharedDepth * s) {
+      gaussian_table(static_cast<int>(std::ceil((z_high_ - d) / step_)) + 1);
+      const auto last = std::find_if(table_.begin() + 1, table_.end(),
+                                     [&](const SurfaceContact& c) { return c.nominal_pressure >= target; });
+      if (last != table_.end()) table_.erase(last + 1, table_.end());
+    }
+  }
+  // The rest (all of it for the exponential distribution) by direct quadrature per separation.
+  while (!(table_.size() >= 2 && table_.back().nominal_pressure >= target)) {
+    const double d = z_high_ - static_cast<double>(table_.size()) * step_;
     table_.push_back(at_separation(d));
-    if (table_.back().nominal_pressure >= 1.05 * max_pressure && k > 0) break;
+    if (table_.size() >= 2 && table_.back().nominal_pressure >= target) break;
     if (d < -1e4 * s)
       throw std::invalid_argument("nominal pressure " + std::to_string(max_pressure) +
                                   " Pa is beyond what the rough surface can carry at any separation");
+  }
+  build_cells();
+}
+
+void GreenwoodWilliamson::build_cells() {
+  const double top = table_.back().nominal_pressure;
+  // Segments [k, k+1] with both pressures above the floor.
+  std::size_t k0 = 0;
+  while (k0 + 1 < table_.size() && !(table_[k0].nominal_pressure > kCellFloor * top)) ++k0;
+  cell_segment0_ = k0;
+  for (std::size_t k = k0; k < table_.size(); ++k) segment_pressure_.push_back(table_[k].nominal_pressure);
+  using Q = double SurfaceContact::*;
+  constexpr Q quantities[4] = {&SurfaceContact::real_area_ratio, &SurfaceContact::contact_density,
+                               &SurfaceContact::plastic_area_ratio, &SurfaceContact::plastic_contact_density};
+  const double log_cell = std::log(kCellRatio);
+  for (std::size_t k = k0; k + 1 < table_.size(); ++k) {
+    cell_start_.push_back(cells_.size());
+    const SurfaceContact &a = table_[k], &b = table_[k + 1];
+    // In the segment, t = ln(p/pa)/L, L = ln(pb/pa), and each quantity is blend(Qa, Qb, t):
+    // Q = Qa (Qb/Qa)^t (both positive) or Qa + (Qb - Qa) t; dQ/dp = dQ/dt / (L p).
+    const double length = std::log(b.nominal_pressure / a.nominal_pressure);
+    if (!(length > 0.0)) {  // a flat segment (never chosen by the search): a constant cell
+      Cell cell;
+      cell.p_lo = a.nominal_pressure;
+      for (int q = 0; q < 4; ++q) cell.c[q][0] = a.*quantities[q];
+      cells_.push_back(cell);
+      continue;
+    }
+    const int n = std::max(1, static_cast<int>(std::ceil(length / log_cell)));
+    double log_ratio[4];
+    for (int q = 0; q < 4; ++q) {
+      const double qa = a.*quantities[q], qb = b.*quantities[q];
+      log_ratio[q] = qa > 0.0 && qb > 0.0 ? std::log(qb / qa) : 0.0;
+    }
+    auto value_slope = [&](double p, int q, double& value, double& slope) {
+      const double qa = a.*quantities[q], qb = b.*quantities[q];
+      const double t = std::log(p / a.nominal_pressure) / length;
+      if (qa > 0.0 && qb > 0.0) {
+        value = qa * std::exp(t * log_ratio[q]);
+        slope = value * log_ratio[q] / (length * p);
+      } else {
+        value = qa + (qb - qa) * t;
+        slope = (qb - qa) / (length * p);
+      }
+    };
+    const double width = (b.nominal_pressure - a.nominal_pressure) / n;
+    for (int j = 0; j < n; ++j) {
+      Cell cell;
+      cell.p_lo = a.nominal_pressure + j * width;
+      const double p_hi = j + 1 == n ? b.nominal_pressure : cell.p_lo + width;
+      const double w = p_hi - cell.p_lo;
+      cell.inv_width = 1.0 / w;
+      for (int q = 0; q < 4; ++q) {
+        double v0, s0, v1, s1;
+        value_slope(cell.p_lo, q, v0, s0);
+        value_slope(p_hi, q, v1, s1);
+        if (j == 0) v0 = a.*quantities[q];  // the table's own values at its nodes
+        if (j + 1 == n) v1 = b.*quantities[q];
+        const double m0 = s0 * w, m1 = s1 * w;  // cubic Hermite in tau = (p - p_lo)/w
+        cell.c[q][0] = v0;
+        cell.c[q][1] = m0;
+        cell.c[q][2] = 3.0 * (v1 - v0) - 2.0 * m0 - m1;
+        cell.c[q][3] = 2.0 * (v0 - v1) + m0 + m1;
+      }
+      cells_.push_back(cell);
+    }
+  }
+  cell_start_.push_back(cells_.size());
+}
+
+ContactAtPressure GreenwoodWilliamson::at_pressure(double p, std::size_t& segment) const {
+  if (segment_pressure_.size() < 2 || !(p >= segment_pressure_.front()) || !(p < segment_pressure_.back())) {
+    const SurfaceContact c = interpolate(separation_for_pressure(p));
+    return {c.real_area_ratio, c.contact_density, c.plastic_area_ratio, c.plastic_contact_density};
+  }
+  // The segment k with P_k <= p < P_k+1 (from the caller's last, else by bisection), then its
+  // cell (uniform in p within the segment).
+  std::size_t k = segment;
+  if (k + 1 >= segment_pressure_.size() || p < segment_pressure_[k]) k = 0;
+  for (int step = 0; step < 4 && p >= segment_pressure_[k + 1]; ++step) ++k;
+  if (p >= segment_pressure_[k + 1])
+    k = static_cast<std::size_t>(
+        std::upper_bound(segment_pressure_.begin() + static_cast<std::ptrdiff_t>(k), segment_pressure_.end(), p) -
+        segment_pressure_.begin() - 1);
+  segment = k;
+  const std::size_t first = cell_start_[k], count = cell_start_[k + 1] - first;
+  const double pa = segment_pressure_[k], pb = segment_pressure_[k + 1];
+  const std::size_t j =
+      std::min(count - 1, static_cast<std::size_t>((p - pa) / (pb - pa) * static_cast<double>(count)));
+  const Cell& cell = cells_[first + j];
+  const double tau = (p - cell.p_lo) * cell.inv_width;
+  double out[4];
+  for (int q = 0; q < 4; ++q) out[q] = cell.c[q][0] + tau * (cell.c[q][1] + tau * (cell.c[q][2] + tau * cell.c[q][3]));
+  return {out[0], out[1], out[2], out[3]};
+}
+
+void GreenwoodWilliamson::gaussian_table(int entries) {
+  // The separations d_k = z_high - k h share one quadrature in the interference u over
+  // [0, z_high - d_last] (u = v^2, composite Gauss-Legendre in v with panel ends at the model's
+  // breakpoints, height_points in all): the model is evaluated once per node, and the Gaussian
+  // density follows by recurrence in k (lengths over sigma):
+  //   exp(-(d_k + u)^2/2) = m_k(u) exp(-(k h)^2/2),  m_k = exp(-(z_high + u)^2/2) r^k,
+  //   r = exp(h (z_high + u)),
+  // one multiply-add per node and separation. Within kSharedDepth sigma, m_k stays within
+  // exp(+-600): no overflow or underflow.
+  const double s = surface_.summit_sigma, h = step_ / s, z = z_high_ / s;
+  const double u_end = (entries - 1) * step_;
+  // Panel ends: the breakpoints, and a geometric grading towards u = 0 (sigma 4^-j, up to five
+  // levels, one per three panels), where the shallow separations' integrands live (within
+  // ~sigma^2/d of the onset).
+  const int panels = options_.height_points / kGaussPoints;
+  std::vector<double> ends{0.0};
+  for (double b : breaks_)
+    if (b < u_end) ends.push_back(std::sqrt(b));
+  double g = s;
+  for (int level = 0; level < std::min(5, panels / 3); ++level, g /= 4.0)
+    if (g < u_end) ends.push_back(std::sqrt(g));
+  std::sort(ends.begin(), ends.end());
+  ends.push_back(std::sqrt(u_end));
+  const double eta = surface_.summit_density / (s * std::sqrt(2.0 * std::numbers::pi));
+  std::vector<double> load, area, plastic, m, r;
+  for (std::size_t seg = 0; seg + 1 < ends.size(); ++seg) {
+    const double length = ends[seg + 1] - ends[seg];
+    if (!(length > 0.0)) continue;
+    const int n = std::max(1, static_cast<int>(std::lround(panels * length / ends.back())));
+    const double hp = length / n;
+    for (int k = 0; k < n; ++k)
+      for (std::size_t i = 0; i < Gauss::abscissa().size(); ++i)
+        for (int sign : {-1, 1}) {
+          if (i == 0 && sign == 1 && kGaussPoints % 2 == 1) continue;
+          const double v = ends[seg] + k * hp + 0.5 * hp * (1.0 + sign * Gauss::abscissa()[i]);
+          const double w = 0.5 * hp * Gauss::weights()[i] * 2.0 * v * eta;
+          const double u = v * v;
+          const asperity::AsperityState st = model_.evaluate(pair_, u, asperity::Detail::load_area);
+          load.push_back(st.load * w);
+          area.push_back(st.area * w);
+          plastic.push_back(options_.plastic ? st.area * st.plastic_fraction * w : 0.0);
+          const double x = z + u / s;
+          m.push_back(std::exp(-0.5 * x * x));
+          r.push_back(std::exp(h * x));
+        }
+  }
+  const std::size_t nodes = m.size();
+  table_.reserve(static_cast<std::size_t>(entries));
+  for (int k = 0; k < entries; ++k) {
+    double p = 0.0, a = 0.0, pa = 0.0;
+    for (std::size_t j = 0; j < nodes; ++j) {
+      p += load[j] * m[j];
+      a += area[j] * m[j];
+      pa += plastic[j] * m[j];
+      m[j] *= r[j];
+    }
+    const double e = std::exp(-0.5 * (k * h) * (k * h));
+    SurfaceContact c;
+    c.separation = z_high_ - k * step_;
+    c.nominal_pressure = p * e;
+    c.real_area_ratio = a * e;
+    c.plastic_area_ratio = pa * e;
+    c.contact_density = contact_density(c.separation);
+    c.plastic_contact_density = contact_density(c.separation + delta_c_);
+    table_.push_back(c);
   }
 }
 
@@ -112,16 +287,17 @@ SurfaceContact GreenwoodWilliamson::at_separation(double d) const {
       }
     }
   }
-  // Contact counts in closed form.
-  const double s = surface_.summit_sigma;
-  auto survival = [&](double z) {
-    if (surface_.distribution == surface::HeightDistribution::gaussian)
-      return 0.5 * std::erfc(z / (s * std::sqrt(2.0)));
-    return z <= 0.0 ? 1.0 : std::exp(-z / s);
-  };
-  c.contact_density = eta * survival(d);
-  c.plastic_contact_density = eta * survival(d + delta_c_);
+  c.contact_density = contact_density(d);
+  c.plastic_contact_density = contact_density(d + delta_c_);
   return c;
+}
+
+double GreenwoodWilliamson::contact_density(double d) const {
+  // eta times the share of summits above d, in closed form.
+  const double s = surface_.summit_sigma;
+  if (surface_.distribution == surface::HeightDistribution::gaussian)
+    return surface_.summit_density * 0.5 * std::erfc(d / (s * std::sqrt(2.0)));
+  return surface_.summit_density * (d <= 0.0 ? 1.0 : std::exp(-d / s));
 }
 
 SurfaceContact GreenwoodWilliamson::interpolate(double d) const {
@@ -145,7 +321,14 @@ SurfaceContact GreenwoodWilliamson::interpolate(double d) const {
   return c;
 }
 
-double GreenwoodWilliamson::pressure(double d) const { return interpolate(d).nominal_pressure; }
+double GreenwoodWilliamson::pressure(double d) const {
+  // interpolate(d).nominal_pressure alone.
+  if (d >= z_high_) return 0.0;
+  const double x = (z_high_ - d) / step_;
+  const std::size_t k = static_cast<std::size_t>(std::floor(x));
+  if (k + 1 >= table_.size()) return at_separation(d).nominal_pressure;
+  return blend(table_[k].nominal_pressure, table_[k + 1].nominal_pressure, x - static_cast<double>(k));
+}
 
 double GreenwoodWilliamson::pressure_slope(double d) const {
   if (d >= z_high_) return 0.0;
@@ -190,8 +373,12 @@ double GreenwoodWilliamson::highest_summit(double nominal_area) const {
   const double n = surface_.summit_density * nominal_area;
   if (!(n > 1.0)) return 0.0;
   const double s = surface_.summit_sigma;
-  if (surface_.distribution == surface::HeightDistribution::gaussian)
-    return s * boost::math::quantile(boost::math::complement(boost::math::normal(), 1.0 / n));
+  if (surface_.distribution == surface::HeightDistribution::gaussian) {
+    // In double precision (Boost's default promotes to long double: 10x slower, no gain at 1e-16).
+    using Policy = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
+    return s *
+           boost::math::quantile(boost::math::complement(boost::math::normal_distribution<double, Policy>(), 1.0 / n));
+  }
   return s * std::log(n);
 }
 

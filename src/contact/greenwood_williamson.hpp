@@ -21,6 +21,14 @@ struct SurfaceContact {
   double plastic_contact_density = 0.0;  // contacts with z - d > delta_c, per nominal area [1/m^2]
 };
 
+// The quantities of a point of the rough surface besides its nominal pressure, per nominal area.
+struct ContactAtPressure {
+  double real_area_ratio = 0.0;
+  double contact_density = 0.0;  // [1/m^2]
+  double plastic_area_ratio = 0.0;
+  double plastic_contact_density = 0.0;  // [1/m^2]
+};
+
 struct GreenwoodWilliamsonOptions {
   // The resolutions' ranges (the case file's contact.height_points and contact.table_points).
   static constexpr int kMinHeightPoints = 8, kMaxHeightPoints = 100000;  // 8: one Gauss panel
@@ -50,6 +58,19 @@ class GreenwoodWilliamson {
   // The separation giving nominal pressure p >= 0 (bracketed inversion of the monotone table);
   // p = 0 gives the separation where contact begins.
   double separation_for_pressure(double p) const;
+  // interpolate(separation_for_pressure(p)) without a logarithm or power: each table segment's
+  // power law in p is split into cells of at most kCellRatio in pressure, each a cubic Hermite
+  // polynomial in p with the law's values and slopes at its ends (error below 1e-8 of the value;
+  // tests/test_rough_contact.cpp). Below kCellFloor of the table's top and above it: the exact
+  // route.
+  // `segment`: where the search starts and the segment found (a caller looking up ascending
+  // pressures passes the same variable each time: a step or two per call instead of a bisection).
+  ContactAtPressure at_pressure(double p) const {
+    std::size_t segment = 0;
+    return at_pressure(p, segment);
+  }
+  ContactAtPressure at_pressure(double p, std::size_t& segment) const;
+  static constexpr double kCellRatio = 1.02, kCellFloor = 1e-7;
   // Height above the summit mean of the highest summit expected in a nominal area [m^2]:
   // the height exceeded by one summit of eta A on average (0 when eta A < 1).
   double highest_summit(double nominal_area) const;
@@ -62,7 +83,10 @@ class GreenwoodWilliamson {
   double critical_interference() const { return delta_c_; }
 
  private:
-  double density(double z) const;  // summit-height probability density phi(z) [1/m]
+  double density(double z) const;               // summit-height probability density phi(z) [1/m]
+  double contact_density(double d) const;       // summits above d per nominal area [1/m^2]
+  void gaussian_table(int entries);             // table_[0 .. entries) on shared nodes
+  static constexpr double kSharedDepth = 25.0;  // sigma: the shared-node table's reach below z_high
   surface::EquivalentSurface surface_;
   const asperity::AsperityModel& model_;
   asperity::ContactPair pair_;
@@ -72,6 +96,17 @@ class GreenwoodWilliamson {
   std::vector<double> breaks_;         // interferences where the model jumps or kinks [m], ascending
   double step_;                        // table spacing in d [m]
   std::vector<SurfaceContact> table_;  // decreasing d from z_high_: table_[k].separation = z_high_ - k step
+  // at_pressure's cells: the table segments from cell_segment0_ on (pressures in
+  // segment_pressure_), segment k's cells from cell_start_[k] in cells_.
+  struct Cell {
+    double p_lo = 0.0, inv_width = 0.0;  // [Pa], [1/Pa]
+    double c[4][4] = {};                 // per quantity, Horner coefficients in (p - p_lo)/width
+  };
+  void build_cells();
+  std::size_t cell_segment0_ = 0;
+  std::vector<double> segment_pressure_;  // table_[k].nominal_pressure, k >= cell_segment0_
+  std::vector<std::size_t> cell_start_;   // per segment, and one past the last
+  std::vector<Cell> cells_;
 };
 
 }  // namespace geartrib::contact

@@ -80,11 +80,16 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
     auto& ue = add(r.mesh, "entrainment_m_per_s", "m/s");
     auto& vs = add(r.mesh, "sliding_m_per_s", "m/s");
     auto& srr = add(r.mesh, "srr", "1");
-    auto& ks = add(r.mesh, "mesh_stiffness_N_per_m", "N/m");
+    // The tooth-pair stiffness (potential energy, the costliest part of this stage) only when
+    // asked for or when the load sharing uses it.
+    const bool stiffness = cs.mesh_stiffness || mesh.analysis().method() == gear::LoadSharing::stiffness;
+    std::vector<double>* ks = stiffness ? &add(r.mesh, "mesh_stiffness_N_per_m", "N/m") : nullptr;
     const auto& path = r.path;
     for (int i = 0; i < n; ++i) {
       const double s = path.a + path.length * i / (n - 1);
-      const gear::MeshInstant m = mesh.analysis().at(s);
+      const gear::MeshInstant m = mesh.analysis().at(
+          s, false,
+          stiffness ? gear::MeshAnalysis::PairStiffness::computed : gear::MeshAnalysis::PairStiffness::omitted);
       const gear::PairLoad* own = &m.pairs.front();
       for (const auto& l : m.pairs)
         if (std::abs(l.s - s) < std::abs(own->s - s)) own = &l;
@@ -105,7 +110,7 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
       ue.push_back(k.entrainment);
       vs.push_back(k.sliding);
       srr.push_back(k.slide_to_roll);
-      ks.push_back(m.mesh_stiffness);
+      if (ks) ks->push_back(m.mesh_stiffness);
     }
     s_m = s_v;
     r_eq = req;
@@ -161,12 +166,15 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   StripOptions so;
   so.fidelity = cs.coupled ? StripFidelity::coupled : StripFidelity::uncoupled;
   so.strip_points = cs.strip_points;
+  so.lookup = cs.exact_strip_lookup ? StripLookup::exact : StripLookup::cubic;
   so.coupled_nodes = cs.coupled_nodes;
   const RoughLineContact strip(gw, mesh.composite_modulus(), mesh.pair().spec().face_width, so, solver);
   std::vector<StripResult> strips;
+  strips.reserve(static_cast<std::size_t>(n));
+  CoupledStripState warm;  // coupled: each position starts from the last (they follow the path)
   for (int i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    strips.push_back(strip.solve(line_load[k], r_eq[k], lubricated ? lubricated->asperity_share(k) : 1.0));
+    strips.push_back(strip.solve(line_load[k], r_eq[k], lubricated ? lubricated->asperity_share(k) : 1.0, &warm));
     if (progress) progress(i + 1, n);
   }
   r.stages.push_back({cs.coupled ? "strip_contact_coupled" : "strip_contact_uncoupled", clock.lap()});
@@ -248,10 +256,15 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
     if (side)
       geometry = asperity::side_contact_geometry(c.pinion.flank.roughness.summit_radius,
                                                  c.wheel.flank.roughness.summit_radius, c.friction_coefficient);
+    // The normalised von Mises table (nodes computed as the path needs them), or none: the exact
+    // maximisation at every position.
+    std::optional<asperity::VonMisesTable> table;
+    if (cs.stress_table > 0) table.emplace(gw.pair().poisson_ratio, cs.stress_table);
     std::vector<HighestAsperity> highest;
     highest.reserve(strips.size());
     for (const auto& st : strips)
-      highest.push_back(highest_asperity(gw, st, mesh.pair().spec().face_width, side ? &geometry : nullptr));
+      highest.push_back(highest_asperity(gw, st, mesh.pair().spec().face_width, side ? &geometry : nullptr,
+                                         table ? &*table : nullptr));
     using H = HighestAsperity;
     add_columns<H>(r.contact, highest,
                    {Column<H>{"max_asperity_interference_m", "m", [](const H& h) { return h.interference; }},

@@ -81,6 +81,7 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
   const lub::FilmLaw& law = lub::film_law(formula_);
   const double summit_offset = gw.surface().summit_mean_height;
   const auto& oil = oil_at_bulk_;
+  double guess = std::numeric_limits<double>::quiet_NaN();  // ln(film share) at the last position
   for (std::size_t i = 0; i < n; ++i) {
     Position& q = positions_[i];
     const double u = 0.5 * (p.v1[i] + p.v2[i]);
@@ -103,7 +104,8 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
     const auto gap = [&](double share) { return gw.separation_for_pressure(share * p0) + summit_offset - below; };
     q.gap_from_dry = below < 0.0 ? 1.0 : 0.0;
     if (p.line_load[i] > 0.0) {
-      const lub::LoadShare s = lub::share_load(q.film, law.speed_exponent - law.material_exponent, gap);
+      const lub::LoadShare s = lub::share_load(q.film, law.speed_exponent - law.material_exponent, gap, guess);
+      if (s.film_share > 0.0) guess = std::log(s.film_share);
       q.asperity_share = s.asperity_share;
       q.film_gap = s.film_thickness;
     } else {

@@ -1,6 +1,7 @@
 #include "contact/multi_asperity.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -32,6 +33,7 @@ void MultiAsperitySpec::validate() const {
   if (!(pressure_cap > 0.0)) throw std::invalid_argument("pressure cap must be positive");
   if (elements < 64 || elements > (1 << 22)) throw std::invalid_argument("elements must lie in [64, 4194304]");
   if (!(reference_length > 0.0)) throw std::invalid_argument("reference length must be positive");
+  if (coarse_elements < 0) throw std::invalid_argument("coarse elements must be >= 0");
   if (line_load && !(*line_load > 0.0)) throw std::invalid_argument("line load must be positive");
   if (!line_load && !(approach > 0.0)) throw std::invalid_argument("approach must be positive");
   if (!line_load && approach >= asperity_height)
@@ -39,6 +41,7 @@ void MultiAsperitySpec::validate() const {
 }
 
 MultiAsperityResult solve_multi_asperity(const MultiAsperitySpec& spec) {
+  const auto start = std::chrono::steady_clock::now();
   spec.validate();
   const bool measured = !spec.profile.empty();
   const int count = static_cast<int>(measured ? spec.profile.size() : spec.layout.size());
@@ -78,6 +81,9 @@ MultiAsperityResult solve_multi_asperity(const MultiAsperitySpec& spec) {
   opt.tolerance = spec.tolerance;
   opt.pressure_cap = spec.pressure_cap;
   opt.reference_length = spec.reference_length;
+  opt.precondition = spec.precondition;
+  opt.coarse_elements = spec.coarse_elements;
+  opt.overlap_start = spec.overlap_start;
   const HalfPlaneBem bem(grid, spec.modulus, opt);
   const BemSolution s =
       spec.line_load ? bem.solve_load(gap0, *spec.line_load) : bem.solve_approach(gap0, spec.approach);
@@ -88,9 +94,14 @@ MultiAsperityResult solve_multi_asperity(const MultiAsperitySpec& spec) {
   out.approach = s.approach;
   out.line_load = s.line_load;
   out.iterations = s.iterations;
+  out.coarse_iterations = s.coarse_iterations;
   out.complementarity_error = s.complementarity_error;
+  out.transforms = s.transforms;
+  out.transform_seconds = s.transform_seconds;
+  out.solve_seconds = s.seconds;
   // Per asperity: its share of the domain runs to the midpoints of the gaps.
   const double nu = spec.poisson_ratio, h = grid.spacing;
+  const SubsurfaceStressField field(grid, s.pressure);
   for (int k = 0; k < count; ++k) {
     AsperityLoad a;
     a.kind = kind[static_cast<std::size_t>(k)];
@@ -116,15 +127,14 @@ MultiAsperityResult solve_multi_asperity(const MultiAsperitySpec& spec) {
     if (a.contact_width > 0.0) {
       const double span = contact_hi - contact_lo + a.contact_width;
       for (double x = contact_lo - 0.5 * span; x <= contact_hi + 0.5 * span; x += std::max(h, span / 400.0))
-        a.max_surface_von_mises =
-            std::max(a.max_surface_von_mises, subsurface_stress(grid, s.pressure, x, 0.5 * h, nu).von_mises());
+        a.max_surface_von_mises = std::max(a.max_surface_von_mises, field.at(x, 0.5 * h, nu).von_mises());
     }
     out.total_contact_area += a.contact_width * spec.length;
     out.asperities.push_back(a);
   }
   for (int k = 0; k + 1 < count; ++k) {
     const double x = 0.5 * (centre[k] + centre[k + 1]);
-    out.midpoint_von_mises.push_back(subsurface_stress(grid, s.pressure, x, 0.5 * h, nu).von_mises());
+    out.midpoint_von_mises.push_back(field.at(x, 0.5 * h, nu).von_mises());
   }
   // Below the middle asperity: the von Mises profile, its maximum, and the inflection point
   // beyond it (second difference changing sign from negative to positive).
@@ -135,7 +145,7 @@ MultiAsperityResult solve_multi_asperity(const MultiAsperitySpec& spec) {
   std::vector<double> z(samples), v(samples);
   for (int j = 0; j < samples; ++j) {
     z[j] = depth_max * (j + 1) / samples;
-    v[j] = subsurface_stress(grid, s.pressure, xm, z[j], nu).von_mises();
+    v[j] = field.at(xm, z[j], nu).von_mises();
   }
   const int jmax = static_cast<int>(std::max_element(v.begin(), v.end()) - v.begin());
   for (int j = std::max(jmax, 1); j + 1 < samples; ++j) {
@@ -147,6 +157,7 @@ MultiAsperityResult solve_multi_asperity(const MultiAsperitySpec& spec) {
       break;
     }
   }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 

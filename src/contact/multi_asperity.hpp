@@ -34,6 +34,12 @@ struct MultiAsperitySpec {
   int elements = 4096;              // boundary elements over the domain
   double reference_length = 50e-6;  // displacement reference L_ref (a rigid base ~L_ref deep) [m]
   double tolerance = 1e-10;
+  // The solver (BemOptions): preconditioned, started from coarser grids of the same domain down
+  // to coarse_elements (0: none) and, on the coarsest, from the rigid overlap. Any choice
+  // converges to the same answer within the tolerance; these are the fastest.
+  bool precondition = true;
+  int coarse_elements = 4096;
+  bool overlap_start = true;
   // Measured asperities in order across the lay; when not empty they replace layout, tip_radius,
   // height_step and spacing (kind 'H' marks the highest tip, 'L' the others).
   std::vector<ProfileAsperity> profile;
@@ -58,8 +64,15 @@ struct MultiAsperityResult {
   double inflection_von_mises = 0.0;       // ... and the von Mises stress there [Pa]
   double approach = 0.0;                   // [m]
   double line_load = 0.0;                  // [N/m]
-  int iterations = 0;
+  int iterations = 0;                      // on the grid of `elements`
+  int coarse_iterations = 0;               // on the coarser grids that started it
   double complementarity_error = 0.0;
+  // Cost: the boundary-element solve's FFTs (count, time in them), its wall time, and the whole
+  // study's (solve, loads, stresses) [s].
+  long transforms = 0;
+  double transform_seconds = 0.0;
+  double solve_seconds = 0.0;
+  double seconds = 0.0;
   HalfPlaneGrid grid;
   std::vector<double> pressure;
 };

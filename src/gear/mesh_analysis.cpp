@@ -28,7 +28,7 @@ PairLoad MeshAnalysis::pair_load(double s, double w) const {
   return l;
 }
 
-MeshInstant MeshAnalysis::at(double s, bool single_side) const {
+MeshInstant MeshAnalysis::at(double s, bool single_side, PairStiffness stiffness) const {
   const PathOfContact& p = pair_.path();
   std::vector<double> positions = pairs_in_contact(p, s);
   if (single_side) {
@@ -45,7 +45,8 @@ MeshInstant MeshAnalysis::at(double s, bool single_side) const {
   for (std::size_t i = 0; i < positions.size(); ++i) {
     PairLoad l = pair_load(positions[i], shares[i] * normal_force_ / width);
     l.share = shares[i];
-    l.stiffness = stiffness_.pair(positions[i]).stiffness;
+    if (stiffness == PairStiffness::computed || method_ == LoadSharing::stiffness)
+      l.stiffness = stiffness_.pair(positions[i]).stiffness;
     m.mesh_stiffness += l.stiffness;
     m.pairs.push_back(l);
   }

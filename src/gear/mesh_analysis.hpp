@@ -31,8 +31,10 @@ class MeshAnalysis {
                double composite_modulus);
 
   // The mesh when one pair is at s. single_side: at B and D take the single-pair side of the
-  // jump (the neighbour at E or A has just left or not yet arrived).
-  MeshInstant at(double s, bool single_side = false) const;
+  // jump (the neighbour at E or A has just left or not yet arrived). PairStiffness::omitted
+  // leaves the stiffnesses 0 unless the load sharing needs them (ISO sharing does not).
+  enum class PairStiffness { computed, omitted };
+  MeshInstant at(double s, bool single_side = false, PairStiffness stiffness = PairStiffness::computed) const;
   // Hertz values of a pair at s carrying line load w.
   PairLoad pair_load(double s, double line_load) const;
   // One base pitch of pinion rotation, n positions s0 = A + i p_b/n, i = 0..n-1.

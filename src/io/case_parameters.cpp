@@ -495,12 +495,13 @@ std::vector<Parameter> build_table() {
     Parameter outputs;
     outputs.key = "contact.outputs";
     outputs.kind = K::choice_list;
-    outputs.choices = {"real_area", "plastic_fraction", "asperity_stress"};
+    outputs.choices = {"real_area", "plastic_fraction", "asperity_stress", "mesh_stiffness"};
     outputs.get = [](const Case& c, int) {
       ParameterValue v;
       if (c.contact.real_area) v.list.emplace_back("real_area");
       if (c.contact.plastic_fraction) v.list.emplace_back("plastic_fraction");
       if (c.contact.asperity_stress) v.list.emplace_back("asperity_stress");
+      if (c.contact.mesh_stiffness) v.list.emplace_back("mesh_stiffness");
       return v;
     };
     outputs.set = [](Case& c, int, const ParameterValue& v) {
@@ -508,8 +509,12 @@ std::vector<Parameter> build_table() {
       c.contact.real_area = has("real_area");
       c.contact.plastic_fraction = has("plastic_fraction");
       c.contact.asperity_stress = has("asperity_stress");
+      c.contact.mesh_stiffness = has("mesh_stiffness");
     };
-    add(std::move(outputs)).doc("The outputs computed (a run computes only these)");
+    add(std::move(outputs))
+        .doc(
+            "The outputs computed (a run computes only these; mesh_stiffness: the tooth-pair stiffness along the "
+            "path, computed anyway with stiffness load sharing)");
   }
   add(integer(
           "contact.positions", [](auto& c, int) -> auto& { return c.contact.positions; }))
@@ -541,6 +546,24 @@ std::vector<Parameter> build_table() {
       .alias({"coupled_nodes"})
       .ladder({"32", "64", "128", "256"})
       .doc("Coupled: pressure elements across the contact");
+  add(mapped_choice(
+          "contact.strip_lookup", {"cubic", "exact"},
+          [](auto& c, int) -> auto& { return c.contact.exact_strip_lookup; },
+          [](const std::string& t) { return t == "exact"; },
+          [](bool exact) { return std::string(exact ? "exact" : "cubic"); }))
+      .alias({"strip_lookup"})
+      .ladder({"cubic", "exact"})
+      .doc(
+          "Uncoupled: the rough surface at each strip point from cubic cells in the pressure (no transcendental "
+          "call per point) or exact: the pressure table's inversion and log-linear interpolation, the reference");
+  add(integer(
+          "contact.stress_table", [](auto& c, int) -> auto& { return c.contact.stress_table; }))
+      .range(0, asperity::VonMisesTable::kMaxIntervals)
+      .alias({"stress_table"})
+      .ladder({"4", "8", "16", "32", "64", "0"})
+      .doc(
+          "Asperity stresses: intervals of the normalised von Mises table over the square root of the plastic share "
+          "(0: the exact maximisation at every position, the reference)");
 
   // [asperity]
   add(text(

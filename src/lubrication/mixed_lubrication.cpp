@@ -9,7 +9,8 @@
 
 namespace geartrib::lubrication {
 
-LoadShare share_load(double h_smooth, double e, const std::function<double(double)>& asperity_separation) {
+LoadShare share_load(double h_smooth, double e, const std::function<double(double)>& asperity_separation,
+                     double guess) {
   if (!(e > 0.0)) throw std::invalid_argument("share_load: the film exponent must be positive");
   const auto dry = [&] { return LoadShare{1.0, 0.0, asperity_separation(1.0)}; };
   if (!(h_smooth > 0.0)) return dry();  // no film
@@ -22,12 +23,18 @@ LoadShare share_load(double h_smooth, double e, const std::function<double(doubl
   // decreasing in x, positive at ln_min (the film grows without bound as its share vanishes) and
   // negative at 0 (checked above).
   auto g = [&](double x) { return h_smooth * std::exp(-e * x) - asperity_separation(-std::expm1(x)); };
-  double lo = -1.0;
-  while (g(lo) < 0.0 && lo > -700.0) lo *= 2.0;
-  if (g(lo) < 0.0) return dry();  // film share below e^-700: the asperities carry all
+  double lo = -1.0, hi = 0.0;
+  if (std::isfinite(guess) && guess < 0.0 && guess > -700.0 && g(guess - 0.02) >= 0.0 &&
+      g(std::min(0.0, guess + 0.02)) <= 0.0) {
+    lo = guess - 0.02;  // the neighbour's bracket holds the root
+    hi = std::min(0.0, guess + 0.02);
+  } else {
+    while (g(lo) < 0.0 && lo > -700.0) lo *= 2.0;
+    if (g(lo) < 0.0) return dry();  // film share below e^-700: the asperities carry all
+  }
   std::uintmax_t iterations = 200;
   const auto [a, b] = boost::math::tools::toms748_solve(
-      g, lo, 0.0, [](double l, double h) { return std::abs(h - l) <= 1e-13 * std::max(1.0, std::abs(l)); }, iterations);
+      g, lo, hi, [](double l, double h) { return std::abs(h - l) <= 1e-13 * std::max(1.0, std::abs(l)); }, iterations);
   const double x = 0.5 * (a + b);
   // A film carrying less than kNegligibleFilmShare is no film: far below what the asperity side
   // resolves (its pressure-separation table interpolates to ~1e-4), and the limit the dry contact must meet.

@@ -7,6 +7,7 @@
 #include "lubrication/lubricant.hpp"
 
 #include <functional>
+#include <limits>
 
 namespace geartrib::lubrication {
 
@@ -26,7 +27,10 @@ struct LoadShare {
 // h_smooth = 0 (no entrainment or viscosity), or a film share below kNegligibleFilmShare, gives
 // exactly the dry contact: share 1.
 inline constexpr double kNegligibleFilmShare = 1e-12;
-LoadShare share_load(double h_smooth, double film_exponent, const std::function<double(double)>& asperity_separation);
+// guess: ln(film share) of a neighbouring solution (a position along the path), tried first as a
+// narrow bracket; the answer is the same to the solver's tolerance (1e-13 in ln share).
+LoadShare share_load(double h_smooth, double film_exponent, const std::function<double(double)>& asperity_separation,
+                     double guess = std::numeric_limits<double>::quiet_NaN());
 
 // Mean shear stress of the film [Pa]: Eyring, tau = tau0 asinh(eta v_s/(h tau0)), with the
 // Barus viscosity eta0 exp(alpha p) at the film's mean pressure p, capped by the limiting shear

@@ -1,7 +1,8 @@
 // The mesh cycle's hot kernels on the seed's case, so that regressions show: the summit-height
 // quadrature at one separation, the pressure-separation table, the separation inversion, one
-// strip (uncoupled, coupled), the highest asperity's stresses, and the whole cycle as `geartrib
-// run` does it, dry and lubricated. Run: ./build/tests/geartrib_bench --benchmark_filter='gw_|strip_|cycle'
+// strip (uncoupled, coupled), the coupled strip along the path (cold, warm), the highest
+// asperity's stresses, and the whole cycle as `geartrib run` does it, dry and lubricated.
+// Run: ./build/tests/geartrib_bench --benchmark_filter='gw_|strip_|cycle'
 #include "asperity/case_setup.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
@@ -76,6 +77,36 @@ void strip_coupled(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(strip.solve(s.line_load, s.radius));
 }
 
+// The coupled strip at the 201 positions of the dry cycle, in order along the path: each from
+// the Hertz pressure (cold: warm:0) or from the previous position's solution and factorised
+// Jacobian (warm:1, as run_mesh_contact does). Issue 17: at most 0.1 s for the 201.
+void strip_coupled_path(benchmark::State& state) {
+  const Setup& s = setup();
+  static const contact::MeshContactResult path = [&] {
+    Case c = s.c;
+    c.lubrication.lubricated = false;
+    return contact::run_mesh_contact(c, s.mesh, nullptr, {}, 201);
+  }();
+  const auto& line_load = path.find("line_load_N_per_m")->values;
+  const auto& radius = path.find("r_eq_m")->values;
+  contact::StripOptions o;
+  o.fidelity = contact::StripFidelity::coupled;
+  const solvers::KinsolSolver kinsol;
+  const contact::RoughLineContact strip(*s.gw, s.mesh.composite_modulus(), s.c.gear_pair.face_width, o, &kinsol);
+  const bool warm = state.range(0) == 1;
+  for (auto _ : state) {
+    contact::CoupledStripState carried;
+    int iterations = 0;
+    for (std::size_t k = 0; k < line_load.size(); ++k)
+      iterations += strip.solve(line_load[k], radius[k], 1.0, warm ? &carried : nullptr).solver_iterations;
+    state.counters["iterations"] = iterations;
+    if (warm) {
+      state.counters["jacobians"] = carried.jacobians();
+      state.counters["cold_starts"] = carried.cold_solves();
+    }
+  }
+}
+
 void strip_highest_asperity(benchmark::State& state) {
   const Setup& s = setup();
   const contact::RoughLineContact strip(*s.gw, s.mesh.composite_modulus(), s.c.gear_pair.face_width, {}, nullptr);
@@ -112,5 +143,6 @@ BENCHMARK(gw_table)->RangeMultiplier(4)->Range(4, 256)->Unit(benchmark::kMillise
 BENCHMARK(gw_separation_inversion);
 BENCHMARK(strip_uncoupled)->RangeMultiplier(4)->Range(8, 512)->Unit(benchmark::kMicrosecond);
 BENCHMARK(strip_coupled)->RangeMultiplier(2)->Range(32, 256)->Unit(benchmark::kMillisecond);
+BENCHMARK(strip_coupled_path)->Arg(0)->Arg(1)->ArgName("warm")->Unit(benchmark::kMillisecond);
 BENCHMARK(strip_highest_asperity)->Unit(benchmark::kMicrosecond);
 BENCHMARK(cycle)->Arg(0)->Arg(1)->ArgName("coupled")->Unit(benchmark::kMillisecond);
