@@ -281,7 +281,7 @@ else:
         header_fns[title] = [c for _, c in cols]
         table(title, note, [h for h, _ in cols], pick)
     add("One asperity", "`evaluate/*_load_area`: load, area and plastic share only; `*_full`: with the pressure profile "
-        "and the von Mises maximum (adaptive quadrature); `side`: one side-contact evaluation (elliptical Hertz).",
+        "and the von Mises maximum (the maximisation of closed forms, no table); `side`: one side-contact evaluation (elliptical Hertz).",
         [("benchmark", name), ("time", tm)], lambda n: n.startswith(("evaluate/", "side")))
     add("The mesh cycle's kernels (seed case)", "Summit-height quadrature at one separation (points), the "
         "pressure-separation table (points per sigma), the separation inversion, one strip across the Hertz "

@@ -147,18 +147,28 @@ io::ColumnTable point_table(const io::SweepPlan& plan, const std::vector<PointRe
   // Quantities in order of first appearance (a swept key may add one, e.g. mesh.dynamics).
   std::vector<std::pair<std::string, std::string>> names;
   for (const auto& p : points)
-    for (const auto& q : p.quantities)
+    for (std::size_t k = 0; k < p.quantities.size(); ++k) {
+      const Summary& q = p.quantities[k];
+      if (k < names.size() && names[k].first == q.name) continue;  // where the points before had it
       if (std::none_of(names.begin(), names.end(), [&](const auto& n) { return n.first == q.name; }))
         names.emplace_back(q.name, q.unit);
-  for (const auto& [name, unit] : names) {
+    }
+  // Points list their quantities in one order as a rule: the k-th name is looked for at k first
+  // (a search only when a point's list differs), so the table costs points x quantities.
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const auto& [name, unit] = names[k];
     io::Column lo{name + "_min", unit, false, {}, {}}, mean{name + "_mean", unit, false, {}, {}},
         hi{name + "_max", unit, false, {}, {}};
     for (const auto& p : points) {
-      const auto q = std::find_if(p.quantities.begin(), p.quantities.end(),
-                                  [&key = name](const Summary& s) { return s.name == key; });
-      lo.numbers.push_back(q != p.quantities.end() ? q->min : std::nan(""));
-      mean.numbers.push_back(q != p.quantities.end() ? q->mean : std::nan(""));
-      hi.numbers.push_back(q != p.quantities.end() ? q->max : std::nan(""));
+      const Summary* q = k < p.quantities.size() && p.quantities[k].name == name ? &p.quantities[k] : nullptr;
+      if (!q) {
+        const auto it = std::find_if(p.quantities.begin(), p.quantities.end(),
+                                     [&key = name](const Summary& s) { return s.name == key; });
+        q = it != p.quantities.end() ? &*it : nullptr;
+      }
+      lo.numbers.push_back(q ? q->min : std::nan(""));
+      mean.numbers.push_back(q ? q->mean : std::nan(""));
+      hi.numbers.push_back(q ? q->max : std::nan(""));
     }
     for (auto* c : {&lo, &mean, &hi}) t.columns.push_back(std::move(*c));
   }
