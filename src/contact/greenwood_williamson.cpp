@@ -87,12 +87,12 @@ void GreenwoodWilliamson::build_cells() {
   // Segments [k, k+1] with both pressures above the floor.
   std::size_t k0 = 0;
   while (k0 + 1 < table_.size() && !(table_[k0].nominal_pressure > kCellFloor * top)) ++k0;
-  cell_segment0_ = k0;
   for (std::size_t k = k0; k < table_.size(); ++k) segment_pressure_.push_back(table_[k].nominal_pressure);
   using Q = double SurfaceContact::*;
   constexpr Q quantities[4] = {&SurfaceContact::real_area_ratio, &SurfaceContact::contact_density,
                                &SurfaceContact::plastic_area_ratio, &SurfaceContact::plastic_contact_density};
   const double log_cell = std::log(kCellRatio);
+  std::vector<double> value[4], slope[4];
   for (std::size_t k = k0; k + 1 < table_.size(); ++k) {
     cell_start_.push_back(cells_.size());
     const SurfaceContact &a = table_[k], &b = table_[k + 1];
@@ -106,37 +106,33 @@ void GreenwoodWilliamson::build_cells() {
       cells_.push_back(cell);
       continue;
     }
+    // n cells, uniform in p; the law's value and slope at their n + 1 ends (the table's own
+    // values at the segment's ends).
     const int n = std::max(1, static_cast<int>(std::ceil(length / log_cell)));
-    double log_ratio[4];
+    const double width = (b.nominal_pressure - a.nominal_pressure) / n;
+    auto end = [&](int j) { return j == n ? b.nominal_pressure : a.nominal_pressure + j * width; };
     for (int q = 0; q < 4; ++q) {
       const double qa = a.*quantities[q], qb = b.*quantities[q];
-      log_ratio[q] = qa > 0.0 && qb > 0.0 ? std::log(qb / qa) : 0.0;
-    }
-    auto value_slope = [&](double p, int q, double& value, double& slope) {
-      const double qa = a.*quantities[q], qb = b.*quantities[q];
-      const double t = std::log(p / a.nominal_pressure) / length;
-      if (qa > 0.0 && qb > 0.0) {
-        value = qa * std::exp(t * log_ratio[q]);
-        slope = value * log_ratio[q] / (length * p);
-      } else {
-        value = qa + (qb - qa) * t;
-        slope = (qb - qa) / (length * p);
+      const bool geometric = qa > 0.0 && qb > 0.0;
+      const double log_ratio = geometric ? std::log(qb / qa) : 0.0;
+      value[q].resize(static_cast<std::size_t>(n) + 1);
+      slope[q].resize(static_cast<std::size_t>(n) + 1);
+      for (int j = 0; j <= n; ++j) {
+        const double p = end(j), t = std::log(p / a.nominal_pressure) / length;
+        const double v = j == 0 ? qa : j == n ? qb : geometric ? qa * std::exp(t * log_ratio) : qa + (qb - qa) * t;
+        value[q][static_cast<std::size_t>(j)] = v;
+        slope[q][static_cast<std::size_t>(j)] = (geometric ? v * log_ratio : qb - qa) / (length * p);
       }
-    };
-    const double width = (b.nominal_pressure - a.nominal_pressure) / n;
+    }
     for (int j = 0; j < n; ++j) {
       Cell cell;
-      cell.p_lo = a.nominal_pressure + j * width;
-      const double p_hi = j + 1 == n ? b.nominal_pressure : cell.p_lo + width;
-      const double w = p_hi - cell.p_lo;
+      cell.p_lo = end(j);
+      const double w = end(j + 1) - cell.p_lo;
       cell.inv_width = 1.0 / w;
+      const auto i = static_cast<std::size_t>(j);
       for (int q = 0; q < 4; ++q) {
-        double v0, s0, v1, s1;
-        value_slope(cell.p_lo, q, v0, s0);
-        value_slope(p_hi, q, v1, s1);
-        if (j == 0) v0 = a.*quantities[q];  // the table's own values at its nodes
-        if (j + 1 == n) v1 = b.*quantities[q];
-        const double m0 = s0 * w, m1 = s1 * w;  // cubic Hermite in tau = (p - p_lo)/w
+        const double v0 = value[q][i], v1 = value[q][i + 1];
+        const double m0 = slope[q][i] * w, m1 = slope[q][i + 1] * w;  // cubic Hermite in tau = (p - p_lo)/w
         cell.c[q][0] = v0;
         cell.c[q][1] = m0;
         cell.c[q][2] = 3.0 * (v1 - v0) - 2.0 * m0 - m1;

@@ -96,15 +96,14 @@ class GreenwoodWilliamson {
   std::vector<double> breaks_;         // interferences where the model jumps or kinks [m], ascending
   double step_;                        // table spacing in d [m]
   std::vector<SurfaceContact> table_;  // decreasing d from z_high_: table_[k].separation = z_high_ - k step
-  // at_pressure's cells: the table segments from cell_segment0_ on (pressures in
+  // at_pressure's cells: the table segments from the first above kCellFloor of the top on (pressures in
   // segment_pressure_), segment k's cells from cell_start_[k] in cells_.
   struct Cell {
     double p_lo = 0.0, inv_width = 0.0;  // [Pa], [1/Pa]
     double c[4][4] = {};                 // per quantity, Horner coefficients in (p - p_lo)/width
   };
   void build_cells();
-  std::size_t cell_segment0_ = 0;
-  std::vector<double> segment_pressure_;  // table_[k].nominal_pressure, k >= cell_segment0_
+  std::vector<double> segment_pressure_;  // those segments' end pressures
   std::vector<std::size_t> cell_start_;   // per segment, and one past the last
   std::vector<Cell> cells_;
 };
