@@ -203,7 +203,35 @@ def main():
         p(f"| `{name}` | {ms(statistics.median(walls))} |")
     p()
 
-    # 6. Boundary elements against the number of elements.
+    # 6. Sweeps on 1 and 2 threads.
+    p("## Sweeps on 1 and 2 threads")
+    p()
+    p("`geartrib sweep --set torque=100Nm:1000Nm:N [--set positions=P] --threads T`: the summary line's own")
+    p("time (first point to the written file), the output removed before each run; speed-up T1/T2.")
+    p()
+    p("| sweep | 1 thread | 2 threads | speed-up | peak memory (2 threads) |")
+    p("|---|---|---|---|---|")
+    sweep_out = os.path.join(tmp, "sweep.h5")
+    plans = [(12, []), (12, ["--set", "positions=1000"]), (100, [])] + ([] if o.quick else [(1000, [])])
+    for n, extra in plans:
+        times, peak = {}, ""
+        for threads in (1, 2):
+            walls = []
+            for _ in range(max(1, repeat if n < 1000 else 2)):
+                if os.path.exists(sweep_out):
+                    os.remove(sweep_out)
+                res = subprocess.run([binary, "sweep", "--set", f"torque=100Nm:1000Nm:{n}", *extra, "--threads",
+                                      str(threads), "-o", sweep_out], capture_output=True, text=True, cwd=ROOT,
+                                     check=True)
+                last = res.stderr.strip().splitlines()[-1]  # "wrote F (N points, 0 failed; T s on K threads, peak memory M MB)"
+                walls.append(float(last.split("failed; ")[1].split(" s on")[0]))
+                peak = last.split("peak memory ")[1].rstrip(")")
+            times[threads] = statistics.median(walls)
+        label = f"{n} points" + (" " + " ".join(extra[1::2]) if extra else ", default case")
+        p(f"| {label} | {ms(times[1])} | {ms(times[2])} | {times[1] / times[2]:.2f} | {peak} |")
+    p()
+
+    # 7. Boundary elements against the number of elements.
     p("## Boundary elements against the number of elements")
     p()
     filt = "multi_asperity|hertz_line_contact"

@@ -24,20 +24,24 @@ def read_table(path):
     if path.endswith(".h5"):
         import h5py
 
+        def text(x):
+            return x.decode() if isinstance(x, bytes) else str(x)
+
         with h5py.File(path, "r") as f:
-            g = f["points"]
-            names = g.attrs["columns"]
-            names = (names.decode() if isinstance(names, bytes) else names).split(",")
+            # Numeric columns: one block /points/values (points x columns, attributes columns and
+            # units); text columns: one string dataset each; /points's attribute columns: the order.
+            g, block = f["points"], f["points/values"]
+            numeric = text(block.attrs["columns"]).split(",")
+            numeric_units = dict(zip(numeric, text(block.attrs["units"]).split(",")))
+            values = block[()]
             cols, units = {}, {}
-            for n in names:
-                d = g[n]
-                if d.dtype.kind in "OSU":
-                    cols[n] = [v.decode() if isinstance(v, bytes) else str(v) for v in d[()]]
-                    units[n] = ""
+            for n in text(g.attrs["columns"]).split(","):
+                if n in numeric_units:
+                    cols[n] = [float(v) for v in values[:, numeric.index(n)]]
+                    units[n] = numeric_units[n]
                 else:
-                    cols[n] = [float(v) for v in d[()]]
-                    u = d.attrs.get("units", "")
-                    units[n] = u.decode() if isinstance(u, bytes) else u
+                    cols[n] = [text(v) for v in g[n][()]]
+                    units[n] = ""
             return cols, units
     with open(path) as f:
         lines = f.read().splitlines()

@@ -31,14 +31,25 @@ def read(p):
 full, merged = read(sys.argv[1]), read(sys.argv[2])
 assert full == merged, "merged shards differ from the unsharded sweep"
 print("ok   merged-equals-unsharded")
+def text(x):
+    return x.decode() if isinstance(x, bytes) else x
+def points(f):
+    """The sweep table: the numeric block /points/values by its column names, the text columns."""
+    g, v = f["points"], f["points/values"]
+    names, units = text(v.attrs["columns"]).split(","), text(v.attrs["units"]).split(",")
+    assert v.shape == (len(g["status"]), len(names)), v.shape
+    cols = {n: v[:, k] for k, n in enumerate(names)}
+    for n in text(g.attrs["columns"]).split(","):
+        if n not in cols: cols[n] = [text(x) for x in g[n][()]]
+    return cols, dict(zip(names, units))
 with h5py.File(sys.argv[3]) as f:
-    p = f["points"]
-    assert p["module"].attrs["units"] in (b"m", "m"), p["module"].attrs["units"]
-    assert p["hertz_p0_Pa_max"].attrs["units"] in (b"Pa", "Pa")
+    p, units = points(f)
+    assert units["module"] == "m", units["module"]
+    assert units["hertz_p0_Pa_max"] == "Pa"
     assert "version" in f["sweep"].attrs and "sets" in f["sweep"].attrs
     assert b"[gear_pair]" in f["scene"][()] if isinstance(f["scene"][()], bytes) else "[gear_pair]" in f["scene"][()]
-    m, b, rq = p["module"][()], p["face_width"][()], p["rq"][()]
-    p0, area, plastic = p["hertz_p0_Pa_max"][()], p["real_area_ratio_min"][()], p["plastic_area_fraction_min"][()]
+    m, b, rq = p["module"], p["face_width"], p["rq"]
+    p0, area, plastic = p["hertz_p0_Pa_max"], p["real_area_ratio_min"], p["plastic_area_fraction_min"]
     idx = {(m[i], b[i], rq[i]): i for i in range(len(m))}
     for (mi, bi, ri), i in idx.items():
         if mi == 0.004: assert p0[idx[(0.008, bi, ri)]] < p0[i], "larger module must lower the Hertz pressure"
@@ -48,15 +59,15 @@ with h5py.File(sys.argv[3]) as f:
             assert plastic[idx[(mi, bi, 8e-7)]] > plastic[i], "rougher must raise the plastic fraction"
 print("ok   trends-and-units")
 with h5py.File(sys.argv[3]) as f:
-    p = f["points"]
+    p, _ = points(f)
     # The validity verdict per point: regime and the flags' position counts (21 positions each).
-    regime = [r.decode() if isinstance(r, bytes) else r for r in p["regime"][()]]
+    regime = p["regime"]
     assert set(regime) <= {"elastic", "elastic-plastic", "fully plastic"}, regime
-    beyond = p["positions_beyond_fitted_range"][()]
+    beyond = p["positions_beyond_fitted_range"]
     assert all(0 <= n <= 21 for n in beyond), beyond
     for (mi, bi, ri), i in idx.items():
         if ri == 8e-7: assert regime[i] == "fully plastic" and beyond[i] == 21, (regime[i], beyond[i])
-    assert all(len(v) > 0 for v in p["validity"][()])
+    assert all(len(v) > 0 for v in p["validity"])
 print("ok   validity-per-point")
 PY
 

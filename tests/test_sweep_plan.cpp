@@ -2,12 +2,15 @@
 // zipping, shards that partition the points, SI values of swept text, and changes to a case
 // (aliases, roughness forms replaced, errors naming the --set).
 #include "contact/mesh_contact.hpp"
+#include "io/column_table.hpp"
 #include "io/input_error.hpp"
 #include "io/sweep_plan.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
 #include <set>
 
 using namespace geartrib;
@@ -114,4 +117,49 @@ TEST(SweepSummary, PathMeanIsTrapezoidal) {
   EXPECT_DOUBLE_EQ(contact::path_mean({1.0, 1.0, 1.0}), 1.0);
   EXPECT_DOUBLE_EQ(contact::path_mean({0.0, 1.0, 0.0}), 0.5);  // a hat: (0/2 + 1 + 0/2)/2
   EXPECT_DOUBLE_EQ(contact::path_mean({3.0}), 3.0);
+}
+
+// The sweep file: numeric columns in one block, text columns as datasets; read back exactly
+// (doubles bit for bit, text with UTF-8 and empty cells, the column order, the units).
+TEST(SweepFile, RoundTripKeepsOrderUnitsAndText) {
+  io::ColumnTableFile f;
+  auto number = [](std::string name, std::string unit, std::vector<double> v) {
+    io::Column c;
+    c.name = std::move(name);
+    c.unit = std::move(unit);
+    c.numbers = std::move(v);
+    return c;
+  };
+  io::Column text;
+  text.name = "status";
+  text.text = true;
+  text.texts = {"ok", "", "error: \xc2\xb5m beyond range"};  // UTF-8 (micro sign) and an empty cell
+  f.table.columns = {number("point", "1", {0, 1, 2}), text, number("p0_max", "Pa", {1.0 / 3.0, -0.0, 1e300})};
+  f.attributes = {{"sets", "torque=1,2,3"}};
+  f.scene = "[gear_pair]\nmodule = 6mm\n";
+  const auto path = std::filesystem::temp_directory_path() / "geartrib_sweep_roundtrip.h5";
+  io::write_column_table_hdf5(path, f);
+  const io::ColumnTableFile back = io::read_column_table_hdf5(path);
+  ASSERT_EQ(back.table.columns.size(), 3u);
+  EXPECT_EQ(back.table.columns[0].name, "point");
+  EXPECT_EQ(back.table.columns[1].texts, text.texts);
+  EXPECT_EQ(back.table.columns[2].unit, "Pa");
+  EXPECT_EQ(back.table.columns[2].numbers, f.table.columns[2].numbers);
+  EXPECT_TRUE(std::signbit(back.table.columns[2].numbers[1]));
+  EXPECT_EQ(back.attributes.at("sets"), "torque=1,2,3");
+  EXPECT_EQ(back.scene, f.scene);
+  EXPECT_EQ(io::format_csv(back.table), io::format_csv(f.table));
+  std::filesystem::remove(path);
+}
+
+// Names the block's comma lists could not hold are a programming error, caught before writing.
+TEST(SweepFile, UnstorableNamesRefused) {
+  io::ColumnTable t;
+  io::Column c;
+  c.name = "a,b";
+  c.numbers = {1.0};
+  t.columns = {c};
+  EXPECT_THROW(t.validate(), std::logic_error);
+  t.columns[0].name = "values";  // the block's own name
+  EXPECT_THROW(t.validate(), std::logic_error);
 }

@@ -9,6 +9,7 @@
 #include "contact/mesh_contact.hpp"
 
 #include "io/column_table.hpp"
+#include "io/hdf5_results.hpp"
 #include "io/input_error.hpp"
 #include "io/sweep_plan.hpp"
 #include "io/table_writer.hpp"
@@ -293,8 +294,8 @@ void run(const Options& o) {
   const int threads =
       std::max(1, std::min<int>(o.threads > 0 ? o.threads : available_cores(), static_cast<int>(mine.size())));
   if (!o.quiet)
-    std::cerr << fmt::format("sweep: {} points ({}), {} in this shard {}/{}, {} threads\n", plan.size(),
-                             plan.describe(), mine.size(), shard.index, shard.count, threads);
+    std::cerr << fmt::format("sweep: {} points ({}), {} in this shard {}/{}, {} thread{}\n", plan.size(),
+                             plan.describe(), mine.size(), shard.index, shard.count, threads, threads == 1 ? "" : "s");
   const auto start = std::chrono::steady_clock::now();
   std::vector<PointResult> results(mine.size());
   // Dynamic scheduling: each thread takes the next point when done with its last, so points of
@@ -310,7 +311,8 @@ void run(const Options& o) {
         bar(static_cast<int>(done.fetch_add(1) + 1), static_cast<int>(mine.size()));
       }
     });
-  pool.clear();  // joins
+  io::start_hdf5();  // on this thread while the points run: the table's write starts warm
+  pool.clear();      // joins
 
   io::ColumnTableFile f;
   f.table = point_table(plan, results);
@@ -325,10 +327,10 @@ void run(const Options& o) {
                   {"mean", "trapezoidal mean over the evenly spaced positions A -> E"}};
   write_outputs(f, o);
   if (!o.quiet)
-    print_summary(
-        f.table, o.output.empty() ? "sweep.h5" : o.output,
-        fmt::format("{:.3g} s on {} threads, ",
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), threads));
+    print_summary(f.table, o.output.empty() ? "sweep.h5" : o.output,
+                  fmt::format("{:.3g} s on {} thread{}, ",
+                              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), threads,
+                              threads == 1 ? "" : "s"));
 }
 
 }  // namespace

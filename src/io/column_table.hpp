@@ -1,8 +1,9 @@
 // A table of named columns with units, each numeric or text, for results with text cells (sweep
 // points: swept model names, status, messages). io::Table stays the numeric table of the other
-// commands. CSV quotes text cells that need it (RFC 4180); HDF5 stores one dataset per column
-// in a group (float64 with attribute "units", or fixed-length UTF-8 strings) and the column
-// order in the group's attribute "columns".
+// commands. CSV quotes text cells that need it (RFC 4180); HDF5 stores the numeric columns as
+// one float64 block "values" (rows x columns, attributes "columns" and "units": comma-separated
+// lists), each text column as a dataset of UTF-8 strings, all in one group whose attribute
+// "columns" gives the column order.
 #pragma once
 
 #include <filesystem>

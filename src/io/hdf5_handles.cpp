@@ -1,5 +1,7 @@
 #include "io/hdf5_handles.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -74,6 +76,24 @@ void number_dataset(hid_t group, const std::string& name, const std::vector<doub
   string_attribute(set, "units", units);
 }
 
+hid_t matrix_dataset(hid_t group, const std::string& name, std::size_t rows, std::size_t cols,
+                     const std::vector<double>& values, const std::string& units) {
+  if (values.size() != rows * cols) throw std::logic_error("matrix_dataset: " + name + " has another size");
+  const hsize_t dims[2] = {rows, cols};
+  Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose, "dataspace");
+  const hid_t set = H5Dcreate2(group, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  if (set < 0) throw std::runtime_error("HDF5: cannot create dataset " + name);
+  try {
+    if (!values.empty())
+      check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write " + name);
+    string_attribute(set, "units", units);
+  } catch (...) {
+    H5Dclose(set);
+    throw;
+  }
+  return set;
+}
+
 void string_dataset(hid_t group, const std::string& name, const std::string& value) {
   Handle type(utf8_type(std::max<std::size_t>(1, value.size())), H5Tclose, "string type");
   Handle space(H5Screate(H5S_SCALAR), H5Sclose, "scalar space");
@@ -83,15 +103,19 @@ void string_dataset(hid_t group, const std::string& name, const std::string& val
 }
 
 void strings_dataset(hid_t group, const std::string& name, const std::vector<std::string>& values) {
-  std::vector<const char*> pointers;
-  pointers.reserve(values.size());
-  for (const auto& v : values) pointers.push_back(v.c_str());
+  // Fixed length (the longest value, NUL-padded): variable-length strings go through HDF5's global
+  // heap and its conversion paths, ~1 ms per dataset; these cost as much as a number column.
+  std::size_t width = 1;
+  for (const auto& v : values) width = std::max(width, v.size());
+  std::string cells(values.size() * width, '\0');
+  for (std::size_t i = 0; i < values.size(); ++i) values[i].copy(cells.data() + i * width, values[i].size());
   const hsize_t n = values.size();
-  Handle type(utf8_type(H5T_VARIABLE), H5Tclose, "string type");
+  Handle type(utf8_type(width), H5Tclose, "string type");
+  check(H5Tset_strpad(type, H5T_STR_NULLPAD), "H5Tset_strpad");
   Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "dataspace");
   Handle set(H5Dcreate2(group, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
              "dataset " + name);
-  if (n > 0) check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "write " + name);
+  if (n > 0) check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, cells.data()), "write " + name);
 }
 
 bool is_string_dataset(hid_t group, const std::string& name) {
@@ -111,6 +135,23 @@ std::vector<double> read_numbers(hid_t group, const std::string& name) {
   return out;
 }
 
+std::vector<double> read_matrix(hid_t group, const std::string& name, std::size_t& rows, std::size_t& cols,
+                                std::size_t max_values) {
+  Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
+  Handle space(H5Dget_space(set), H5Sclose, "dataspace of " + name);
+  if (H5Sget_simple_extent_ndims(space) != 2) throw std::runtime_error("HDF5: " + name + " is not a 2-D dataset");
+  hsize_t dims[2] = {0, 0};
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  if (dims[1] != 0 && dims[0] > max_values / dims[1])
+    throw std::runtime_error(
+        fmt::format("HDF5: {} declares {} x {} values (at most {})", name, dims[0], dims[1], max_values));
+  rows = static_cast<std::size_t>(dims[0]);
+  cols = static_cast<std::size_t>(dims[1]);
+  std::vector<double> out(rows * cols);
+  if (!out.empty()) check(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), "read " + name);
+  return out;
+}
+
 std::string read_string(hid_t group, const std::string& name) {
   Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
   Handle type(H5Dget_type(set), H5Tclose, "type of " + name);
@@ -127,13 +168,29 @@ std::vector<std::string> read_strings(hid_t group, const std::string& name) {
   hsize_t n = 0;
   if (H5Sget_simple_extent_ndims(space) != 1) throw std::runtime_error("HDF5: " + name + " is not a 1-D dataset");
   H5Sget_simple_extent_dims(space, &n, nullptr);
-  Handle type(utf8_type(H5T_VARIABLE), H5Tclose, "string type");
-  std::vector<char*> pointers(n, nullptr);
-  if (n > 0) check(H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "read " + name);
+  Handle stored(H5Dget_type(set), H5Tclose, "type of " + name);
+  if (H5Tget_class(stored) != H5T_STRING) throw std::runtime_error("HDF5: " + name + " is not a string dataset");
   std::vector<std::string> out;
-  out.reserve(pointers.size());
-  for (char* p : pointers) out.emplace_back(p ? p : "");
-  if (n > 0) H5Dvlen_reclaim(type, space, H5P_DEFAULT, pointers.data());
+  if (H5Tis_variable_str(stored) > 0) {  // earlier geartrib files and other writers
+    Handle type(utf8_type(H5T_VARIABLE), H5Tclose, "string type");
+    std::vector<char*> pointers(n, nullptr);
+    if (n > 0) check(H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "read " + name);
+    out.reserve(pointers.size());
+    for (char* p : pointers) out.emplace_back(p ? p : "");
+    if (n > 0) H5Dvlen_reclaim(type, space, H5P_DEFAULT, pointers.data());
+    return out;
+  }
+  const std::size_t width = H5Tget_size(stored);
+  // The dataset's own storage bounds the buffer: n x width bytes must be what the file holds.
+  if (width == 0 || H5Dget_storage_size(set) < n * width)
+    throw std::runtime_error("HDF5: " + name + " holds fewer bytes than its shape declares");
+  std::string cells(n * width, '\0');
+  if (n > 0) check(H5Dread(set, stored, H5S_ALL, H5S_ALL, H5P_DEFAULT, cells.data()), "read " + name);
+  out.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string cell = cells.substr(i * width, width);
+    out.push_back(cell.substr(0, cell.find('\0')));
+  }
   return out;
 }
 

@@ -33,11 +33,19 @@ bool read_string_attribute(hid_t obj, const std::string& name, std::string& valu
 
 // Datasets: 1-D float64 with attribute "units"; one UTF-8 string (scalar); 1-D UTF-8 strings.
 void number_dataset(hid_t group, const std::string& name, const std::vector<double>& values, const std::string& units);
+// 2-D float64 `rows` x `cols`, row-major `values`, attribute "units"; returns the open dataset
+// for further attributes.
+hid_t matrix_dataset(hid_t group, const std::string& name, std::size_t rows, std::size_t cols,
+                     const std::vector<double>& values, const std::string& units);
 void string_dataset(hid_t group, const std::string& name, const std::string& value);
 void strings_dataset(hid_t group, const std::string& name, const std::vector<std::string>& values);
 // Readers of the same; throw std::runtime_error naming the dataset when it is missing or of
 // another kind.
 std::vector<double> read_numbers(hid_t group, const std::string& name);
+// A 2-D float64 dataset, row-major, with its shape; throws when it is not 2-D or has more than
+// `max_values` values (checked before allocating).
+std::vector<double> read_matrix(hid_t group, const std::string& name, std::size_t& rows, std::size_t& cols,
+                                std::size_t max_values);
 std::string read_string(hid_t group, const std::string& name);
 std::vector<std::string> read_strings(hid_t group, const std::string& name);
 bool is_string_dataset(hid_t group, const std::string& name);

@@ -110,9 +110,14 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
 
 }  // namespace
 
+void start_hdf5() {
+  H5open();
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+}
+
 void write_mesh_contact_hdf5(const std::filesystem::path& path, const contact::MeshContactResult& result,
                              const std::string& case_file, const Case& c) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not stderr dumps
+  start_hdf5();
   write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp.string(), result, case_file, c); });
 }
 

@@ -18,6 +18,11 @@
 
 namespace geartrib::io {
 
+// Initialises the HDF5 library (~0.5 ms) and turns its error printing off (every HDF5 error
+// becomes an exception with a message of ours). Idempotent; every HDF5 reader and writer calls it,
+// and a command may call it early, off its critical path (the sweep, while its points run).
+void start_hdf5();
+
 void write_mesh_contact_hdf5(const std::filesystem::path& path, const contact::MeshContactResult& result,
                              const std::string& case_file, const Case& c);
 

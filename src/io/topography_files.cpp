@@ -1,6 +1,7 @@
 #include "io/topography_files.hpp"
 
 #include "io/hdf5_handles.hpp"
+#include "io/hdf5_results.hpp"
 #include "io/input_error.hpp"
 #include "io/table_writer.hpp"
 #include "io/text_lines.hpp"
@@ -210,7 +211,7 @@ surface::HeightGrid read_grid(const std::filesystem::path& path, const Topograph
 
 surface::HeightGrid read_hdf5(const std::filesystem::path& path) {
   const std::string file = path.string();
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  start_hdf5();
   std::vector<double> z;
   hsize_t dims[2] = {0, 0};
   double dx = 0.0, dy = 0.0;
@@ -293,7 +294,7 @@ void write_topography(const std::filesystem::path& file, const surface::HeightGr
   const TopographyFormat format = topography_format(file);
   if (format == TopographyFormat::hdf5) {
     write_atomically(file, [&](const std::filesystem::path& tmp) {
-      H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+      start_hdf5();
       hdf5::Handle f(H5Fcreate(tmp.string().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, tmp.string());
       hdf5::string_attribute(f, "geartrib_version", GEARTRIB_VERSION);
       hdf5::string_attribute(f, "content", "surface heights z[j][i] at x = i dx, y = j dy; NaN: missing point");
