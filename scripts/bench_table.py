@@ -223,7 +223,7 @@ def main():
                 res = subprocess.run([binary, "sweep", "--set", f"torque=100Nm:1000Nm:{n}", *extra, "--threads",
                                       str(threads), "-o", sweep_out], capture_output=True, text=True, cwd=ROOT,
                                      check=True)
-                last = res.stderr.strip().splitlines()[-1]  # "wrote F (N points, 0 failed; T s on K threads, peak memory M MB)"
+                last = res.stdout.strip().splitlines()[-1]  # "wrote F (N points, 0 failed; T s on K threads, peak memory M MB)"
                 walls.append(float(last.split("failed; ")[1].split(" s on")[0]))
                 peak = last.split("peak memory ")[1].rstrip(")")
             times[threads] = statistics.median(walls)

@@ -4,12 +4,15 @@
 #   bash scripts/setup.sh run      build, then run the main job on the default case (gears/m6z30.toml):
 #                                  results/m6z30.h5 (+ .csv) and the plots in results/plots
 #   bash scripts/setup.sh test     build, then run the default test suite (CTest, label "long" excluded)
+#   bash scripts/setup.sh sanitize build with AddressSanitizer and UBSan in build-sanitize/ (Debug
+#                                  optimisation -O1), then run the default suite under them: any
+#                                  report fails its test (about 4 times the plain suite's time)
 # Works as root on a fresh machine (apt-get) and is a no-op for packages already installed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 mode="${1:-build}"
-case "$mode" in build|run|test) ;; *) echo "usage: bash scripts/setup.sh [build|run|test]" >&2; exit 2;; esac
+case "$mode" in build|run|test|sanitize) ;; *) echo "usage: bash scripts/setup.sh [build|run|test|sanitize]" >&2; exit 2;; esac
 
 packages=(g++ cmake make pkg-config
           libeigen3-dev libsundials-dev libboost-dev libceres-dev libhdf5-dev
@@ -36,6 +39,15 @@ fi
 build_type="${GEARTRIB_BUILD_TYPE:-Release}"
 werror="${GEARTRIB_WERROR:-OFF}"   # CI (.ci/run) sets ON: a warning fails the build
 jobs="$(nproc 2>/dev/null || echo 2)"
+if [[ $mode == sanitize ]]; then
+  cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+    -DGEARTRIB_SANITIZE=ON -DGEARTRIB_WERROR="$werror" >/dev/null
+  cmake --build build-sanitize -j "$jobs"
+  # Leaks are reported too; an UBSan finding aborts (-fno-sanitize-recover) and fails its test.
+  ASAN_OPTIONS="detect_leaks=1:abort_on_error=1" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
+    ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -LE long
+  exit
+fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE="$build_type" -DGEARTRIB_WERROR="$werror" >/dev/null
 cmake --build build -j "$jobs"
 

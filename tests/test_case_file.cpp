@@ -4,11 +4,13 @@
 #include "gear/mesh_dynamics.hpp"
 #include "io/case_file.hpp"
 #include "io/input_error.hpp"
+#include "io/text_lines.hpp"
 #include "io/topography_files.hpp"
 #include "surface/surface_statistics.hpp"
 #include "surface/synthetic_surface.hpp"
 #include "test_support.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -337,4 +339,164 @@ TEST(CaseParameters, CaseDefaultsAreThePhysicsDefaults) {
   const gear::DynamicsSettings dyn;
   EXPECT_EQ(c.dynamics.damping_ratio, dyn.damping_ratio);
   EXPECT_EQ(c.dynamics.relative_tolerance, dyn.tolerances.relative);
+}
+
+// --- Fuzz findings 04, 08, 11 (tests/corpus/): values and files that must end in a located error.
+
+namespace {
+// The InputError a load with these changes throws (a failed expectation when none).
+io::InputError change_error(const std::vector<io::CaseChange>& changes) {
+  try {
+    io::load_case(test::source_dir() / "gears/m6z30.toml", changes);
+  } catch (const io::InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no InputError";
+  return io::InputError("", 0, "", "", "");
+}
+const std::vector<io::CaseChange> kSolidBodies{{"pinion.bore_diameter", "0"}, {"wheel.bore_diameter", "0"}};
+std::vector<io::CaseChange> solid(std::vector<io::CaseChange> more) {
+  more.insert(more.begin(), kSolidBodies.begin(), kSolidBodies.end());
+  return more;
+}
+bool warned(const Case& c, const std::string& key) {
+  for (const auto& w : c.warnings)
+    if (w.find("key '" + key + "'") != std::string::npos && w.find("plausible") != std::string::npos) return true;
+  return false;
+}
+}  // namespace
+
+// A TOML integer beyond 2^53 is not a double: refused at its line and key (was bad_optional_access).
+TEST_F(BadInput, IntegerBeyondTwoToThe53IsRefusedAtItsKey) {
+  edit("gears/m6z30.toml", "face_width = \"80 mm\"", "face_width = 9007199254740993");
+  io::InputError e = load_error();
+  EXPECT_EQ(e.key(), "gear_pair.face_width");
+  EXPECT_EQ(e.line(), line_of("gears/m6z30.toml", "face_width ="));
+  EXPECT_NE(e.rule().find("2^53"), std::string::npos) << e.rule();
+  // 2^53 itself is exact: read, then refused by the range (10 m) rather than by the reader.
+  edit("gears/m6z30.toml", "face_width = 9007199254740993", "face_width = 9007199254740992");
+  e = load_error();
+  EXPECT_EQ(e.key(), "gear_pair.face_width");
+  EXPECT_NE(e.rule().find("must lie in"), std::string::npos) << e.rule();
+  edit("gears/m6z30.toml", "face_width = 9007199254740992", "face_width = -9007199254740993");
+  EXPECT_NE(load_error().rule().find("2^53"), std::string::npos);
+  // In a material file and in an array.
+  edit("gears/m6z30.toml", "face_width = -9007199254740993", "face_width = \"80 mm\"");
+  edit("materials/steel-45.toml", "plastic_strain = [0.0,", "plastic_strain = [9007199254740993,");
+  e = load_error();
+  EXPECT_EQ(e.key(), "flow_curve.plastic_strain[0]");
+  EXPECT_NE(e.rule().find("2^53"), std::string::npos) << e.rule();
+}
+
+// Integers are range-checked as read, before the member's int takes them: no wrap to 30 or 2.
+TEST(CaseLimits, IntegersAreRangeCheckedBeforeNarrowing) {
+  io::InputError e = change_error({{"teeth", "4294967326"}});  // 2^32 + 30
+  EXPECT_EQ(e.key(), "pinion.teeth");
+  EXPECT_NE(e.file().find("--set"), std::string::npos) << e.what();
+  EXPECT_NE(e.rule().find("[5, 1000]"), std::string::npos) << e.rule();
+  EXPECT_EQ(change_error(solid({{"teeth", "1001"}})).key(), "pinion.teeth");
+  EXPECT_EQ(io::load_case(test::source_dir() / "gears/m6z30.toml", solid({{"teeth", "1000"}})).gear_pair.teeth[1],
+            1000);
+  // A later change of the same key does not hide a value out of range (--set ... --positions 11).
+  e = change_error({{"contact.positions", "4294967298"}, {"positions", "11"}});
+  EXPECT_EQ(e.key(), "contact.positions");
+  EXPECT_NE(e.rule().find("100000"), std::string::npos) << e.rule();
+  EXPECT_EQ(change_error({{"positions", "100001"}}).key(), "contact.positions");
+  EXPECT_EQ(io::load_case(test::source_dir() / "gears/m6z30.toml", {{"positions", "100000"}}).contact.positions,
+            100000);
+}
+
+// Finiteness after the unit: "1e308 GPa" is inf in SI; and each quantity's range holds in SI.
+TEST_F(BadInput, InfiniteAfterTheUnitIsRefused) {
+  edit("materials/steel-45.toml", "youngs_modulus = \"206 GPa\"", "youngs_modulus = \"1e308 GPa\"");
+  const io::InputError e = load_error();
+  EXPECT_NE(e.file().find("steel-45.toml"), std::string::npos);
+  EXPECT_EQ(e.key(), "youngs_modulus");
+  EXPECT_NE(e.rule().find("finite"), std::string::npos) << e.rule();
+  edit("materials/steel-45.toml", "\"1e308 GPa\"", "\"1e4 GPa\"");  // 1e13 Pa: at the limit
+  EXPECT_NO_THROW(io::load_case(dir_ / "gears/m6z30.toml"));
+  edit("materials/steel-45.toml", "\"1e4 GPa\"", "\"1.0001e4 GPa\"");
+  EXPECT_NE(load_error().rule().find("must lie in"), std::string::npos);
+}
+
+TEST(CaseLimits, QuantitiesAreRangeCheckedInSi) {
+  io::InputError e = change_error({{"speed", "1e308rpm"}});  // finite in rad/s, far beyond the range
+  EXPECT_EQ(e.key(), "operating.pinion_speed");
+  EXPECT_NE(e.rule().find("must lie in"), std::string::npos) << e.rule();
+  EXPECT_EQ(change_error({{"torque", "1e11Nm"}}).key(), "operating.pinion_torque");
+  EXPECT_EQ(change_error({{"module", "1e300m"}}).key(), "gear_pair.module");
+  EXPECT_EQ(change_error({{"ra", "0.8e300 um"}}).key(), "pinion.flank.ra");
+  EXPECT_EQ(change_error({{"module", "9007199254740993"}}).key(), "gear_pair.module");
+  // The limit itself is accepted and warned about; one past it is refused.
+  const Case at = io::load_case(test::source_dir() / "gears/m6z30.toml", solid({{"module", "10 m"}}));
+  EXPECT_EQ(at.gear_pair.module, 10.0);
+  EXPECT_TRUE(warned(at, "gear_pair.module"));
+  EXPECT_EQ(change_error(solid({{"module", "10.0001 m"}})).key(), "gear_pair.module");
+  EXPECT_EQ(io::load_case(test::source_dir() / "gears/m6z30.toml", {{"torque", "1e10 N m"}}).operating.pinion_torque,
+            1e10);
+  EXPECT_EQ(change_error({{"torque", "1.0001e10 N m"}}).key(), "operating.pinion_torque");
+}
+
+// A gear value inside its range but outside the plausible band is read and warned about, naming the key.
+TEST(CaseLimits, ImplausibleGearValuesAreWarned) {
+  const auto path = test::source_dir() / "gears/m6z30.toml";
+  EXPECT_TRUE(io::load_case(path).warnings.empty());
+  const Case c = io::load_case(path, solid({{"module", "6 m"}, {"torque", "1e8 N m"}, {"speed", "1e6 rpm"}}));
+  EXPECT_TRUE(warned(c, "gear_pair.module"));
+  EXPECT_TRUE(warned(c, "operating.pinion_torque"));
+  EXPECT_TRUE(warned(c, "operating.pinion_speed"));
+  for (const auto& w : c.warnings) EXPECT_NE(w.find("--set"), std::string::npos) << w;
+  // The band's edge is plausible, one past it is not.
+  EXPECT_FALSE(warned(io::load_case(path, {{"torque", "1e7 N m"}}), "operating.pinion_torque"));
+  EXPECT_TRUE(warned(io::load_case(path, {{"torque", "1.0001e7 N m"}}), "operating.pinion_torque"));
+  EXPECT_FALSE(warned(io::load_case(path, {{"ra", "25 um"}}), "pinion.flank.ra"));
+  EXPECT_TRUE(warned(io::load_case(path, {{"ra", "26 um"}}), "pinion.flank.ra"));
+}
+
+// A vanishing bore (NaN fillet-foundation stiffness) is refused at the bore; 1/50 of the root
+// diameter is the smallest bore accepted.
+TEST(CaseLimits, TinyBoreIsRefusedAtTheBore) {
+  const auto path = test::source_dir() / "gears/m6z30.toml";
+  io::InputError e = change_error({{"pinion.bore_diameter", "60e-300 mm"}});
+  EXPECT_EQ(e.key(), "pinion.bore_diameter");
+  EXPECT_NE(e.rule().find("1/50"), std::string::npos) << e.rule();
+  const Case c = io::load_case(path);
+  const double root_diameter = c.gear_pair.module * (c.gear_pair.teeth[0] - 2.0 * c.gear_pair.dedendum_coefficient);
+  const std::string at = fmt::format("{:.17g} m", root_diameter / 50.0 * (1.0 + 1e-12));
+  const std::string past = fmt::format("{:.17g} m", root_diameter / 50.0 * (1.0 - 1e-9));
+  EXPECT_NO_THROW(io::load_case(path, {{"pinion.bore_diameter", at}}));
+  EXPECT_EQ(change_error({{"pinion.bore_diameter", past}}).key(), "pinion.bore_diameter");
+}
+
+// A material path must be a regular file of at most 1 MiB, checked before reading (was: /dev/zero
+// read forever; a long name escaped as filesystem_error).
+TEST_F(BadInput, MaterialPathMustBeABoundedRegularFile) {
+  const auto toml = dir_ / "gears/m6z30.toml";
+  auto material_error = [&](const std::string& path) {
+    try {
+      io::load_case(toml, {{"pinion.material", path}});
+    } catch (const io::InputError& e) {
+      return e;
+    }
+    ADD_FAILURE() << "no InputError for " << path;
+    return io::InputError("", 0, "", "", "");
+  };
+  io::InputError e = material_error("/dev/zero");
+  EXPECT_EQ(e.key(), "pinion.material");
+  EXPECT_NE(e.rule().find("not a regular file"), std::string::npos) << e.rule();
+  EXPECT_NE(material_error(std::string(300, 'x')).rule().find("too long"), std::string::npos);
+  EXPECT_NE(material_error("../materials").rule().find("folder"), std::string::npos);
+  EXPECT_NE(material_error("../materials/none.toml").rule().find("not found"), std::string::npos);
+  // 1 MiB accepted, one byte more refused.
+  std::string text = read(dir_ / "materials/steel-45.toml") + "\n#";
+  text += std::string(io::kMaxTomlFileBytes - text.size(), 'x');
+  std::ofstream(dir_ / "materials/big.toml") << text;
+  ASSERT_EQ(std::filesystem::file_size(dir_ / "materials/big.toml"), io::kMaxTomlFileBytes);
+  EXPECT_NO_THROW(io::load_case(toml, {{"pinion.material", "../materials/big.toml"}}));
+  std::ofstream(dir_ / "materials/big.toml", std::ios::app) << 'x';
+  e = material_error("../materials/big.toml");
+  EXPECT_EQ(e.key(), "pinion.material");
+  EXPECT_NE(e.rule().find("1 MiB"), std::string::npos) << e.rule();
+  // The case file itself.
+  EXPECT_THROW(io::load_case("/dev/zero"), io::InputError);
 }

@@ -8,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <random>
 
 using namespace geartrib;
@@ -177,4 +179,80 @@ TEST(Fit, DataFileErrorsNameTheLine) {
   std::ofstream(path) << "delta_star,stiffness\n1.5,2.0\n";
   EXPECT_THROW(io::read_fit_data(path), io::InputError);
   std::filesystem::remove(path);
+}
+
+// --- Fuzz finding 06 (tests/corpus/06-fit): values, weights and data that must be refused.
+
+// Observed values outside their stated range are refused at file:line, naming the column
+// (a denormal or 1e308 broke Ceres' relative residual before).
+TEST(Fit, DataValuesHaveStatedRanges) {
+  const auto path = std::filesystem::temp_directory_path() / "geartrib-fit-range.csv";
+  auto error = [&](const std::string& rows) {
+    std::ofstream(path) << "delta_star,load_star,plastic_area_fraction\n" << rows;
+    try {
+      io::read_fit_data(path);
+    } catch (const io::InputError& e) {
+      return std::string(e.key()) + "@" + std::to_string(e.line()) + ": " + e.rule();
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error("1.5,1e-12,0.5\n2,1e12,0\n"), "");  // the limits themselves
+  const std::string denormal = error("1.5,1.8,0.5\n2,1e-320,0.5\n");
+  EXPECT_EQ(denormal.find("load_star@3: must be 0 or lie in [1e-12, 1e+12]"), 0u) << denormal;
+  EXPECT_NE(denormal.find("(column 2)"), std::string::npos) << denormal;
+  EXPECT_NE(error("1.5,1.8,0.5\n2,1e308,0.5\n").find("load_star@3"), std::string::npos);
+  EXPECT_NE(error("1.5,1.8,0.5\n2,-1,0.5\n").find("load_star@3"), std::string::npos);
+  EXPECT_NE(error("1.5,1.8,1.2\n").find("plastic_area_fraction@2"), std::string::npos);
+  EXPECT_EQ(error("1.5,1.8,1.1\n"), "");  // a fraction with noise
+  EXPECT_NE(error("1e7,1.8,0.5\n").find("delta_star@2"), std::string::npos);
+  EXPECT_NE(error("0,1.8,0.5\n").find("delta_star@2"), std::string::npos);
+  std::filesystem::remove(path);
+}
+
+// Weights must be finite and positive (nan was accepted and dumped Ceres' log; -1 fitted).
+TEST(Fit, ObservedWeightsMustBeFiniteAndPositive) {
+  const auto truth = truth_model();
+  const FitData d = synthetic(*truth, 0.0, nullptr);
+  FitOptions opt;
+  opt.free = {"area_scale"};
+  opt.observe = {Observable::area_star};
+  for (double w : {std::nan(""), -1.0, 0.0, std::numeric_limits<double>::infinity(), 1.0000001e6}) {
+    opt.observe_weight = {w};
+    EXPECT_THROW(fit_model(*near(*truth), test::seed_pair(), {d}, opt), std::invalid_argument) << w;
+  }
+  opt.observe_weight = {1e6};  // the largest weight
+  EXPECT_NO_THROW(fit_model(*near(*truth), test::seed_pair(), {d}, opt));
+  opt.observe_weight = {};
+  opt.loss_scale = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(fit_model(*near(*truth), test::seed_pair(), {d}, opt), std::invalid_argument);
+}
+
+// A free constant no observed column depends on cannot be fitted: refused before Ceres runs,
+// naming the constant and the columns (was: exit 0 with NaN standard errors written to -o).
+TEST(Fit, FreeConstantWithoutDependenceIsRefused) {
+  const auto model = asperity::make_asperity_model("kogut-etsion");
+  FitData d;
+  d.name = "area-only.csv";
+  d.columns = {{Observable::area_star, {}, {}}};
+  int line = 2;
+  for (double x : {1.0, 2.0, 6.0, 10.0}) {
+    d.delta_star.push_back(x);
+    d.weight.push_back(1.0);
+    d.line.push_back(line++);
+    d.columns[0].values.push_back(model_observable(*model, test::seed_pair(), x, Observable::area_star));
+  }
+  FitOptions opt;
+  opt.free = {"load_coefficient_1", "load_exponent_1"};
+  try {
+    fit_model(*model, test::seed_pair(), {d}, opt);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("'load_coefficient_1'"), std::string::npos) << what;
+    EXPECT_NE(what.find("area_star"), std::string::npos) << what;
+  }
+  opt.free = {"area_coefficient_1", "area_exponent_1"};  // these it does depend on
+  const FitResult r = fit_model(*model, test::seed_pair(), {d}, opt);
+  for (const auto& c : r.constants) EXPECT_FALSE(std::isnan(c.std_error)) << c.name;
+  EXPECT_EQ(io::format_fit_toml(r, "test").find("nan"), std::string::npos);
 }

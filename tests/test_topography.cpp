@@ -6,11 +6,14 @@
 #include "surface/surface_statistics.hpp"
 #include "surface/synthetic_surface.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <numbers>
+#include <random>
 
 using namespace geartrib;
 using namespace geartrib::surface;
@@ -342,4 +345,325 @@ TEST(Topography, ExtremeSurfacesGiveFiniteStatistics) {
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i) sparse.valid[static_cast<std::size_t>(j) * sparse.nx + i] = 1;
   EXPECT_TRUE(std::isfinite(surface_statistics(sparse).rq));
+}
+
+// --- Input checks (the fuzz findings of tests/corpus/01, 02, 03, 05; docs/guide/surface.md#limits) ---
+
+namespace {
+
+// The InputError `f` throws (a failure when none or another exception).
+std::string input_error(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const io::InputError& e) {
+    return e.what();
+  } catch (const std::exception& e) {
+    return std::string("another exception: ") + e.what();
+  }
+  return "no error";
+}
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+std::filesystem::path write_text(const std::string& name, const std::string& text) {
+  const auto path = temp(name);
+  std::ofstream(path) << text;
+  return path;
+}
+
+// An input of the regression corpus (tests/corpus/FOLDER/NAME; made by the folder's make_inputs.py).
+std::filesystem::path corpus(const std::string& folder, const std::string& name) {
+  return std::filesystem::path(GEARTRIB_SOURCE_DIR) / "tests" / "corpus" / folder / name;
+}
+const std::string kAttributes = "01-hdf5-dx-array-stack-overflow",
+                  kSizes = "03-unbounded-allocation-from-file-size-fields";
+
+// An HDF5 surface of ny x nx heights z [m] (NaN: missing) at spacing 0.5 um, by geartrib's writer.
+std::filesystem::path write_h5(const std::string& name, int ny, int nx, const std::vector<double>& z) {
+  HeightGrid g = make_grid(nx, ny, 0.5e-6, 0.5e-6);
+  for (std::size_t k = 0; k < g.size(); ++k) {
+    g.valid[k] = !std::isnan(z[k]);
+    g.z[k] = std::isnan(z[k]) ? 0.0 : z[k];
+  }
+  const auto path = temp(name);
+  io::write_topography(path, g);
+  return path;
+}
+
+std::vector<double> rough(std::size_t n, double rq, unsigned seed = 1) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> normal(0.0, rq);
+  std::vector<double> z(n);
+  for (double& v : z) v = normal(rng);
+  return z;
+}
+
+// A text height grid of n x n Gaussian heights (in file units) with the given header lines.
+std::string grid_text(const std::string& header, int n, double rq) {
+  std::string out = header;
+  const auto z = rough(static_cast<std::size_t>(n) * n, rq);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) out += fmt::format("{}{:.6g}", i ? " " : "", z[static_cast<std::size_t>(j) * n + i]);
+    out += '\n';
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(Topography, Hdf5SpacingAttributeMustBeOneNumber) {
+  // A scalar and a one-element array are one number; an array of two is refused, never read into
+  // one double (the stack overflow of corpus 01), and an array dy is no longer replaced by dx.
+  EXPECT_NEAR(io::read_topography(corpus(kAttributes, "dx-one-element.h5")).dx, 5e-7, 1e-20);
+  const std::string two = input_error([] { io::read_topography(corpus(kAttributes, "dx-array.h5")); });
+  EXPECT_TRUE(has(two, "dx-array.h5: key '/z dx': attribute dx holds 2 values, not one number")) << two;
+  const std::string dy = input_error([] { io::read_topography(corpus(kAttributes, "dy-array.h5")); });
+  EXPECT_TRUE(has(dy, "dy-array.h5: key '/z dy': attribute dy holds 64 values")) << dy;
+  const std::string text = input_error([] { io::read_topography(corpus(kAttributes, "dx-string.h5")); });
+  EXPECT_TRUE(has(text, "attribute dx is not a floating-point number")) << text;
+  // The spacing limits: 1e-12 m and 1000 m are read, beyond them refused.
+  EXPECT_NEAR(io::read_topography(corpus(kAttributes, "dx-min.h5")).dx, kMinSpacing, 1e-27);
+  EXPECT_NEAR(io::read_topography(corpus(kAttributes, "dx-max.h5")).dx, kMaxSpacing, 1e-12);
+  const std::string below = input_error([] { io::read_topography(corpus(kAttributes, "dx-below.h5")); });
+  EXPECT_TRUE(has(below, "key '/z dx' = 9.9e-13: spacing 9.9e-13 m outside 1e-12 m to 1000 m")) << below;
+  const std::string above = input_error([] { io::read_topography(corpus(kAttributes, "dx-above.h5")); });
+  EXPECT_TRUE(has(above, "key '/z dx' = 1000.5: spacing 1000.5 m outside")) << above;
+}
+
+TEST(Topography, Hdf5DeclaredSizeIsCheckedBeforeAllocating) {
+  // At the limit (8192 x 4096 = kMaxGridPoints) the size passes and the next check speaks (the
+  // chunks were never written); one row more is refused on the size. Neither allocates the grid.
+  static_assert(8192u * 4096u == kMaxGridPoints);
+  const std::string at = input_error([] { io::read_topography(corpus(kSizes, "at-limit.h5")); });
+  EXPECT_TRUE(has(at, "key '/z' = 4096 x 8192: the file does not store all of /z's values")) << at;
+  const std::string past = input_error([] { io::read_topography(corpus(kSizes, "past-limit.h5")); });
+  EXPECT_TRUE(has(past, "key '/z' = 4097 x 8192: more than 33554432 points")) << past;
+  // The grids themselves: one point past the limit is refused before any allocation.
+  EXPECT_THROW(make_grid(8193, 4096, 1e-6, 1e-6), std::invalid_argument);
+  EXPECT_THROW(make_grid(1 << 20, 1 << 20, 1e-6, 1e-6), std::invalid_argument);  // 2^40: no wrap
+  EXPECT_EQ(make_grid(8192, 4096, 1e-6, 1e-6).size(), kMaxGridPoints);
+}
+
+TEST(Topography, Hdf5HeightsMustBeFiniteNaNMarksMissing) {
+  auto z = rough(64, 0.3e-6);
+  z[10] = std::numeric_limits<double>::quiet_NaN();
+  const HeightGrid g = io::read_topography(write_h5("nan.h5", 8, 8, z));
+  EXPECT_EQ(g.missing(), 1u);  // the documented marker
+  for (double bad : {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), 1.0000001}) {
+    z[10] = 0.0;
+    z[19] = bad;  // row 2, column 3
+    const std::string e = input_error([&] { io::read_topography(write_h5("inf.h5", 8, 8, z)); });
+    EXPECT_TRUE(has(e, "inf.h5: key '/z[2][3]'")) << e;
+    EXPECT_TRUE(has(e, "beyond +-1 m")) << e;
+  }
+  z[19] = -1.0;  // at the limit
+  EXPECT_NO_THROW(io::read_topography(write_h5("one-metre.h5", 8, 8, z)));
+}
+
+TEST(Topography, HeaderNumbersAreReadWithTheirExponent) {
+  // '# spacing: 5e-1' is 0.5 in the file's unit (um), as '0.5' is; the 'e' is never a unit.
+  for (const char* spacing : {"0.5", "5e-1", "5E-1", "0.5 um", "5e-1 um", "5e-1um", "5e-7 m"}) {
+    const HeightGrid g =
+        io::read_topography(write_text("exp.txt", grid_text(fmt::format("# spacing: {}\n", spacing), 4, 0.3)));
+    EXPECT_NEAR(g.dx, 0.5e-6, 1e-18) << spacing;
+  }
+  const HeightGrid mm = io::read_topography(write_text("exp.txt", grid_text("# spacing: 5e-1 mm\n", 4, 0.3)));
+  EXPECT_NEAR(mm.dx, 0.5e-3, 1e-15);
+  const HeightGrid nm =
+      io::read_topography(write_text("exp.txt", grid_text("# units: nm\n# dx: 5e2\n# dy: 2.5e+2\n", 4, 300)));
+  EXPECT_NEAR(nm.dx, 0.5e-6, 1e-18);
+  EXPECT_NEAR(nm.dy, 0.25e-6, 1e-18);
+  const std::string e =
+      input_error([] { io::read_topography(write_text("exp.txt", grid_text("# spacing: 5e-1 furlong\n", 4, 0.3))); });
+  EXPECT_TRUE(has(e, "exp.txt:1: key 'spacing' = 5e-1 furlong")) << e;
+  const std::string tiny =
+      input_error([] { io::read_topography(write_text("exp.txt", grid_text("# spacing: 1e-320\n", 4, 0.3))); });
+  EXPECT_TRUE(has(tiny, "spacing must be positive: 0 m after the unit")) << tiny;
+}
+
+TEST(Topography, TextLengthLimits) {
+  // Spacing: 1e-12 m read, 0.99e-12 m refused with the unit hint; heights: 1 m read, beyond refused.
+  EXPECT_NO_THROW(io::read_topography(write_text("lim.txt", grid_text("# spacing: 1e-12 m\n", 4, 0.3))));
+  const std::string fine =
+      input_error([] { io::read_topography(write_text("lim.txt", grid_text("# spacing: 0.99e-6\n", 4, 0.3))); });
+  EXPECT_TRUE(has(fine,
+                  "lim.txt:1: key 'spacing' = 0.99e-6: spacing 9.9e-13 m outside 1e-12 m to 1000 m; lengths were "
+                  "read in um (no '# units:' line)"))
+      << fine;
+  EXPECT_NO_THROW(io::read_topography(write_text("lim.txt", "# units: m\n# spacing: 1e-6\n1 0 0\n0 -1 0\n0 0 1\n")));
+  const std::string high =
+      input_error([] { io::read_topography(write_text("lim.txt", "# spacing: 1\n1 2 3\n4 1e308 6\n7 8 9\n")); });
+  EXPECT_TRUE(has(high, "lim.txt:3: 1e308: height 1e+302 m beyond +-1 m; lengths were read in um")) << high;
+  const std::string metre = input_error(
+      [] { io::read_topography(write_text("lim.txt", "# units: m\n# spacing: 1e-6\n1.000001 0 0\n0 -1 0\n0 0 1\n")); });
+  EXPECT_TRUE(has(metre, "beyond +-1 m; lengths were read in m as the file's '# units:' line says")) << metre;
+  const std::string far = input_error([] { io::read_topography(write_text("far.xyz", "0 0 1\n1e10 0 2\n")); });
+  EXPECT_TRUE(has(far, "far.xyz:2: key 'x' = 1e10: coordinate 10000 m beyond +-1000 m")) << far;
+}
+
+TEST(Topography, PointCloudLatticeAtMostFourCellsAPoint) {
+  // 11 points covering every x and y of their lattice: 4 x 11 = 44 cells is 4 a point (read, the
+  // rest missing); 5 x 9 = 45 cells is one past (refused before the lattice is allocated).
+  auto cloud = [](int nx, int ny, int points) {
+    std::string out;
+    for (int k = 0; k < points; ++k) out += fmt::format("{} {} {}\n", k % nx, k % ny, 0.1 * (k % 3));
+    return out;
+  };
+  const HeightGrid g = io::read_topography(write_text("at.xyz", cloud(4, 11, 11)));
+  EXPECT_EQ(g.nx * g.ny, 44);
+  EXPECT_EQ(g.size() - g.missing(), 11u);
+  const std::string past = input_error([&] { io::read_topography(write_text("past.xyz", cloud(5, 9, 11))); });
+  EXPECT_TRUE(has(past, "past.xyz:1: key 'lattice' = 5 x 9 from 11 points: fewer than one point per 4 lattice cells"))
+      << past;
+  // A resampling spacing that would give too many points names the file and the key.
+  io::TopographyReadOptions o;
+  o.resample = 1e-11;
+  const std::string fine = input_error([&] { io::read_topography(write_text("at.xyz", cloud(4, 11, 11)), o); });
+  EXPECT_TRUE(has(fine, "at.xyz: key 'resample' = 1e-11 m: spacing 1e-11 m gives")) << fine;
+}
+
+TEST(Topography, ImplausibleUnitDrawsAWarningNamingTheFix) {
+  CleanupOptions clean;
+  clean.form_degree = 0;
+  // Heights in metres (Rq 3e-7) read as um: Rq 3e-13 m, a warning naming '# units:' and --unit.
+  const auto metres = write_text("metres.txt", grid_text("# spacing: 0.5 um\n", 16, 0.3e-6));
+  const io::LoadedSurface as_um = io::load_surface(metres, {}, clean);
+  ASSERT_EQ(as_um.warnings.size(), 1u);
+  EXPECT_TRUE(has(as_um.warnings[0], "metres.txt: warning: Rq ")) << as_um.warnings[0];
+  EXPECT_TRUE(has(as_um.warnings[0], "'# units: <unit>' line or --unit")) << as_um.warnings[0];
+  io::TopographyReadOptions si;
+  si.unit = 1.0;
+  EXPECT_TRUE(io::load_surface(metres, si, clean).warnings.empty());
+  // The bounds: Rq just inside 1 nm and 100 um passes, just outside (0.99 nm, 101 um) warns.
+  auto rq_warnings = [&](double rq_um) {
+    const auto path = write_text("rq.txt", grid_text("# spacing: 0.5 um\n", 16, 1.0));
+    HeightGrid g = io::read_topography(path);
+    double mean = 0.0, var = 0.0;
+    for (double z : g.z) mean += z / g.size();
+    for (double z : g.z) var += (z - mean) * (z - mean) / g.size();
+    for (double& z : g.z) z = (z - mean) / std::sqrt(var) * rq_um * 1e-6;
+    return io::unit_warnings("rq.txt", g, 1e-6, false).size();
+  };
+  EXPECT_EQ(rq_warnings(1.0001e-3), 0u);
+  EXPECT_EQ(rq_warnings(99.99), 0u);
+  EXPECT_EQ(rq_warnings(0.99e-3), 1u);
+  EXPECT_EQ(rq_warnings(101.0), 1u);
+  // Spacing: a cloud in metres at 10 um read as um (1e-11 m); an HDF5 file names its metres.
+  std::string cloud = "X(m) Y(m) Z(m)\n";
+  const auto z = rough(144, 0.3e-6);
+  for (int k = 0; k < 144; ++k) cloud += fmt::format("{:g} {:g} {:g}\n", (k % 12) * 1e-5, (k / 12) * 1e-5, z[k]);
+  const auto w = io::load_surface(write_text("coarse.xyz", cloud), {}, clean).warnings;
+  ASSERT_EQ(w.size(), 2u);
+  EXPECT_TRUE(has(w[0], "coarse.xyz: warning: spacing 1e-11 m x 1e-11 m is implausible")) << w[0];
+  const auto h5 = io::load_surface(write_h5("um-heights.h5", 8, 8, rough(64, 0.2)), {}, clean).warnings;
+  ASSERT_EQ(h5.size(), 1u);
+  EXPECT_TRUE(has(h5[0], "an HDF5 topography holds metres")) << h5[0];
+}
+
+TEST(Topography, WavinessCutOffBoundedByTheGrid) {
+  HeightGrid g = make_grid(48, 20, 0.5e-6, 0.5e-6);
+  g.z = rough(g.size(), 0.3e-6);
+  const double side = 47 * 0.5e-6;
+  HeightGrid a = g, b = g, c = g, d = g;
+  EXPECT_NO_THROW(remove_waviness(a, side));  // the longer side: allowed
+  EXPECT_NO_THROW(remove_waviness(b, 1e-6));  // two spacings: allowed
+  try {
+    remove_waviness(c, side * 1.001);
+    ADD_FAILURE() << "a cut-off longer than the surface";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_TRUE(has(e.what(), "is longer than the surface")) << e.what();
+  }
+  EXPECT_THROW(remove_waviness(d, 0.999e-6), std::invalid_argument);
+  HeightGrid e = g;
+  EXPECT_THROW(remove_waviness(e, 1e300), std::invalid_argument);  // was an int overflow
+  for (const auto& s : {a, b})
+    for (double z : s.z) EXPECT_TRUE(std::isfinite(z));
+}
+
+TEST(Topography, WavinessFilterEqualsTheDirectSumOnMaskedGrids) {
+  // The filter against the weighted mean summed point by point (the definition), with missing
+  // points, for short kernels (summed directly) and long ones (by FFT): to 1e-12 of the heights.
+  HeightGrid g = make_grid(300, 41, 0.5e-6, 0.7e-6);
+  g.z = rough(g.size(), 1e-6, 9);
+  std::mt19937 rng(4);
+  for (auto& v : g.valid) v = rng() % 7 != 0;
+  for (int j = 10; j < 20; ++j)
+    for (int i = 100; i < 180; ++i) g.valid[static_cast<std::size_t>(j) * g.nx + i] = 0;  // a hole
+  const double alpha = std::sqrt(std::log(2.0) / std::numbers::pi);
+  for (double cutoff : {5e-6, 20e-6, 140e-6}) {  // kernels of 21, 81 and 561 x (the FFT) weights
+    HeightGrid f = g;
+    const HeightGrid waviness = remove_waviness(f, cutoff);
+    const int hx = std::min(static_cast<int>(std::ceil(cutoff / g.dx)), g.nx - 1);
+    const int hy = std::min(static_cast<int>(std::ceil(cutoff / g.dy)), g.ny - 1);
+    auto weight = [&](int k, double h) { return std::exp(-std::numbers::pi * std::pow(k * h / (alpha * cutoff), 2)); };
+    double worst = 0.0;
+    for (int j = 0; j < g.ny; j += 3)
+      for (int i = 0; i < g.nx; i += 7) {
+        if (!g.ok(i, j)) continue;
+        double s = 0.0, w = 0.0;
+        for (int jj = std::max(0, j - hy); jj <= std::min(g.ny - 1, j + hy); ++jj)
+          for (int ii = std::max(0, i - hx); ii <= std::min(g.nx - 1, i + hx); ++ii)
+            if (g.ok(ii, jj)) {
+              const double wt = weight(ii - i, g.dx) * weight(jj - j, g.dy);
+              s += wt * g.at(ii, jj), w += wt;
+            }
+        worst = std::max(worst, std::abs(waviness.at(i, j) - s / w));
+        EXPECT_NEAR(f.at(i, j), g.at(i, j) - waviness.at(i, j), 1e-20);
+      }
+    EXPECT_LT(worst, 1e-12 * 1e-6) << cutoff;
+  }
+}
+
+TEST(Topography, FillingIsRingByRingAndLinear) {
+  // Against the pass-by-pass definition on a random mask.
+  HeightGrid g = make_grid(30, 20, 1e-6, 1e-6);
+  g.z = rough(g.size(), 1e-6, 3);
+  std::mt19937 rng(8);
+  for (auto& v : g.valid) v = rng() % 5 == 0;
+  HeightGrid reference = g;
+  while (reference.missing() > 0) {
+    HeightGrid next = reference;
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        if (reference.ok(i, j)) continue;
+        double s = 0.0;
+        int c = 0;
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di) {
+            const int ii = i + di, jj = j + dj;
+            if ((di || dj) && ii >= 0 && ii < g.nx && jj >= 0 && jj < g.ny && reference.ok(ii, jj))
+              s += reference.at(ii, jj), ++c;
+          }
+        if (c) next.at(i, j) = s / c, next.valid[static_cast<std::size_t>(j) * g.nx + i] = 1;
+      }
+    reference = next;
+  }
+  fill_missing(g);
+  for (std::size_t k = 0; k < g.size(); ++k) EXPECT_EQ(g.z[k], reference.z[k]) << k;
+  // 9 valid points in a corner of 2000 x 2000 (once ~2000 passes over 4e6 points): one pass a ring.
+  HeightGrid big = make_grid(2000, 2000, 1e-6, 1e-6);
+  std::fill(big.valid.begin(), big.valid.end(), 0);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) big.at(i, j) = 1e-6, big.valid[static_cast<std::size_t>(j) * big.nx + i] = 1;
+  fill_missing(big);
+  EXPECT_EQ(big.missing(), 0u);
+  EXPECT_EQ(big.at(1999, 1999), 1e-6);
+}
+
+TEST(Topography, GeneratorsRefuseWhatWouldGiveNaN) {
+  SelfAffineSpec s;
+  s.nx = s.ny = 32;
+  s.spacing = 1e-300;  // was exit 0 writing NaN
+  EXPECT_THROW(self_affine_surface(s), std::invalid_argument);
+  s.spacing = kMinSpacing;
+  s.cutoff_wavelength = 4 * kMinSpacing;
+  s.rolloff_wavelength = 10 * kMinSpacing;
+  for (double z : self_affine_surface(s).z) ASSERT_TRUE(std::isfinite(z));
+  SelfAffineSpec wide;
+  wide.nx = wide.ny = 32;
+  wide.cutoff_wavelength = 1.0;  // no wavevector of the grid inside the spectrum: was 0/0
+  wide.rolloff_wavelength = 2.0;
+  EXPECT_THROW(self_affine_surface(wide), std::invalid_argument);
+  HobbedSpec h;
+  h.tip_radius = 1e-300;  // ridges of 1e288 m
+  EXPECT_THROW(hobbed_surface(h), std::invalid_argument);
 }

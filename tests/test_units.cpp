@@ -36,3 +36,42 @@ TEST(Units, RejectsUnknownUnitsWrongDimensionsAndGarbage) {
     EXPECT_NE(std::string(e.what()).find("mm"), std::string::npos) << "lists the allowed units: " << e.what();
   }
 }
+
+// An exponent belongs to the number, never to the unit: "5e-1" is a bare number, "5e-1 mm" half
+// a millimetre, and a broken exponent is a malformed number (not "2" with a unit "e").
+TEST(Units, ExponentIsPartOfTheNumber) {
+  using geartrib::io::parse_any_quantity;
+  EXPECT_DOUBLE_EQ(parse_quantity("5e-1", Dimension::length), 0.5);
+  EXPECT_DOUBLE_EQ(parse_quantity("5e-1 mm", Dimension::length), 0.5e-3);
+  EXPECT_DOUBLE_EQ(parse_quantity("5e-1mm", Dimension::length), 0.5e-3);
+  EXPECT_DOUBLE_EQ(parse_quantity("2E3 Pa", Dimension::pressure), 2000.0);
+  for (const char* bad : {"2e", "2e mm", "2emm", "2e+", "2e-", "2E", "1.5.3 mm", "2e3e4", "5-3 mm"}) {
+    EXPECT_THROW(parse_quantity(bad, Dimension::length), std::invalid_argument) << bad;
+    EXPECT_FALSE(parse_any_quantity(bad).has_value()) << bad;
+  }
+  try {
+    parse_quantity("2e", Dimension::length);
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).find("unknown unit"), std::string::npos) << "'e' is no unit: " << e.what();
+  }
+  const auto any = parse_any_quantity("5e-1mm");
+  ASSERT_TRUE(any.has_value());
+  EXPECT_DOUBLE_EQ(any->si, 0.5e-3);
+  EXPECT_EQ(any->dimension, Dimension::length);
+  const auto bare = parse_any_quantity("5e-1");
+  ASSERT_TRUE(bare.has_value());
+  EXPECT_EQ(bare->dimension, Dimension::dimensionless);
+}
+
+// Finiteness is checked after the unit's factor: a finite number can overflow in SI.
+TEST(Units, OverflowAfterScalingIsRefused) {
+  EXPECT_DOUBLE_EQ(parse_quantity("1e299 GPa", Dimension::pressure), 1e308);  // the largest decade that fits
+  EXPECT_THROW(parse_quantity("1e300 GPa", Dimension::pressure), std::invalid_argument);
+  EXPECT_THROW(parse_quantity("1e308 GPa", Dimension::pressure), std::invalid_argument);
+  EXPECT_THROW(parse_quantity("1.7e308 kN m", Dimension::torque), std::invalid_argument);
+  EXPECT_DOUBLE_EQ(parse_quantity("1.7e308 N m", Dimension::torque), 1.7e308);
+  EXPECT_THROW(parse_quantity("1e400 Pa", Dimension::pressure), std::invalid_argument);  // beyond a double
+  EXPECT_THROW(parse_quantity("inf Pa", Dimension::pressure), std::invalid_argument);
+  EXPECT_THROW(parse_quantity("nan", Dimension::pressure), std::invalid_argument);
+  EXPECT_FALSE(geartrib::io::parse_any_quantity("1e308 GPa").has_value());
+}

@@ -1,6 +1,10 @@
 #include "app/cli_options.hpp"
 
+#include <fmt/format.h>
+
+#include <charconv>
 #include <iostream>
+#include <stdexcept>
 
 namespace geartrib::app {
 
@@ -42,8 +46,11 @@ void add_threads_option(CLI::App* cmd, int& threads) {
 }
 
 void emit_table(const io::Table& t, const TableOptions& o) {
-  if (o.csv.to_file()) io::write_file_atomically(o.csv.file, io::format_csv(t));
-  io::output_table(t, o.csv.in_place(), o.output);
+  io::OutputSet outputs;  // --csv FILE and -o FILE: both or neither
+  if (o.csv.to_file()) outputs.add_text(o.csv.file, io::format_csv(t));
+  if (!o.output.empty()) outputs.add_text(o.output, o.csv.in_place() ? io::format_csv(t) : io::format_text(t));
+  outputs.commit();
+  if (o.output.empty()) io::output_table(t, o.csv.in_place(), "");
 }
 
 double quantity_option(const std::string& option, const std::string& text, io::Dimension d) {
@@ -52,6 +59,25 @@ double quantity_option(const std::string& option, const std::string& text, io::D
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(option + " '" + text + "': " + e.what());
   }
+}
+
+RangeOption range_option(const std::string& option, const std::string& text, io::Dimension d, int min_count,
+                         int max_count) {
+  const auto fail = [&](const std::string& rule) {
+    throw std::invalid_argument(fmt::format("{} '{}': {} (expected MIN:MAX:COUNT)", option, text, rule));
+  };
+  const auto a = text.find(':'), b = text.rfind(':');
+  if (a == std::string::npos || a == b) fail("needs three fields");
+  RangeOption r;
+  r.min = quantity_option(option, text.substr(0, a), d);
+  r.max = quantity_option(option, text.substr(a + 1, b - a - 1), d);
+  const std::string count = text.substr(b + 1);
+  long long n = 0;
+  const auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), n);
+  if (ec != std::errc{} || end != count.data() + count.size() || n < min_count || n > max_count)
+    fail(fmt::format("COUNT must be a whole number from {} to {}", min_count, max_count));
+  r.count = static_cast<int>(n);
+  return r;
 }
 
 }  // namespace geartrib::app

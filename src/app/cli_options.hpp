@@ -56,4 +56,14 @@ void emit_table(const io::Table& t, const TableOptions& o);
 // A command-line quantity with a unit ("0.5 um", "1000 rpm"), SI; the error names the option.
 double quantity_option(const std::string& option, const std::string& text, io::Dimension d);
 
+// MIN:MAX:COUNT of a sweep option: MIN and MAX as quantities of dimension `d` (SI), COUNT a whole
+// number from `min_count` to `max_count` read without wrapping. The errors name the option and
+// its text.
+struct RangeOption {
+  double min = 0.0, max = 0.0;
+  int count = 0;
+};
+RangeOption range_option(const std::string& option, const std::string& text, io::Dimension d, int min_count,
+                         int max_count);
+
 }  // namespace geartrib::app

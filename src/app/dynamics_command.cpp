@@ -23,6 +23,18 @@ double speed_option(const std::string& option, const std::string& text) {
   return quantity_option(option, text, io::Dimension::angular_speed);
 }
 
+constexpr double kRpm = 2.0 * std::numbers::pi / 60.0;
+
+// A speed inside the model's range, or an error naming where it came from, in rpm.
+void check_speed(const std::string& source, double w, const gear::MeshDynamics& dyn) {
+  const auto [slowest, fastest] = dyn.speed_range();
+  if (!(w >= slowest && w <= fastest))
+    throw std::invalid_argument(fmt::format(
+        "{} = {:.6g} rpm: outside the dynamics model's range {:.4g} to {:.4g} rpm (mesh frequency 1e-5 to 1e3 times "
+        "the natural frequency; below it the cycle is quasi-static: see dynamic_factor_quasi_static)",
+        source, w / kRpm, slowest / kRpm, fastest / kRpm));
+}
+
 struct Options {
   CaseOptions case_options;
   std::string integrator;
@@ -31,8 +43,6 @@ struct Options {
   std::string sweep;
   TableOptions table;
 };
-
-constexpr double kRpm = 2.0 * std::numbers::pi / 60.0;
 
 void run(const Options& o) {
   // --integrator and --rtol are shorthands for --set mesh.dynamics and dynamics.relative_tolerance.
@@ -54,14 +64,13 @@ void run(const Options& o) {
       settings.tolerances.relative);
   io::Table t;
   if (!o.sweep.empty()) {
-    const auto a = o.sweep.find(':'), b = o.sweep.rfind(':');
-    if (a == std::string::npos || a == b)
-      throw std::invalid_argument("--speed-sweep expects MIN:MAX:COUNT, e.g. 100rpm:9000rpm:200");
-    const double lo = speed_option("--speed-sweep", o.sweep.substr(0, a)),
-                 hi = speed_option("--speed-sweep", o.sweep.substr(a + 1, b - a - 1));
-    const int n = std::stoi(o.sweep.substr(b + 1));
-    if (!(lo > 0.0 && hi > lo) || n < 2)
-      throw std::invalid_argument("--speed-sweep needs 0 < MIN < MAX and COUNT >= 2");
+    // At most 10^4 speeds: each integrates its cycles to a steady state (~ms apiece).
+    const RangeOption range = range_option("--speed-sweep", o.sweep, io::Dimension::angular_speed, 2, 10000);
+    const double lo = range.min, hi = range.max;
+    const int n = range.count;
+    if (!(lo > 0.0 && hi > lo)) throw std::invalid_argument("--speed-sweep needs 0 < MIN < MAX");
+    check_speed("--speed-sweep", lo, dyn);
+    check_speed("--speed-sweep", hi, dyn);
     t.header = {"speed_rpm",    "mesh_frequency_Hz", "dynamic_factor", "dynamic_factor_quasi_static",
                 "contact_lost", "periodic",          "cycles"};
     double best = 0.0, best_f = 0.0;
@@ -77,6 +86,7 @@ void run(const Options& o) {
         best_f, 100.0 * (best_f / dyn.natural_frequency() - 1.0));
   } else {
     const double w = o.speed.empty() ? c.operating.pinion_speed : speed_option("--speed", o.speed);
+    check_speed(o.speed.empty() ? "operating.pinion_speed" : "--speed", w, dyn);
     const gear::SteadyCycle s = dyn.steady_cycle(*integrator, w);
     const auto& p = mesh.pair().path();
     t.header = {"time_s",

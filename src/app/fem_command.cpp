@@ -165,9 +165,11 @@ void single_asperity(const SingleOptions& o) {
   for (const auto& l : mesh_lines) text += l + "\n";
   for (const auto& l : convergence_lines) text += l + "\n";
   text += fmt::format("# ccx time: {:.1f} s\n", seconds);
+  io::OutputSet outputs;  // -o and --details: both or neither
+  if (!o.output.empty()) outputs.add_text(o.output, text + io::format_csv(t));
+  if (!o.details.empty()) outputs.add_text(o.details, text + io::format_csv(details));
+  outputs.commit();
   if (o.output.empty()) std::cout << text + io::format_csv(t);
-  else io::write_file_atomically(o.output, text + io::format_csv(t));
-  if (!o.details.empty()) io::write_file_atomically(o.details, text + io::format_csv(details));
   folder.done();
 }
 

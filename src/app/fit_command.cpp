@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -58,6 +59,13 @@ void run(const Options& o) {
   opt.observe_weight = o.weights;
   if (!opt.observe_weight.empty() && opt.observe_weight.size() != opt.observe.size())
     throw std::invalid_argument("--weight needs one weight per --observe column");
+  for (std::size_t j = 0; j < o.weights.size(); ++j)
+    if (!(std::isfinite(o.weights[j]) && o.weights[j] > 0.0 && o.weights[j] <= fit::kMaxRowWeight))
+      throw std::invalid_argument(
+          fmt::format("--weight {} (for {}): a weight must be finite, positive and at most {:g}", o.weights[j],
+                      j < o.observe.size() ? o.observe[j] : "?", fit::kMaxRowWeight));
+  if (!std::isfinite(o.loss_scale))
+    throw std::invalid_argument(fmt::format("--loss-scale {}: must be finite and positive", o.loss_scale));
   for (const auto& b : o.bounds) {
     const auto eq = b.find('='), colon = b.find(':', eq == std::string::npos ? 0 : eq);
     if (eq == std::string::npos || colon == std::string::npos)
@@ -80,9 +88,11 @@ void run(const Options& o) {
     for (const auto& f : o.free) provenance += " " + f;
   }
   const std::string report = io::format_fit_report(r);
-  if (!o.report.empty()) io::write_file_atomically(o.report, report);
-  if (!o.output.empty()) io::write_file_atomically(o.output, io::format_fit_toml(r, provenance));
-  if (!o.emit_cpp.empty()) io::write_file_atomically(o.emit_cpp, io::format_fit_cpp(r, provenance));
+  io::OutputSet outputs;  // --report, -o and --emit-cpp: all or none
+  if (!o.report.empty()) outputs.add_text(o.report, report);
+  if (!o.output.empty()) outputs.add_text(o.output, io::format_fit_toml(r, provenance));
+  if (!o.emit_cpp.empty()) outputs.add_text(o.emit_cpp, io::format_fit_cpp(r, provenance));
+  outputs.commit();
   if (!o.quiet) std::cout << (o.report.empty() ? report : report.substr(0, report.find("\nResiduals")) + "\n");
 }
 

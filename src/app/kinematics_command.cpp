@@ -186,7 +186,8 @@ void add_kinematics_command(CLI::App& app) {
   auto* pts =
       cmd->add_option("--points", o->points, "Comma-separated named points (default A,B,C,D,E)")->delimiter(',');
   auto* pos =
-      cmd->add_option("--positions", o->positions, "N equally spaced positions from A to E instead of named points");
+      cmd->add_option("--positions", o->positions, "N equally spaced positions from A to E instead of named points")
+          ->check(CLI::Range(2, 100000));
   pts->excludes(pos);
   cmd->add_option("--load-sharing", o->load_sharing, "iso or stiffness: shorthand for --set mesh.load_sharing=...")
       ->check(CLI::IsMember({"iso", "stiffness"}));

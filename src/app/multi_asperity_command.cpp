@@ -73,8 +73,9 @@ contact::MultiAsperitySpec make_spec(const Options& o, const Case& c, double del
   if (!o.topography.empty()) {
     // A measured profile: its parabolic-cylinder asperities replace the layout (seed section 4 -> 5).
     const io::LoadedSurface in = load_surface_reporting(o.topography, o.surface);
-    const surface::CylinderReduction r =
-        surface::reduce_to_cylinders(in.grid, surface::surface_statistics(in.grid).lay_angle);
+    const surface::CylinderReduction r = about_surface(o.topography, [&] {
+      return surface::reduce_to_cylinders(in.grid, surface::surface_statistics(in.grid).lay_angle);
+    });
     if (r.asperities.empty())
       throw std::invalid_argument(o.topography + ": no asperity across the lay to reduce to cylinders");
     double top = -std::numeric_limits<double>::infinity(), low = -top;
@@ -97,13 +98,11 @@ void run(const Options& o) {
                                              : length_option("--delta-pc", o.delta_pc);
   if (!o.sweep.empty()) {
     // MIN:MAX:COUNT, linearly spaced, units on MIN and MAX.
-    const auto a = o.sweep.find(':'), b = o.sweep.rfind(':');
-    if (a == std::string::npos || a == b) throw std::invalid_argument("--sweep-spacing expects MIN:MAX:COUNT");
-    const double lo = length_option("--sweep-spacing", o.sweep.substr(0, a));
-    const double hi = length_option("--sweep-spacing", o.sweep.substr(a + 1, b - a - 1));
-    const int n = std::stoi(o.sweep.substr(b + 1));
-    if (n < 2 || !(hi > lo) || lo < 0.0)
-      throw std::invalid_argument("--sweep-spacing needs 0 <= MIN < MAX and COUNT >= 2");
+    // At most 1000 spacings: each is a boundary-element solve.
+    const RangeOption range = range_option("--sweep-spacing", o.sweep, io::Dimension::length, 2, 1000);
+    const double lo = range.min, hi = range.max;
+    const int n = range.count;
+    if (!(hi > lo) || lo < 0.0) throw std::invalid_argument("--sweep-spacing needs 0 <= MIN < MAX");
     io::Table t;
     t.header = {"spacing_m",
                 "total_contact_area_m2",

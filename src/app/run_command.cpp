@@ -91,16 +91,20 @@ void run(const Options& o) {
   if (o.positions) co.changes.push_back(fmt::format("contact.positions={}", *o.positions));
   if (!o.fidelity.empty()) co.changes.push_back("contact.fidelity=" + o.fidelity);
   const Case c = load_case_reporting(co);
-  ProgressBar bar(!o.quiet, "positions");
-  const contact::MeshContactResult r = run_mesh_cycle(c, [&](int done, int total) { bar(done, total); });
-
   const std::string case_file = case_path(co).string();
   const std::filesystem::path out =
       o.output.empty() ? std::filesystem::path(std::filesystem::path(case_file).stem().string() + ".h5")
                        : std::filesystem::path(o.output);
-  io::write_mesh_contact_hdf5(out, r, case_file, c);
+  // The HDF5 file and the CSV, both or neither; their folders checked before the cycle runs.
+  io::OutputSet outputs;
+  outputs.reserve(out);
+  if (o.csv.to_file()) outputs.reserve(o.csv.file);
+  ProgressBar bar(!o.quiet, "positions");
+  const contact::MeshContactResult r = run_mesh_cycle(c, [&](int done, int total) { bar(done, total); });
+
+  outputs.add(out, [&](const std::filesystem::path& tmp) { io::write_mesh_contact_hdf5(tmp, r, case_file, c); });
+  io::Table t;
   if (o.csv.given()) {
-    io::Table t;
     for (const auto* group : r.groups())
       for (const auto& q : *group) t.header.push_back(q.name);
     for (std::size_t i = 0; i < r.mesh.front().values.size(); ++i) {
@@ -109,8 +113,12 @@ void run(const Options& o) {
         for (const auto& q : *group) row.push_back(q.values[i]);
       t.rows.push_back(std::move(row));
     }
-    io::output_table(t, true, o.csv.to_file() ? o.csv.file : "");
-    if (o.csv.in_place()) return;  // standard output holds the table only
+    if (o.csv.to_file()) outputs.add_text(o.csv.file, io::format_csv(t));
+  }
+  outputs.commit();
+  if (o.csv.in_place()) {
+    io::output_table(t, true, "");
+    return;  // standard output holds the table only
   }
   for (const auto& w : r.warnings) std::cerr << "warning: " << w << '\n';
   if (!r.verdict.empty()) fmt::print("Validity: {}\n", r.verdict);

@@ -23,6 +23,19 @@ double length(const std::string& option, const std::string& text) {
   return quantity_option(option, text, io::Dimension::length);
 }
 
+// A length option within (lo, hi] metres (lo itself allowed when `closed`), the option named.
+double bounded_length(const std::string& option, const std::string& text, double lo, double hi, bool closed) {
+  const double v = length(option, text);
+  if (!(closed ? v >= lo : v > lo) || !(v <= hi))
+    throw std::invalid_argument(
+        fmt::format("{} '{}': must lie in {}{:g} m, {:g} m]", option, text, closed ? "[" : "(", lo, hi));
+  return v;
+}
+// A grid spacing option: within the limits of every grid (surface/height_grid.hpp).
+double spacing_option(const std::string& option, const std::string& text) {
+  return bounded_length(option, text, surface::kMinSpacing, surface::kMaxSpacing, true);
+}
+
 }  // namespace
 
 void add_surface_input_options(CLI::App* cmd, SurfaceInputOptions& o) {
@@ -87,12 +100,18 @@ struct GenerateOptions {
 
 void generate(const GenerateOptions& o) {
   surface::HeightGrid g;
+  auto check_size = [](int nx, int ny) {
+    if (static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) > surface::kMaxGridPoints)
+      throw std::invalid_argument(
+          fmt::format("--nx {} --ny {}: more than the {} points a grid may hold", nx, ny, surface::kMaxGridPoints));
+  };
   if (o.kind == "self-affine") {
     surface::SelfAffineSpec s;
     if (o.nx) s.nx = o.nx;
     if (o.ny) s.ny = o.ny;
-    if (!o.spacing.empty()) s.spacing = length("--spacing", o.spacing);
-    s.rq = length("--rq", o.rq);
+    check_size(s.nx, s.ny);
+    if (!o.spacing.empty()) s.spacing = spacing_option("--spacing", o.spacing);
+    s.rq = bounded_length("--rq", o.rq, 0.0, surface::kMaxHeight, false);
     s.hurst = o.hurst;
     s.rolloff_wavelength = length("--rolloff", o.rolloff);
     s.cutoff_wavelength = o.short_cutoff.empty() ? 4.0 * s.spacing : length("--short-cutoff", o.short_cutoff);
@@ -104,7 +123,8 @@ void generate(const GenerateOptions& o) {
     surface::HobbedSpec s;
     if (o.nx) s.nx = o.nx;
     if (o.ny) s.ny = o.ny;
-    if (!o.spacing.empty()) s.spacing = length("--spacing", o.spacing);
+    check_size(s.nx, s.ny);
+    if (!o.spacing.empty()) s.spacing = spacing_option("--spacing", o.spacing);
     s.wavelength = length("--wavelength", o.wavelength);
     s.tip_radius = length("--tip-radius", o.tip_radius);
     s.noise_rq = length("--noise", o.noise);
@@ -137,8 +157,10 @@ void equivalent(const EquivalentOptions& o) {
   } catch (const std::invalid_argument& ex) {
     throw std::invalid_argument(fmt::format("{} and {}: {}", o.upper, o.lower, ex.what()));
   }
+  // The statistics before the surface is written: a surface they refuse leaves no file behind.
+  const auto stats = about_surface(o.upper + " + " + o.lower, [&] { return surface::surface_statistics(e); });
   io::write_topography(o.output, e, quantity_option("--out-unit", "1 " + o.unit, io::Dimension::length));
-  emit_table(statistics_table(surface::surface_statistics(e), nullptr), o.table);
+  emit_table(statistics_table(stats, nullptr), o.table);
 }
 
 struct AsperityOptions {
@@ -151,7 +173,7 @@ struct AsperityOptions {
 
 void asperities(const AsperityOptions& o) {
   const io::LoadedSurface in = load_surface_reporting(o.file, o.input);
-  const surface::SurfaceStatistics s = surface::surface_statistics(in.grid);
+  const surface::SurfaceStatistics s = about_surface(o.file, [&] { return surface::surface_statistics(in.grid); });
   io::Table t;
   if (!o.cylinders) {
     double mean = 0.0;
@@ -168,7 +190,8 @@ void asperities(const AsperityOptions& o) {
         s.summits, s.summit_density * 1e-6, s.mccool_density * 1e-6, s.summit_radius * 1e6, s.mccool_radius * 1e6,
         s.summit_mean_height * 1e6, s.summit_sigma * 1e6, s.mccool_summit_sigma * 1e6);
   } else {
-    const surface::CylinderReduction r = surface::reduce_to_cylinders(in.grid, s.lay_angle, o.prominence, o.cap);
+    const surface::CylinderReduction r =
+        about_surface(o.file, [&] { return surface::reduce_to_cylinders(in.grid, s.lay_angle, o.prominence, o.cap); });
     t.header = {"centre_m", "height_m", "tip_radius_m", "spacing_m"};
     for (const auto& a : r.asperities) t.rows.push_back({a.centre, a.height, a.tip_radius, a.spacing});
     fmt::print(
@@ -187,11 +210,13 @@ void asperities(const AsperityOptions& o) {
 io::LoadedSurface load_surface_reporting(const std::string& file, const SurfaceInputOptions& o) {
   io::TopographyReadOptions read;
   read.unit = quantity_option("--unit", "1 " + o.unit, io::Dimension::length);
-  if (!o.spacing.empty()) read.spacing = length("--grid-spacing", o.spacing) / read.unit;
-  if (!o.resample.empty()) read.resample = length("--resample", o.resample);
+  if (!(read.unit > 0.0)) throw std::invalid_argument("--unit '" + o.unit + "': must be a positive length unit");
+  if (!o.spacing.empty()) read.spacing = spacing_option("--grid-spacing", o.spacing) / read.unit;
+  if (!o.resample.empty()) read.resample = spacing_option("--resample", o.resample);
   surface::CleanupOptions clean;
   clean.form_degree = o.form_degree;
-  if (!o.cutoff.empty()) clean.waviness_cutoff = length("--cutoff", o.cutoff);
+  // The cut-off against the grid (two spacings to the surface's length) once the file is read.
+  if (!o.cutoff.empty()) clean.waviness_cutoff = bounded_length("--cutoff", o.cutoff, 0.0, surface::kMaxSpacing, false);
   clean.outlier_limit = o.outliers;
   clean.fill = o.fill;
   try {
@@ -200,6 +225,7 @@ io::LoadedSurface load_surface_reporting(const std::string& file, const SurfaceI
     throw std::invalid_argument(std::string("surface clean-up options: ") + e.what());
   }
   io::LoadedSurface s = io::load_surface(file, read, clean);
+  for (const auto& w : s.warnings) fmt::print(stderr, "{}\n", w);
   fmt::print(
       stderr,
       "{}: {} x {} points at {:.4g} x {:.4g} um; {} missing in the file, {} outliers masked, {} filled, {} missing\n",
@@ -251,7 +277,9 @@ void add_surface_command(CLI::App& app) {
   add_table_options(st, s->table);
   st->callback([s] {
     const io::LoadedSurface in = load_surface_reporting(s->file, s->input);
-    emit_table(statistics_table(surface::surface_statistics(in.grid), &in.cleanup), s->table);
+    emit_table(
+        statistics_table(about_surface(s->file, [&] { return surface::surface_statistics(in.grid); }), &in.cleanup),
+        s->table);
   });
 
   auto cl = std::make_shared<EquivalentOptions>();  // upper: the input; unit: of the output

@@ -1,7 +1,10 @@
 // Reading and cleaning a topography file from the command line (surface, multi-asperity).
 #pragma once
 
+#include "io/input_error.hpp"
 #include "io/topography_files.hpp"
+
+#include <stdexcept>
 
 #include <string>
 
@@ -21,7 +24,18 @@ struct SurfaceInputOptions {
   bool fill = false;
 };
 void add_surface_input_options(CLI::App* cmd, SurfaceInputOptions& o);
-// Loads and cleans, printing the clean-up report to stderr.
+// Loads and cleans, printing the unit warnings and the clean-up report to stderr.
 io::LoadedSurface load_surface_reporting(const std::string& file, const SurfaceInputOptions& o);
+// Runs f on a loaded surface (statistics, summits, cylinders), turning the std::invalid_argument of
+// a surface they refuse (too few valid points for slopes, a profile without points) into an
+// InputError naming the file: exit 2 with the file named.
+template <class F>
+auto about_surface(const std::string& file, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(file, 0, "", "", e.what());
+  }
+}
 
 }  // namespace geartrib::app

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <mutex>
@@ -180,14 +181,30 @@ std::string signature(const std::string& scene, const std::string& plan) {
   return fmt::format("{:016x}", std::hash<std::string>{}(scene + '\n' + plan));
 }
 
-void write_outputs(const io::ColumnTableFile& f, const Options& o) {
-  io::write_column_table_hdf5(o.output.empty() ? "sweep.h5" : o.output, f);
-  if (o.csv.to_file()) io::write_file_atomically(o.csv.file, io::format_csv(f.table));
-  else if (o.csv.in_place()) std::cout << io::format_csv(f.table);
+std::filesystem::path output_path(const Options& o) { return o.output.empty() ? "sweep.h5" : o.output; }
+
+// The outputs' temporaries, created before any point runs: a folder that cannot be written is
+// reported at once.
+void reserve_outputs(const Options& o, io::OutputSet& outputs) {
+  outputs.reserve(output_path(o));
+  if (o.csv.to_file()) outputs.reserve(o.csv.file);
 }
 
-// The process's peak resident memory so far [MB] (getrusage; Linux gives ru_maxrss in KiB).
+// The table file and the CSV, both or neither.
+void write_outputs(const io::ColumnTableFile& f, const Options& o, io::OutputSet& outputs) {
+  outputs.add(output_path(o), [&](const std::filesystem::path& tmp) { io::write_column_table_hdf5(tmp, f); });
+  if (o.csv.to_file()) outputs.add_text(o.csv.file, io::format_csv(f.table));
+  outputs.commit();
+  if (o.csv.in_place()) std::cout << io::format_csv(f.table);
+}
+
+// The process's peak resident memory so far [MB]: VmHWM of /proc/self/status (this program's
+// own address space). getrusage's ru_maxrss is the fallback: on Linux it keeps the peak of the
+// process before its exec, so a sweep started from a 100 MB Python reports 100 MB.
 double peak_memory_mb() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) * 1024.0 / 1e6;  // "VmHWM:   123 kB"
   rusage usage{};
   if (getrusage(RUSAGE_SELF, &usage) != 0) return std::nan("");
   return static_cast<double>(usage.ru_maxrss) * 1024.0 / 1e6;
@@ -215,6 +232,8 @@ void print_summary(const io::ColumnTable& t, const std::string& output, const st
 }
 
 void merge(const Options& o) {
+  io::OutputSet outputs;
+  reserve_outputs(o, outputs);
   std::vector<io::ColumnTableFile> files;
   for (const auto& m : o.merge) {
     files.push_back(io::read_column_table_hdf5(m));
@@ -268,8 +287,8 @@ void merge(const Options& o) {
       else c.numbers.push_back(s ? s->numbers[at.second] : std::nan(""));
     }
   }
-  write_outputs(out, o);
-  if (!o.quiet) print_summary(out.table, o.output.empty() ? "sweep.h5" : o.output);
+  write_outputs(out, o, outputs);
+  if (!o.quiet) print_summary(out.table, output_path(o).string());
 }
 
 void run(const Options& o) {
@@ -287,6 +306,8 @@ void run(const Options& o) {
   const std::filesystem::path case_file = case_path(CaseOptions{o.case_file, {}});
   // The base case must load: an error there is the user's, not a point's.
   const Case base = load_case_reporting(CaseOptions{case_file.string(), {}});
+  io::OutputSet outputs;
+  reserve_outputs(o, outputs);
 
   std::vector<std::size_t> mine;
   for (std::size_t i = 0; i < plan.size(); ++i)
@@ -325,9 +346,9 @@ void run(const Options& o) {
                   {"shard_count", std::to_string(shard.count)},
                   {"signature", signature(base.source_text, plan.describe())},
                   {"mean", "trapezoidal mean over the evenly spaced positions A -> E"}};
-  write_outputs(f, o);
+  write_outputs(f, o, outputs);
   if (!o.quiet)
-    print_summary(f.table, o.output.empty() ? "sweep.h5" : o.output,
+    print_summary(f.table, output_path(o).string(),
                   fmt::format("{:.3g} s on {} thread{}, ",
                               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), threads,
                               threads == 1 ? "" : "s"));

@@ -243,11 +243,12 @@ void run(const Options& o) {
   const std::string& output = o.table.output;
   const bool png = output.size() > 4 && output.substr(output.size() - 4) == ".png";
   const CsvOption& csv_option = o.table.csv;
-  if (csv_option.to_file()) io::write_file_atomically(csv_option.file, io::format_csv(t));
+  io::OutputSet outputs;  // --csv FILE and -o FILE: both or neither
+  if (csv_option.to_file()) outputs.add_text(csv_option.file, io::format_csv(t));
   if (csv_option.in_place() && !png) {
     const std::string text = io::format_csv(t);
     if (output.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
-    else io::write_file_atomically(output, text);
+    else outputs.add_text(output, text);
   } else {
     std::string text = fmt::format("{:<15} {:<16} {:>10} {:>16} {:>22} {:>17}  {}\n", "knob", "setting", "time_s",
                                    "error_real_area", "error_plastic_fraction", "error_peak_stress", "note");
@@ -261,8 +262,9 @@ void run(const Options& o) {
       if (r.recommended && r.knob != "combined") advice += fmt::format(" {} = {};", r.knob, r.setting);
     text += advice + "\n";
     if (png || output.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
-    else io::write_file_atomically(output, text);
+    else outputs.add_text(output, text);
   }
+  outputs.commit();
   if (png) {
     // The Pareto plot by scripts/plot_tradeoff.py from the CSV table (matplotlib).
     const std::filesystem::path csv = csv_option.to_file()

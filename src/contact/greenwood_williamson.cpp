@@ -70,14 +70,21 @@ GreenwoodWilliamson::GreenwoodWilliamson(const surface::EquivalentSurface& surfa
       if (last != table_.end()) table_.erase(last + 1, table_.end());
     }
   }
+  // The deepest separation the table may reach, tried first: a pressure beyond it is refused at
+  // once rather than after ~10^5 table rows (seconds).
+  constexpr double kDeepest = -1e4;  // [sigma]
+  if (!(table_.size() >= 2 && table_.back().nominal_pressure >= target) &&
+      at_separation(kDeepest * s).nominal_pressure < target)
+    throw std::invalid_argument(fmt::format(
+        "nominal pressure {:.6g} Pa is beyond what the rough surface can carry at any separation", max_pressure));
   // The rest (all of it for the exponential distribution) by direct quadrature per separation.
   while (!(table_.size() >= 2 && table_.back().nominal_pressure >= target)) {
     const double d = z_high_ - static_cast<double>(table_.size()) * step_;
     table_.push_back(at_separation(d));
     if (table_.size() >= 2 && table_.back().nominal_pressure >= target) break;
-    if (d < -1e4 * s)
-      throw std::invalid_argument("nominal pressure " + std::to_string(max_pressure) +
-                                  " Pa is beyond what the rough surface can carry at any separation");
+    if (d < kDeepest * s)
+      throw std::invalid_argument(fmt::format(
+          "nominal pressure {:.6g} Pa is beyond what the rough surface can carry at any separation", max_pressure));
   }
   build_cells();
 }
@@ -345,7 +352,12 @@ double GreenwoodWilliamson::separation_for_pressure(double p) const {
   if (it == table_.end()) {
     // Beyond the table: bisection on the direct quadrature, from the table's end downward.
     double hi = table_.back().separation, lo = hi - step_;
-    while (at_separation(lo).nominal_pressure < p) {
+    for (int doubling = 0; at_separation(lo).nominal_pressure < p; ++doubling) {
+      if (doubling == 200)  // the depth doubles each time: far past any pressure the table allows
+        throw std::invalid_argument(
+            fmt::format("nominal pressure {:.6g} Pa is beyond what the rough surface can "
+                        "carry at any separation",
+                        p));
       hi = lo;
       lo -= 2.0 * (table_.front().separation - lo);
     }

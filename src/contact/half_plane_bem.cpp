@@ -155,7 +155,10 @@ BemSolution HalfPlaneBem::solve_load_capped(const std::vector<double>& gap0, dou
   const std::vector<double> first = start(gap0, hi, coarse_iterations);
   BemSolution at_hi = solve(gap0, false, hi, first.empty() ? nullptr : &first);
   int total = at_hi.iterations;
-  while (at_hi.line_load < line_load) {
+  for (int doubling = 0; at_hi.line_load < line_load; ++doubling) {
+    if (doubling == 200)  // the approach doubles each time: 200 doublings span any finite load
+      throw std::runtime_error(
+          fmt::format("boundary elements: no approach carries the line load {:.6g} N/m", line_load));
     lo = hi;
     hi = g_min + 2.0 * (hi - g_min);
     at_hi = solve(gap0, false, hi, &at_hi.pressure);

@@ -7,7 +7,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -24,8 +23,7 @@ std::string identifier(std::string s) {
 fit::FitData read_fit_data(const std::filesystem::path& file) {
   fit::FitData d;
   d.name = file.string();
-  std::ifstream in(file);
-  if (!in) throw InputError(d.name, 0, "", "", "cannot open reference data");
+  std::istringstream in(read_data_file(file, kMaxTableFileBytes));  // a regular file of at most 64 MiB
   enum class Kind { observed, std_dev, weight };
   struct Col {
     Kind kind;
@@ -72,18 +70,23 @@ fit::FitData read_fit_data(const std::filesystem::path& file) {
     }
     if (cells.size() != cols.size() + 1)
       throw InputError(d.name, n, "", s, fmt::format("row has {} cells, the header {}", cells.size(), cols.size() + 1));
-    auto number = [&](const std::string& cell, const std::string& key, bool allow_empty) {
+    // A cell's value; `column` counts from 1 (delta_star), for the message.
+    auto number = [&](const std::string& cell, const std::string& key, std::size_t column, bool allow_empty) {
       if (cell.empty()) {
         if (allow_empty) return std::numeric_limits<double>::quiet_NaN();
-        throw InputError(d.name, n, key, "", "missing value");
+        throw InputError(d.name, n, key, "", fmt::format("missing value (column {})", column));
       }
       double v = 0.0;
       const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), v);
       if (ec != std::errc{} || end != cell.data() + cell.size() || !std::isfinite(v))
-        throw InputError(d.name, n, key, cell, "not a finite number");
+        throw InputError(d.name, n, key, cell, fmt::format("not a finite number (column {})", column));
       return v;
     };
-    d.delta_star.push_back(number(cells[0], "delta_star", false));
+    auto check = [&](const std::string& why, const std::string& key, const std::string& cell, std::size_t column) {
+      if (!why.empty()) throw InputError(d.name, n, key, cell, fmt::format("{} (column {})", why, column));
+    };
+    d.delta_star.push_back(number(cells[0], "delta_star", 1, false));
+    check(fit::delta_star_problem(d.delta_star.back()), "delta_star", cells[0], 1);
     d.line.push_back(n);
     d.weight.push_back(1.0);
     for (auto& c : d.columns) {
@@ -92,20 +95,27 @@ fit::FitData read_fit_data(const std::filesystem::path& file) {
     }
     for (std::size_t i = 0; i < cols.size(); ++i) {
       const std::string& cell = cells[i + 1];
+      const std::size_t column = i + 2;
       switch (cols[i].kind) {
         case Kind::weight: {
-          const double w = number(cell, "weight", false);
-          if (!(w >= 0.0)) throw InputError(d.name, n, "weight", cell, "must not be negative");
+          const double w = number(cell, "weight", column, false);
+          if (!(w >= 0.0 && w <= fit::kMaxRowWeight))
+            check(fmt::format("a row weight must lie in [0, {:g}]", fit::kMaxRowWeight), "weight", cell, column);
           d.weight.back() = w;
           break;
         }
-        case Kind::observed:
-          d.columns[cols[i].index].values.back() =
-              number(cell, std::string(fit::to_string(d.columns[cols[i].index].what)), true);
+        case Kind::observed: {
+          const fit::Observable what = d.columns[cols[i].index].what;
+          const std::string key(fit::to_string(what));
+          const double v = number(cell, key, column, true);
+          if (!std::isnan(v)) check(fit::observation_problem(what, v), key, cell, column);
+          d.columns[cols[i].index].values.back() = v;
           break;
+        }
         case Kind::std_dev: {
-          const double sd = number(cell, "sd_" + std::string(fit::to_string(d.columns[cols[i].index].what)), true);
-          if (!std::isnan(sd) && !(sd > 0.0)) throw InputError(d.name, n, "sd", cell, "must be positive");
+          const std::string key = "sd_" + std::string(fit::to_string(d.columns[cols[i].index].what));
+          const double sd = number(cell, key, column, true);
+          if (!std::isnan(sd)) check(fit::std_dev_problem(sd), key, cell, column);
           d.columns[cols[i].index].std_dev.back() = sd;
           break;
         }
@@ -122,12 +132,21 @@ fit::FitData read_fit_data(const std::filesystem::path& file) {
   return d;
 }
 
+namespace {
+// A standard error or correlation, or "n/a" where the covariance leaves it undefined (never "nan"
+// in an output).
+std::string stat(double v, const char* spec) {
+  return std::isfinite(v) ? fmt::format(fmt::runtime(spec), v) : std::string("n/a");
+}
+}  // namespace
+
 std::string format_fit_report(const fit::FitResult& r) {
   std::string out =
       fmt::format("Fit of model '{}' ({} iterations, final cost {:.6g})\n\n", r.model, r.iterations, r.final_cost);
   out += fmt::format("{:<22} {:>16} {:>14}  {}\n", "constant", "value", "std error", "");
   for (const auto& c : r.constants)
-    out += fmt::format("{:<22} {:>16.10g} {:>14.4g}  {}\n", c.name, c.value, c.std_error, c.free ? "free" : "fixed");
+    out += fmt::format("{:<22} {:>16.10g} {:>14}  {}\n", c.name, c.value, stat(c.std_error, "{:.4g}"),
+                       c.free ? "free" : "fixed");
   std::vector<std::string> free;
   for (const auto& c : r.constants)
     if (c.free) free.push_back(c.name);
@@ -137,7 +156,7 @@ std::string format_fit_report(const fit::FitResult& r) {
   out += "\n";
   for (std::size_t i = 0; i < free.size(); ++i) {
     out += fmt::format("{:<18} ({:>1})", free[i], i + 1);
-    for (double v : r.correlation[i]) out += fmt::format(" {:>8.4f}", v);
+    for (double v : r.correlation[i]) out += fmt::format(" {:>8}", stat(v, "{:.4f}"));
     out += "\n";
   }
   out += "\nRoot-mean-square relative error per observed column\n";
@@ -149,8 +168,8 @@ std::string format_fit_report(const fit::FitResult& r) {
   out += fmt::format("{:<48} {:>5} {:>12} {:<26} {:>14} {:>14} {:>10}\n", "data", "line", "delta_star", "quantity",
                      "observed", "model", "relative");
   for (const auto& x : r.residuals)
-    out += fmt::format("{:<48} {:>5} {:>12.6g} {:<26} {:>14.8g} {:>14.8g} {:>10.3e}\n", x.data, x.line, x.delta_star,
-                       fit::to_string(x.what), x.observed, x.model, x.relative);
+    out += fmt::format("{:<48} {:>5} {:>12.6g} {:<26} {:>14.8g} {:>14.8g} {:>10}\n", x.data, x.line, x.delta_star,
+                       fit::to_string(x.what), x.observed, x.model, stat(x.relative, "{:.3e}"));
   out += "\n" + r.ceres_report;
   return out;
 }
@@ -161,7 +180,9 @@ std::string format_fit_toml(const fit::FitResult& r, const std::string& provenan
     out += fmt::format("# rms relative error of {}: {:.4g}\n", fit::to_string(o), v);
   out += fmt::format("[asperity.constants.{}]\n", r.model);
   for (const auto& c : r.constants)
-    if (c.free) out += fmt::format("{} = {:.12g}  # std error {:.4g}\n", c.name, c.value, c.std_error);
+    if (c.free)
+      out += fmt::format("{} = {:.12g}  # std error {}\n", c.name, c.value,
+                         std::isfinite(c.std_error) ? fmt::format("{:.4g}", c.std_error) : "not identifiable");
   return out;
 }
 

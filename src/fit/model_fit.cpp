@@ -35,6 +35,34 @@ Observable parse_observable(std::string_view name) {
                               "' (known: load_star, area_star, mean_pressure_over_yield, plastic_area_fraction)");
 }
 
+std::string observation_problem(Observable what, double v) {
+  if (!std::isfinite(v)) return "not a finite number";
+  if (what == Observable::plastic_area_fraction)  // a fraction, measured with some noise
+    return v >= -kFractionNoise && v <= 1.0 + kFractionNoise
+               ? ""
+               : fmt::format("a plastic area fraction must lie in [{:g}, {:g}] (0 to 1, with room for noise)",
+                             -kFractionNoise, 1.0 + kFractionNoise);
+  if (v < 0.0) return "must not be negative";
+  if (v != 0.0 && (v < kMinObservation || v > kMaxObservation))
+    return fmt::format("must be 0 or lie in [{:g}, {:g}] (dimensionless: a relative residual divides by it)",
+                       kMinObservation, kMaxObservation);
+  return "";
+}
+
+std::string std_dev_problem(double sd) {
+  if (!std::isfinite(sd)) return "not a finite number";
+  if (!(sd >= kMinObservation && sd <= kMaxObservation))
+    return fmt::format("a standard deviation must lie in [{:g}, {:g}]", kMinObservation, kMaxObservation);
+  return "";
+}
+
+std::string delta_star_problem(double x) {
+  if (!std::isfinite(x)) return "not a finite number";
+  if (!(x >= kMinDeltaStar && x <= kMaxDeltaStar))
+    return fmt::format("must lie in [{:g}, {:g}] (the models' range of delta*)", kMinDeltaStar, kMaxDeltaStar);
+  return "";
+}
+
 const ObservedColumn* FitData::column(Observable o) const {
   for (const auto& c : columns)
     if (c.what == o) return &c;
@@ -97,6 +125,18 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
                   const std::vector<FitData>& data, const FitOptions& options) {
   constexpr std::size_t n = Law::constants.size();
   if (n == 0) throw std::invalid_argument("model '" + std::string(Law::name) + "' has no constants to fit");
+  for (std::size_t j = 0; j < options.observe_weight.size(); ++j) {
+    const double w = options.observe_weight[j];
+    if (!(std::isfinite(w) && w > 0.0 && w <= kMaxRowWeight))
+      throw std::invalid_argument(fmt::format(
+          "weight {} of observed column {}{}: must be finite, positive and at most "
+          "{:g}",
+          w, j + 1,
+          j < options.observe.size() ? " (" + std::string(to_string(options.observe[j])) + ")" : std::string(),
+          kMaxRowWeight));
+  }
+  if (!(std::isfinite(options.loss_scale) && options.loss_scale > 0.0))
+    throw std::invalid_argument(fmt::format("loss scale {}: must be finite and positive", options.loss_scale));
   FitResult result;
   result.model = std::string(Law::name);
   std::array<double, n> values{};
@@ -163,15 +203,23 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
   for (const auto& d : data) {
     for (std::size_t r = 0; r < d.delta_star.size(); ++r) {
       const double x = d.delta_star[r];
-      if (!(x > 0.0 && std::isfinite(x)))
-        throw std::invalid_argument(fmt::format("{}:{}: delta_star must be finite and positive", d.name, d.line[r]));
+      if (const std::string why = delta_star_problem(x); !why.empty())
+        throw std::invalid_argument(fmt::format("{}:{}: delta_star = {}: {}", d.name, d.line[r], x, why));
+      if (!(std::isfinite(d.weight[r]) && d.weight[r] >= 0.0 && d.weight[r] <= kMaxRowWeight))
+        throw std::invalid_argument(
+            fmt::format("{}:{}: weight = {}: must lie in [0, {:g}]", d.name, d.line[r], d.weight[r], kMaxRowWeight));
       Pending p{&d, r, {}};
       for (std::size_t j = 0; j < observe.size(); ++j) {
         const ObservedColumn* col = d.column(observe[j]);
         if (!col || std::isnan(col->values[r])) continue;
         const double obs = col->values[r];
-        if (!std::isfinite(obs))
-          throw std::invalid_argument(fmt::format("{}:{}: observation is not finite", d.name, d.line[r]));
+        if (const std::string why = observation_problem(observe[j], obs); !why.empty())
+          throw std::invalid_argument(
+              fmt::format("{}:{}: {} = {}: {}", d.name, d.line[r], to_string(observe[j]), obs, why));
+        if (!col->std_dev.empty() && !std::isnan(col->std_dev[r]))
+          if (const std::string why = std_dev_problem(col->std_dev[r]); !why.empty())
+            throw std::invalid_argument(
+                fmt::format("{}:{}: sd_{} = {}: {}", d.name, d.line[r], to_string(observe[j]), col->std_dev[r], why));
         const bool sd = !col->std_dev.empty() && std::isfinite(col->std_dev[r]) && col->std_dev[r] > 0.0;
         has_sd = has_sd || sd;
         if (!sd && obs == 0.0)
@@ -194,12 +242,61 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
   if (observations <= free_count)
     throw std::invalid_argument(
         fmt::format("{} observations cannot determine {} free constants", observations, free_count));
+  std::vector<const ceres::CostFunction*> costs;
   for (const auto& p : rows) {
     auto* functor = new RowResidualFunctor<Law>{p.data->delta_star[p.row], &pair, p.terms};
     auto* cost = new ceres::DynamicAutoDiffCostFunction<RowResidualFunctor<Law>, 4>(functor);
     for (std::size_t k = 0; k < n; ++k) cost->AddParameterBlock(1);
     cost->SetNumResiduals(static_cast<int>(p.terms.size()));
     problem.AddResidualBlock(cost, loss, blocks);
+    costs.push_back(cost);
+  }
+
+  // Before Ceres runs: every row's residuals and derivatives finite at the start (else the row is
+  // named), and each free constant moving at least one observed value (else it cannot be fitted:
+  // its column of the Jacobian is zero and its standard error undefined).
+  {
+    std::array<const double*, n> params;
+    for (std::size_t k = 0; k < n; ++k) params[k] = &values[k];
+    std::array<bool, n> moves{};
+    std::vector<std::vector<bool>> moves_column(n, std::vector<bool>(observe.size(), false));
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const Pending& p = rows[i];
+      const std::size_t m = p.terms.size();
+      std::vector<double> res(m), jac(n * m);
+      std::array<double*, n> jacobians;
+      for (std::size_t k = 0; k < n; ++k) jacobians[k] = jac.data() + k * m;
+      const bool ok = costs[i]->Evaluate(params.data(), res.data(), jacobians.data());
+      for (std::size_t t = 0; t < m; ++t) {
+        bool finite = ok && std::isfinite(res[t]);
+        for (std::size_t k = 0; k < n; ++k) finite = finite && std::isfinite(jacobians[k][t]);
+        if (!finite)
+          throw std::invalid_argument(fmt::format(
+              "{}:{}: {} = {:g} at delta_star {:g}: the model's residual or its derivatives are not finite at the "
+              "start (the constants' values): check this observation",
+              p.data->name, p.data->line[p.row], to_string(p.terms[t].what), p.terms[t].observed,
+              p.data->delta_star[p.row]));
+        const std::size_t j =
+            static_cast<std::size_t>(std::find(observe.begin(), observe.end(), p.terms[t].what) - observe.begin());
+        for (std::size_t k = 0; k < n; ++k)
+          if (jacobians[k][t] != 0.0) moves[k] = true, moves_column[k][j] = true;
+      }
+    }
+    std::string columns;
+    for (Observable o : observe) columns += (columns.empty() ? "" : ", ") + std::string(to_string(o));
+    for (std::size_t k = 0; k < n; ++k)
+      if (is_free[k] && !moves[k]) {
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (const auto& p : rows) {
+          lo = std::min(lo, p.data->delta_star[p.row]);
+          hi = std::max(hi, p.data->delta_star[p.row]);
+        }
+        throw std::invalid_argument(fmt::format(
+            "free constant '{}' of model '{}' changes none of the observed values ({} at delta_star {:g} to {:g}): "
+            "it cannot be fitted from these data; leave it out of --free, or observe a column (or a delta_star range) "
+            "that depends on it",
+            Law::constants[k].name, Law::name, columns, lo, hi));
+      }
   }
 
   ceres::Solver::Options so;
@@ -214,8 +311,12 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
   result.ceres_report = summary.FullReport();
   result.iterations = static_cast<int>(summary.iterations.size());
   result.final_cost = summary.final_cost;
+  if (summary.termination_type == ceres::NO_CONVERGENCE)
+    throw std::runtime_error(
+        fmt::format("the fit did not converge in {} iterations (Ceres: {})", options.max_iterations, summary.message));
   if (summary.termination_type != ceres::CONVERGENCE)
-    throw std::runtime_error("the fit did not converge: " + summary.message + "\n" + summary.BriefReport());
+    throw std::runtime_error(fmt::format("Ceres failed after {} iterations, the data and start having been checked: {}",
+                                         summary.iterations.size(), summary.message));
 
   // Standard errors: Ceres' covariance, scaled by the residual variance when no standard
   // deviations were given (relative residuals of unknown scale).

@@ -102,8 +102,19 @@ double MeshDynamics::stiffness(double u) const {
   return segments_.back()(u);
 }
 
+std::pair<double, double> MeshDynamics::speed_range() const {
+  // f_mesh = v / p_b with v = r_b1 w along the line of action: w = f_mesh p_b / r_b1.
+  const double per_hertz = mesh_.pair().path().base_pitch / mesh_.pair().pinion().base_radius;  // [rad/s per Hz]
+  return {1e-5 * natural_frequency() * per_hertz, 1e3 * natural_frequency() * per_hertz};
+}
+
 SteadyCycle MeshDynamics::steady_cycle(const OdeIntegrator& integrator, double pinion_speed) const {
-  if (!(pinion_speed > 0.0)) throw std::invalid_argument("pinion speed must be positive");
+  const auto [slowest, fastest] = speed_range();
+  if (!(pinion_speed >= slowest && pinion_speed <= fastest))
+    throw std::invalid_argument(fmt::format(
+        "pinion speed {:.6g} rad/s outside the dynamics model's range {:.4g} to {:.4g} rad/s (mesh frequency 1e-5 "
+        "to 1e3 times the natural frequency {:.4g} Hz)",
+        pinion_speed, slowest, fastest, natural_frequency()));
   const PathOfContact& p = mesh_.pair().path();
   const double velocity = mesh_.pair().pinion().base_radius * pinion_speed;  // along the line of action [m/s]
   const double period = p.base_pitch / velocity;

@@ -13,6 +13,7 @@
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace geartrib::gear {
@@ -72,6 +73,12 @@ class MeshDynamics {
   // Mesh stiffness at offset u in [0, p_b) of the cycle (pair positions A + u and A + u + p_b).
   double stiffness(double u) const;
 
+  // The pinion speeds [rad/s] where the model is integrated: mesh frequency from 1e-5 to 1e3 times
+  // the natural frequency. Below, the cycle is quasi-static (the dynamic factor is the
+  // quasi-static one to within the transients, and the integration time grows as f_n/f_mesh:
+  // hours for an explicit integrator); above, the steady state takes ~f_mesh/(zeta f_n) cycles.
+  // steady_cycle refuses speeds outside (std::invalid_argument).
+  std::pair<double, double> speed_range() const;
   // The periodic steady state at a pinion speed [rad/s]. When none is reached within max_cycles
   // (contact loss near resonance can make the motion aperiodic), `periodic` is false and the
   // dynamic factor is the largest over the last 100 cycles.

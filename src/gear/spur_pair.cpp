@@ -78,6 +78,13 @@ SpurPair::SpurPair(const GearPairSpec& spec) : spec_(spec) {
       throw GeometryError(name + ".profile_shift", name + " root circle radius is not positive");
     if (g.bore_radius > 0.0 && !(g.bore_radius < g.root_radius))
       throw GeometryError(name + ".bore_diameter", name + " bore must lie inside the root circle");
+    // A bore so small that r_f/r_bore leaves any fillet-foundation model: Sainsot et al.'s fit
+    // (1.4 <= r_f/r_bore <= 7) turns negative near 65 and overflows to NaN for a vanishing bore.
+    if (g.bore_radius > 0.0 && g.root_radius / g.bore_radius > kMaxRootOverBore)
+      throw GeometryError(name + ".bore_diameter",
+                          fmt::format("{} bore {:.4g} mm is below 1/{:g} of the root diameter {:.4g} mm: no "
+                                      "fillet-foundation model covers it; give 0 for a solid body",
+                                      name, 2e3 * g.bore_radius, kMaxRootOverBore, 2e3 * g.root_radius));
     // Tooth thickness at the tip must stay positive (no pointed teeth).
     const double alpha_a = std::acos(g.base_radius / g.tip_radius);
     if (!(g.base_half_angle - involute(alpha_a) > 0.0))

@@ -76,6 +76,9 @@ class SpurPair {
  public:
   // Validates and builds; throws GeometryError naming the key to change.
   explicit SpurPair(const GearPairSpec& spec);
+  // The largest root radius over bore radius a bore may have (a smaller bore is refused; 0 is a
+  // solid body): near 65 the fillet-foundation fit's terms change sign (tooth_stiffness.cpp).
+  static constexpr double kMaxRootOverBore = 50.0;
 
   const GearPairSpec& spec() const { return spec_; }
   const GearBody& pinion() const { return gear_[0]; }

@@ -3,6 +3,7 @@
 #include "asperity/critical.hpp"
 #include "asperity/model.hpp"
 #include "gear/spur_pair.hpp"
+#include "io/text_lines.hpp"
 #include "io/toml_reader.hpp"
 #include "io/topography_files.hpp"
 
@@ -26,14 +27,39 @@ double positive_quantity(TomlReader& r, std::string_view key, Dimension d) {
   return v;
 }
 
+// A quantity of a data file (material, lubricant) within [lo, hi] (SI, checked after the unit is
+// applied); `unit` names the SI unit in the rule.
+double bounded_quantity(TomlReader& r, std::string_view key, Dimension d, double lo, double hi) {
+  const double v = r.quantity(key, d);
+  require(r, key, v > 0.0 || lo < 0.0, "must be positive");
+  require(r, key, v >= lo && v <= hi,
+          fmt::format("must lie in [{:g} {}, {:g} {}]", lo, si_symbol(d), hi, si_symbol(d)));
+  return v;
+}
+
+// The ranges of a material file's values (SI; docs/reference/units.md): beyond them no
+// engineering material lies and the contact arithmetic is not meant to go; inside the range but
+// outside the band of gear materials a value is warned about.
+constexpr double kMinModulus = 1e6, kMaxModulus = 1e13;                      // [Pa]
+constexpr double kPlausibleMinModulus = 5e8, kPlausibleMaxModulus = 1.2e12;  // polymers to diamond [Pa]
+constexpr double kMinDensity = 1.0, kMaxDensity = 1e5;                       // [kg/m^3]
+constexpr double kPlausibleMinDensity = 500.0, kPlausibleMaxDensity = 25000.0;
+constexpr double kMaxConductivity = 1e4, kMaxSpecificHeat = 1e5;  // [W/(m K)], [J/(kg K)]
+
 }  // namespace
 
-Material load_material(const std::filesystem::path& file) {
+Material load_material(const std::filesystem::path& file) { return load_material(file, nullptr); }
+
+Material load_material(const std::filesystem::path& file, std::vector<std::string>* warnings) {
   TomlReader r(file);
   Material m;
   m.name = r.string("name");
   r.string("source");  // provenance is required, not interpreted
-  m.youngs_modulus = positive_quantity(r, "youngs_modulus", Dimension::pressure);
+  m.youngs_modulus = bounded_quantity(r, "youngs_modulus", Dimension::pressure, kMinModulus, kMaxModulus);
+  if (warnings && !(m.youngs_modulus >= kPlausibleMinModulus && m.youngs_modulus <= kPlausibleMaxModulus))
+    warnings->push_back(r.warning(
+        "youngs_modulus", fmt::format("outside the plausible band [{:g} Pa, {:g} Pa] of gear materials (read as given)",
+                                      kPlausibleMinModulus, kPlausibleMaxModulus)));
   m.poisson_ratio = r.number("poisson_ratio");
   require(r, "poisson_ratio", m.poisson_ratio > 0.0 && m.poisson_ratio < 0.5, "Poisson's ratio must lie in (0, 0.5)");
   m.yield_strength = positive_quantity(r, "yield_strength", Dimension::pressure);
@@ -44,11 +70,17 @@ Material load_material(const std::filesystem::path& file) {
   const std::string named = r.is_string("hardness") ? r.string("hardness") : std::string();
   if (named == "tabor-yield" || named == "flow-curve") m.hardness_rule = named;
   else if (r.has("hardness")) m.hardness_rule = "given";
-  m.density = positive_quantity(r, "density", Dimension::density);
+  m.density = bounded_quantity(r, "density", Dimension::density, kMinDensity, kMaxDensity);
+  if (warnings && !(m.density >= kPlausibleMinDensity && m.density <= kPlausibleMaxDensity))
+    warnings->push_back(r.warning(
+        "density", fmt::format("outside the plausible band [{:g}, {:g}] kg/m^3 of gear materials (read as given)",
+                               kPlausibleMinDensity, kPlausibleMaxDensity)));
   // Thermal data: optional, for the flash temperature of a lubricated run.
   if (r.has("thermal_conductivity"))
-    m.thermal_conductivity = positive_quantity(r, "thermal_conductivity", Dimension::thermal_conductivity);
-  if (r.has("specific_heat")) m.specific_heat = positive_quantity(r, "specific_heat", Dimension::specific_heat);
+    m.thermal_conductivity =
+        bounded_quantity(r, "thermal_conductivity", Dimension::thermal_conductivity, 1e-3, kMaxConductivity);
+  if (r.has("specific_heat"))
+    m.specific_heat = bounded_quantity(r, "specific_heat", Dimension::specific_heat, 1.0, kMaxSpecificHeat);
   if (r.has("flow_curve")) {
     r.string("flow_curve.source");
     const auto stress = r.quantity_array("flow_curve.stress", Dimension::pressure);
@@ -66,9 +98,11 @@ Material load_material(const std::filesystem::path& file) {
       require(r, "flow_curve.stress", stress[i] >= stress[i - 1],
               "must not decrease (entry " + std::to_string(i) + ")");
     }
+    require(r, "flow_curve.stress", stress.back() < m.youngs_modulus, "must stay below Young's modulus");
+    require(r, "flow_curve.plastic_strain", strain.back() <= 10.0, "must not exceed 10 (1000% plastic strain)");
   }
   if (m.hardness_rule == "given") {
-    m.hardness = r.quantity("hardness", Dimension::pressure);
+    m.hardness = bounded_quantity(r, "hardness", Dimension::pressure, 0.0, kMaxModulus);
   } else if (m.hardness_rule == "flow-curve") {
     if (m.flow_curve.empty()) r.fail("hardness", "\"flow-curve\" needs a [flow_curve] table");
     m.hardness = tabor_flow_curve_hardness(m);
@@ -91,20 +125,23 @@ lubrication::Lubricant load_lubricant(const std::filesystem::path& file) {
   } catch (const std::invalid_argument& e) {
     r.fail("base_oil", e.what());
   }
-  l.kinematic_viscosity_40 = positive_quantity(r, "kinematic_viscosity_40C", Dimension::kinematic_viscosity);
-  l.kinematic_viscosity_100 = positive_quantity(r, "kinematic_viscosity_100C", Dimension::kinematic_viscosity);
-  l.density_15 = positive_quantity(r, "density_15C", Dimension::density);
-  l.density_temperature_coefficient = r.quantity("density_temperature_coefficient", Dimension::inverse_temperature);
+  // The ranges (SI, after the unit): what an oil can have and Walther's law and the film carry.
+  using D = Dimension;
+  l.kinematic_viscosity_40 = bounded_quantity(r, "kinematic_viscosity_40C", D::kinematic_viscosity, 1e-7, 1.0);
+  l.kinematic_viscosity_100 = bounded_quantity(r, "kinematic_viscosity_100C", D::kinematic_viscosity, 1e-7, 1.0);
+  l.density_15 = bounded_quantity(r, "density_15C", D::density, 100.0, 5000.0);
+  l.density_temperature_coefficient = r.quantity("density_temperature_coefficient", D::inverse_temperature);
   if (r.has("pressure_viscosity_coefficient")) {
-    l.pressure_viscosity = positive_quantity(r, "pressure_viscosity_coefficient", Dimension::inverse_pressure);
-    l.pressure_viscosity_temperature = positive_quantity(r, "pressure_viscosity_temperature", Dimension::temperature);
+    l.pressure_viscosity = bounded_quantity(r, "pressure_viscosity_coefficient", D::inverse_pressure, 1e-12, 1e-6);
+    l.pressure_viscosity_temperature =
+        bounded_quantity(r, "pressure_viscosity_temperature", D::temperature, 100.0, 1000.0);
   }
-  l.thermal_conductivity = positive_quantity(r, "thermal_conductivity", Dimension::thermal_conductivity);
-  l.specific_heat = positive_quantity(r, "specific_heat", Dimension::specific_heat);
-  l.eyring_stress = positive_quantity(r, "eyring_stress", Dimension::pressure);
+  l.thermal_conductivity = bounded_quantity(r, "thermal_conductivity", D::thermal_conductivity, 1e-3, 1e3);
+  l.specific_heat = bounded_quantity(r, "specific_heat", D::specific_heat, 1.0, 1e5);
+  l.eyring_stress = bounded_quantity(r, "eyring_stress", D::pressure, 1e3, 1e10);
   l.limiting_shear_coefficient = r.number("limiting_shear_coefficient");
-  l.min_temperature = positive_quantity(r, "min_temperature", Dimension::temperature);
-  l.max_temperature = positive_quantity(r, "max_temperature", Dimension::temperature);
+  l.min_temperature = bounded_quantity(r, "min_temperature", D::temperature, 100.0, 1000.0);
+  l.max_temperature = bounded_quantity(r, "max_temperature", D::temperature, 100.0, 1000.0);
   try {
     l.validate();
   } catch (const std::invalid_argument& e) {
@@ -125,9 +162,17 @@ CaseChange parse_case_change(const std::string& text) {
 
 namespace {
 
-// "must be positive", "must lie in [5, 1000]": the rule a value outside a row's range breaks.
-std::string range_rule(const Parameter& p) {
+// "must be positive", "must lie in [5, 1000]": the rule a value `v` outside a row's range breaks.
+std::string range_rule(const Parameter& p, double v) {
   const std::string range = p.range_text();
+  if (range.empty() || !std::isfinite(v)) return "must be finite";
+  // A sign wrong for a row of positive values is said so ("must be positive"), whatever the range.
+  const std::string within = std::isfinite(p.max) ? " (range " + range + ")" : "";
+  if (p.min > 0.0 || (p.min == 0.0 && p.min_open)) {
+    if (v <= 0.0) return "must be positive" + within;
+  } else if (p.min == 0.0 && v < 0.0) {
+    return "must not be negative" + within;
+  }
   if (range == "> 0") return "must be positive";
   if (range == ">= 0") return "must not be negative";
   if (range.front() == '[' || range.front() == '(') return "must lie in " + range;
@@ -192,7 +237,8 @@ void read_parameter(TomlReader& r, const Parameter& p, int gear, Case& c, unsign
     case ParameterKind::model_constants:
       return;  // read_model_constants
   }
-  if (numeric && !p.in_range(v.number)) r.fail(key, range_rule(p));
+  if (numeric && !p.in_range(v.number)) r.fail(key, range_rule(p, v.number));
+  if (numeric && !p.plausible(v.number)) c.warnings.push_back(r.warning(key, implausible_text(p, v.number)));
   p.set(c, gear, v);
   c.parameters.push_back({key, p.format(v), r.changed(key) ? "--set" : r.where(key)});
 }
@@ -248,13 +294,15 @@ void read_flank(TomlReader& r, Case& c, int gear) {
     need("topography.file");
     const TopographySpec& spec = *g.flank.topography;
     const auto path = r.directory() / spec.file;
-    if (!std::filesystem::exists(path)) r.fail(t + "file", "topography file not found: " + path.string());
+    if (const std::string why = data_file_problem(path, kNoSizeLimit); !why.empty()) r.fail(t + "file", why);
     TopographyReadOptions read;
     read.unit = spec.unit;
     read.spacing = spec.spacing / spec.unit;
     read.resample = spec.resample;
     const double given_radius = rough.summit_radius;
-    const surface::HeightGrid grid = load_surface(path, read, spec.clean).grid;
+    const LoadedSurface loaded = load_surface(path, read, spec.clean);
+    for (const auto& w : loaded.warnings) c.warnings.push_back(w);  // units implausible for a flank
+    const surface::HeightGrid& grid = loaded.grid;
     try {
       g.flank.measured = surface::surface_statistics(grid);
       rough = surface::measured_roughness(*g.flank.measured);
@@ -334,6 +382,29 @@ void apply_change(TomlReader& r, const std::string& key, const std::string& valu
   r.set(key, value);
 }
 
+// A --set value checked as soon as it is applied, against its row's kind and range: a later
+// change of the same key (`--set positions=4294967298 --positions 11`) does not hide it.
+void check_change(TomlReader& r, const std::string& key) {
+  const auto [p, gear] = find_parameter(key);
+  if (!p || !r.has(key)) return;
+  double v = 0.0;
+  switch (p->kind) {
+    case ParameterKind::quantity:
+      v = r.quantity(key, p->dimension);
+      break;
+    case ParameterKind::number:
+      if (!p->choices.empty() && r.is_string(key)) return;  // a named rule: read_parameter checks it
+      v = r.number(key);
+      break;
+    case ParameterKind::integer:
+      v = static_cast<double>(r.integer(key));
+      break;
+    default:
+      return;
+  }
+  if (!p->in_range(v)) r.fail(key, range_rule(*p, v));
+}
+
 // Extrapolating Walther's law this far beyond a lubricant's data range is refused; within it, warned.
 constexpr double kColdExtrapolation = 40.0, kHotExtrapolation = 60.0;  // [K]
 
@@ -348,7 +419,7 @@ void read_lubrication(TomlReader& r, Case& c) {
     for (const std::string& k : fixed_lubricant_keys())
       if (r.has(k)) r.fail(k, "the lubricant file gives the oil's data; remove this key or lubricant.file");
     const auto path = r.directory() / lc.lubricant_file;
-    if (!std::filesystem::exists(path)) r.fail("lubricant.file", "lubricant file not found: " + path.string());
+    if (const std::string why = data_file_problem(path, kMaxTomlFileBytes); !why.empty()) r.fail("lubricant.file", why);
     lc.lubricant = load_lubricant(path);
     // The oil's data as run are the file's: its values and origin replace the fixed form's
     // defaults in the record (beta comes from Walther's law, not a key).
@@ -407,7 +478,10 @@ void read_lubrication(TomlReader& r, Case& c) {
 Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>& changes, unsigned parts) {
   TomlReader r(file);
   for (const CaseChange& ch : changes)
-    for (const std::string& key : resolve_case_key(ch.key)) apply_change(r, key, ch.value);
+    for (const std::string& key : resolve_case_key(ch.key)) {
+      apply_change(r, key, ch.value);
+      check_change(r, key);
+    }
 
   Case c;
   for (const Parameter& p : case_parameters()) {
@@ -436,8 +510,11 @@ Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>&
     const std::string key = std::string(gear == 0 ? "pinion" : "wheel") + ".material";
     if (g.material_file.empty()) continue;  // not asked for
     const auto path = r.directory() / g.material_file;
-    if (!std::filesystem::exists(path)) r.fail(key, "material file not found: " + path.string());
-    g.material = load_material(path);
+    if (const std::string why = data_file_problem(path, kMaxTomlFileBytes); !why.empty()) r.fail(key, why);
+    std::vector<std::string> material_warnings;
+    g.material = load_material(path, &material_warnings);
+    for (auto& w : material_warnings)  // one file for both gears: warned once
+      if (std::find(c.warnings.begin(), c.warnings.end(), w) == c.warnings.end()) c.warnings.push_back(std::move(w));
   }
   if (r.has("lubricant")) read_lubrication(r, c);
   if (r.is_string("asperity.cylinder.yield_constant")) {

@@ -27,6 +27,10 @@ CaseChange parse_case_change(const std::string& text);
 // without a default is required only when one of them needs it. Every key's value and origin is
 // recorded in Case::parameters.
 Material load_material(const std::filesystem::path& file);
+// The same, appending located warnings (a value outside the plausible band of gear materials) to
+// `warnings` when it is not null. Youngs's modulus lies in [1e6, 1e13] Pa, the density in
+// [1, 1e5] kg/m^3 (docs/reference/units.md).
+Material load_material(const std::filesystem::path& file, std::vector<std::string>* warnings);
 // lubricants/*.toml: every value required (lubricants/README.md), the pressure-viscosity
 // coefficient optional (the ISO/TR 15144-1 correlation without it).
 lubrication::Lubricant load_lubricant(const std::filesystem::path& file);

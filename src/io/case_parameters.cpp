@@ -89,6 +89,11 @@ struct Row {
   }
   Row& positive() { return range(0.0, kInf, true, false); }
   Row& non_negative() { return range(0.0, kInf); }
+  // A plausible band inside the range: outside it the value is read and warned about.
+  Row& plausible(double lo, double hi) {
+    p.plausible_min = lo, p.plausible_max = hi;
+    return *this;
+  }
   Row& no_default() {
     p.has_default = false;
     return *this;
@@ -132,6 +137,12 @@ std::vector<Parameter> build_table() {
   using contact::GreenwoodWilliamsonOptions;
   using contact::StripOptions;
   constexpr double kDeg = std::numbers::pi / 180.0;
+  constexpr double kMm = 1e-3, kUm = 1e-6, kRpm = 2.0 * std::numbers::pi / 60.0;
+  // Every numeric row has finite bounds: a hard range beyond which a value is refused (wide: what
+  // the arithmetic carries without overflow or loss), and for the gear's own quantities a
+  // plausible band beyond which it is warned about (docs/reference/units.md, "Ranges and
+  // plausible bands"). Lengths of the gear bodies: at most 10 km (a 10 m module, 1000 teeth).
+  constexpr double kMaxBodyLength = 1e4;
   auto gear = [](auto& c, int g) -> auto& { return g == 0 ? c.pinion : c.wheel; };
   std::vector<Row> rows;
   auto add = [&](Parameter p) -> Row& { return rows.emplace_back(Row{std::move(p)}); };
@@ -148,19 +159,22 @@ std::vector<Parameter> build_table() {
   // [gear_pair]: basic rack and centre distance (ISO 53, ISO 21771).
   add(quantity(
           "gear_pair.module", D::length, [](auto& c, int) -> auto& { return c.gear_pair.module; }))
-      .positive()
+      .range(1e-6, 10.0)
+      .plausible(0.05 * kMm, 100.0 * kMm)
       .required(kGeometryPart)
       .alias({"module"})
       .doc("Module m");
   add(quantity(
           "gear_pair.pressure_angle", D::angle, [](auto& c, int) -> auto& { return c.gear_pair.pressure_angle; }))
       .range(0.0, 45.0 * kDeg, true, true)
+      .plausible(10.0 * kDeg, 35.0 * kDeg)
       .required(kGeometryPart)
       .alias({"pressure_angle"})
       .doc("Pressure angle alpha of the basic rack");
   add(quantity(
           "gear_pair.face_width", D::length, [](auto& c, int) -> auto& { return c.gear_pair.face_width; }))
-      .positive()
+      .range(1e-6, 10.0)
+      .plausible(0.1 * kMm, 2.0)
       .required(kGeometryPart)
       .alias({"face_width"})
       .doc("Face width b in contact");
@@ -170,7 +184,7 @@ std::vector<Parameter> build_table() {
       .doc("Addendum h_aP/m of the basic rack");
   add(number(
           "gear_pair.dedendum_coefficient", [](auto& c, int) -> auto& { return c.gear_pair.dedendum_coefficient; }))
-      .positive()
+      .range(0.0, 3.0, true, false)
       .doc("Dedendum h_fP/m of the basic rack; must exceed the addendum (tip clearance)");
   add(number(
           "gear_pair.root_radius_coefficient",
@@ -179,11 +193,11 @@ std::vector<Parameter> build_table() {
       .doc("Root fillet radius rho_fP/m of the basic rack");
   add(number(
           "gear_pair.tip_shortening", [](auto& c, int) -> auto& { return c.gear_pair.tip_shortening; }))
-      .non_negative()
+      .range(0.0, 2.0)
       .doc("Tip shortening k: both tip diameters reduced by 2 k m; below the addendum");
   add(quantity(
           "gear_pair.center_distance", D::length, [](auto& c, int) -> auto& { return c.gear_pair.center_distance; }))
-      .non_negative()
+      .range(0.0, kMaxBodyLength)
       .alias({"center_distance"})
       .doc("Operating centre distance a_w; 0: the zero-backlash distance of the shifts");
 
@@ -202,11 +216,11 @@ std::vector<Parameter> build_table() {
       .doc("Profile shift coefficient x");
   add(quantity(
           "{gear}.tip_diameter", D::length, [](auto& c, int g) -> auto& { return c.gear_pair.tip_diameter[g]; }))
-      .non_negative()
+      .range(0.0, kMaxBodyLength)
       .doc("Tip diameter d_a; 0: from addendum, shift and tip shortening");
   add(quantity(
           "{gear}.bore_diameter", D::length, [](auto& c, int g) -> auto& { return c.gear_pair.bore_diameter[g]; }))
-      .non_negative()
+      .range(0.0, kMaxBodyLength)
       .doc("Bore of the gear body (fillet-foundation stiffness); 0: solid");
   add(text(
           "{gear}.material", K::text, [gear](auto& c, int g) -> auto& { return gear(c, g).material_file; }))
@@ -218,47 +232,51 @@ std::vector<Parameter> build_table() {
   auto rough = [gear](auto& c, int g) -> auto& { return gear(c, g).flank.roughness; };
   add(quantity(
           "{gear}.flank.ra", D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).ra; }))
-      .positive()
+      .range(1e-10, 1e-3)
+      .plausible(1e-9, 25.0 * kUm)
       .no_default()
       .alias({"ra"})
       .doc("Form Ra: arithmetic mean roughness (profile)");
   add(quantity(
           "{gear}.flank.rq", D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).rq; }))
-      .positive()
+      .range(1e-10, 1e-3)
+      .plausible(1e-9, 25.0 * kUm)
       .no_default()
       .alias({"rq"})
       .doc("Form Rq: root-mean-square roughness (profile)");
   add(quantity(
           "{gear}.flank.summit_density",
           D::areal_density, [rough](auto& c, int g) -> auto& { return rough(c, g).summit_density; }))
-      .positive()
+      .range(1.0, 1e20)
       .no_default()
       .doc("Form summits: summit density eta (with summit_sigma)");
   add(quantity(
           "{gear}.flank.summit_sigma",
           D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).summit_sigma; }))
-      .positive()
+      .range(1e-10, 1e-3)
+      .plausible(1e-9, 25.0 * kUm)
       .no_default()
       .doc("Form summits: standard deviation of summit heights");
   add(quantity(
           "{gear}.flank.m0", D::area, [rough](auto& c, int g) -> auto& { return rough(c, g).m0; }))
-      .positive()
+      .range(1e-20, 1e-6)
       .no_default()
       .doc("Form spectral: profile moment m0 = Rq^2 (with m2, m4; McCool 1986)");
   add(quantity(
           "{gear}.flank.m2", D::dimensionless, [rough](auto& c, int g) -> auto& { return rough(c, g).m2; }))
-      .positive()
+      .range(1e-12, 100.0)
       .no_default()
       .doc("Form spectral: slope moment m2");
   add(quantity(
           "{gear}.flank.m4", D::areal_density, [rough](auto& c, int g) -> auto& { return rough(c, g).m4; }))
-      .positive()
+      .range(1.0, 1e26)
       .no_default()
       .doc("Form spectral: curvature moment m4");
   add(quantity(
           "{gear}.flank.summit_radius",
           D::length, [rough](auto& c, int g) -> auto& { return rough(c, g).summit_radius; }))
-      .positive()
+      .range(1e-9, 1.0)
+      .plausible(0.1 * kUm, 10.0 * kMm)
       .no_default()
       .alias({"summit_radius"})
       .doc("Mean summit radius beta (forms ra, rq, summits; a measured flank's overrides the measured one)");
@@ -283,23 +301,23 @@ std::vector<Parameter> build_table() {
   add(text("{gear}.flank.topography.file", K::text, topo_ref([](auto& t) -> auto& { return t.file; })))
       .doc("Form measured: a profiler export or HDF5 surface (geartrib surface); its summits give the roughness");
   add(quantity("{gear}.flank.topography.unit", D::length, topo_ref([](auto& t) -> auto& { return t.unit; })))
-      .positive()
+      .range(1e-12, 1.0)
       .doc("Length unit of a file that does not state one");
   add(quantity("{gear}.flank.topography.spacing", D::length, topo_ref([](auto& t) -> auto& { return t.spacing; })))
-      .non_negative()
+      .range(0.0, 1.0)
       .doc("Grid spacing of files without one; 0: from the file");
   add(quantity("{gear}.flank.topography.resample", D::length, topo_ref([](auto& t) -> auto& { return t.resample; })))
-      .non_negative()
+      .range(0.0, 1.0)
       .doc("Regrid spacing; 0: as measured");
   add(integer("{gear}.flank.topography.form", topo_ref([](auto& t) -> auto& { return t.clean.form_degree; })))
       .range(0, 6)
       .doc("Degree of the polynomial form removed");
   add(quantity("{gear}.flank.topography.cutoff", D::length,
                topo_ref([](auto& t) -> auto& { return t.clean.waviness_cutoff; })))
-      .non_negative()
+      .range(0.0, 1.0)
       .doc("Gaussian waviness cut-off (ISO 16610-61); 0: no waviness filter");
   add(number("{gear}.flank.topography.outliers", topo_ref([](auto& t) -> auto& { return t.clean.outlier_limit; })))
-      .non_negative()
+      .range(0.0, 1000.0)
       .doc("Outlier limit in robust standard deviations: 0 (off) or at least 2");
   {
     Parameter fill = numeric("{gear}.flank.topography.fill", K::flag, D::dimensionless,
@@ -310,13 +328,15 @@ std::vector<Parameter> build_table() {
   // [operating]
   add(quantity(
           "operating.pinion_torque", D::torque, [](auto& c, int) -> auto& { return c.operating.pinion_torque; }))
-      .positive()
+      .range(1e-9, 1e10)
+      .plausible(1e-6, 1e7)
       .required(kGeometryPart)
       .alias({"torque"})
       .doc("Pinion torque T1");
   add(quantity(
           "operating.pinion_speed", D::angular_speed, [](auto& c, int) -> auto& { return c.operating.pinion_speed; }))
-      .positive()
+      .range(1e-6, 1e6)
+      .plausible(0.1 * kRpm, 1e5 * kRpm)
       .required(kGeometryPart)
       .alias({"speed"})
       .doc("Pinion speed n1");
@@ -324,14 +344,14 @@ std::vector<Parameter> build_table() {
   add(quantity(
           "operating.oil_temperature", D::temperature,
           [](auto& c, int) -> auto& { return c.operating.oil_temperature; }))
-      .positive()
+      .range(100.0, 1000.0)
       .no_default()
       .alias({"oil_temperature"})
       .doc("Oil (inlet) temperature; required with [lubricant]");
   add(quantity(
           "operating.bulk_temperature", D::temperature,
           [](auto& c, int) -> auto& { return c.operating.bulk_temperature; }))
-      .non_negative()
+      .range(0.0, 2000.0)
       .alias({"bulk_temperature"})
       .doc(
           "Flanks' bulk temperature theta_M (film viscosity, contact temperature); 0: the ISO/TS 6336-20 "
@@ -347,33 +367,33 @@ std::vector<Parameter> build_table() {
   add(quantity(
           "lubricant.dynamic_viscosity", D::dynamic_viscosity,
           [](auto& c, int) -> auto& { return c.lubrication.lubricant.fixed_dynamic_viscosity; }))
-      .positive()
+      .range(0.0, 1e4, true, false)
       .no_default()
       .alias({"viscosity"})
       .doc("Fixed form: eta at the oil temperature (the film uses it at every temperature)");
   add(quantity(
           "lubricant.pressure_viscosity_coefficient", D::inverse_pressure,
           [](auto& c, int) -> auto& { return c.lubrication.lubricant.pressure_viscosity; }))
-      .positive()
+      .range(1e-12, 1e-6)
       .no_default()
       .alias({"alpha"})
       .doc("Fixed form: pressure-viscosity coefficient alpha at the oil temperature");
   add(quantity(
           "lubricant.temperature_viscosity_coefficient", D::inverse_temperature,
           [](auto& c, int) -> auto& { return c.lubrication.lubricant.fixed_temperature_viscosity; }))
-      .non_negative()
+      .range(0.0, 1.0)
       .doc(
           "Fixed form: beta = -d ln(eta)/dT for the inlet-heating correction (typical mineral oil at 70 degC; "
           "assumed)");
   add(quantity(
           "lubricant.thermal_conductivity", D::thermal_conductivity,
           [](auto& c, int) -> auto& { return c.lubrication.lubricant.thermal_conductivity; }))
-      .positive()
+      .range(1e-3, 1e3)
       .doc("Fixed form: the oil's thermal conductivity (typical mineral oil; assumed)");
   add(quantity(
           "lubricant.eyring_stress", D::pressure,
           [](auto& c, int) -> auto& { return c.lubrication.lubricant.eyring_stress; }))
-      .positive()
+      .range(1e3, 1e10)
       .doc("Fixed form: Eyring stress tau_0 of the film's traction (typical; assumed)");
   add(number(
           "lubricant.limiting_shear_coefficient",
@@ -401,13 +421,13 @@ std::vector<Parameter> build_table() {
   add(quantity(
           "lubrication.wear_coefficient", D::inverse_pressure,
           [](auto& c, int) -> auto& { return c.lubrication.wear_coefficient; }))
-      .non_negative()
+      .range(0.0, 1e-9)
       .alias({"wear_coefficient"})
       .doc("Archard's dimensional wear coefficient k of the asperity contacts (order of mild wear; assumed)");
   add(quantity(
           "lubrication.scuffing_temperature", D::temperature,
           [](auto& c, int) -> auto& { return c.lubrication.scuffing_temperature; }))
-      .non_negative()
+      .range(0.0, 2000.0)
       .doc("Scuffing temperature theta_S for the ISO/TS 6336-20 flash-temperature safety; 0: none");
 
   // [friction]
@@ -456,15 +476,15 @@ std::vector<Parameter> build_table() {
       .doc("Relative tolerance of the integrator");
   add(quantity(
           "dynamics.backlash", D::length, [](auto& c, int) -> auto& { return c.dynamics.backlash; }))
-      .non_negative()
+      .range(0.0, 0.1)
       .doc("Backlash along the line of action; 0: no back-flank contact");
   add(quantity(
           "dynamics.pinion_inertia", D::inertia, [](auto& c, int) -> auto& { return c.dynamics.pinion_inertia; }))
-      .non_negative()
+      .range(0.0, 1e12)
       .doc("Pinion polar moment of inertia; 0: a solid disc less the bore");
   add(quantity(
           "dynamics.wheel_inertia", D::inertia, [](auto& c, int) -> auto& { return c.dynamics.wheel_inertia; }))
-      .non_negative()
+      .range(0.0, 1e12)
       .doc("Wheel polar moment of inertia; 0: a solid disc less the bore");
 
   // [roughness]: both flanks.
@@ -481,6 +501,7 @@ std::vector<Parameter> build_table() {
   add(number(
           "roughness.eta_sigma_beta", [](auto& c, int) -> auto& { return c.roughness.eta_sigma_beta; }))
       .range(0.0, 10.0, true, true)
+      .plausible(0.01, 0.2)
       .doc("Summit parameter eta sigma beta for flanks given by Ra or Rq");
 
   // [contact]: the mesh cycle's fidelity, outputs and resolutions.
@@ -583,17 +604,17 @@ std::vector<Parameter> build_table() {
   add(quantity(
           "asperity.side_contact.measured_offset", D::length,
           [](auto& c, int) -> auto& { return c.asperity.measured_axis_offset; }))
-      .non_negative()
+      .range(0.0, 1e-2)
       .doc("Measured axis offset d0 of the side contact; 0: none measured");
   add(quantity(
           "asperity.side_contact.measured_tip_gap", D::length,
           [](auto& c, int) -> auto& { return c.asperity.measured_tip_gap; }))
-      .non_negative()
+      .range(0.0, 1e-2)
       .doc("Measured tip gap y0 of the side contact; 0: none measured");
   add(quantity(
           "asperity.cylinder.tip_radius", D::length,
           [](auto& c, int) -> auto& { return c.asperity.cylinder_tip_radius; }))
-      .positive()
+      .range(1e-9, 1.0)
       .required(kCylinderPart)
       .doc("Tip radius R_m of the cylinder asperity (seed section 5)");
   add(number(
@@ -670,13 +691,14 @@ std::vector<std::vector<std::string>> schema_rows() {
     for (const auto& a : p.aliases) aliases += (aliases.empty() ? "" : " ") + a;
     for (const auto& a : p.gear_aliases) aliases += (aliases.empty() ? "" : " ") + a;
     rows.push_back({p.key, kind, p.kind == ParameterKind::quantity ? std::string(si_symbol(p.dimension)) : "",
-                    p.defaulted() ? p.format(p.get(defaults, 0)) : "", range, parts(p.required_by), aliases,
-                    p.meaning});
+                    p.defaulted() ? p.format(p.get(defaults, 0)) : "", range, parts(p.required_by), aliases, p.meaning,
+                    p.plausible_text()});
   }
   return rows;
 }
 
-const char* const kSchemaHeader[] = {"key", "kind", "SI unit", "default", "range", "required by", "aliases", "meaning"};
+const char* const kSchemaHeader[] = {"key",         "kind",    "SI unit", "default",  "range",
+                                     "required by", "aliases", "meaning", "plausible"};
 
 }  // namespace
 
@@ -693,10 +715,27 @@ std::string Parameter::range_text() const {
 }
 
 bool Parameter::in_range(double v) const {
-  if (std::isnan(v)) return false;
+  if (!std::isfinite(v)) return false;
   const bool above = min_open ? v > min : v >= min;
   const bool below = max_open ? v < max : v <= max;
   return above && below;
+}
+
+std::string Parameter::plausible_text() const {
+  const bool lo = std::isfinite(plausible_min), hi = std::isfinite(plausible_max);
+  if (!lo && !hi) return "";
+  auto shown = [&](double v) {
+    return kind == ParameterKind::quantity ? fmt::format("{:g} {}", v, si_symbol(dimension)) : number_text(v);
+  };
+  if (!hi) return ">= " + shown(plausible_min);
+  if (!lo) return "<= " + shown(plausible_max);
+  return fmt::format("[{}, {}]", shown(plausible_min), shown(plausible_max));
+}
+
+std::string implausible_text(const Parameter& p, double v) {
+  if (p.plausible(v)) return "";
+  return fmt::format("{} the plausible band {} of a spur gear (read as given; the range is {})",
+                     v < p.plausible_min ? "below" : "above", p.plausible_text(), p.range_text());
 }
 
 std::string Parameter::key_for(int gear) const {
@@ -821,7 +860,11 @@ std::string case_schema_markdown() {
       "\"1000 rpm\") or a bare SI number. `{gear}` stands for `pinion` and `wheel`. A key without a default\n"
       "is required when a command uses its part (\"required by\"); `geartrib case CASE` shows what a case\n"
       "resolves to. Aliases are the short names `--set` and `geartrib sweep` accept. A flank takes exactly\n"
-      "one roughness form: ra; rq; summit_density + summit_sigma; m0 + m2 + m4; or a topography table.\n\n";
+      "one roughness form: ra; rq; summit_density + summit_sigma; m0 + m2 + m4; or a topography table.\n\n"
+      "A value outside its range is refused (exit 2, naming the file, line or --set, and the key); ranges are\n"
+      "checked in SI, after the unit is applied, and a value must be finite. A gear value inside its range but\n"
+      "outside the plausible band of a spur gear (a 6 m module, 1e6 rpm) is read and warned about, naming the\n"
+      "key. Units, limits and the bands' sources: [units.md](units.md#ranges-and-plausible-bands).\n\n";
   out += "|";
   for (const char* h : kSchemaHeader) out += std::string(" ") + h + " |";
   out += "\n|";

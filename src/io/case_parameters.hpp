@@ -55,6 +55,10 @@ struct Parameter {
   double min = -std::numeric_limits<double>::infinity();
   double max = std::numeric_limits<double>::infinity();
   bool min_open = false, max_open = false;
+  // The band a spur gear's value plausibly lies in: a value inside the range but outside the band
+  // is read and warned about, naming the key (a 6 m module, a 1e6 rpm speed). Infinite: no band.
+  double plausible_min = -std::numeric_limits<double>::infinity();
+  double plausible_max = std::numeric_limits<double>::infinity();
   std::vector<std::string> choices;
   std::string noun = "value";  // what a choice names, for errors ("unknown asperity model 'x'")
   std::string meaning;
@@ -66,7 +70,11 @@ struct Parameter {
 
   // The range and its rule as an error message says it ("must lie in [5, 1000]"); empty: none.
   std::string range_text() const;
+  // Within the range: finite (an infinite or NaN value never is) and inside the declared bounds.
   bool in_range(double v) const;
+  // The plausible band as text ("[0.05 mm, 100 mm]" in the key's SI unit); empty: none.
+  std::string plausible_text() const;
+  bool plausible(double v) const { return !(v < plausible_min || v > plausible_max); }
   bool per_gear() const { return key.rfind("{gear}.", 0) == 0; }
   // An absent key takes a default value (the schema shows it, the reader records it).
   bool defaulted() const {
@@ -102,6 +110,10 @@ std::vector<std::string> resolve_case_key(const std::string& name);
 // choices and range. The rule it breaks, or empty when it is fine (sweep axes, checked before
 // any point runs).
 std::string parameter_text_error(const Parameter& p, const std::string& text);
+
+// A value of a row (SI) outside its plausible band: the warning's text, naming the band and the
+// range; empty when the value is plausible.
+std::string implausible_text(const Parameter& p, double v);
 
 // The schema: one row per key (gear rows once, as "{gear}.key"), as CSV or Markdown.
 std::string case_schema_csv();

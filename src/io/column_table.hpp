@@ -33,7 +33,8 @@ struct ColumnTable {
 std::string format_csv(const ColumnTable& t);
 
 // A results file: the table in group /points, string attributes on group /sweep, the scene text
-// as /scene. Written atomically.
+// as /scene. write_column_table_hdf5 writes `path` as it is: a command writes it through an
+// io::OutputSet (all outputs or none).
 struct ColumnTableFile {
   ColumnTable table;
   std::map<std::string, std::string> attributes;

@@ -32,15 +32,23 @@ void number_attribute(hid_t obj, const std::string& name, double value) {
 }
 
 bool read_number_attribute(hid_t obj, const std::string& name, double& value) {
-  if (H5Aexists(obj, name.c_str()) <= 0) return false;
-  const hid_t a = H5Aopen(obj, name.c_str(), H5P_DEFAULT);
-  if (a < 0) return false;
-  const hid_t type = H5Aget_type(a);
-  const bool numeric = type >= 0 && H5Tget_class(type) == H5T_FLOAT;
-  const bool ok = numeric && H5Aread(a, H5T_NATIVE_DOUBLE, &value) >= 0;
-  if (type >= 0) H5Tclose(type);
-  H5Aclose(a);
-  return ok;
+  const htri_t exists = H5Aexists(obj, name.c_str());
+  if (exists == 0) return false;
+  if (exists < 0) throw std::runtime_error("attribute " + name + ": cannot be looked up");
+  Handle a(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose, "attribute " + name);
+  Handle type(H5Aget_type(a), H5Tclose, "type of attribute " + name);
+  Handle space(H5Aget_space(a), H5Sclose, "dataspace of attribute " + name);
+  if (H5Tget_class(type) != H5T_FLOAT)
+    throw std::runtime_error("attribute " + name + " is not a floating-point number");
+  const H5S_class_t shape = H5Sget_simple_extent_type(space);
+  const hssize_t count = H5Sget_simple_extent_npoints(space);
+  if (shape == H5S_NULL || (shape == H5S_SIMPLE && count != 1) || (shape != H5S_SCALAR && shape != H5S_SIMPLE))
+    throw std::runtime_error(
+        fmt::format("attribute {} holds {} values, not one number", name, std::max<hssize_t>(count, 0)));
+  double v = 0.0;  // one double: the dataspace holds exactly one element
+  check(H5Aread(a, H5T_NATIVE_DOUBLE, &v), "read attribute " + name);
+  value = v;
+  return true;
 }
 
 bool read_string_attribute(hid_t obj, const std::string& name, std::string& value) {

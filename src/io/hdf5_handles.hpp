@@ -26,7 +26,10 @@ class Handle {
 void check(herr_t status, const std::string& what);  // throws std::runtime_error when status < 0
 void string_attribute(hid_t obj, const std::string& name, const std::string& value);
 void number_attribute(hid_t obj, const std::string& name, double value);
-// Reads a scalar double attribute; false when it is absent or not numeric.
+// Reads one floating-point number from an attribute (a scalar, or a simple dataspace of exactly one
+// element); false when the attribute is absent. Throws std::runtime_error naming the attribute when
+// it is present but anything else (an array, a string, an integer, unreadable): it is never read
+// into `value` unless it holds exactly one number.
 bool read_number_attribute(hid_t obj, const std::string& name, double& value);
 // Reads a string attribute; false when it is absent or not a string.
 bool read_string_attribute(hid_t obj, const std::string& name, std::string& value);

@@ -118,7 +118,7 @@ void start_hdf5() {
 void write_mesh_contact_hdf5(const std::filesystem::path& path, const contact::MeshContactResult& result,
                              const std::string& case_file, const Case& c) {
   start_hdf5();
-  write_atomically(path, [&](const std::filesystem::path& tmp) { write_file(tmp.string(), result, case_file, c); });
+  write_file(path.string(), result, case_file, c);
 }
 
 }  // namespace geartrib::io

@@ -7,7 +7,7 @@
 //   /meta                           attributes version, asperity_model, fidelity, equivalent
 //                                   surface; datasets stage_names, stage_seconds (units "s"),
 //                                   warnings (findings that make the result doubtful)
-// Written to a temporary name in the same folder and renamed when complete.
+// Writes `path` as it is: a command writes it through an io::OutputSet (all outputs or none).
 #pragma once
 
 #include "case/case.hpp"

@@ -5,7 +5,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 namespace geartrib::io {
@@ -14,8 +13,7 @@ ReferenceTable read_reference_table(const std::filesystem::path& file,
                                     const std::function<Dimension(const std::string&)>& dimension_of) {
   ReferenceTable t;
   t.file = file.string();
-  std::ifstream in(file);
-  if (!in) throw InputError(t.file, 0, "", "", "cannot open reference table");
+  std::istringstream in(read_data_file(file, kMaxTableFileBytes));  // a regular file of at most 64 MiB
   std::vector<double> factors;
   std::string line;
   int n = 0;
@@ -64,8 +62,14 @@ ReferenceTable read_reference_table(const std::filesystem::path& file,
       const auto [end, ec] = std::from_chars(cells[i].data(), cells[i].data() + cells[i].size(), v);
       if (ec != std::errc{} || end != cells[i].data() + cells[i].size() || !std::isfinite(v))
         throw InputError(t.file, n, i == 0 ? t.input_name : t.columns[i - 1].quantity, cells[i], "not a finite number");
-      if (i == 0) t.inputs.push_back(v);
-      else t.columns[i - 1].values.push_back(v * factors[i - 1]);
+      if (i == 0) {
+        t.inputs.push_back(v);
+      } else {
+        const double si = v * factors[i - 1];  // finite in the file's unit, and in SI
+        if (!std::isfinite(si))
+          throw InputError(t.file, n, t.columns[i - 1].quantity, cells[i], "not finite in SI units (it overflows)");
+        t.columns[i - 1].values.push_back(si);
+      }
     }
   }
   if (t.inputs.empty()) throw InputError(t.file, n, "", "", "reference table has no data rows");

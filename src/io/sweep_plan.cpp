@@ -81,6 +81,17 @@ SweepAxis parse_sweep_axis(const std::string& text) {
 
 void SweepPlan::validate() const {
   if (axes.empty()) throw std::invalid_argument("a sweep needs at least one --set key=values");
+  // The factorial's size, checked axis by axis before anything is built from it (no wrapping).
+  std::size_t points = 1;
+  for (const auto& a : axes) {
+    if (a.values.empty()) throw std::invalid_argument("--set " + a.key + " has no values");
+    if (!zip && points > kMaxSweepPoints / a.values.size())
+      throw std::invalid_argument(
+          fmt::format("the sweep has more than {} points (--set {} multiplies it by {}): "
+                      "run it as several sweeps",
+                      kMaxSweepPoints, a.key, a.values.size()));
+    points = zip ? std::max(points, a.values.size()) : points * a.values.size();
+  }
   std::set<std::string> keys;
   for (const auto& a : axes) {
     if (!keys.insert(a.key).second) throw std::invalid_argument("--set " + a.key + " given twice");

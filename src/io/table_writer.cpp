@@ -1,11 +1,20 @@
 #include "io/table_writer.hpp"
 
+#include "io/input_error.hpp"
+
 #include <fmt/format.h>
 
+#include <fcntl.h>
 #include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
+#include <mutex>
 #include <stdexcept>
 
 namespace geartrib::io {
@@ -54,33 +63,158 @@ void output_table(const Table& t, bool csv, const std::string& path) {
   else write_file_atomically(path, text);
 }
 
-void write_atomically(const std::filesystem::path& path,
-                      const std::function<void(const std::filesystem::path&)>& write_temporary) {
-  const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  const auto tmp = dir / fmt::format(".{}.tmp.{}", path.filename().string(), ::getpid());
-  try {
-    write_temporary(tmp);
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw;
+namespace {
+
+// The temporaries a signal must remove. A signal handler can use only async-signal-safe calls
+// (unlink, sigaction, raise) and no locks: a fixed table of paths, each claimed by an atomic flag.
+constexpr int kSignalSlots = 64;
+constexpr std::size_t kSlotPathBytes = 4096;
+struct SignalSlot {
+  std::atomic<bool> claimed{false};  // owned by an OutputSet
+  std::atomic<bool> ready{false};    // path complete: the handler may unlink it
+  char path[kSlotPathBytes] = {};
+};
+SignalSlot signal_slots[kSignalSlots];
+constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+
+void remove_temporaries_and_reraise(int signal_number) {
+  for (auto& slot : signal_slots)
+    if (slot.ready.load()) ::unlink(slot.path);
+  struct sigaction restore {};
+  restore.sa_handler = SIG_DFL;
+  ::sigemptyset(&restore.sa_mask);
+  ::sigaction(signal_number, &restore, nullptr);
+  ::raise(signal_number);
+}
+
+void install_cleanup_handler() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    for (int signal_number : kCleanupSignals) {
+      struct sigaction previous {};
+      ::sigaction(signal_number, nullptr, &previous);
+      if (previous.sa_handler == SIG_IGN) continue;  // e.g. SIGHUP under nohup: keep ignoring it
+      struct sigaction action {};
+      action.sa_handler = remove_temporaries_and_reraise;
+      ::sigemptyset(&action.sa_mask);
+      ::sigaction(signal_number, &action, nullptr);
+    }
+  });
+}
+
+int claim_slot(const std::filesystem::path& temporary) {
+  const std::string text = temporary.string();
+  if (text.size() >= kSlotPathBytes) return -1;
+  for (int i = 0; i < kSignalSlots; ++i) {
+    bool expected = false;
+    if (!signal_slots[i].claimed.compare_exchange_strong(expected, true)) continue;
+    std::copy(text.begin(), text.end(), signal_slots[i].path);
+    signal_slots[i].path[text.size()] = '\0';
+    signal_slots[i].ready.store(true);
+    return i;
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw std::runtime_error("cannot rename " + tmp.string() + " to " + path.string());
+  return -1;
+}
+
+void release_slot(int slot) {
+  if (slot < 0) return;
+  signal_slots[slot].ready.store(false);
+  signal_slots[slot].claimed.store(false);
+}
+
+}  // namespace
+
+OutputSet::~OutputSet() { discard(); }
+
+void OutputSet::discard() {
+  for (const auto& p : pending_) {
+    std::error_code ignored;
+    std::filesystem::remove(p.temporary, ignored);
+    release_slot(p.slot);
+  }
+  pending_.clear();
+}
+
+void OutputSet::reserve(const std::filesystem::path& target) {
+  for (const auto& p : pending_)
+    if (p.target == target) return;
+  install_cleanup_handler();
+  const auto dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+  const auto temporary = dir / fmt::format(".{}.tmp.{}", target.filename().string(), ::getpid());
+  const int slot = claim_slot(temporary);
+  // Created exclusively here, so that a missing or read-only folder is named before any work.
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    const int error = errno;
+    release_slot(slot);
+    discard();
+    throw InputError(target.string(), 0, "", "",
+                     fmt::format("cannot be written: {} (folder {})", std::strerror(error), dir.string()));
+  }
+  ::close(fd);
+  pending_.push_back({temporary, target, slot, false});
+}
+
+void OutputSet::add(const std::filesystem::path& target,
+                    const std::function<void(const std::filesystem::path&)>& write) {
+  reserve(target);
+  auto at = std::find_if(pending_.begin(), pending_.end(), [&](const Pending& p) { return p.target == target; });
+  if (at->written) {
+    discard();
+    throw InputError(target.string(), 0, "", "", "given twice as an output");
+  }
+  at->written = true;
+  try {
+    write(at->temporary);
+  } catch (...) {
+    discard();
+    throw;
   }
 }
 
-void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
-  write_atomically(path, [&](const std::filesystem::path& tmp) {
+void OutputSet::add_text(const std::filesystem::path& target, const std::string& content) {
+  add(target, [&](const std::filesystem::path& tmp) {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw std::runtime_error("cannot write " + tmp.string());
     out << content;
     out.flush();
-    if (!out) throw std::runtime_error("error while writing " + tmp.string());
+    if (!out) throw std::runtime_error(fmt::format("error while writing {} (disk full?)", tmp.string()));
   });
+}
+
+void OutputSet::commit() {
+  // A reserved target never written is a programming error: nothing is renamed.
+  for (const auto& p : pending_)
+    if (!p.written) {
+      discard();
+      throw std::logic_error("OutputSet: " + p.target.string() + " reserved but not written");
+    }
+  for (std::size_t k = 0; k < pending_.size(); ++k) {
+    std::error_code ec;
+    std::filesystem::rename(pending_[k].temporary, pending_[k].target, ec);
+    if (ec) {
+      const std::string what = fmt::format("cannot rename {} to {}: {}", pending_[k].temporary.string(),
+                                           pending_[k].target.string(), ec.message());
+      pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(k));
+      discard();
+      throw std::runtime_error(what);
+    }
+    release_slot(pending_[k].slot);
+  }
+  pending_.clear();
+}
+
+void write_atomically(const std::filesystem::path& path,
+                      const std::function<void(const std::filesystem::path&)>& write_temporary) {
+  OutputSet set;
+  set.add(path, write_temporary);
+  set.commit();
+}
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
+  OutputSet set;
+  set.add_text(path, content);
+  set.commit();
 }
 
 }  // namespace geartrib::io

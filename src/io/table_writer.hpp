@@ -28,9 +28,36 @@ std::string format_text(const Table& t);
 // The table as CSV or text, to stdout when `path` is empty, else to `path` atomically.
 void output_table(const Table& t, bool csv, const std::string& path);
 
-// Writes `path` through a temporary file in the same directory (written by `write_temporary`),
-// renamed into place when complete: a reader never sees a half-written file, and a failure
-// removes the temporary. Throws std::runtime_error.
+// A command's output files, all or none. add() writes a target's content at once to a temporary
+// beside it (`.NAME.tmp.PID`; `write` gets the temporary's path); commit() renames every temporary
+// onto its target. Until then no target changes: an exception, the set's destruction or SIGINT,
+// SIGTERM, SIGHUP or SIGQUIT (the process ends as the signal would have it) removes the
+// temporaries. reserve() creates a target's temporary ahead (a command reserves its outputs
+// before computing): a folder that is missing or not writable is an InputError naming the target;
+// the same target written twice is an InputError too. (SIGKILL cannot be caught: it may leave a
+// temporary, never a half-written target.)
+class OutputSet {
+ public:
+  OutputSet() = default;
+  OutputSet(const OutputSet&) = delete;
+  OutputSet& operator=(const OutputSet&) = delete;
+  ~OutputSet();
+  void reserve(const std::filesystem::path& target);
+  void add(const std::filesystem::path& target, const std::function<void(const std::filesystem::path&)>& write);
+  void add_text(const std::filesystem::path& target, const std::string& content);
+  void commit();
+
+ private:
+  struct Pending {
+    std::filesystem::path temporary, target;
+    int slot;  // in the signal handler's list, -1 when it had no room
+    bool written;
+  };
+  std::vector<Pending> pending_;
+  void discard();
+};
+
+// One file through an OutputSet of one.
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(const std::filesystem::path&)>& write_temporary);
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);

@@ -2,20 +2,23 @@
 
 #include <fmt/format.h>
 
+#include "io/text_lines.hpp"
+
 #include <cmath>
-#include <fstream>
+#include <cstdint>
 #include <sstream>
 
 namespace geartrib::io {
 
+namespace {
+
+// Beyond 2^53 not every integer is a double: such a TOML integer is refused, not rounded.
+constexpr std::int64_t kMaxExactInteger = std::int64_t{1} << 53;
+
+}  // namespace
+
 TomlReader::TomlReader(const std::filesystem::path& file) : file_(file.string()) {
-  if (!std::filesystem::exists(file)) throw InputError(file_, 0, "", "", "file not found");
-  {
-    std::ifstream in(file);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    text_ = ss.str();
-  }
+  text_ = read_data_file(file, kMaxTomlFileBytes);  // a regular file of at most 1 MiB
   try {
     root_ = toml::parse(text_, file_);
   } catch (const toml::parse_error& e) {
@@ -96,26 +99,52 @@ std::string TomlReader::value_text(std::string_view key) const {
   return os.str();
 }
 
+const std::pair<const std::string, std::string>* TomlReader::change_of(std::string_view key) const {
+  // The key itself, a table it lies in, or a key inside it, changed on the command line.
+  for (const auto& entry : changed_) {
+    const std::string& k = entry.first;
+    if (key == k || (key.size() > k.size() && key.substr(0, k.size()) == k && key[k.size()] == '.') ||
+        (k.size() > key.size() && std::string_view(k).substr(0, key.size()) == key && k[key.size()] == '.'))
+      return &entry;
+  }
+  return nullptr;
+}
+
 std::string TomlReader::where(std::string_view key) const {
+  if (const auto* ch = change_of(key)) return file_ + " (--set " + ch->first + "=" + ch->second + ")";
   const int line = line_of(key);
   return line > 0 ? file_ + ":" + std::to_string(line) : file_;
 }
 
+std::string TomlReader::warning(std::string_view key, const std::string& message) const {
+  const std::string value = value_text(key);
+  return fmt::format("{}: warning: key '{}'{}: {}", where(key), key, value.empty() ? "" : " = " + value, message);
+}
+
 void TomlReader::fail(std::string_view key, const std::string& rule) const {
   // A key changed on the command line (or inside a changed table) is named by its --set.
-  for (const auto& [k, v] : changed_)
-    if (key == k || (key.size() > k.size() && key.substr(0, k.size()) == k && key[k.size()] == '.') ||
-        (k.size() > key.size() && std::string_view(k).substr(0, key.size()) == key && k[key.size()] == '.'))
-      throw InputError(file_ + " (--set " + k + "=" + v + ")", 0, std::string(key), value_text(key), rule);
+  if (const auto* ch = change_of(key))
+    throw InputError(file_ + " (--set " + ch->first + "=" + ch->second + ")", 0, std::string(key), value_text(key),
+                     rule);
   throw InputError(file_, line_of(key), std::string(key), value_text(key), rule);
 }
 
-double TomlReader::to_quantity(const toml::node& n, std::string_view key, Dimension d) const {
-  if (n.is_integer() || n.is_floating_point()) {
-    const double v = n.value<double>().value();
-    if (!std::isfinite(v)) fail(key, "value must be finite");
-    return v;
+double TomlReader::node_number(const toml::node& n, std::string_view key) const {
+  if (n.is_integer()) {
+    const std::int64_t i = n.as_integer()->get();
+    if (i > kMaxExactInteger || i < -kMaxExactInteger)
+      fail(
+          key,
+          "integer beyond 2^53 = 9007199254740992: not exactly a number here; write it as a float (a decimal point or an exponent)");
+    return static_cast<double>(i);
   }
+  const double v = n.as_floating_point()->get();
+  if (!std::isfinite(v)) fail(key, "value must be finite");
+  return v;
+}
+
+double TomlReader::to_quantity(const toml::node& n, std::string_view key, Dimension d) const {
+  if (n.is_integer() || n.is_floating_point()) return node_number(n, key);
   if (!n.is_string())
     fail(key, "expected a " + std::string(dimension_name(d)) + ": a number (SI) or a string like \"6 mm\"");
   try {
@@ -148,14 +177,23 @@ std::vector<double> TomlReader::quantity_array(std::string_view key, Dimension d
   for (std::size_t i = 0; i < arr->size(); ++i) {
     const std::string item = std::string(key) + "[" + std::to_string(i) + "]";
     const toml::node& e = *arr->get(i);
+    const int line = changed(key) ? 0 : static_cast<int>(e.source().begin.line);
+    const std::string where_item = changed(key) ? where(key) : file_;
     if (e.is_integer() || e.is_floating_point()) {
-      out.push_back(e.value<double>().value());
+      std::ostringstream os;
+      e.visit([&](auto&& v) { os << v; });
+      if (e.is_integer() && (e.as_integer()->get() > kMaxExactInteger || e.as_integer()->get() < -kMaxExactInteger))
+        throw InputError(
+            where_item, line, item, os.str(),
+            "integer beyond 2^53 = 9007199254740992: not exactly a number here; write it as a float (a decimal point or an exponent)");
+      const double v = e.is_integer() ? static_cast<double>(e.as_integer()->get()) : e.as_floating_point()->get();
+      if (!std::isfinite(v)) throw InputError(where_item, line, item, os.str(), "value must be finite");
+      out.push_back(v);
     } else if (e.is_string()) {
       try {
         out.push_back(parse_quantity(e.as_string()->get(), d));
       } catch (const std::invalid_argument& ex) {
-        throw InputError(file_, static_cast<int>(e.source().begin.line), item, '"' + e.as_string()->get() + '"',
-                         ex.what());
+        throw InputError(where_item, line, item, '"' + e.as_string()->get() + '"', ex.what());
       }
     } else {
       throw InputError(file_, static_cast<int>(e.source().begin.line), item, "",
@@ -169,9 +207,7 @@ double TomlReader::number(std::string_view key, std::optional<double> fallback) 
   const toml::node* n = take(key, fallback.has_value(), "a number");
   if (!n) return *fallback;
   if (!(n->is_integer() || n->is_floating_point())) fail(key, "expected a number");
-  const double v = n->value<double>().value();
-  if (!std::isfinite(v)) fail(key, "value must be finite");
-  return v;
+  return node_number(*n, key);
 }
 
 long TomlReader::integer(std::string_view key, std::optional<long> fallback) {

@@ -20,6 +20,8 @@ namespace geartrib::io {
 
 class TomlReader {
  public:
+  // Reads the whole file: a regular file of at most kMaxTomlFileBytes (1 MiB; io/text_lines.hpp),
+  // else InputError naming the file.
   explicit TomlReader(const std::filesystem::path& file);
 
   // Command-line changes, applied before reading: `set` gives a dotted key a value typed as on
@@ -49,8 +51,11 @@ class TomlReader {
   // Names of the entries of a table (empty when the table is absent).
   std::vector<std::string> keys_of(std::string_view table) const;
 
-  // "file:line" of a key (or of its nearest enclosing table), for warnings.
+  // "file:line" of a key (or of its nearest enclosing table), or "file (--set key=value)" for a
+  // key changed on the command line; for warnings and the parameters' origins.
   std::string where(std::string_view key) const;
+  // "where: warning: key 'KEY' = VALUE: message", the form of every located warning.
+  std::string warning(std::string_view key, const std::string& message) const;
   // Throws InputError for `key` with `rule`, pointing at the key's line and value.
   [[noreturn]] void fail(std::string_view key, const std::string& rule) const;
   // Throws for the first key that no accessor read.
@@ -64,6 +69,10 @@ class TomlReader {
   int line_of(std::string_view key) const;
   std::string value_text(std::string_view key) const;
   double to_quantity(const toml::node& n, std::string_view key, Dimension d) const;
+  // A TOML integer or float as a double: finite, and an integer only within +-2^53 (exact).
+  double node_number(const toml::node& n, std::string_view key) const;
+  // The command-line change naming `key` (the key, a table it lies in, or a key inside it).
+  const std::pair<const std::string, std::string>* change_of(std::string_view key) const;
 
   std::string file_;
   std::string text_;

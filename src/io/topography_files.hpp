@@ -2,14 +2,31 @@
 // marker such as "Bad" or NaN), plain whitespace or CSV height grids with a stated spacing, and
 // HDF5 grids (/z with attributes dx, dy in metres; NaN for missing). Lengths in ASCII files are
 // in micrometres unless a '# units: <unit>' line or the caller says otherwise.
+//
+// Every size and value is checked before it is used (docs/guide/surface.md#limits): the grid limits
+// of surface/height_grid.hpp (points, spacing, heights, coordinates) against the declared sizes
+// before allocating; a point cloud's lattice against the points given; an HDF5 /z against the
+// bytes the file stores; dx, dy one number each; heights finite (NaN only as the missing marker).
+// Every refusal is an InputError naming the file and the field.
 #pragma once
 
 #include "surface/height_grid.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace geartrib::io {
+
+// A text topography file (xyz or grid) of more than this is refused before it is read: it would
+// hold more than surface::kMaxGridPoints points at any usual number format (and its line numbers
+// stay within an int).
+inline constexpr std::uintmax_t kMaxTopographyTextBytes = (std::uintmax_t{1} << 31) - 1;  // 2 GiB
+// Plausible for a measured gear flank, after the unit: outside these a warning names the unit
+// the lengths were read in and the fix ('# units:' or --unit); the surface is still used.
+inline constexpr double kPlausibleSpacing[2] = {1e-9, 1.0};  // [m]
+inline constexpr double kPlausibleRq[2] = {1e-9, 1e-4};      // [m], of the cleaned surface
 
 enum class TopographyFormat { xyz, grid, hdf5 };
 // By extension: .xyz .asc -> xyz; .csv .txt .grd -> grid; .h5 .hdf5 -> hdf5.
@@ -28,9 +45,16 @@ surface::HeightGrid read_topography(const std::filesystem::path& file, const Top
 struct LoadedSurface {
   surface::HeightGrid grid;
   surface::CleanupReport cleanup;
+  std::vector<std::string> warnings;  // "FILE: warning: ..." (unit_warnings), for the caller to print
 };
 LoadedSurface load_surface(const std::filesystem::path& file, const TopographyReadOptions& read,
                            const surface::CleanupOptions& cleanup);
+
+// The warnings of a surface read with lengths in `unit` metres (stated by the file or assumed):
+// spacing outside kPlausibleSpacing (unless `check_spacing` is false: a resampled grid's spacing
+// is the caller's), Rq of the valid heights outside kPlausibleRq.
+std::vector<std::string> unit_warnings(const std::string& file, const surface::HeightGrid& g, double unit,
+                                       bool unit_in_file, bool check_spacing = true);
 
 // Writes atomically in the format of the extension; ASCII lengths in `unit` metres.
 void write_topography(const std::filesystem::path& file, const surface::HeightGrid& g, double unit = 1e-6);

@@ -85,6 +85,30 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
+// The number at the start of `t` and the unit text after it. The number is read whole: an
+// exponent belongs to it ("5e-1 mm" is 0.5 mm) and is never taken for a unit, so a number that
+// ends in a broken exponent ("2e", "2e mm", "2e+") or runs on into digits, points or another
+// exponent ("1.5.3", "2e3e4") is malformed, not a number followed by a unit.
+struct NumberAndUnit {
+  enum Status { ok, malformed, out_of_range } status = malformed;
+  double value = 0.0;
+  std::string_view unit;
+};
+NumberAndUnit split_number(std::string_view t) {
+  NumberAndUnit out;
+  const char* const first = t.data();
+  const char* const last = t.data() + t.size();
+  const auto [end, ec] = std::from_chars(first, last, out.value);
+  if (end == first || (ec != std::errc{} && ec != std::errc::result_out_of_range)) return out;
+  if (end != last) {
+    const char c = *end;
+    if (c == 'e' || c == 'E' || c == '.' || (c >= '0' && c <= '9') || c == '+' || c == '-') return out;
+  }
+  out.status = ec == std::errc::result_out_of_range ? NumberAndUnit::out_of_range : NumberAndUnit::ok;
+  out.unit = trim(std::string_view(end, static_cast<std::size_t>(last - end)));
+  return out;
+}
+
 }  // namespace
 
 std::string_view dimension_name(Dimension d) {
@@ -151,30 +175,33 @@ double unit_factor(std::string_view unit, Dimension d) {
 }
 
 double parse_quantity(std::string_view text, Dimension d) {
-  const std::string_view t = trim(text);
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
-  if (ec != std::errc{} || end == t.data())
+  const NumberAndUnit n = split_number(trim(text));
+  if (n.status == NumberAndUnit::malformed)
     throw std::invalid_argument("expected '<number> <unit>' for a " + std::string(dimension_name(d)) +
-                                " (units: " + allowed_units(d) + ")");
-  if (!std::isfinite(value)) throw std::invalid_argument("value must be finite");
-  const std::string_view unit = trim(t.substr(static_cast<std::size_t>(end - t.data())));
-  if (unit.empty()) return value;  // bare number: SI
-  const double factor = unit_factor(unit, d);
+                                " (a number such as 6, 0.5 or 5e-1, then one of: " + allowed_units(d) + ")");
+  if (n.status == NumberAndUnit::out_of_range)
+    throw std::invalid_argument("number beyond the range of a double (magnitudes 1e-308 to 1e308)");
+  if (!std::isfinite(n.value)) throw std::invalid_argument("value must be finite");
+  if (n.unit.empty()) return n.value;  // bare number: SI
+  const double factor = unit_factor(n.unit, d);
+  double si = n.value * factor;
   for (const auto& u : kUnits)
-    if (u.symbol == unit) return value * factor + u.offset;
-  return value * factor;
+    if (u.symbol == n.unit) si += u.offset;
+  // A finite number times its unit's factor can leave double's range ("1e308 GPa").
+  if (!std::isfinite(si)) throw std::invalid_argument("value must be finite in SI units (it overflows)");
+  return si;
 }
 
 std::optional<AnyQuantity> parse_any_quantity(std::string_view text) {
-  const std::string_view t = trim(text);
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
-  if (ec != std::errc{} || end == t.data() || !std::isfinite(value)) return std::nullopt;
-  const std::string_view unit = trim(t.substr(static_cast<std::size_t>(end - t.data())));
-  if (unit.empty()) return AnyQuantity{value, Dimension::dimensionless};
+  const NumberAndUnit n = split_number(trim(text));
+  if (n.status != NumberAndUnit::ok || !std::isfinite(n.value)) return std::nullopt;
+  if (n.unit.empty()) return AnyQuantity{n.value, Dimension::dimensionless};
   for (const auto& u : kUnits)
-    if (u.symbol == unit) return AnyQuantity{value * u.to_si + u.offset, u.dimension};
+    if (u.symbol == n.unit) {
+      const double si = n.value * u.to_si + u.offset;
+      if (!std::isfinite(si)) return std::nullopt;
+      return AnyQuantity{si, u.dimension};
+    }
   return std::nullopt;
 }
 

@@ -39,7 +39,10 @@ std::string allowed_units(Dimension d);
 double unit_factor(std::string_view unit, Dimension d);
 
 // Parses "<number> <unit>" (space optional) or a bare number (SI) into SI; throws
-// std::invalid_argument with the rule broken.
+// std::invalid_argument with the rule broken. The number is read whole, its exponent included:
+// "5e-1" is 0.5 (SI), "5e-1 mm" 0.5 mm, and "2e", "2e mm" or "1.5.3" are malformed numbers (an
+// exponent is never taken for a unit). The result must be finite after the unit's factor
+// ("1e308 GPa" is refused).
 double parse_quantity(std::string_view text, Dimension d);
 
 // A number with any unit of the table ("4mm" -> 0.004, length), for values whose dimension the

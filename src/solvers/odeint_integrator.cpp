@@ -1,5 +1,9 @@
 #include "solvers/odeint_integrator.hpp"
 
+#include <fmt/format.h>
+
+#include <stdexcept>
+
 #include <boost/numeric/odeint.hpp>
 
 #include <algorithm>
@@ -18,7 +22,14 @@ long OdeintIntegrator::integrate(const OdeSystem& system, double t0, double t1, 
   long steps = 0;
   std::size_t next = 0;
   while (next < sample_times.size() && sample_times[next] <= t0) samples.push_back(y), ++next;
+  // A bound on the steps (the adaptive step can collapse on a stiff or singular system): an error
+  // naming the interval instead of a hang. The cycles of geartrib take 10^3 to 10^6 steps.
+  constexpr long kMaxSteps = 50'000'000;
   while (stepper.current_time() < t1) {
+    if (steps == kMaxSteps)
+      throw std::runtime_error(
+          fmt::format("odeint: more than {} steps from t = {:.6g} s to {:.6g} s (stopped at {:.6g} s)", kMaxSteps, t0,
+                      t1, stepper.current_time()));
     // Never step past t1: the right-hand side jumps there.
     if (stepper.current_time() + stepper.current_time_step() > t1)
       stepper.initialize(stepper.current_state(), stepper.current_time(), t1 - stepper.current_time());

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace geartrib::surface {
 
@@ -32,20 +34,35 @@ CylinderReduction reduce_to_cylinders(const HeightGrid& g, double lay_angle, dou
   const double rq = std::sqrt(var / n);
   const auto& z = r.profile;
   // Peaks: local maxima whose prominence (height over the higher of the two valleys that
-  // separate them from higher ground, or the profile ends) exceeds min_prominence Rq.
+  // separate them from higher ground, or the profile ends) exceeds min_prominence Rq. The nearest
+  // strictly higher point on each side and the lowest point before it, for every k at once by a
+  // monotone stack (O(n); walking out from each peak is O(n^2) on a rising sawtooth).
+  std::vector<int> higher_left(static_cast<std::size_t>(n)), higher_right(static_cast<std::size_t>(n));
+  std::vector<double> base_left(static_cast<std::size_t>(n)), base_right(static_cast<std::size_t>(n));
+  auto scan = [&](int from, int to, int step, std::vector<int>& higher, std::vector<double>& base) {
+    std::vector<std::pair<int, double>> stack;  // index, lowest z since the entry below it
+    for (int k = from; k != to; k += step) {
+      double low = z[k];
+      while (!stack.empty() && z[stack.back().first] <= z[k])
+        low = std::min(low, stack.back().second), stack.pop_back();
+      higher[static_cast<std::size_t>(k)] = stack.empty() ? from - step : stack.back().first;
+      base[static_cast<std::size_t>(k)] = low;
+      stack.emplace_back(k, low);
+    }
+  };
+  scan(0, n, 1, higher_left, base_left);
+  scan(n - 1, -1, -1, higher_right, base_right);
   for (int k = 1; k + 1 < n; ++k) {
     if (!(z[k] > z[k - 1] && z[k] >= z[k + 1])) continue;
-    double left = z[k], right = z[k];
-    int a = k, b = k;
-    while (a > 0 && z[a - 1] <= z[k]) left = std::min(left, z[--a]);
-    while (b + 1 < n && z[b + 1] <= z[k]) right = std::min(right, z[++b]);
+    const double left = base_left[static_cast<std::size_t>(k)], right = base_right[static_cast<std::size_t>(k)];
     const double prominence = z[k] - std::max(left, right);
     if (prominence < min_prominence * rq) continue;
-    // Parabola through the points within the top `cap` of the prominence, contiguous around k.
+    // Parabola through the points within the top `cap` of the prominence, contiguous around k and
+    // short of the higher ground on either side.
     const double floor = z[k] - cap * prominence;
     int lo = k, hi = k;
-    while (lo > 0 && z[lo - 1] >= floor) --lo;
-    while (hi + 1 < n && z[hi + 1] >= floor) ++hi;
+    while (lo - 1 > higher_left[static_cast<std::size_t>(k)] && z[lo - 1] >= floor) --lo;
+    while (hi + 1 < higher_right[static_cast<std::size_t>(k)] && z[hi + 1] >= floor) ++hi;
     if (hi - lo + 1 < 5) continue;  // too few points for a parabola
     Eigen::MatrixXd A(hi - lo + 1, 3);
     Eigen::VectorXd y(hi - lo + 1);

@@ -2,10 +2,20 @@
 // mask of valid points, SI units; and the clean-up operations of section 4 of the seed.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 namespace geartrib::surface {
+
+// Limits on every height grid, whether read, resampled or generated (docs/guide/surface.md#limits).
+// The readers check them against the file's declared sizes before allocating and refuse beyond
+// them with the file and field named; make_grid and validate() throw std::invalid_argument.
+inline constexpr std::size_t kMaxGridPoints = std::size_t{1} << 25;  // 33 554 432 (8192 x 4096): ~0.3 GB a copy
+inline constexpr double kMinSpacing = 1e-12;                         // [m], 1 pm
+inline constexpr double kMaxSpacing = 1e3;                           // [m], 1 km
+inline constexpr double kMaxHeight = 1.0;                            // |z| [m]
+inline constexpr double kMaxCoordinate = 1e3;                        // |x|, |y| of a point cloud [m]
 
 struct HeightGrid {
   int nx = 0, ny = 0;
@@ -18,9 +28,10 @@ struct HeightGrid {
   bool ok(int i, int j) const { return valid[static_cast<std::size_t>(j) * nx + i] != 0; }
   std::size_t size() const { return z.size(); }
   std::size_t missing() const;
-  void validate() const;  // throws std::invalid_argument (sizes, spacing)
+  void validate() const;  // throws std::invalid_argument (sizes, spacing in [kMinSpacing, kMaxSpacing])
 };
 
+// Throws std::invalid_argument beyond kMaxGridPoints (before allocating) or the spacing limits.
 HeightGrid make_grid(int nx, int ny, double dx, double dy);
 
 // Removes the least-squares polynomial form of total degree `degree` (1: plane; 2 or more for a
@@ -28,21 +39,26 @@ HeightGrid make_grid(int nx, int ny, double dx, double dy);
 void remove_form(HeightGrid& g, int degree);
 // Splits roughness from waviness: subtracts the areal Gaussian filter of cut-off lambda_c
 // (ISO 16610-61 weighting, alpha = sqrt(ln 2/pi)), applied separably, renormalised at the edges
-// and over missing points. Returns the waviness that was removed.
+// and over missing points. Returns the waviness that was removed. The cut-off must lie between two
+// of the smaller spacing and the surface's longer side (std::invalid_argument otherwise); long
+// kernels are applied by FFT, so the cost is O(points log points) whatever the cut-off.
 HeightGrid remove_waviness(HeightGrid& g, double cutoff);
 // Marks points farther than k robust standard deviations (1.4826 x MAD) from the median as
 // missing; returns how many.
 std::size_t remove_outliers(HeightGrid& g, double k);
 // Fills missing points by the mean of their valid neighbours, repeated until none is left
-// (a missing region is filled from its edge inward). Throws if no point is valid.
+// (a missing region is filled from its edge inward, one ring a pass; O(points) in all). Throws if
+// no point is valid.
 void fill_missing(HeightGrid& g);
 // Scattered points (x, y, z) [m] binned onto a regular grid of cell size `spacing` starting at the
 // smallest x and y: each cell holds the mean of its points (NaN z: not counted); cells without a
 // point are missing. For point clouds that are not on a lattice (stitched or rotated exports).
+// Throws std::invalid_argument when the grid would exceed kMaxGridPoints.
 HeightGrid grid_from_points(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z,
                             double spacing);
 // Bilinear resampling onto spacing `spacing` in both directions over the same extent; a new point
-// is missing when any of its four neighbours is.
+// is missing when any of its four neighbours is. Throws std::invalid_argument when the grid would
+// exceed kMaxGridPoints.
 HeightGrid resample(const HeightGrid& g, double spacing);
 
 // The clean-up pipeline of seed section 4, in this order: outliers masked, missing points filled

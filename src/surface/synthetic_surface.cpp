@@ -7,6 +7,7 @@
 #include <numbers>
 #include <random>
 #include <stdexcept>
+#include <string>
 
 namespace geartrib::surface {
 
@@ -14,9 +15,20 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 }
 
+namespace {
+// The grid limits of height_grid.hpp, before the spectrum is allocated.
+void check_grid(int nx, int ny, double spacing) {
+  if (static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) > kMaxGridPoints)
+    throw std::invalid_argument("more than " + std::to_string(kMaxGridPoints) + " points");
+  if (!(spacing >= kMinSpacing && spacing <= kMaxSpacing))
+    throw std::invalid_argument("spacing outside 1e-12 m to 1000 m");
+}
+}  // namespace
+
 HeightGrid self_affine_surface(const SelfAffineSpec& s) {
-  if (s.nx < 8 || s.ny < 8 || !(s.spacing > 0.0) || !(s.rq > 0.0))
+  if (s.nx < 8 || s.ny < 8 || !(s.spacing > 0.0) || !(s.rq > 0.0 && s.rq <= kMaxHeight))
     throw std::invalid_argument("bad self-affine surface size");
+  check_grid(s.nx, s.ny, s.spacing);
   if (!(s.hurst > 0.0 && s.hurst < 1.0)) throw std::invalid_argument("Hurst exponent must lie in (0, 1)");
   if (!(s.cutoff_wavelength >= 2.0 * s.spacing && s.rolloff_wavelength > s.cutoff_wavelength))
     throw std::invalid_argument("need 2 spacings <= cut-off wavelength < roll-off wavelength");
@@ -57,7 +69,10 @@ HeightGrid self_affine_surface(const SelfAffineSpec& s) {
   for (double v : z) mean += v;
   mean /= static_cast<double>(z.size());
   for (double& v : z) v -= mean, var += v * v;
+  if (!(var > 0.0))  // no wavevector of the grid lies between the roll-off and the short cut-off
+    throw std::invalid_argument("no wavelength of the spectrum fits the grid (short cut-off longer than the surface)");
   const double scale = s.rq / std::sqrt(var / static_cast<double>(z.size()));
+  if (!std::isfinite(scale)) throw std::invalid_argument("the spectrum's amplitudes underflow: cannot scale to Rq");
   HeightGrid g = make_grid(nx, ny, s.spacing, s.spacing);
   for (std::size_t k = 0; k < z.size(); ++k) g.z[k] = z[k] * scale;
   return g;
@@ -66,6 +81,9 @@ HeightGrid self_affine_surface(const SelfAffineSpec& s) {
 HeightGrid hobbed_surface(const HobbedSpec& s) {
   if (s.nx < 8 || s.ny < 1 || !(s.spacing > 0.0) || !(s.wavelength > 4.0 * s.spacing) || !(s.tip_radius > 0.0))
     throw std::invalid_argument("bad hobbed-texture parameters");
+  check_grid(s.nx, s.ny, s.spacing);
+  if (!(s.wavelength * s.wavelength / (8.0 * s.tip_radius) + 6.0 * std::abs(s.noise_rq) <= kMaxHeight))
+    throw std::invalid_argument("hobbed ridges deeper than 1 m (wavelength^2 / (8 tip radius) + 6 noise)");
   HeightGrid g = make_grid(s.nx, s.ny, s.spacing, s.spacing);
   std::mt19937_64 rng(s.seed);
   std::normal_distribution<double> noise(0.0, 1.0);
