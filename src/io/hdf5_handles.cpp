@@ -56,6 +56,11 @@ bool read_string_attribute(hid_t obj, const std::string& name, std::string& valu
   Handle a(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose, "attribute " + name);
   Handle type(H5Aget_type(a), H5Tclose, "attribute type");
   if (H5Tget_class(type) != H5T_STRING || H5Tis_variable_str(type) > 0) return false;
+  // One string: an array of them would be read past the buffer of one.
+  Handle space(H5Aget_space(a), H5Sclose, "dataspace of attribute " + name);
+  const H5S_class_t shape = H5Sget_simple_extent_type(space);
+  if (!(shape == H5S_SCALAR || (shape == H5S_SIMPLE && H5Sget_simple_extent_npoints(space) == 1)))
+    throw std::runtime_error("attribute " + name + " is not one string");
   const std::size_t size = H5Tget_size(type);
   std::string buffer(size, '\0');
   if (H5Aread(a, type, buffer.data()) < 0) return false;
@@ -132,17 +137,6 @@ bool is_string_dataset(hid_t group, const std::string& name) {
   return H5Tget_class(type) == H5T_STRING;
 }
 
-std::vector<double> read_numbers(hid_t group, const std::string& name) {
-  Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
-  Handle space(H5Dget_space(set), H5Sclose, "dataspace of " + name);
-  if (H5Sget_simple_extent_ndims(space) != 1) throw std::runtime_error("HDF5: " + name + " is not a 1-D dataset");
-  hsize_t n = 0;
-  H5Sget_simple_extent_dims(space, &n, nullptr);
-  std::vector<double> out(n);
-  if (n > 0) check(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), "read " + name);
-  return out;
-}
-
 std::vector<double> read_matrix(hid_t group, const std::string& name, std::size_t& rows, std::size_t& cols,
                                 std::size_t max_values) {
   Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
@@ -165,6 +159,13 @@ std::string read_string(hid_t group, const std::string& name) {
   Handle type(H5Dget_type(set), H5Tclose, "type of " + name);
   if (H5Tget_class(type) != H5T_STRING || H5Tis_variable_str(type) > 0)
     throw std::runtime_error("HDF5: " + name + " is not a fixed-length string");
+  // One string, whose declared size the file stores (checked before allocating).
+  Handle space(H5Dget_space(set), H5Sclose, "dataspace of " + name);
+  const H5S_class_t shape = H5Sget_simple_extent_type(space);
+  if (!(shape == H5S_SCALAR || (shape == H5S_SIMPLE && H5Sget_simple_extent_npoints(space) == 1)))
+    throw std::runtime_error("HDF5: " + name + " is not one string");
+  if (H5Dget_storage_size(set) < H5Tget_size(type))
+    throw std::runtime_error("HDF5: " + name + " holds fewer bytes than its type declares");
   std::string buffer(H5Tget_size(type), '\0');
   check(H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()), "read " + name);
   return buffer.substr(0, buffer.find('\0'));
@@ -190,7 +191,7 @@ std::vector<std::string> read_strings(hid_t group, const std::string& name) {
   }
   const std::size_t width = H5Tget_size(stored);
   // The dataset's own storage bounds the buffer: n x width bytes must be what the file holds.
-  if (width == 0 || H5Dget_storage_size(set) < n * width)
+  if (width == 0 || n > H5Dget_storage_size(set) / width)
     throw std::runtime_error("HDF5: " + name + " holds fewer bytes than its shape declares");
   std::string cells(n * width, '\0');
   if (n > 0) check(H5Dread(set, stored, H5S_ALL, H5S_ALL, H5P_DEFAULT, cells.data()), "read " + name);

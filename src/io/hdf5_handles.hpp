@@ -44,7 +44,6 @@ void string_dataset(hid_t group, const std::string& name, const std::string& val
 void strings_dataset(hid_t group, const std::string& name, const std::vector<std::string>& values);
 // Readers of the same; throw std::runtime_error naming the dataset when it is missing or of
 // another kind.
-std::vector<double> read_numbers(hid_t group, const std::string& name);
 // A 2-D float64 dataset, row-major, with its shape; throws when it is not 2-D or has more than
 // `max_values` values (checked before allocating).
 std::vector<double> read_matrix(hid_t group, const std::string& name, std::size_t& rows, std::size_t& cols,
