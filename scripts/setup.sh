@@ -4,9 +4,10 @@
 #   bash scripts/setup.sh run      build, then run the main job on the default case (gears/m6z30.toml):
 #                                  results/m6z30.h5 (+ .csv) and the plots in results/plots
 #   bash scripts/setup.sh test     build, then run the default test suite (CTest, label "long" excluded)
-#   bash scripts/setup.sh sanitize build with AddressSanitizer and UBSan in build-sanitize/ (Debug
-#                                  optimisation -O1), then run the default suite under them: any
-#                                  report fails its test (about 4 times the plain suite's time)
+#   bash scripts/setup.sh sanitize build with AddressSanitizer and UBSan in build-sanitize/ (-O1
+#                                  -g), then run the default suite under them: any
+#                                  report fails its test (tests ~95 s, as the plain suite: CalculiX
+#                                  dominates; the build ~15 min on 2 cores)
 # Works as root on a fresh machine (apt-get) and is a no-op for packages already installed.
 set -euo pipefail
 cd "$(dirname "$0")/.."

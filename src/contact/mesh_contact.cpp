@@ -9,6 +9,8 @@
 #include "contact/validity.hpp"
 #include "gear/mesh_dynamics.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -174,7 +176,12 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   CoupledStripState warm;  // coupled: each position starts from the last (they follow the path)
   for (int i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    strips.push_back(strip.solve(line_load[k], r_eq[k], lubricated ? lubricated->asperity_share(k) : 1.0, &warm));
+    try {
+      strips.push_back(strip.solve(line_load[k], r_eq[k], lubricated ? lubricated->asperity_share(k) : 1.0, &warm));
+    } catch (const std::runtime_error& e) {  // a solve that did not converge: say where on the path
+      throw std::runtime_error(fmt::format("position {} of {} (s = {:.6g} mm from A, line load {:.6g} N/m): {}", i + 1,
+                                           n, s_m[k] * 1e3, line_load[k], e.what()));
+    }
     if (progress) progress(i + 1, n);
   }
   r.stages.push_back({cs.coupled ? "strip_contact_coupled" : "strip_contact_uncoupled", clock.lap()});
