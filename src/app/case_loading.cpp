@@ -1,5 +1,6 @@
 #include "app/case_loading.hpp"
 
+#include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
 #include "gear/gear_mesh.hpp"
 #include "io/case_file.hpp"
@@ -120,14 +121,12 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
   contact::MeshContactResult r;
   try {
     r = contact::run_mesh_contact(c, mesh, c.contact.coupled ? &kinsol : nullptr, progress, 0, integrator.get());
-  } catch (const io::InputError&) {
-    throw;
+  } catch (const contact::RoughSurfaceOverload& e) {
+    throw_overload(c, e.what());  // at the torque, naming the roughness and where each came from
   } catch (const std::invalid_argument& e) {
-    // The case's values are what the physics refused: name the case file (and, for an overload,
-    // the torque and the roughness) rather than leave the message without a place.
-    const std::string what = e.what();
-    if (what.find("beyond what the rough surface can carry") != std::string::npos) throw_overload(c, what);
-    throw io::InputError(case_file_of(c), 0, "", "", what);
+    // The case's values are what the physics refused: name the case file rather than leave the
+    // message without a place.
+    throw io::InputError(case_file_of(c), 0, "", "", e.what());
   }
   for (const auto* group : {&r.mesh, &r.contact})
     for (const auto& q : *group)

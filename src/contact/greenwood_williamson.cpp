@@ -13,6 +13,11 @@
 
 namespace geartrib::contact {
 
+RoughSurfaceOverload::RoughSurfaceOverload(double nominal_pressure)
+    : std::invalid_argument(
+          fmt::format("nominal pressure {:.6g} Pa is beyond what the rough surface can carry at any separation",
+                      nominal_pressure)) {}
+
 namespace {
 constexpr int kGaussPoints = 8;  // per panel of the composite rule
 using Gauss = boost::math::quadrature::gauss<double, kGaussPoints>;
@@ -75,16 +80,13 @@ GreenwoodWilliamson::GreenwoodWilliamson(const surface::EquivalentSurface& surfa
   constexpr double kDeepest = -1e4;  // [sigma]
   if (!(table_.size() >= 2 && table_.back().nominal_pressure >= target) &&
       at_separation(kDeepest * s).nominal_pressure < target)
-    throw std::invalid_argument(fmt::format(
-        "nominal pressure {:.6g} Pa is beyond what the rough surface can carry at any separation", max_pressure));
+    throw RoughSurfaceOverload(max_pressure);
   // The rest (all of it for the exponential distribution) by direct quadrature per separation.
   while (!(table_.size() >= 2 && table_.back().nominal_pressure >= target)) {
     const double d = z_high_ - static_cast<double>(table_.size()) * step_;
     table_.push_back(at_separation(d));
     if (table_.size() >= 2 && table_.back().nominal_pressure >= target) break;
-    if (d < kDeepest * s)
-      throw std::invalid_argument(fmt::format(
-          "nominal pressure {:.6g} Pa is beyond what the rough surface can carry at any separation", max_pressure));
+    if (d < kDeepest * s) throw RoughSurfaceOverload(max_pressure);
   }
   build_cells();
 }
@@ -354,10 +356,7 @@ double GreenwoodWilliamson::separation_for_pressure(double p) const {
     double hi = table_.back().separation, lo = hi - step_;
     for (int doubling = 0; at_separation(lo).nominal_pressure < p; ++doubling) {
       if (doubling == 200)  // the depth doubles each time: far past any pressure the table allows
-        throw std::invalid_argument(
-            fmt::format("nominal pressure {:.6g} Pa is beyond what the rough surface can "
-                        "carry at any separation",
-                        p));
+        throw RoughSurfaceOverload(p);
       hi = lo;
       lo -= 2.0 * (table_.front().separation - lo);
     }

@@ -4,12 +4,21 @@
 // Separation d: from the rigid flat to the mean of the summit heights [m].
 #pragma once
 
+#include <stdexcept>
+
 #include "asperity/model.hpp"
 #include "surface/rough_surface.hpp"
 
 #include <vector>
 
 namespace geartrib::contact {
+
+// A nominal pressure the rough surface cannot carry at any separation the model allows (down to
+// 10^4 sigma below the mean plane): the load is far beyond the surface's (an input problem).
+class RoughSurfaceOverload : public std::invalid_argument {
+ public:
+  explicit RoughSurfaceOverload(double nominal_pressure);
+};
 
 // Contact of the rough surface per unit nominal area at one separation.
 struct SurfaceContact {
