@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <numbers>
 
 using namespace geartrib;
@@ -24,6 +25,21 @@ surface::EquivalentSurface make_surface(double sigma, double beta, double esb,
   s.distribution = d;
   return s;
 }
+
+StripOptions coupled_options() {
+  StripOptions opt;
+  opt.fidelity = StripFidelity::coupled;
+  return opt;
+}
+
+// The seed's flanks (continuous model) under a coupled strip at the default nodes. Members are
+// built in order: the surface refers to the model, the strip to the surface and the solver.
+struct SeedCoupledStrip {
+  std::unique_ptr<asperity::AsperityModel> model = asperity::make_asperity_model("continuous");
+  GreenwoodWilliamson gw{make_surface(1.418e-6, 0.849e-6, 0.05), *model, test::seed_pair(), 2e9, {}};
+  solvers::KinsolSolver kinsol;
+  RoughLineContact strip{gw, 113.19e9, 0.08, coupled_options(), &kinsol};
+};
 }  // namespace
 
 TEST(GreenwoodWilliamson, GaussianIntegralsMatchTables) {
@@ -126,13 +142,8 @@ TEST(RoughLineContact, UncoupledCarriesTheLoad) {
 }
 
 TEST(RoughLineContact, CoupledCarriesTheLoadAndSpreadsIt) {
-  const auto model = asperity::make_asperity_model("continuous");
-  const GreenwoodWilliamson gw(make_surface(1.418e-6, 0.849e-6, 0.05), *model, test::seed_pair(), 2e9, {});
-  const solvers::KinsolSolver kinsol;
-  StripOptions opt;
-  opt.fidelity = StripFidelity::coupled;
-  const RoughLineContact strip(gw, 113.19e9, 0.08, opt, &kinsol);
-  const StripResult r = strip.solve(1.5e5, 0.0154);
+  const SeedCoupledStrip seed;
+  const StripResult r = seed.strip.solve(1.5e5, 0.0154);
   EXPECT_NEAR(r.line_load / 1.5e5, 1.0, 1e-6);
   const double p0 = std::sqrt(1.5e5 * 113.19e9 / (kPi * 0.0154));
   EXPECT_LT(r.max_nominal_pressure, p0);                // roughness lowers the peak ...
@@ -142,8 +153,7 @@ TEST(RoughLineContact, CoupledCarriesTheLoadAndSpreadsIt) {
 TEST(RoughLineContact, CoupledTendsToHertzAsRoughnessVanishes) {
   const auto model = asperity::make_asperity_model("continuous");
   const solvers::KinsolSolver kinsol;
-  StripOptions opt;
-  opt.fidelity = StripFidelity::coupled;
+  StripOptions opt = coupled_options();
   opt.coupled_nodes = 256;
   const double w = 1.5e5, r = 0.0154, e = 113.19e9;
   const double p0 = std::sqrt(w * e / (kPi * r)), b = std::sqrt(4.0 * w * r / (kPi * e));
@@ -166,15 +176,11 @@ TEST(RoughLineContact, CoupledTendsToHertzAsRoughnessVanishes) {
 // Jacobian) give the answers of solves from the Hertz pressure (cold). The loads follow a mesh
 // cycle's shape: a rise, a plateau, then a drop by 40% between neighbours (a load-sharing step).
 TEST(RoughLineContact, CoupledWarmStartsAgreeWithColdStarts) {
-  const auto model = asperity::make_asperity_model("continuous");
-  const GreenwoodWilliamson gw(make_surface(1.418e-6, 0.849e-6, 0.05), *model, test::seed_pair(), 2e9, {});
-  const solvers::KinsolSolver kinsol;
-  StripOptions opt;
-  opt.fidelity = StripFidelity::coupled;
-  const RoughLineContact strip(gw, 113.19e9, 0.08, opt, &kinsol);
+  const SeedCoupledStrip seed;
+  const RoughLineContact& strip = seed.strip;
   CoupledStripState state;
   const int positions = 41;
-  const double sigma = gw.surface().summit_sigma;
+  const double sigma = seed.gw.surface().summit_sigma;
   for (int k = 0; k < positions; ++k) {
     const double s = k / (positions - 1.0);
     const double share = s < 0.3 ? 1.0 / 3.0 + 2.0 / 3.0 * s / 0.3 : (s < 0.7 ? 1.0 : 0.6);

@@ -4,6 +4,7 @@
 #include "io/hdf5_results.hpp"
 #include "io/input_error.hpp"
 #include "io/table_writer.hpp"
+#include "io/text_lines.hpp"
 
 #include <fmt/format.h>
 #include <hdf5.h>
@@ -102,20 +103,6 @@ void write_column_table_hdf5(const std::filesystem::path& path, const ColumnTabl
   }
 }
 
-namespace {
-std::vector<std::string> split_commas(const std::string& list) {
-  std::vector<std::string> out;
-  if (list.empty()) return out;
-  std::size_t start = 0;
-  while (start <= list.size()) {
-    const std::size_t comma = std::min(list.find(',', start), list.size());
-    out.push_back(list.substr(start, comma - start));
-    start = comma + 1;
-  }
-  return out;
-}
-}  // namespace
-
 ColumnTableFile read_column_table_hdf5(const std::filesystem::path& path) {
   using hdf5::Handle;
   start_hdf5();
@@ -136,11 +123,11 @@ ColumnTableFile read_column_table_hdf5(const std::filesystem::path& path) {
     Handle block(H5Dopen2(points, "values", H5P_DEFAULT), H5Dclose, "dataset values");
     if (!hdf5::read_string_attribute(block, "columns", names) || !hdf5::read_string_attribute(block, "units", units))
       throw std::runtime_error("/points/values needs the attributes columns and units");
-    const std::vector<std::string> numeric = split_commas(names), unit = split_commas(units);
+    const std::vector<std::string> numeric = split_csv(names), unit = split_csv(units);
     if (numeric.size() != cols || unit.size() != cols)
       throw std::runtime_error(fmt::format("/points/values has {} columns, its attributes name {} and {} units", cols,
                                            numeric.size(), unit.size()));
-    for (const auto& name : split_commas(order)) {
+    for (const auto& name : split_csv(order)) {
       Column c;
       c.name = name;
       const auto at = std::find(numeric.begin(), numeric.end(), name);

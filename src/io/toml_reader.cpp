@@ -15,6 +15,20 @@ namespace {
 // Beyond 2^53 not every integer is a double: such a TOML integer is refused, not rounded.
 constexpr std::int64_t kMaxExactInteger = std::int64_t{1} << 53;
 
+// A TOML number (integer or float) as a double in `v`; the rule it breaks, or "" when none.
+std::string number_problem(const toml::node& n, double& v) {
+  if (n.is_integer()) {
+    const std::int64_t i = n.as_integer()->get();
+    if (i > kMaxExactInteger || i < -kMaxExactInteger)
+      return "integer beyond 2^53 = 9007199254740992: not exactly a number here; write it as a float (a decimal "
+             "point or an exponent)";
+    v = static_cast<double>(i);
+    return "";
+  }
+  v = n.as_floating_point()->get();
+  return std::isfinite(v) ? "" : "value must be finite";
+}
+
 }  // namespace
 
 TomlReader::TomlReader(const std::filesystem::path& file) : file_(file.string()) {
@@ -130,16 +144,8 @@ void TomlReader::fail(std::string_view key, const std::string& rule) const {
 }
 
 double TomlReader::node_number(const toml::node& n, std::string_view key) const {
-  if (n.is_integer()) {
-    const std::int64_t i = n.as_integer()->get();
-    if (i > kMaxExactInteger || i < -kMaxExactInteger)
-      fail(
-          key,
-          "integer beyond 2^53 = 9007199254740992: not exactly a number here; write it as a float (a decimal point or an exponent)");
-    return static_cast<double>(i);
-  }
-  const double v = n.as_floating_point()->get();
-  if (!std::isfinite(v)) fail(key, "value must be finite");
+  double v = 0.0;
+  if (const std::string rule = number_problem(n, v); !rule.empty()) fail(key, rule);
   return v;
 }
 
@@ -180,14 +186,12 @@ std::vector<double> TomlReader::quantity_array(std::string_view key, Dimension d
     const int line = changed(key) ? 0 : static_cast<int>(e.source().begin.line);
     const std::string where_item = changed(key) ? where(key) : file_;
     if (e.is_integer() || e.is_floating_point()) {
-      std::ostringstream os;
-      e.visit([&](auto&& v) { os << v; });
-      if (e.is_integer() && (e.as_integer()->get() > kMaxExactInteger || e.as_integer()->get() < -kMaxExactInteger))
-        throw InputError(
-            where_item, line, item, os.str(),
-            "integer beyond 2^53 = 9007199254740992: not exactly a number here; write it as a float (a decimal point or an exponent)");
-      const double v = e.is_integer() ? static_cast<double>(e.as_integer()->get()) : e.as_floating_point()->get();
-      if (!std::isfinite(v)) throw InputError(where_item, line, item, os.str(), "value must be finite");
+      double v = 0.0;
+      if (const std::string rule = number_problem(e, v); !rule.empty()) {
+        std::ostringstream os;
+        e.visit([&](auto&& value) { os << value; });
+        throw InputError(where_item, line, item, os.str(), rule);
+      }
       out.push_back(v);
     } else if (e.is_string()) {
       try {

@@ -16,6 +16,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string_view>
 
@@ -88,11 +89,15 @@ bool units_line(const std::string& line, const std::string& file, int n, bool le
   return true;
 }
 
-std::string unit_name(double unit) {
+// The symbol of a length unit of `unit` metres among those a topography file states (m, mm, um,
+// nm); none for another factor.
+std::optional<std::string> length_symbol(double unit) {
   for (const char* u : {"m", "mm", "um", "nm"})
     if (std::abs(unit_factor(u, Dimension::length) / unit - 1.0) < 1e-12) return u;
-  return fmt::format("{:g} m", unit);
+  return std::nullopt;
 }
+
+std::string unit_name(double unit) { return length_symbol(unit).value_or(fmt::format("{:g} m", unit)); }
 
 // A length for a message in the unit that reads best: 1e-09 -> "1 nm", 0.0001 -> "100 um".
 std::string readable(double metres) {
@@ -519,10 +524,8 @@ void write_topography(const std::filesystem::path& file, const surface::HeightGr
     });
     return;
   }
-  std::string unit_name = "m";
-  for (const char* u : {"m", "mm", "um", "nm"})
-    if (std::abs(unit_factor(u, Dimension::length) / unit - 1.0) < 1e-12) unit_name = u;
-  std::string out = "# geartrib surface\n# units: " + unit_name + "\n";
+  const std::string symbol = length_symbol(unit).value_or("m");
+  std::string out = "# geartrib surface\n# units: " + symbol + "\n";
   if (format == TopographyFormat::xyz) {
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i)
@@ -530,7 +533,7 @@ void write_topography(const std::filesystem::path& file, const surface::HeightGr
                    ? fmt::format("{:.10g} {:.10g} {:.10g}\n", i * g.dx / unit, j * g.dy / unit, g.at(i, j) / unit)
                    : fmt::format("{:.10g} {:.10g} Bad\n", i * g.dx / unit, j * g.dy / unit);
   } else {
-    out += fmt::format("# spacing: {:.12g} {}\n# dy: {:.12g} {}\n", g.dx / unit, unit_name, g.dy / unit, unit_name);
+    out += fmt::format("# spacing: {:.12g} {}\n# dy: {:.12g} {}\n", g.dx / unit, symbol, g.dy / unit, symbol);
     const char sep = file.extension() == ".csv" ? ',' : ' ';
     for (int j = 0; j < g.ny; ++j) {
       for (int i = 0; i < g.nx; ++i) {
