@@ -305,15 +305,19 @@ double GreenwoodWilliamson::contact_density(double d) const {
   return surface_.summit_density * (d <= 0.0 ? 1.0 : std::exp(-d / s));
 }
 
-SurfaceContact GreenwoodWilliamson::interpolate(double d) const {
-  if (d >= z_high_) return SurfaceContact{d, 0, 0, 0, 0, 0};
+GreenwoodWilliamson::TablePosition GreenwoodWilliamson::table_position(double d) const {
   const double x = (z_high_ - d) / step_;
   const std::size_t k = static_cast<std::size_t>(std::floor(x));
+  return {k, x - static_cast<double>(k)};
+}
+
+SurfaceContact GreenwoodWilliamson::interpolate(double d) const {
+  if (d >= z_high_) return SurfaceContact{d, 0, 0, 0, 0, 0};
+  const auto [k, t] = table_position(d);
   if (k + 1 >= table_.size()) {
     // Below the table: the caller asked for more than max_pressure; compute directly.
     return at_separation(d);
   }
-  const double t = x - static_cast<double>(k);
   const SurfaceContact& a = table_[k];
   const SurfaceContact& b = table_[k + 1];
   SurfaceContact c;
@@ -329,17 +333,14 @@ SurfaceContact GreenwoodWilliamson::interpolate(double d) const {
 double GreenwoodWilliamson::pressure(double d) const {
   // interpolate(d).nominal_pressure alone.
   if (d >= z_high_) return 0.0;
-  const double x = (z_high_ - d) / step_;
-  const std::size_t k = static_cast<std::size_t>(std::floor(x));
+  const auto [k, t] = table_position(d);
   if (k + 1 >= table_.size()) return at_separation(d).nominal_pressure;
-  return blend(table_[k].nominal_pressure, table_[k + 1].nominal_pressure, x - static_cast<double>(k));
+  return blend(table_[k].nominal_pressure, table_[k + 1].nominal_pressure, t);
 }
 
 double GreenwoodWilliamson::pressure_slope(double d) const {
   if (d >= z_high_) return 0.0;
-  const double x = (z_high_ - d) / step_;
-  std::size_t k = static_cast<std::size_t>(std::floor(x));
-  if (k + 1 >= table_.size()) k = table_.size() - 2;
+  const std::size_t k = std::min(table_position(d).k, table_.size() - 2);
   const double pa = table_[k].nominal_pressure, pb = table_[k + 1].nominal_pressure;
   if (pa > 0.0 && pb > 0.0) return -pressure(d) * std::log(pb / pa) / step_;  // d(p)/d(d) of p = pa (pb/pa)^t
   return -(pb - pa) / step_;

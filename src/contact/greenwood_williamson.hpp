@@ -92,6 +92,13 @@ class GreenwoodWilliamson {
   double critical_interference() const { return delta_c_; }
 
  private:
+  // The table row k at or above separation d (d < z_high_: k = floor((z_high - d)/step)) and the
+  // fraction t of the step toward row k + 1; k + 1 may lie beyond the table.
+  struct TablePosition {
+    std::size_t k;
+    double t;
+  };
+  TablePosition table_position(double d) const;
   double density(double z) const;               // summit-height probability density phi(z) [1/m]
   double contact_density(double d) const;       // summits above d per nominal area [1/m^2]
   void gaussian_table(int entries);             // table_[0 .. entries) on shared nodes
