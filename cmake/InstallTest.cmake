@@ -64,4 +64,16 @@ execute_process(COMMAND ${prefix}/bin/geartrib fit --list kogut-etsion OUTPUT_VA
 if(NOT rc EQUAL 0 OR NOT out MATCHES "load_coefficient_1")
   message(FATAL_ERROR "installed geartrib fit (exit ${rc}):\n${out}${err}")
 endif()
+
+# The Python module (when built: -DPYTHON=<interpreter> -DPYTHON_DIR=<its dist-packages under the
+# prefix>): imported from the prefix, outside the source tree, it finds the installed default case.
+if(PYTHON)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${prefix}/${PYTHON_DIR} ${PYTHON} -c
+                          "import geartrib; print(geartrib.__file__); print(geartrib.default_case_file()); print('p0 %.0f MPa' % (geartrib.run(as_dict=True)['hertz_p0_Pa'].max() / 1e6))"
+                  WORKING_DIRECTORY ${WORK_DIR} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "^${prefix}/${PYTHON_DIR}/geartrib/__init__.py\n${prefix}/share/geartrib/gears/m6z30.toml\np0 [0-9]+ MPa")
+    message(FATAL_ERROR "installed Python module (exit ${rc}):\n${out}${err}")
+  endif()
+  message(STATUS "installed Python module: ok (${out})")
+endif()
 message(STATUS "installed geartrib and examples built against it: ok")

@@ -18,7 +18,10 @@ case "$mode" in build|run|test|sanitize) ;; *) echo "usage: bash scripts/setup.s
 packages=(g++ cmake make pkg-config
           libeigen3-dev libsundials-dev libboost-dev libceres-dev libhdf5-dev
           libcli11-dev libtomlplusplus-dev libfmt-dev libgtest-dev libbenchmark-dev libfftw3-dev
+          libzip-dev libpugixml-dev
           python3 python3-h5py python3-matplotlib calculix-ccx
+          python3-dev python3-numpy pybind11-dev         # the Python module (python/)
+          python3-pytest python3-pandas python3-xarray python3-distributed   # its tests, Dask sweeps
           clang-format clang-tidy)   # scripts/lint.sh (ctest -R lint.format, ctest -L lint)
 missing=()
 for p in "${packages[@]}"; do

@@ -2,6 +2,7 @@
 // in normal or side contact; the case summary; comparison with a reference table.
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
+#include "runs/asperity_columns.hpp"
 
 #include "asperity/case_setup.hpp"
 #include "asperity/side_contact.hpp"
@@ -25,39 +26,9 @@ namespace geartrib::app {
 namespace {
 
 using asperity::AsperityState;
-using io::Dimension;
 
-// The columns of the asperity table: CSV header = quantity + suffix (units in the name).
-struct Column {
-  std::string_view quantity;
-  std::string_view suffix;
-  Dimension dimension;
-  double (*get)(const AsperityState&);
-};
-
-constexpr Column kColumns[] = {
-    {"delta_star", "", Dimension::dimensionless, [](const AsperityState& s) { return s.delta_star; }},
-    {"delta", "_m", Dimension::length, [](const AsperityState& s) { return s.delta; }},
-    {"load", "_N", Dimension::force, [](const AsperityState& s) { return s.load; }},
-    {"load_star", "", Dimension::dimensionless, [](const AsperityState& s) { return s.load_star; }},
-    {"area", "_m2", Dimension::area, [](const AsperityState& s) { return s.area; }},
-    {"area_star", "", Dimension::dimensionless, [](const AsperityState& s) { return s.area_star; }},
-    {"contact_radius", "_m", Dimension::length, [](const AsperityState& s) { return s.contact_radius; }},
-    {"plastic_radius", "_m", Dimension::length, [](const AsperityState& s) { return s.plastic_radius; }},
-    {"mean_pressure", "_Pa", Dimension::pressure, [](const AsperityState& s) { return s.mean_pressure; }},
-    {"max_pressure", "_Pa", Dimension::pressure, [](const AsperityState& s) { return s.max_pressure; }},
-    {"plastic_fraction", "", Dimension::dimensionless, [](const AsperityState& s) { return s.plastic_fraction; }},
-    {"max_von_mises", "_Pa", Dimension::pressure, [](const AsperityState& s) { return s.max_von_mises; }},
-    {"von_mises_depth", "_m", Dimension::length, [](const AsperityState& s) { return s.von_mises_depth; }},
-};
-
-const Column& column(const std::string& quantity) {
-  for (const auto& c : kColumns)
-    if (c.quantity == quantity) return c;
-  std::string known;
-  for (const auto& c : kColumns) known += (known.empty() ? "" : ", ") + std::string(c.quantity);
-  throw std::invalid_argument("unknown quantity '" + quantity + "' (known: " + known + ")");
-}
+using runs::asperity_column;
+using runs::kAsperityColumns;
 
 struct Options {
   std::string model;
@@ -178,7 +149,7 @@ void print_constants(const asperity::AsperityModel& m) {
 
 void run_compare(const Options& o, const asperity::AsperityModel& m, const asperity::ContactPair& p) {
   const io::ReferenceTable ref =
-      io::read_reference_table(o.compare, [](const std::string& q) { return column(q).dimension; });
+      io::read_reference_table(o.compare, [](const std::string& q) { return asperity_column(q).dimension; });
   if (ref.input_name != "delta_star")
     throw io::InputError(ref.file, 0, ref.input_name, "", "the input column must be delta_star");
   fmt::print("Reference: {}\n", ref.file);
@@ -197,8 +168,8 @@ void run_compare(const Options& o, const asperity::AsperityModel& m, const asper
     const AsperityState s = m.evaluate(p, ref.inputs[r] * crit.interference);
     std::vector<double> row{ref.inputs[r]};
     for (const auto& col : ref.columns) {
-      const double factor = col.unit.empty() ? 1.0 : io::unit_factor(col.unit, column(col.quantity).dimension);
-      const double model_value = column(col.quantity).get(s);
+      const double factor = col.unit.empty() ? 1.0 : io::unit_factor(col.unit, asperity_column(col.quantity).dimension);
+      const double model_value = asperity_column(col.quantity).get(s);
       row.push_back(col.values[r] / factor);
       row.push_back(model_value / factor);
       row.push_back(100.0 * (model_value - col.values[r]) / col.values[r]);
@@ -237,13 +208,13 @@ void run(const Options& o) {
                                               o.range.empty() ? "--delta-star" : "--range", d, kMaxDeltaStar));
 
   io::Table t;
-  for (const auto& col : kColumns) t.header.push_back(std::string(col.quantity) + std::string(col.suffix));
+  for (const auto& col : kAsperityColumns) t.header.push_back(std::string(col.quantity) + std::string(col.suffix));
   if (o.contact == "normal") {
     const double dc = model->critical(pair).interference;
     for (double d : levels) {
       const AsperityState s = model->evaluate(pair, d * dc);
       std::vector<double> row;
-      for (const auto& col : kColumns) row.push_back(col.get(s));
+      for (const auto& col : kAsperityColumns) row.push_back(col.get(s));
       t.rows.push_back(std::move(row));
     }
   } else {
@@ -256,7 +227,7 @@ void run(const Options& o) {
     for (double d : levels) {
       const auto s = asperity::evaluate_side_contact(*model, pair, g, d * dcn / std::cos(g.theta));
       std::vector<double> row;
-      for (const auto& col : kColumns) row.push_back(col.get(s.normal));
+      for (const auto& col : kAsperityColumns) row.push_back(col.get(s.normal));
       for (double v : {s.applied_delta, s.theta * 180.0 / std::numbers::pi, s.vertical_load, s.tangential_load,
                        s.semi_major, s.semi_minor})
         row.push_back(v);

@@ -1,5 +1,5 @@
-// The case a command runs: loaded with its --set changes, warnings printed; and the mesh cycle
-// of a case as the case asks for it.
+// The case a command runs: loaded with its --set changes, warnings printed (the mesh cycle it
+// runs: runs/mesh_cycle.hpp).
 #pragma once
 
 #include "app/cli_options.hpp"
@@ -8,13 +8,8 @@
 #include "io/case_parameters.hpp"
 
 #include <filesystem>
-#include <functional>
 #include <string>
 #include <vector>
-
-namespace geartrib::contact {
-struct MeshContactResult;
-}
 
 namespace geartrib::app {
 
@@ -27,8 +22,5 @@ std::vector<io::CaseChange> case_changes(const CaseOptions& o);
 // Loads the case (the default one when the file is empty) with the command line's key=value
 // changes, requiring the keys of `parts` (io::CasePart), printing its warnings to stderr.
 Case load_case_reporting(const CaseOptions& o, unsigned parts = io::kAllParts);
-// The mesh cycle of a case as the case asks for it (KINSOL when coupled, the case's integrator
-// when it asks for dynamics); throws std::runtime_error on a non-finite output. Thread-safe.
-contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress = {});
 
 }  // namespace geartrib::app

@@ -2,6 +2,7 @@
 // curvature, Hertz line contact, rolling and sliding, mesh stiffness.
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
+#include "runs/kinematics_table.hpp"
 
 #include "gear/gear_mesh.hpp"
 #include "gear/iso6336_stiffness.hpp"
@@ -95,78 +96,8 @@ void run(const Options& o) {
   const gear::GearMesh mesh(c);
   if (o.summary) return run_summary(o, c, mesh);
 
-  const auto& pair = mesh.pair();
-  const auto& p = pair.path();
-  io::Table t;
-  t.header = {"point",
-              "s_m",
-              "gamma",
-              "rho1_m",
-              "rho2_m",
-              "r_eq_m",
-              "load_share",
-              "line_load_N_per_m",
-              "hertz_p0_Pa",
-              "hertz_halfwidth_m",
-              "hertz_p0_single_pair_Pa",
-              "v1_m_per_s",
-              "v2_m_per_s",
-              "entrainment_m_per_s",
-              "sliding_m_per_s",
-              "srr",
-              "specific_sliding_pinion",
-              "specific_sliding_wheel",
-              "pair_stiffness_N_per_m",
-              "mesh_stiffness_N_per_m",
-              "pairs_in_contact"};
-  auto add = [&](const std::string& label, double s, bool single_side) {
-    const gear::MeshInstant m = mesh.analysis().at(s, single_side);
-    const gear::PairLoad* own = nullptr;
-    for (const auto& l : m.pairs)
-      if (std::abs(l.s - s) <= 1e-9 * p.line_length) own = &l;
-    if (!own) throw std::logic_error("tracked pair missing from the mesh instant");
-    const gear::FlankGeometry f = pair.flank(s);
-    const gear::FlankKinematics k = pair.kinematics(s, mesh.pinion_speed());
-    const gear::PairLoad single = mesh.analysis().pair_load(s, mesh.normal_force() / pair.spec().face_width);
-    t.add_row(label, {s,
-                      f.roll_parameter,
-                      f.radius_pinion,
-                      f.radius_wheel,
-                      f.radius_equivalent,
-                      own->share,
-                      own->line_load,
-                      own->hertz_peak,
-                      own->hertz_half_width,
-                      single.hertz_peak,
-                      k.rolling_pinion,
-                      k.rolling_wheel,
-                      k.entrainment,
-                      k.sliding,
-                      k.slide_to_roll,
-                      k.specific_sliding_pinion,
-                      k.specific_sliding_wheel,
-                      own->stiffness,
-                      m.mesh_stiffness,
-                      static_cast<double>(m.pairs.size())});
-  };
-  if (o.positions) {
-    const int n = *o.positions;
-    if (n < 2) throw std::invalid_argument("--positions must be at least 2");
-    for (int i = 0; i < n; ++i) add(std::to_string(i), p.a + p.length * i / (n - 1), false);
-  } else {
-    std::vector<std::string> names = o.points.empty() ? std::vector<std::string>{"A", "B", "C", "D", "E"} : o.points;
-    for (const auto& name : names) {
-      double s = 0.0;
-      if (name == "A") s = p.a;
-      else if (name == "B") s = p.b;
-      else if (name == "C") s = p.c;
-      else if (name == "D") s = p.d;
-      else if (name == "E") s = p.e;
-      else throw std::invalid_argument("--points: unknown point '" + name + "' (known: A, B, C, D, E)");
-      add(name, s, true);
-    }
-  }
-  emit_table(t, o.table);
+  emit_table(o.positions ? runs::kinematics_table(mesh, *o.positions) : runs::kinematics_table(mesh, o.points),
+             o.table);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
 #include "app/progress_bar.hpp"
+#include "runs/mesh_cycle.hpp"
 
 #include "contact/mesh_contact.hpp"
 #include "io/hdf5_results.hpp"
@@ -100,7 +101,7 @@ void run(const Options& o) {
   outputs.reserve(out);
   if (o.csv.to_file()) outputs.reserve(o.csv.file);
   ProgressBar bar(!o.quiet, "positions");
-  const contact::MeshContactResult r = run_mesh_cycle(c, [&](int done, int total) { bar(done, total); });
+  const contact::MeshContactResult r = runs::run_mesh_cycle(c, [&](int done, int total) { bar(done, total); });
 
   outputs.add(out, [&](const std::filesystem::path& tmp) { io::write_mesh_contact_hdf5(tmp, r, case_file, c); });
   io::Table t;

@@ -241,7 +241,8 @@ void add_surface_command(CLI::App& app) {
       "Rku, Rz, spectral moments along and across the lay, summits beside McCool's predictions, the equivalent surface\n"
       "of two flanks, and the reduction to parabolic-cylinder asperities.\n"
       "Formats by extension: .xyz/.asc point clouds (x y z, header lines skipped, 'Bad' or NaN missing), .csv/.txt/.grd\n"
-      "height grids ('# spacing: 0.5 um' and '# units: um' lines), .h5/.hdf5 (/z with attributes dx, dy in m).\n"
+      "height grids ('# spacing: 0.5 um' and '# units: um' lines), .h5/.hdf5 (/z with attributes dx, dy in m),\n"
+      ".x3p (ISO 25178-72 open surface format: areal or profile, incremental axes, lengths in m).\n"
       "Clean-up order: outliers masked, missing filled (--fill), polynomial form removed (--form), waviness filtered (--cutoff).");
   cmd->require_subcommand(1);
 

@@ -6,7 +6,7 @@
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
 #include "app/progress_bar.hpp"
-#include "contact/mesh_contact.hpp"
+#include "runs/sweep_points.hpp"
 
 #include "io/column_table.hpp"
 #include "io/hdf5_results.hpp"
@@ -43,139 +43,6 @@ struct Options {
   std::vector<std::string> merge;
   bool quiet = false;
 };
-
-// One quantity of one point: its extremes and its mean along the path.
-struct Summary {
-  std::string name, unit;
-  double min = 0.0, mean = 0.0, max = 0.0;
-};
-
-struct PointResult {
-  std::size_t index = 0;
-  bool ok = false;
-  std::string message;  // the error, or the loader's warnings
-  double seconds = 0.0;
-  double contact_ratio = 0.0;
-  double plasticity_index = 0.0;
-  std::string regime;                                              // the run's validity verdict, in one word
-  std::string verdict;                                             // and in full
-  std::vector<contact::MeshContactResult::FlagCount> flag_counts;  // positions per validity flag
-  std::vector<Summary> quantities;
-};
-
-PointResult run_point(const std::filesystem::path& case_file, const std::vector<io::CaseChange>& changes,
-                      std::size_t index) {
-  PointResult p;
-  p.index = index;
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    const Case c = io::load_case(case_file, changes);
-    for (const auto& w : c.warnings) p.message += (p.message.empty() ? "" : "; ") + w;
-    const contact::MeshContactResult r = run_mesh_cycle(c);
-    for (const auto& w : r.warnings) p.message += (p.message.empty() ? "warning: " : "; warning: ") + w;
-    p.contact_ratio = r.path.contact_ratio;
-    p.plasticity_index = r.plasticity_index;
-    p.regime = r.regime;
-    p.verdict = r.verdict;
-    p.flag_counts = r.flag_counts;
-    for (const auto* group : r.groups())
-      for (const auto& q : *group) {
-        if (q.name == "s_m" || q.name == "roll_angle_rad") continue;                  // the path itself
-        if (q.name.rfind("flag_", 0) == 0 || q.name == "plasticity_index") continue;  // counted below / a column
-        const auto [lo, hi] = std::minmax_element(q.values.begin(), q.values.end());
-        p.quantities.push_back({q.name, q.unit, *lo, contact::path_mean(q.values), *hi});
-      }
-    p.ok = true;
-  } catch (const std::exception& e) {
-    p.message = e.what();
-  }
-  p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return p;
-}
-
-// The table: point index, the swept values (numeric with their SI unit when every value of the
-// axis is a quantity of one unit, else text), status, message, then the summaries.
-io::ColumnTable point_table(const io::SweepPlan& plan, const std::vector<PointResult>& points) {
-  io::ColumnTable t;
-  io::Column index{"point", "1", false, {}, {}};
-  for (const auto& p : points) index.numbers.push_back(static_cast<double>(p.index));
-  t.columns.push_back(std::move(index));
-  for (std::size_t k = 0; k < plan.axes.size(); ++k) {
-    const auto& axis = plan.axes[k];
-    std::vector<std::optional<io::SiValue>> si;
-    for (const auto& v : axis.values) si.push_back(io::si_quantity(v));
-    const bool numeric =
-        std::all_of(si.begin(), si.end(), [&](const auto& s) { return s && s->unit == si.front()->unit; });
-    io::Column col{axis.key, numeric ? si.front()->unit : "", !numeric, {}, {}};
-    for (const auto& p : points) {
-      const std::string value = plan.point(p.index)[k].value;
-      if (numeric) col.numbers.push_back(io::si_quantity(value)->value);
-      else col.texts.push_back(value);
-    }
-    t.columns.push_back(std::move(col));
-  }
-  io::Column status{"status", "", true, {}, {}}, message{"message", "", true, {}, {}};
-  io::Column seconds{"seconds", "s", false, {}, {}}, ratio{"contact_ratio", "1", false, {}, {}},
-      psi{"plasticity_index", "1", false, {}, {}};
-  for (const auto& p : points) {
-    status.texts.emplace_back(p.ok ? "ok" : "error");
-    message.texts.push_back(p.message);
-    seconds.numbers.push_back(p.seconds);
-    ratio.numbers.push_back(p.ok ? p.contact_ratio : std::nan(""));
-    psi.numbers.push_back(p.ok ? p.plasticity_index : std::nan(""));
-  }
-  for (auto* c : {&status, &message, &seconds, &ratio, &psi}) t.columns.push_back(std::move(*c));
-  // The validity verdict and, per flag, at how many positions it is set.
-  io::Column regime{"regime", "", true, {}, {}}, verdict{"validity", "", true, {}, {}};
-  for (const auto& p : points) {
-    regime.texts.push_back(p.ok ? p.regime : "");
-    verdict.texts.push_back(p.ok ? p.verdict : "");
-  }
-  t.columns.push_back(std::move(regime));
-  t.columns.push_back(std::move(verdict));
-  std::vector<std::string> flags;
-  for (const auto& p : points)
-    for (const auto& f : p.flag_counts)
-      if (std::find(flags.begin(), flags.end(), f.name) == flags.end()) flags.push_back(f.name);
-  for (const auto& name : flags) {
-    io::Column col{"positions_" + name, "1", false, {}, {}};
-    for (const auto& p : points) {
-      const auto f =
-          std::find_if(p.flag_counts.begin(), p.flag_counts.end(), [&](const auto& x) { return x.name == name; });
-      col.numbers.push_back(p.ok && f != p.flag_counts.end() ? f->positions : std::nan(""));
-    }
-    t.columns.push_back(std::move(col));
-  }
-  // Quantities in order of first appearance (a swept key may add one, e.g. mesh.dynamics).
-  std::vector<std::pair<std::string, std::string>> names;
-  for (const auto& p : points)
-    for (std::size_t k = 0; k < p.quantities.size(); ++k) {
-      const Summary& q = p.quantities[k];
-      if (k < names.size() && names[k].first == q.name) continue;  // where the points before had it
-      if (std::none_of(names.begin(), names.end(), [&](const auto& n) { return n.first == q.name; }))
-        names.emplace_back(q.name, q.unit);
-    }
-  // Points list their quantities in one order as a rule: the k-th name is looked for at k first
-  // (a search only when a point's list differs), so the table costs points x quantities.
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    const auto& [name, unit] = names[k];
-    io::Column lo{name + "_min", unit, false, {}, {}}, mean{name + "_mean", unit, false, {}, {}},
-        hi{name + "_max", unit, false, {}, {}};
-    for (const auto& p : points) {
-      const Summary* q = k < p.quantities.size() && p.quantities[k].name == name ? &p.quantities[k] : nullptr;
-      if (!q) {
-        const auto it = std::find_if(p.quantities.begin(), p.quantities.end(),
-                                     [&key = name](const Summary& s) { return s.name == key; });
-        q = it != p.quantities.end() ? &*it : nullptr;
-      }
-      lo.numbers.push_back(q ? q->min : std::nan(""));
-      mean.numbers.push_back(q ? q->mean : std::nan(""));
-      hi.numbers.push_back(q ? q->max : std::nan(""));
-    }
-    for (auto* c : {&lo, &mean, &hi}) t.columns.push_back(std::move(*c));
-  }
-  return t;
-}
 
 std::string signature(const std::string& scene, const std::string& plan) {
   return fmt::format("{:016x}", std::hash<std::string>{}(scene + '\n' + plan));
@@ -318,7 +185,10 @@ void run(const Options& o) {
     std::cerr << fmt::format("sweep: {} points ({}), {} in this shard {}/{}, {} thread{}\n", plan.size(),
                              plan.describe(), mine.size(), shard.index, shard.count, threads, threads == 1 ? "" : "s");
   const auto start = std::chrono::steady_clock::now();
-  std::vector<PointResult> results(mine.size());
+  std::vector<runs::SweepPoint> results(mine.size());
+  const runs::CaseLoader load = [&](const std::vector<io::CaseChange>& changes) {
+    return io::load_case(case_file, changes);
+  };
   // Dynamic scheduling: each thread takes the next point when done with its last, so points of
   // unequal cost (fidelity, positions, failing early) balance over the threads.
   std::atomic<std::size_t> next{0}, done{0};
@@ -328,7 +198,7 @@ void run(const Options& o) {
   for (int t = 0; t < threads; ++t)
     pool.emplace_back([&] {
       for (std::size_t k; (k = next.fetch_add(1)) < mine.size();) {
-        results[k] = run_point(case_file, plan.point(mine[k]), mine[k]);
+        results[k] = runs::run_sweep_point(load, plan.point(mine[k]), mine[k]);
         bar(static_cast<int>(done.fetch_add(1) + 1), static_cast<int>(mine.size()));
       }
     });
@@ -336,7 +206,7 @@ void run(const Options& o) {
   pool.clear();      // joins
 
   io::ColumnTableFile f;
-  f.table = point_table(plan, results);
+  f.table = runs::sweep_table(plan, results);
   f.scene = base.source_text;
   f.attributes = {{"version", GEARTRIB_VERSION},
                   {"case_file", case_file.string()},

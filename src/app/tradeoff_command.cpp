@@ -7,6 +7,7 @@
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
 #include "contact/mesh_contact.hpp"
+#include "runs/mesh_cycle.hpp"
 
 #include "fem/ccx_results.hpp"
 #include "io/case_file.hpp"
@@ -132,7 +133,7 @@ Timed run_timed(const std::filesystem::path& case_file, const std::vector<io::Ca
   double total = 0.0;
   for (int repeat = 0; repeat < 5 && (repeat == 0 || total < min_time); ++repeat) {
     const auto start = std::chrono::steady_clock::now();
-    const contact::MeshContactResult r = run_mesh_cycle(c);
+    const contact::MeshContactResult r = runs::run_mesh_cycle(c);
     const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     t.seconds = std::min(t.seconds, dt);  // the least disturbed of the repeats
     total += dt;

@@ -475,8 +475,9 @@ void read_lubrication(TomlReader& r, Case& c) {
 
 }  // namespace
 
-Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>& changes, unsigned parts) {
-  TomlReader r(file);
+namespace {
+
+Case load_case_from(TomlReader& r, const std::vector<CaseChange>& changes, unsigned parts) {
   for (const CaseChange& ch : changes)
     for (const std::string& key : resolve_case_key(ch.key)) {
       apply_change(r, key, ch.value);
@@ -550,6 +551,19 @@ Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>&
     r.fail(e.key(), e.what());
   }
   return c;
+}
+
+}  // namespace
+
+Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>& changes, unsigned parts) {
+  TomlReader r(file);
+  return load_case_from(r, changes, parts);
+}
+
+Case load_case_text(const std::string& text, const std::filesystem::path& name, const std::vector<CaseChange>& changes,
+                    unsigned parts, const std::filesystem::path& directory) {
+  TomlReader r(text, name, directory);
+  return load_case_from(r, changes, parts);
 }
 
 }  // namespace geartrib::io

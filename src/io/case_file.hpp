@@ -36,5 +36,11 @@ Material load_material(const std::filesystem::path& file, std::vector<std::strin
 lubrication::Lubricant load_lubricant(const std::filesystem::path& file);
 Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>& changes = {},
                unsigned parts = kAllParts);
+// The same from a case's text in memory (the Python module's cases, on whichever machine runs
+// them): `name` stands for the file in messages; `directory` resolves the material, lubricant
+// and topography files (empty: name's folder).
+Case load_case_text(const std::string& text, const std::filesystem::path& name,
+                    const std::vector<CaseChange>& changes = {}, unsigned parts = kAllParts,
+                    const std::filesystem::path& directory = {});
 
 }  // namespace geartrib::io

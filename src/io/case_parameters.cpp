@@ -299,7 +299,9 @@ std::vector<Parameter> build_table() {
     };
   };
   add(text("{gear}.flank.topography.file", K::text, topo_ref([](auto& t) -> auto& { return t.file; })))
-      .doc("Form measured: a profiler export or HDF5 surface (geartrib surface); its summits give the roughness");
+      .doc(
+          "Form measured: a profiler export, HDF5 or X3P surface (geartrib surface); its summits give the "
+          "roughness");
   add(quantity("{gear}.flank.topography.unit", D::length, topo_ref([](auto& t) -> auto& { return t.unit; })))
       .range(1e-12, 1.0)
       .doc("Length unit of a file that does not state one");

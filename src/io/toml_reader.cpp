@@ -33,6 +33,18 @@ std::string number_problem(const toml::node& n, double& v) {
 
 TomlReader::TomlReader(const std::filesystem::path& file) : file_(file.string()) {
   text_ = read_data_file(file, kMaxTomlFileBytes);  // a regular file of at most 1 MiB
+  parse();
+}
+
+TomlReader::TomlReader(std::string text, const std::filesystem::path& name, const std::filesystem::path& directory)
+    : file_(name.string()), directory_(directory), text_(std::move(text)) {
+  if (text_.size() > kMaxTomlFileBytes)
+    throw InputError(file_, 0, "", "",
+                     fmt::format("{} bytes of TOML: at most {} (1 MiB)", text_.size(), kMaxTomlFileBytes));
+  parse();
+}
+
+void TomlReader::parse() {
   try {
     root_ = toml::parse(text_, file_);
   } catch (const toml::parse_error& e) {

@@ -23,6 +23,10 @@ class TomlReader {
   // Reads the whole file: a regular file of at most kMaxTomlFileBytes (1 MiB; io/text_lines.hpp),
   // else InputError naming the file.
   explicit TomlReader(const std::filesystem::path& file);
+  // The same from text in memory (a case built in Python): `name` stands for the file in
+  // messages; `directory` resolves relative file names (empty: name's folder). At most
+  // kMaxTomlFileBytes.
+  TomlReader(std::string text, const std::filesystem::path& name, const std::filesystem::path& directory = {});
 
   // Command-line changes, applied before reading: `set` gives a dotted key a value typed as on
   // the command line (TOML syntax if it parses as a TOML value: 30, 0.1, true, "x"; otherwise the
@@ -32,7 +36,10 @@ class TomlReader {
   void erase(std::string_view key);
 
   const std::string& file() const { return file_; }
-  std::filesystem::path directory() const { return std::filesystem::path(file_).parent_path(); }
+  // The folder relative file names in the file are taken from.
+  std::filesystem::path directory() const {
+    return directory_.empty() ? std::filesystem::path(file_).parent_path() : directory_;
+  }
 
   bool has(std::string_view key) const;
   // Whether the key was given (or removed) by a command-line change.
@@ -62,6 +69,7 @@ class TomlReader {
   void check_all_used() const;
 
  private:
+  void parse();
   const toml::node* find(std::string_view key) const;
   // The key's node, marked as read; nullptr when absent and a fallback exists; fails when
   // absent and required (`what` names the expected value).
@@ -75,6 +83,7 @@ class TomlReader {
   const std::pair<const std::string, std::string>* change_of(std::string_view key) const;
 
   std::string file_;
+  std::filesystem::path directory_;
   std::string text_;
   toml::table root_;
   std::set<std::string, std::less<>> used_;

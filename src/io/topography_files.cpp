@@ -6,6 +6,7 @@
 #include "io/table_writer.hpp"
 #include "io/text_lines.hpp"
 #include "io/units.hpp"
+#include "io/x3p_file.hpp"
 
 #include <fmt/format.h>
 
@@ -126,18 +127,29 @@ std::string spacing_rule(double h) {
     return fmt::format("spacing {:g} m outside {:g} m to {:g} m", h, kMinSpacing, kMaxSpacing);
   return "";
 }
-// `hint`: unit_hint() for ASCII files (appended when a positive length is out of range), or empty.
-void check_spacing(const std::string& file, int line, const std::string& key, const std::string& value, double h,
-                   const std::string& hint = "") {
+
+}  // namespace
+
+void check_grid_spacing(const std::string& file, int line, const std::string& key, const std::string& value, double h,
+                        const std::string& hint) {
   if (const std::string rule = spacing_rule(h); !rule.empty())
     throw InputError(file, line, key, value, h > 0.0 && !hint.empty() ? rule + "; " + hint : rule);
 }
-void check_height(const std::string& file, int line, const std::string& key, std::string_view value, double z,
-                  const std::string& hint = "") {
+void check_grid_height(const std::string& file, int line, const std::string& key, std::string_view value, double z,
+                       const std::string& hint) {
   if (!(std::abs(z) <= kMaxHeight))
     throw InputError(file, line, key, std::string(value),
                      fmt::format("height {:g} m beyond +-{:g} m{}{}", z, kMaxHeight, hint.empty() ? "" : "; ", hint));
 }
+void check_valid_points(const surface::HeightGrid& g, const std::string& file, int line) {
+  if (g.size() - g.missing() < 9)
+    throw InputError(
+        file, line, "", "",
+        fmt::format("too few valid points ({} of {}; at least 9 are needed)", g.size() - g.missing(), g.size()));
+}
+
+namespace {
+
 void check_coordinate(const std::string& file, int line, const std::string& key, std::string_view value, double x,
                       const std::string& hint) {
   if (!(std::abs(x) <= kMaxCoordinate))
@@ -160,13 +172,6 @@ double header_length(const std::string& value, double unit) {
     return v * unit;
   }
   return parse_quantity(t, Dimension::length);
-}
-
-void check_enough(const surface::HeightGrid& g, const std::string& file, int line) {
-  if (g.size() - g.missing() < 9)
-    throw InputError(
-        file, line, "", "",
-        fmt::format("too few valid points ({} of {}; at least 9 are needed)", g.size() - g.missing(), g.size()));
 }
 
 // surface::grid_from_points and surface::resample refuse a spacing that gives too many points.
@@ -213,7 +218,7 @@ ReadSurface read_xyz(const std::filesystem::path& path, const TopographyReadOpti
       const std::string hint = unit_hint(r.unit, r.unit_in_file);
       check_coordinate(file, n, "x", t[0], x * r.unit, hint);
       check_coordinate(file, n, "y", t[1], y * r.unit, hint);
-      check_height(file, n, "z", t[2], z * r.unit, hint);
+      check_grid_height(file, n, "z", t[2], z * r.unit, hint);
     }
     xs.push_back(x * r.unit);
     ys.push_back(y * r.unit);
@@ -222,7 +227,7 @@ ReadSurface read_xyz(const std::filesystem::path& path, const TopographyReadOpti
   if (xs.empty()) throw InputError(file, n, "", "", "no data points");
   if (o.resample > 0.0) {
     r.grid = regrid(file, o.resample, [&] { return surface::grid_from_points(xs, ys, zs, o.resample); });
-    check_enough(r.grid, file, n);
+    check_valid_points(r.grid, file, n);
     return r;
   }
   // The points must lie on a regular lattice: distinct x and y, uniformly spaced.
@@ -256,8 +261,8 @@ ReadSurface read_xyz(const std::filesystem::path& path, const TopographyReadOpti
                      "--resample SPACING");
   const double dx = (ux.back() - ux.front()) / (ux.size() - 1);
   const double dy = uy.size() > 1 ? (uy.back() - uy.front()) / (uy.size() - 1) : dx;
-  check_spacing(file, first_data, "x", fmt::format("{:g} m", dx), dx, unit_hint(r.unit, r.unit_in_file));
-  check_spacing(file, first_data, "y", fmt::format("{:g} m", dy), dy, unit_hint(r.unit, r.unit_in_file));
+  check_grid_spacing(file, first_data, "x", fmt::format("{:g} m", dx), dx, unit_hint(r.unit, r.unit_in_file));
+  check_grid_spacing(file, first_data, "y", fmt::format("{:g} m", dy), dy, unit_hint(r.unit, r.unit_in_file));
   r.grid = surface::make_grid(static_cast<int>(ux.size()), static_cast<int>(uy.size()), dx, dy);
   surface::HeightGrid& g = r.grid;
   std::fill(g.valid.begin(), g.valid.end(), 0);
@@ -268,7 +273,7 @@ ReadSurface read_xyz(const std::filesystem::path& path, const TopographyReadOpti
     g.at(i, j) = zs[k];
     g.valid[static_cast<std::size_t>(j) * g.nx + i] = 1;
   }
-  check_enough(g, file, n);
+  check_valid_points(g, file, n);
   return r;
 }
 
@@ -299,12 +304,12 @@ ReadSurface read_grid(const std::filesystem::path& path, const TopographyReadOpt
     }
     if (comment_value(line, "spacing", value) || comment_value(line, "dx", value)) {
       dx = length("spacing"), spacing_line = n;
-      check_spacing(file, n, "spacing", value, dx, unit_hint(r.unit, r.unit_in_file));
+      check_grid_spacing(file, n, "spacing", value, dx, unit_hint(r.unit, r.unit_in_file));
       continue;
     }
     if (comment_value(line, "dy", value)) {
       dy = length("dy");
-      check_spacing(file, n, "dy", value, dy, unit_hint(r.unit, r.unit_in_file));
+      check_grid_spacing(file, n, "dy", value, dy, unit_hint(r.unit, r.unit_in_file));
       continue;
     }
     if (!line.empty() && line[0] == '#') continue;
@@ -317,7 +322,7 @@ ReadSurface read_grid(const std::filesystem::path& path, const TopographyReadOpt
       double v = 0.0;
       if (parse(tok, v)) {
         if (!(std::abs(v * r.unit) <= kMaxHeight))
-          check_height(file, n, "", tok, v * r.unit, unit_hint(r.unit, r.unit_in_file));
+          check_grid_height(file, n, "", tok, v * r.unit, unit_hint(r.unit, r.unit_in_file));
         values.push_back(v * r.unit);
       } else if (is_missing(tok)) {
         values.push_back(kNaN);
@@ -332,14 +337,14 @@ ReadSurface read_grid(const std::filesystem::path& path, const TopographyReadOpt
   if (!(dx > 0.0))
     throw InputError(file, spacing_line, "spacing", "",
                      "grid spacing missing: give '# spacing: <length>' or --grid-spacing");
-  check_spacing(file, spacing_line, "spacing", fmt::format("{:g} m", dx), dx, unit_hint(r.unit, r.unit_in_file));
+  check_grid_spacing(file, spacing_line, "spacing", fmt::format("{:g} m", dx), dx, unit_hint(r.unit, r.unit_in_file));
   if (width < 2) throw InputError(file, n, "", "", "a height grid needs at least 2 columns");
   r.grid = surface::make_grid(static_cast<int>(width), static_cast<int>(rows), dx, dy > 0.0 ? dy : dx);
   for (std::size_t k = 0; k < values.size(); ++k) {
     r.grid.z[k] = std::isnan(values[k]) ? 0.0 : values[k];
     r.grid.valid[k] = !std::isnan(values[k]);
   }
-  check_enough(r.grid, file, n);
+  check_valid_points(r.grid, file, n);
   return r;
 }
 
@@ -397,9 +402,9 @@ ReadSurface read_hdf5(const std::filesystem::path& path) {
     };
     if (!attribute("dx", dx))
       throw InputError(file, 0, "/z dx", "", "attribute dx (spacing [m]) missing: one positive number");
-    check_spacing(file, 0, "/z dx", fmt::format("{}", dx), dx);
+    check_grid_spacing(file, 0, "/z dx", fmt::format("{}", dx), dx);
     if (!attribute("dy", dy)) dy = dx;
-    check_spacing(file, 0, "/z dy", fmt::format("{}", dy), dy);
+    check_grid_spacing(file, 0, "/z dy", fmt::format("{}", dy), dy);
     z.resize(static_cast<std::size_t>(points));
     hdf5::check(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, z.data()), "read /z");
   } catch (const InputError&) {
@@ -411,20 +416,19 @@ ReadSurface read_hdf5(const std::filesystem::path& path) {
   for (std::size_t k = 0; k < z.size(); ++k) {
     // NaN marks a missing point (the format's rule); infinities and absurd heights are refused.
     if (!std::isnan(z[k]) && !(std::abs(z[k]) <= kMaxHeight))
-      check_height(file, 0, fmt::format("/z[{}][{}]", k / dims[1], k % dims[1]), fmt::format("{}", z[k]), z[k],
-                   "NaN alone marks a missing point");
+      check_grid_height(file, 0, fmt::format("/z[{}][{}]", k / dims[1], k % dims[1]), fmt::format("{}", z[k]), z[k],
+                        "NaN alone marks a missing point");
     r.grid.valid[k] = !std::isnan(z[k]);
     r.grid.z[k] = std::isnan(z[k]) ? 0.0 : z[k];
   }
-  check_enough(r.grid, file, 0);
+  check_valid_points(r.grid, file, 0);
   return r;
 }
 
 ReadSurface read_any(const std::filesystem::path& file, const TopographyReadOptions& o) {
   const TopographyFormat format = topography_format(file);
-  if (const std::string why =
-          data_file_problem(file, format == TopographyFormat::hdf5 ? kNoSizeLimit : kMaxTopographyTextBytes);
-      !why.empty())
+  const bool binary = format == TopographyFormat::hdf5 || format == TopographyFormat::x3p;
+  if (const std::string why = data_file_problem(file, binary ? kNoSizeLimit : kMaxTopographyTextBytes); !why.empty())
     throw InputError(file.string(), 0, "", "", why);
   if (o.resample > 0.0 && !(o.resample >= kMinSpacing && o.resample <= kMaxSpacing))
     throw InputError(file.string(), 0, "resample", fmt::format("{:g} m", o.resample),
@@ -440,10 +444,14 @@ ReadSurface read_any(const std::filesystem::path& file, const TopographyReadOpti
     case TopographyFormat::hdf5:
       r = read_hdf5(file);
       break;
+    case TopographyFormat::x3p:
+      r.grid = read_x3p(file);
+      r.unit_in_file = true;  // metres by ISO 25178-72
+      break;
   }
   if (o.resample > 0.0 && format != TopographyFormat::xyz) {
     r.grid = regrid(file.string(), o.resample, [&] { return surface::resample(r.grid, o.resample); });
-    check_enough(r.grid, file.string(), 0);
+    check_valid_points(r.grid, file.string(), 0);
   }
   return r;
 }
@@ -456,8 +464,9 @@ TopographyFormat topography_format(const std::filesystem::path& file) {
   if (e == ".xyz" || e == ".asc") return TopographyFormat::xyz;
   if (e == ".csv" || e == ".txt" || e == ".grd") return TopographyFormat::grid;
   if (e == ".h5" || e == ".hdf5") return TopographyFormat::hdf5;
+  if (e == ".x3p") return TopographyFormat::x3p;
   throw InputError(file.string(), 0, "", "",
-                   "unknown topography format (extensions: .xyz .asc, .csv .txt .grd, .h5 .hdf5)");
+                   "unknown topography format (extensions: .xyz .asc, .csv .txt .grd, .h5 .hdf5, .x3p)");
 }
 
 surface::HeightGrid read_topography(const std::filesystem::path& file, const TopographyReadOptions& o) {
@@ -466,9 +475,12 @@ surface::HeightGrid read_topography(const std::filesystem::path& file, const Top
 
 std::vector<std::string> unit_warnings(const std::string& file, const surface::HeightGrid& g, double unit,
                                        bool unit_in_file, bool check_spacing) {
-  const std::string hint = topography_format(file) == TopographyFormat::hdf5
-                               ? "an HDF5 topography holds metres (/z, dx, dy); check how it was written"
-                               : unit_hint(unit, unit_in_file);
+  const TopographyFormat format = topography_format(file);
+  const std::string hint =
+      format == TopographyFormat::hdf5  ? "an HDF5 topography holds metres (/z, dx, dy); check how it was written"
+      : format == TopographyFormat::x3p ? "an X3P holds metres (ISO 25178-72: Increment, Offset, heights); check "
+                                          "how it was written"
+                                        : unit_hint(unit, unit_in_file);
   std::vector<std::string> out;
   if (check_spacing && (std::min(g.dx, g.dy) < kPlausibleSpacing[0] || std::max(g.dx, g.dy) > kPlausibleSpacing[1]))
     out.push_back(fmt::format(
@@ -504,6 +516,10 @@ LoadedSurface load_surface(const std::filesystem::path& file, const TopographyRe
 void write_topography(const std::filesystem::path& file, const surface::HeightGrid& g, double unit) {
   g.validate();
   const TopographyFormat format = topography_format(file);
+  if (format == TopographyFormat::x3p) {
+    write_x3p(file, g);  // atomically, in metres
+    return;
+  }
   if (format == TopographyFormat::hdf5) {
     write_atomically(file, [&](const std::filesystem::path& tmp) {
       start_hdf5();

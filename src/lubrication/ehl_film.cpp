@@ -31,6 +31,7 @@ FilmFormula film_formula_from_name(const std::string& name) {
 
 std::vector<std::string> film_formula_names() {
   std::vector<std::string> names;
+  names.reserve(std::size(kLaws));
   for (const auto& l : kLaws) names.emplace_back(l.name);
   return names;
 }

@@ -9,8 +9,8 @@ using namespace geartrib;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;
-  static const char* const kNames[] = {"t.xyz", "t.asc", "t.csv", "t.txt", "t.grd", "t.h5"};
-  const auto path = fuzz::write_input(kNames[data[0] % 6], data + 1, size - 1);
+  static const char* const kNames[] = {"t.xyz", "t.asc", "t.csv", "t.txt", "t.grd", "t.h5", "t.x3p"};
+  const auto path = fuzz::write_input(kNames[data[0] % 7], data + 1, size - 1);
   fuzz::expect_accepted_or_refused([&] {
     const io::LoadedSurface s = io::load_surface(path, {}, {});
     const surface::SurfaceStatistics st = surface::surface_statistics(s.grid);

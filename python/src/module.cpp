@@ -1,0 +1,515 @@
+// geartrib's Python module, the compiled half (_geartrib): cases, the mesh cycle, the kinematics,
+// the asperity laws over arrays of delta*, surface statistics of a height array, the boundary
+// elements on a profile, and one sweep point at a time with the sweep's table. The package
+// (python/geartrib/__init__.py) builds the user's API on it: xarray/pandas results, Dask sweeps.
+//
+// Everything here converts Python values to the C++ types, releases the GIL and calls the same
+// functions the command line calls (src/runs/), so the numbers are the command's to the last
+// digit. io::InputError becomes geartrib.InputError (a ValueError) with the command line's
+// located message and its parts as attributes; std::invalid_argument a ValueError; other
+// failures a RuntimeError.
+#include "asperity/case_setup.hpp"
+#include "contact/half_plane_bem.hpp"
+#include "contact/mesh_contact.hpp"
+#include "gear/gear_mesh.hpp"
+#include "io/case_file.hpp"
+#include "io/column_table.hpp"
+#include "io/input_error.hpp"
+#include "io/sweep_plan.hpp"
+#include "io/text_lines.hpp"
+#include "runs/asperity_columns.hpp"
+#include "runs/kinematics_table.hpp"
+#include "runs/mesh_cycle.hpp"
+#include "runs/sweep_points.hpp"
+#include "surface/height_grid.hpp"
+#include "surface/surface_statistics.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace py = pybind11;
+using namespace geartrib;
+
+namespace {
+
+using Changes = std::vector<std::pair<std::string, std::string>>;
+
+std::vector<io::CaseChange> to_changes(const Changes& changes) {
+  std::vector<io::CaseChange> out;
+  for (const auto& [key, value] : changes) out.push_back({key, value});
+  return out;
+}
+
+// Where a case comes from: its file, or its text with the name standing for the file in messages
+// and the folder its relative file names are taken from.
+struct CaseSource {
+  std::string file;
+  std::optional<std::string> text;
+  std::string name;
+  std::string directory;
+  Case load(const std::vector<io::CaseChange>& changes, unsigned parts = io::kAllParts) const {
+    return text ? io::load_case_text(*text, name, changes, parts, directory) : io::load_case(file, changes, parts);
+  }
+};
+
+CaseSource source_of(const std::string& file, const std::optional<std::string>& text, const std::string& name,
+                     const std::string& directory) {
+  return CaseSource{file, text, name.empty() ? file : name, directory};
+}
+
+py::array_t<double> to_array(const std::vector<double>& v) {
+  py::array_t<double> a(static_cast<py::ssize_t>(v.size()));
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+py::list series_list(const std::vector<contact::Series>& group) {
+  py::list out;
+  for (const auto& s : group) out.append(py::make_tuple(s.name, s.unit, to_array(s.values)));
+  return out;
+}
+
+// The mesh cycle's result: its series by group and its scalar findings.
+py::dict result_dict(const contact::MeshContactResult& r) {
+  py::dict d;
+  d["mesh"] = series_list(r.mesh);
+  d["contact"] = series_list(r.contact);
+  d["validity"] = series_list(r.validity);
+  d["lubrication"] = series_list(r.lubrication);
+  d["regime"] = r.regime;
+  d["verdict"] = r.verdict;
+  d["warnings"] = r.warnings;
+  py::dict flags;
+  for (const auto& f : r.flag_counts) flags[py::str(f.name)] = f.positions;
+  d["flag_counts"] = flags;
+  d["plasticity_index"] = r.plasticity_index;
+  d["asperity_model"] = r.asperity_model;
+  d["fidelity"] = r.fidelity;
+  py::dict path;
+  for (const auto& [name, value] :
+       {std::pair{"s_A_m", r.path.a}, std::pair{"s_B_m", r.path.b}, std::pair{"s_C_m", r.path.c},
+        std::pair{"s_D_m", r.path.d}, std::pair{"s_E_m", r.path.e}, std::pair{"base_pitch_m", r.path.base_pitch},
+        std::pair{"contact_ratio", r.path.contact_ratio}})
+    path[py::str(name)] = value;
+  d["path"] = path;
+  d["summit_density_per_m2"] = r.surface.summit_density;
+  d["summit_radius_m"] = r.surface.summit_radius;
+  d["summit_sigma_m"] = r.surface.summit_sigma;
+  py::dict stages;
+  for (const auto& st : r.stages) stages[py::str(st.name)] = st.seconds;
+  d["stages_s"] = stages;
+  if (r.lubrication_summary) {
+    const auto& l = *r.lubrication_summary;
+    py::dict s;
+    s["lubricant"] = l.lubricant;
+    s["film_formula"] = l.film_formula;
+    s["inlet_heating"] = l.inlet_heating;
+    s["oil_temperature_K"] = l.oil_temperature;
+    s["bulk_temperature_K"] = l.bulk_temperature;
+    s["bulk_estimated"] = l.bulk_estimated;
+    s["dynamic_viscosity_Pa_s"] = l.dynamic_viscosity;
+    s["pressure_viscosity_per_Pa"] = l.pressure_viscosity;
+    s["iso_friction"] = l.iso_friction;
+    s["mean_power_loss_W"] = l.mean_power_loss;
+    s["input_power_W"] = l.input_power;
+    s["loss_factor_path"] = l.loss_factor_path;
+    s["loss_factor_ohlendorf"] = l.loss_factor_ohlendorf;
+    s["iso_scuffing_safety"] = l.iso_scuffing_safety;
+    s["scuffing_safety"] = l.scuffing_safety;
+    d["lubrication_summary"] = s;
+  }
+  return d;
+}
+
+// A sweep point as plain Python values (a Dask task's result travels pickled).
+py::dict point_dict(const runs::SweepPoint& p) {
+  py::dict d;
+  d["index"] = p.index;
+  d["ok"] = p.ok;
+  d["message"] = p.message;
+  d["seconds"] = p.seconds;
+  d["contact_ratio"] = p.contact_ratio;
+  d["plasticity_index"] = p.plasticity_index;
+  d["regime"] = p.regime;
+  d["verdict"] = p.verdict;
+  py::list flags, quantities;
+  for (const auto& f : p.flag_counts) flags.append(py::make_tuple(f.name, f.positions));
+  for (const auto& q : p.quantities) quantities.append(py::make_tuple(q.name, q.unit, q.min, q.mean, q.max));
+  d["flag_counts"] = flags;
+  d["quantities"] = quantities;
+  return d;
+}
+
+runs::SweepPoint point_from(const py::dict& d) {
+  runs::SweepPoint p;
+  p.index = d["index"].cast<std::size_t>();
+  p.ok = d["ok"].cast<bool>();
+  p.message = d["message"].cast<std::string>();
+  p.seconds = d["seconds"].cast<double>();
+  p.contact_ratio = d["contact_ratio"].cast<double>();
+  p.plasticity_index = d["plasticity_index"].cast<double>();
+  p.regime = d["regime"].cast<std::string>();
+  p.verdict = d["verdict"].cast<std::string>();
+  for (const auto& f : d["flag_counts"].cast<py::list>()) {
+    const auto t = f.cast<py::tuple>();
+    p.flag_counts.push_back({t[0].cast<std::string>(), t[1].cast<int>()});
+  }
+  for (const auto& q : d["quantities"].cast<py::list>()) {
+    const auto t = q.cast<py::tuple>();
+    p.quantities.push_back({t[0].cast<std::string>(), t[1].cast<std::string>(), t[2].cast<double>(),
+                            t[3].cast<double>(), t[4].cast<double>()});
+  }
+  return p;
+}
+
+io::SweepPlan make_plan(const std::vector<std::string>& axes, bool zip) {
+  io::SweepPlan plan;
+  plan.zip = zip;
+  for (const auto& a : axes) plan.axes.push_back(io::parse_sweep_axis(a));
+  plan.validate();
+  return plan;
+}
+
+// A column table as a list of (name, unit, is_text, values): float64 arrays or lists of str.
+py::list column_list(const io::ColumnTable& t) {
+  py::list out;
+  for (const auto& c : t.columns) {
+    if (c.text) out.append(py::make_tuple(c.name, c.unit, true, py::cast(c.texts)));
+    else out.append(py::make_tuple(c.name, c.unit, false, to_array(c.numbers)));
+  }
+  return out;
+}
+
+std::vector<double> to_vector(const py::array_t<double, py::array::c_style | py::array::forcecast>& a) {
+  return std::vector<double>(a.data(), a.data() + a.size());
+}
+
+asperity::ContactPair pair_from(const py::dict& d) {
+  asperity::ContactPair p;
+  p.radius = d["radius"].cast<double>();
+  p.modulus = d["modulus"].cast<double>();
+  p.youngs_modulus = d["youngs_modulus"].cast<double>();
+  p.poisson_ratio = d["poisson_ratio"].cast<double>();
+  p.yield_strength = d["yield_strength"].cast<double>();
+  p.hardness = d["hardness"].cast<double>();
+  p.validate();
+  return p;
+}
+
+py::dict pair_dict(const asperity::ContactPair& p) {
+  py::dict d;
+  d["radius"] = p.radius;
+  d["modulus"] = p.modulus;
+  d["youngs_modulus"] = p.youngs_modulus;
+  d["poisson_ratio"] = p.poisson_ratio;
+  d["yield_strength"] = p.yield_strength;
+  d["hardness"] = p.hardness;
+  return d;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_geartrib, m) {
+  m.doc() = "geartrib's compiled core; use the geartrib package";
+  m.attr("__version__") = GEARTRIB_VERSION;
+  m.attr("source_dir") = GEARTRIB_SOURCE_DIR;  // the build tree's data (gears/, materials/)
+
+  // geartrib.InputError: the command line's located message, its parts as attributes.
+  static py::exception<io::InputError> input_error(m, "InputError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const io::InputError& e) {
+      py::object error = py::reinterpret_borrow<py::object>(input_error.ptr())(e.what());
+      error.attr("file") = e.file();
+      error.attr("line") = e.line();
+      error.attr("key") = e.key();
+      error.attr("value") = e.value();
+      error.attr("rule") = e.rule();
+      PyErr_SetObject(input_error.ptr(), error.ptr());
+    }
+  });
+
+  m.def(
+      "load_case",
+      [](const std::string& file, const std::optional<std::string>& text, const std::string& name,
+         const std::string& directory, const Changes& changes) {
+        const CaseSource src = source_of(file, text, name, directory);
+        py::gil_scoped_release release;
+        return src.load(to_changes(changes));
+      },
+      py::arg("file"), py::arg("text"), py::arg("name"), py::arg("directory"), py::arg("changes"),
+      "Loads and checks a case (its file, or its TOML text standing for `name`, relative files from\n"
+      "`directory`) with (key, value) changes.");
+
+  m.def(
+      "read_case_text",
+      [](const std::filesystem::path& file) { return io::read_data_file(file, io::kMaxTomlFileBytes); },
+      py::arg("file"), "A case file's text (a regular file of at most 1 MiB, as the loader reads it).");
+
+  py::class_<Case>(m, "LoadedCase", "A case as it runs (SI); see geartrib.Case")
+      .def_readonly("title", &Case::title)
+      .def_readonly("source_text", &Case::source_text)
+      .def_readonly("warnings", &Case::warnings)
+      .def_property_readonly("parameters", [](const Case& c) {
+        py::list out;
+        for (const auto& p : c.parameters) out.append(py::make_tuple(p.key, p.value, p.origin));
+        return out;
+      });
+
+  m.def(
+      "run",
+      [](const Case& c) {
+        contact::MeshContactResult r;
+        {
+          py::gil_scoped_release release;
+          r = runs::run_mesh_cycle(c);
+        }
+        return result_dict(r);
+      },
+      py::arg("case"), "The mesh cycle as `geartrib run` runs it: series by group and the run's findings.");
+
+  m.def(
+      "kinematics",
+      [](const Case& c, const std::vector<std::string>& points, int positions) {
+        io::Table t;
+        {
+          py::gil_scoped_release release;
+          const gear::GearMesh mesh(c);
+          t = positions > 0 ? runs::kinematics_table(mesh, positions) : runs::kinematics_table(mesh, points);
+        }
+        py::array_t<double> rows(
+            {static_cast<py::ssize_t>(t.rows.size()), static_cast<py::ssize_t>(t.header.size() - 1)});
+        auto r = rows.mutable_unchecked<2>();
+        for (std::size_t i = 0; i < t.rows.size(); ++i)
+          for (std::size_t j = 0; j < t.rows[i].size(); ++j)
+            r(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(j)) = t.rows[i][j];
+        return py::make_tuple(std::vector<std::string>(t.header.begin() + 1, t.header.end()), t.labels, rows);
+      },
+      py::arg("case"), py::arg("points"), py::arg("positions"),
+      "The `geartrib kinematics` table: (column names with units, row labels, rows).");
+
+  m.def("asperity_models", [] {
+    std::vector<std::string> names;
+    for (auto n : asperity::asperity_model_names()) names.emplace_back(n);
+    return names;
+  });
+
+  m.def(
+      "contact_pair", [](const Case& c) { return pair_dict(asperity::contact_pair(c)); }, py::arg("case"),
+      "The case's equivalent asperity pair (radius, moduli, Poisson's ratio, yield strength, hardness; SI).");
+
+  m.def(
+      "asperity",
+      [](const std::optional<Case>& c, const std::optional<py::dict>& pair_values, const std::string& model_name,
+         const py::array_t<double, py::array::c_style | py::array::forcecast>& delta_star, bool stresses) {
+        const std::vector<double> d = to_vector(delta_star);
+        for (double v : d)
+          if (!(v >= 0.0 && v <= 1e6))
+            throw std::invalid_argument("delta_star must lie in [0, 1e6] (got " + std::to_string(v) + ")");
+        const asperity::ContactPair pair = pair_values ? pair_from(*pair_values) : asperity::contact_pair(*c);
+        const std::unique_ptr<asperity::AsperityModel> model =
+            c ? asperity::make_case_model(*c, model_name) : asperity::make_asperity_model(model_name);
+        constexpr std::size_t kColumns = std::size(runs::kAsperityColumns);
+        std::vector<std::vector<double>> columns(kColumns, std::vector<double>(d.size()));
+        std::vector<std::vector<bool>> flags(3, std::vector<bool>(d.size()));
+        asperity::Critical crit;
+        {
+          py::gil_scoped_release release;
+          crit = model->critical(pair);
+          for (std::size_t i = 0; i < d.size(); ++i) {
+            const asperity::AsperityState s = model->evaluate(
+                pair, d[i] * crit.interference, stresses ? asperity::Detail::full : asperity::Detail::profile);
+            for (std::size_t k = 0; k < kColumns; ++k) columns[k][i] = runs::kAsperityColumns[k].get(s);
+            flags[0][i] = s.beyond_fitted_range;
+            flags[1][i] = s.beyond_paraboloid;
+            flags[2][i] = s.fully_plastic_limit;
+          }
+        }
+        py::list out;
+        for (std::size_t k = 0; k < kColumns; ++k) {
+          const auto& col = runs::kAsperityColumns[k];
+          if (!stresses && (col.quantity == "max_von_mises" || col.quantity == "von_mises_depth")) continue;
+          const std::string unit = col.suffix.empty() ? "1" : std::string(col.suffix.substr(1));
+          out.append(py::make_tuple(std::string(col.quantity), unit, to_array(columns[k])));
+        }
+        const char* flag_names[] = {"beyond_fitted_range", "beyond_paraboloid", "fully_plastic_limit"};
+        for (int k = 0; k < 3; ++k) {
+          py::array_t<bool> a(static_cast<py::ssize_t>(d.size()));
+          for (std::size_t i = 0; i < d.size(); ++i) a.mutable_data()[i] = flags[static_cast<std::size_t>(k)][i];
+          out.append(py::make_tuple(flag_names[k], "1", a));
+        }
+        py::dict critical;
+        critical["interference_m"] = crit.interference;
+        critical["load_N"] = crit.load;
+        critical["area_m2"] = crit.area;
+        critical["peak_pressure_Pa"] = crit.peak_pressure;
+        return py::make_tuple(out, critical, pair_dict(pair), std::string(model->name()),
+                              std::string(model->citation()));
+      },
+      py::arg("case"), py::arg("pair"), py::arg("model"), py::arg("delta_star"), py::arg("stresses"),
+      "One asperity model over an array of delta* = delta/delta_c (the model's own delta_c).");
+
+  m.def(
+      "surface_statistics",
+      [](const py::array_t<double, py::array::c_style | py::array::forcecast>& z, double dx, double dy, int form_degree,
+         double cutoff, double outliers) {
+        if (z.ndim() != 2) throw std::invalid_argument("heights must be a 2-D array (ny, nx)");
+        if (z.shape(0) > std::numeric_limits<int>::max() || z.shape(1) > std::numeric_limits<int>::max())
+          throw std::invalid_argument("height array too large");
+        surface::HeightGrid g =
+            surface::make_grid(static_cast<int>(z.shape(1)), static_cast<int>(z.shape(0)), dx, dy > 0 ? dy : dx);
+        for (std::size_t i = 0; i < g.size(); ++i) {
+          const double v = z.data()[i];
+          if (std::isinf(v)) throw std::invalid_argument("heights must be finite (NaN marks a missing point)");
+          g.z[i] = std::isnan(v) ? 0.0 : v;
+          g.valid[i] = std::isnan(v) ? 0 : 1;
+        }
+        surface::CleanupOptions clean;
+        clean.form_degree = form_degree;
+        clean.waviness_cutoff = cutoff;
+        clean.outlier_limit = outliers;
+        clean.validate();
+        surface::SurfaceStatistics s;
+        surface::CleanupReport report;
+        {
+          py::gil_scoped_release release;
+          g.validate();
+          report = surface::clean_surface(g, clean);
+          s = surface::surface_statistics(g);
+        }
+        py::dict d;
+        d["points"] = s.points;
+        d["missing"] = s.missing;
+        d["outliers"] = report.outliers;
+        d["ra_m"] = s.ra;
+        d["rq_m"] = s.rq;
+        d["rsk"] = s.rsk;
+        d["rku"] = s.rku;
+        d["rz_m"] = s.rz;
+        d["lay_angle_rad"] = s.lay_angle;
+        d["m0_m2"] = s.m0;
+        d["m2_along"] = s.m2_along;
+        d["m4_along_per_m2"] = s.m4_along;
+        d["m2_across"] = s.m2_across;
+        d["m4_across_per_m2"] = s.m4_across;
+        d["summits"] = s.summits;
+        d["summit_density_per_m2"] = s.summit_density;
+        d["summit_radius_m"] = s.summit_radius;
+        d["summit_mean_height_m"] = s.summit_mean_height;
+        d["summit_sigma_m"] = s.summit_sigma;
+        d["mccool_density_per_m2"] = s.mccool_density;
+        d["mccool_radius_m"] = s.mccool_radius;
+        d["mccool_summit_sigma_m"] = s.mccool_summit_sigma;
+        return d;
+      },
+      py::arg("z"), py::arg("dx"), py::arg("dy"), py::arg("form_degree"), py::arg("cutoff"), py::arg("outliers"),
+      "Statistics of a height grid z[y, x] [m] (NaN missing) after the clean-up of `geartrib surface stats`.");
+
+  m.def(
+      "boundary_elements",
+      [](const py::array_t<double, py::array::c_style | py::array::forcecast>& gap, double dx, double modulus,
+         std::optional<double> line_load, std::optional<double> approach, double pressure_cap, bool periodic,
+         double reference_length, double tolerance) {
+        if (gap.ndim() != 1) throw std::invalid_argument("the profile must be a 1-D array");
+        if (line_load.has_value() == approach.has_value())
+          throw std::invalid_argument("give the line load or the approach, one of them");
+        if (gap.size() < 2 || gap.size() > (1 << 24))
+          throw std::invalid_argument("the profile must have 2 to 2^24 elements");
+        contact::HalfPlaneGrid grid{0.0, dx, static_cast<int>(gap.size())};
+        if (!(dx > 0.0 && std::isfinite(dx))) throw std::invalid_argument("dx must be positive and finite");
+        contact::BemOptions o;
+        o.pressure_cap = pressure_cap;
+        o.periodic = periodic;
+        o.reference_length = reference_length;
+        o.tolerance = tolerance;
+        o.validate();
+        const std::vector<double> g0 = to_vector(gap);
+        contact::BemSolution s;
+        {
+          py::gil_scoped_release release;
+          const contact::HalfPlaneBem bem(grid, modulus, o);
+          s = line_load ? bem.solve_load(g0, *line_load) : bem.solve_approach(g0, *approach);
+        }
+        py::dict d;
+        std::vector<double> x(g0.size());
+        for (int i = 0; i < grid.size; ++i) x[static_cast<std::size_t>(i)] = grid.x(i);
+        d["x_m"] = to_array(x);
+        d["pressure_Pa"] = to_array(s.pressure);
+        d["displacement_m"] = to_array(s.displacement);
+        d["gap_m"] = to_array(s.gap);
+        d["approach_m"] = s.approach;
+        d["line_load_N_per_m"] = s.line_load;
+        d["iterations"] = s.iterations;
+        d["coarse_iterations"] = s.coarse_iterations;
+        d["complementarity_error"] = s.complementarity_error;
+        d["contact_elements"] = s.contact_elements;
+        d["capped_elements"] = s.capped_elements;
+        d["seconds"] = s.seconds;
+        return d;
+      },
+      py::arg("gap"), py::arg("dx"), py::arg("modulus"), py::arg("line_load"), py::arg("approach"),
+      py::arg("pressure_cap"), py::arg("periodic"), py::arg("reference_length"), py::arg("tolerance"),
+      "Plane-strain boundary elements of a rigid flat on an elastic half-plane with the undeformed gap given.");
+
+  m.def(
+      "sweep_plan",
+      [](const std::vector<std::string>& axes, bool zip) {
+        const io::SweepPlan plan = make_plan(axes, zip);
+        py::list points;
+        for (std::size_t i = 0; i < plan.size(); ++i) {
+          Changes ch;
+          for (const auto& c : plan.point(i)) ch.emplace_back(c.key, c.value);
+          points.append(py::cast(ch));
+        }
+        return py::make_tuple(points, plan.describe());
+      },
+      py::arg("axes"), py::arg("zip"),
+      "Parses and checks the axes (\"key=v1,v2\" or \"key=lo:hi:n\", as --set of `geartrib sweep`): each "
+      "point's changes and the plan's description.");
+
+  m.def(
+      "sweep_point",
+      [](const std::string& file, const std::optional<std::string>& text, const std::string& name,
+         const std::string& directory, const Changes& base_changes, const Changes& changes, std::size_t index) {
+        const CaseSource src = source_of(file, text, name, directory);
+        std::vector<io::CaseChange> all = to_changes(base_changes);
+        for (const auto& c : to_changes(changes)) all.push_back(c);
+        runs::SweepPoint p;
+        {
+          py::gil_scoped_release release;
+          p = runs::run_sweep_point([&](const std::vector<io::CaseChange>& ch) { return src.load(ch); }, all, index);
+        }
+        return point_dict(p);
+      },
+      py::arg("file"), py::arg("text"), py::arg("name"), py::arg("directory"), py::arg("base_changes"),
+      py::arg("changes"), py::arg("index"),
+      "One sweep point as `geartrib sweep` runs it, as plain Python values (never raises).");
+
+  m.def(
+      "sweep_table",
+      [](const std::vector<std::string>& axes, bool zip, const py::list& points) {
+        const io::SweepPlan plan = make_plan(axes, zip);
+        std::vector<runs::SweepPoint> p;
+        for (const auto& d : points) p.push_back(point_from(d.cast<py::dict>()));
+        return column_list(runs::sweep_table(plan, p));
+      },
+      py::arg("axes"), py::arg("zip"), py::arg("points"),
+      "The sweep's table of points, as `geartrib sweep` writes it.");
+
+  m.def(
+      "read_sweep",
+      [](const std::filesystem::path& path) {
+        const io::ColumnTableFile f = io::read_column_table_hdf5(path);
+        return py::make_tuple(column_list(f.table), f.attributes, f.scene);
+      },
+      py::arg("path"), "A `geartrib sweep` HDF5 file: (columns, /sweep attributes, scene).");
+}

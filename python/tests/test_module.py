@@ -1,0 +1,248 @@
+"""The Python module against the command line (same functions: equal to the last digit the
+command writes), its exceptions, and the physics it exposes against exact values."""
+
+import csv
+import io
+import math
+import threading
+import time
+import tomllib
+
+import h5py
+import numpy as np
+import pytest
+
+import geartrib as gt
+
+DEFAULT = "gears/m6z30.toml"
+
+
+def csv_rows(text):
+    """The rows of a CSV the command printed (comment lines skipped), as dicts of text."""
+    lines = [line for line in text.splitlines() if not line.startswith("#")]
+    return list(csv.DictReader(io.StringIO("\n".join(lines))))
+
+
+def as_printed(value):
+    """A value as the command's CSV prints it (%.10g): equal text is equal to the last digit printed."""
+    return "%.10g" % value
+
+
+# -- the mesh cycle ------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("changes", [{}, {"torque": "2000 Nm", "rq": "0.4um"}])
+def test_run_equals_the_command_bit_for_bit(tool, tmp_path, changes):
+    """Every series of `geartrib run`'s HDF5 (float64) equals the module's array exactly."""
+    sets = [a for k, v in changes.items() for a in ("--set", f"{k}={v.replace(' ', '')}")]
+    tool("run", DEFAULT, *sets, "-q", "-o", tmp_path / "r.h5")
+    result = gt.run(gt.load_case(DEFAULT, **{k: v.replace(" ", "") for k, v in changes.items()}), as_dict=True)
+    compared = 0
+    datasets = []
+    with h5py.File(tmp_path / "r.h5") as f:
+        for group in ("mesh", "contact", "lubrication"):  # contact/validity inside contact
+            f[group].visititems(lambda path, item: datasets.append((path, item[()], item.attrs["units"].decode()))
+                                if isinstance(item, h5py.Dataset) else None)
+    for path, values, unit in datasets:
+        name = path.split("/")[-1]
+        assert name in result, f"{path} missing from the module's result"
+        assert np.array_equal(values, result[name]), name
+        assert unit == result["units"][name], name
+        compared += 1
+    assert compared > 40  # every group of the lubricated default case was there
+
+
+def test_run_as_xarray_dataset():
+    xr = pytest.importorskip("xarray")
+    ds = gt.run(positions=21)
+    assert isinstance(ds, xr.Dataset)
+    assert ds.s_m.size == 21 and ds.s_m.attrs["units"] == "m"
+    assert ds.real_area_ratio.attrs["units"] == "1"
+    assert ds.hertz_p0_Pa.attrs["group"] == "mesh"
+    assert ds.attrs["regime"] in ("elastic", "elastic-plastic", "fully plastic")
+    assert np.all(np.diff(ds.s_m.values) > 0)  # A -> E
+
+
+def test_dict_case_equals_the_file_case():
+    """A case given as a dict of its tables runs exactly as the file it was read from."""
+    with open(DEFAULT, "rb") as f:
+        tables = tomllib.load(f)
+    from_dict = gt.load_case(tables, directory="gears")
+    a = gt.run(from_dict, as_dict=True)
+    b = gt.run(gt.load_case(DEFAULT), as_dict=True)
+    for name, unit in b["units"].items():
+        assert np.array_equal(a[name], b[name]), name
+
+
+def test_changes_are_recorded_with_their_origin():
+    case = gt.load_case().set(torque="2000 Nm", positions=41)
+    value, origin = case.parameters["operating.pinion_torque"]
+    assert value == "2000 N m" and "--set" in origin
+    assert case["contact.positions"] == "41"
+    assert gt.load_case()["operating.pinion_torque"] != value  # the original case is unchanged
+
+
+# -- kinematics and asperity laws ----------------------------------------------------------------
+
+def test_kinematics_equals_the_command(tool):
+    rows = csv_rows(tool("kinematics", DEFAULT, "--points", "A,B,C,D,E", "--csv").stdout)
+    k = gt.kinematics(gt.load_case(DEFAULT))
+    assert list(k["point"]) == ["A", "B", "C", "D", "E"]
+    for i, row in enumerate(rows):
+        for name, text in row.items():
+            if name != "point":
+                assert as_printed(k[name][i]) == text, (row["point"], name)
+
+
+def test_kinematics_positions():
+    k = gt.kinematics(positions=11)
+    assert k["s_m"].size == 11 and np.all(np.diff(k["s_m"]) > 0)
+    with pytest.raises(ValueError, match="unknown point 'F'"):
+        gt.kinematics(points="AF")
+
+
+@pytest.mark.parametrize("model", ["continuous", "kogut-etsion", "jackson-green"])
+def test_asperity_equals_the_command(tool, model):
+    d = [0.5, 1.0, 6.0, 30.0, 200.0]
+    rows = csv_rows(tool("asperity", "--case", DEFAULT, "--model", model, "--delta-star",
+                         *map(str, d), "--csv").stdout)
+    a = gt.asperity(d, model, as_dict=True)
+    assert len(rows) == len(d)
+    for i, row in enumerate(rows):
+        for column, text in row.items():
+            name = next(n for n in a["units"] if column == n or column.startswith(n + "_")
+                        and column[len(n) + 1:] == a["units"][n])
+            assert as_printed(a[name][i]) == text, (model, column)
+
+
+def test_asperity_laws_keep_their_identities():
+    """At delta* = 1 every law is at first yield: F = F_c, A = A_c (Hertz at the critical
+    interference; exact up to the laws' fitted constants, 1e-12 for the rounding of the powers)."""
+    for model in gt.asperity_models():
+        a = gt.asperity([1.0], model, as_dict=True)
+        if model in ("hertz", "continuous", "kogut-etsion", "ceb"):
+            assert a["load_star"][0] == pytest.approx(1.0, rel=1e-12), model
+            assert a["area_star"][0] == pytest.approx(1.0, rel=1e-12), model
+    # Load grows with the interference for every law, over nine decades of delta*.
+    d = np.logspace(-3, 6, 200)
+    for model in gt.asperity_models():
+        load = gt.asperity(d, model, stresses=False, as_dict=True)["load"]
+        assert np.all(np.isfinite(load)) and np.all(np.diff(load) > 0), model
+
+
+def test_asperity_given_pair_and_bad_input():
+    pair = gt._core.contact_pair(gt.load_case().loaded)
+    a = gt.asperity([2.0], "hertz", pair=pair, as_dict=True)
+    b = gt.asperity([2.0], "hertz", as_dict=True)
+    assert a["load"][0] == b["load"][0]
+    with pytest.raises(ValueError, match="delta_star must lie in"):
+        gt.asperity([-1.0])
+    with pytest.raises(ValueError, match="unknown"):
+        gt.asperity([1.0], "no-such-model")
+
+
+# -- errors --------------------------------------------------------------------------------------
+
+def test_input_error_carries_the_command_lines_message(tool):
+    done = tool("run", DEFAULT, "--set", "torque=-5Nm", "-q", "-o", "/nonexistent/x.h5", check=False)
+    assert done.returncode == 2
+    with pytest.raises(gt.InputError) as e:
+        gt.load_case(DEFAULT, torque="-5Nm")
+    assert done.stderr.strip() == "geartrib: error: " + str(e.value)
+    assert e.value.key == "operating.pinion_torque" and e.value.value == '"-5Nm"'
+    assert "positive" in e.value.rule and e.value.file.startswith(DEFAULT)
+    assert isinstance(e.value, ValueError)
+
+
+def test_input_error_points_at_the_line(tmp_path):
+    lines = open(DEFAULT).read().splitlines()
+    at = next(i for i, line in enumerate(lines) if line.startswith("module = "))
+    lines[at] = 'module = "6 parsecs"'
+    bad = tmp_path / "bad.toml"
+    bad.write_text("\n".join(lines) + "\n")
+    with pytest.raises(gt.InputError) as e:
+        gt.load_case(bad)
+    assert (e.value.file, e.value.line, e.value.key) == (str(bad), at + 1, "gear_pair.module")
+    assert "parsecs" in str(e.value)
+
+
+def test_unknown_key_is_refused():
+    with pytest.raises(gt.InputError, match="no_such_key"):
+        gt.load_case(**{"gear_pair.no_such_key": 1})
+
+
+# -- surfaces and boundary elements --------------------------------------------------------------
+
+def test_surface_statistics_equal_the_command(tool, tmp_path):
+    path = tmp_path / "s.h5"
+    tool("surface", "generate", "self-affine", "-o", path)
+    rows = {r["quantity"]: r["value"] for r in csv_rows(tool("surface", "stats", path, "--csv").stdout)}
+    with h5py.File(path) as f:
+        z, dx, dy = f["z"][()], f["z"].attrs["dx"], f["z"].attrs["dy"]
+    s = gt.surface_statistics(z, dx, dy)
+    pairs = {"Ra_m": "ra_m", "Rq_m": "rq_m", "Rsk": "rsk", "Rku": "rku", "Rz_m": "rz_m", "m0_m2": "m0_m2",
+             "summit_density_1_per_m2": "summit_density_per_m2", "summit_radius_m": "summit_radius_m",
+             "summit_sigma_m": "summit_sigma_m", "summits": "summits"}
+    for command, module in pairs.items():
+        assert as_printed(s[module]) == rows[command], command
+
+
+def test_surface_statistics_of_a_known_surface():
+    """A sine of amplitude a along x, whole periods, no form removed: Rq = a/sqrt(2) (the sampled
+    sine's mean square is exactly 1/2) and Ra = a (2/N) cot(pi/N) for N points a period (the
+    sampled |sin|'s mean, -> 2a/pi); 1e-12 for rounding."""
+    nx, ny, periods, a = 256, 16, 8, 1e-6
+    x = np.arange(nx) / nx * 2 * np.pi * periods
+    z = np.tile(a * np.sin(x), (ny, 1))
+    s = gt.surface_statistics(z, 1e-6, form=0)
+    assert s["rq_m"] == pytest.approx(a / math.sqrt(2), rel=1e-12)
+    per_period = nx // periods
+    assert s["ra_m"] == pytest.approx(a * 2 / per_period / math.tan(math.pi / per_period), rel=1e-12)
+    z[3, 5] = np.nan
+    assert gt.surface_statistics(z, 1e-6, form=0)["missing"] == 1
+    with pytest.raises(ValueError):
+        gt.surface_statistics(np.ones(10), 1e-6)
+
+
+def test_boundary_elements_reach_hertz():
+    """A cylinder of radius R on a half-plane: Hertz's p0 = sqrt(P E*/(pi R)), half-width
+    b = sqrt(4 P R/(pi E*)). 4096 elements over 4 b: the peak within 0.5% (the constant-pressure
+    elements' discretisation error at b/1000 spacing is ~1e-3)."""
+    R, E, P = 10e-3, 2.26e11, 2e5
+    b = math.sqrt(4 * P * R / (math.pi * E))
+    n = 4096
+    dx = 4 * b / n
+    x = (np.arange(n) + 0.5) * dx - 2 * b
+    r = gt.boundary_elements(-x**2 / (2 * R), dx, E, line_load=P)
+    assert r["line_load_N_per_m"] == pytest.approx(P, rel=1e-9)  # load control: the load exactly
+    assert r["pressure_Pa"].max() == pytest.approx(math.sqrt(P * E / (math.pi * R)), rel=5e-3)
+    half = r["contact_elements"] * dx / 2
+    assert half == pytest.approx(b, rel=5e-3)
+    with pytest.raises(ValueError, match="one of them"):
+        gt.boundary_elements(x, dx, E)
+
+
+def test_computation_releases_the_gil():
+    """While one thread solves a large boundary-element problem, another keeps counting."""
+    n = 1 << 17
+    dx = 1e-7
+    x = (np.arange(n) + 0.5) * dx
+    profile = 1e-7 * np.sin(2 * np.pi * x / 5e-6) - (x - x.mean())**2 / 2e-2
+    count = [0]
+    done = threading.Event()
+
+    def counter():
+        while not done.is_set():
+            count[0] += 1
+            time.sleep(0)
+
+    t = threading.Thread(target=counter)
+    t.start()
+    start = time.perf_counter()
+    before = count[0]
+    gt.boundary_elements(profile, dx, 2.26e11, line_load=1e5)
+    elapsed = time.perf_counter() - start
+    during = count[0] - before
+    done.set()
+    t.join()
+    assert elapsed > 0.02  # long enough for the counter to run many times
+    assert during > 100, f"the counter ran {during} times in {elapsed:.3f} s: the GIL was held"

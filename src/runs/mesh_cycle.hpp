@@ -1,0 +1,18 @@
+// The mesh cycle of a case as the case asks for it: what `geartrib run`, `geartrib sweep` and
+// the Python module run. The runs/ folder holds what the command line and the Python module
+// both run on a case (no files, no command line).
+#pragma once
+
+#include "case/case.hpp"
+#include "contact/mesh_contact.hpp"
+
+#include <functional>
+
+namespace geartrib::runs {
+
+// KINSOL when coupled, the case's integrator when it asks for dynamics. Throws io::InputError
+// located at the case (an overload at the torque, naming the flanks' roughness; a value the
+// physics refused at the case file) and std::runtime_error on a non-finite output. Thread-safe.
+contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress = {});
+
+}  // namespace geartrib::runs
