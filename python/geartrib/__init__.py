@@ -16,8 +16,10 @@ key, value and rule. The computation releases the GIL. docs/guide/python.md is t
 
 from __future__ import annotations
 
+import json
 import math
 import os
+import re
 from pathlib import Path
 from typing import Any, Iterable, Mapping, Sequence
 
@@ -37,6 +39,8 @@ __all__ = [
     "asperity",
     "asperity_models",
     "surface_statistics",
+    "read_surface",
+    "write_surface",
     "boundary_elements",
     "sweep",
     "read_sweep",
@@ -74,7 +78,7 @@ def default_case_file() -> Path:
 
 def _value_text(value: Any) -> str:
     """A value as typed after --set: strings as they are, numbers exactly (repr), booleans as TOML."""
-    if isinstance(value, bool):
+    if isinstance(value, (bool, np.bool_)):
         return "true" if value else "false"
     if isinstance(value, (int, np.integer)):
         return str(int(value))
@@ -83,29 +87,42 @@ def _value_text(value: Any) -> str:
             raise ValueError(f"{value!r}: a case value must be finite")
         return repr(float(value))
     if isinstance(value, (list, tuple)):
-        return "[" + ", ".join(f'"{v}"' if isinstance(v, str) else _value_text(v) for v in value) + "]"
+        return "[" + ", ".join(_toml_value(v, "an array item") for v in value) + "]"
+    if value is None:
+        raise ValueError("a case value cannot be None (leave the key out for its default)")
     return str(value)
 
 
+def _toml_value(value: Any, where: str) -> str:
+    """A value as TOML writes it: strings quoted and escaped (JSON's escapes are TOML's)."""
+    if isinstance(value, str):
+        return json.dumps(value, ensure_ascii=False)
+    if isinstance(value, Mapping):
+        raise ValueError(f"{where}: a table inside an array is not a case file's form")
+    return _value_text(value)
+
+
+def _toml_key(key: str) -> str:
+    return key if _BARE_KEY.fullmatch(key) else json.dumps(key, ensure_ascii=False)
+
+
+_BARE_KEY = re.compile(r"[A-Za-z0-9_-]+")
+
+
 def _toml(table: Mapping[str, Any], prefix: str = "") -> str:
-    """A nested dict as TOML text: scalars first, then sub-tables."""
+    """A nested dict as TOML text: a table's values first, then its sub-tables."""
     lines, tables = [], []
     for key, value in table.items():
+        key = str(key)
         if isinstance(value, Mapping):
             tables.append((key, value))
-        elif isinstance(value, str):
-            lines.append(f"{key} = {_quote(value)}")
         else:
-            lines.append(f"{key} = {_value_text(value)}")
+            lines.append(f"{_toml_key(key)} = {_toml_value(value, key)}")
     out = "\n".join(lines) + ("\n" if lines else "")
     for key, value in tables:
-        name = f"{prefix}.{key}" if prefix else key
+        name = f"{prefix}.{_toml_key(key)}" if prefix else _toml_key(key)
         out += f"\n[{name}]\n" + _toml(value, name)
     return out
-
-
-def _quote(text: str) -> str:
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
 
 class Case:
@@ -127,8 +144,9 @@ class Case:
             self.file = ""
             self.name = str(name or "<dict>.toml")
         self.text = text
-        # Relative file names (materials, lubricant, topography) resolve here, on any machine.
-        self.directory = os.path.abspath(os.path.dirname(self.name) or ".")
+        # Relative file names (materials, lubricant, topography) are taken from here: the case
+        # file's folder as given (messages name files as the command line does).
+        self.directory = os.path.dirname(self.name)
         self.changes = tuple((str(k), str(v)) for k, v in changes)
         self._loaded = None
 
@@ -136,15 +154,20 @@ class Case:
     def from_dict(cls, tables: Mapping[str, Any], directory: str | os.PathLike = ".") -> "Case":
         """A case from a dict of the case file's tables ({"gear_pair": {"module": "6 mm", ...}, ...});
         relative file names (materials, lubricant, topography) are taken from `directory`."""
-        return cls(text=_toml(tables), name=str(Path(directory) / "<dict>.toml"))
+        case = cls(text=_toml(tables), name=os.path.join(str(directory), "<dict>.toml"))
+        case.directory = str(directory)
+        return case
 
     def set(self, changes: Mapping[str, Any] | None = None, **keys: Any) -> "Case":
         """A new case with these keys changed: ``case.set(torque="2000 Nm")`` or
         ``case.set({"pinion.flank.ra": "0.4 um"})``."""
         new = dict(changes or {})
         new.update(keys)
-        case = Case(self.file or None, text=self.text, name=self.name,
-                    changes=self.changes + tuple((k, _value_text(v)) for k, v in new.items()))
+        merged = dict(self.changes)  # a key set again takes its new value, applied last
+        for k, v in new.items():
+            merged.pop(str(k), None)
+            merged[str(k)] = _value_text(v)
+        case = Case(self.file or None, text=self.text, name=self.name, changes=tuple(merged.items()))
         case.directory = self.directory
         return case
 
@@ -164,6 +187,11 @@ class Case:
     def warnings(self) -> list[str]:
         return list(self.loaded.warnings)
 
+    def __getstate__(self):  # pickled without the loaded case (a task's argument): loaded again there
+        state = dict(self.__dict__)
+        state["_loaded"] = None
+        return state
+
     def __getitem__(self, key: str) -> str:
         return self.parameters[key][0]
 
@@ -171,11 +199,12 @@ class Case:
         more = "".join(f", {k}={v}" for k, v in self.changes)
         return f"Case({self.name}{more})"
 
-    def _portable(self) -> tuple[str, str, str, str]:
+    def _portable(self) -> tuple[str, str, str, str, str]:
         """The case as another process or machine loads it: its text, the name it goes by in
-        messages and the absolute folder of its relative file names (on a shared file system)."""
+        messages, the folder of its relative file names, and this process's working directory
+        (which that folder is relative to; on a shared file system)."""
         text = self.text if self.text is not None else _core.read_case_text(self.file)
-        return "", text, self.name, self.directory
+        return "", text, self.name, self.directory, os.getcwd()
 
 
 def load_case(file: str | os.PathLike | Mapping[str, Any] | None = None, *, directory=".",
@@ -250,7 +279,7 @@ def run(case=None, *, positions: int | None = None, as_dict: bool = False):
                 flat[k] = "\n".join(v)
             else:
                 flat[k] = v
-        attrs = flat
+        attrs = {k: int(v) if isinstance(v, bool) else v for k, v in flat.items()}  # netCDF has no bool
     return _dataset("s_m", series, attrs, as_dict)
 
 
@@ -260,7 +289,7 @@ def kinematics(case=None, points: str | Sequence[str] = "ABCDE", *, positions: i
     arrays by column (names carry units: s_m, hertz_p0_Pa) with "point" the row labels."""
     case = _as_case(case)
     names = list(points) if isinstance(points, str) else list(points)
-    header, labels, rows = _core.kinematics(case.loaded, names, positions or 0)
+    header, labels, rows = _core.kinematics(case.loaded, names, positions)
     out = {"point": np.array(labels)}
     for j, name in enumerate(header):
         out[name] = rows[:, j].copy()
@@ -280,13 +309,15 @@ def asperity(delta_star, model: str = "continuous", *, case=None, pair: Mapping[
     yield_strength, hardness; SI) is the case's equivalent asperity unless `pair` is given.
     An xarray Dataset over delta_star (a dict without xarray); attrs: the critical values."""
     d = np.atleast_1d(np.asarray(delta_star, dtype=float))
+    if d.ndim != 1:
+        raise ValueError("delta_star must be a number or a 1-D array")
     loaded = None if pair is not None and case is None else _as_case(case).loaded
-    columns, critical, pair_used, name, citation = _core.asperity(loaded, dict(pair) if pair else None, model,
-                                                                  d.ravel(), stresses)
+    columns, critical, pair_used, name, citation = _core.asperity(loaded, dict(pair) if pair is not None else None,
+                                                                  model, d.ravel(), stresses)
     attrs = {"model": name, "citation": citation}
     attrs.update({f"critical_{k}": v for k, v in critical.items()})
     attrs.update({f"pair_{k}": v for k, v in pair_used.items()})
-    series = [(n, u, v.reshape(d.shape) if d.ndim == 1 else v, "asperity") for n, u, v in columns]
+    series = [(n, u, v, "asperity") for n, u, v in columns]
     return _dataset("delta_star", series, attrs, as_dict)
 
 
@@ -298,6 +329,20 @@ def surface_statistics(z, dx: float, dy: float | None = None, *, form: int = 2, 
     and McCool's estimates; keys carry units."""
     z = np.ascontiguousarray(z, dtype=float)
     return _core.surface_statistics(z, float(dx), float(dy or 0.0), int(form), float(cutoff), float(outliers))
+
+
+def read_surface(path: str | os.PathLike, *, unit: float = 1e-6, spacing: float = 0.0):
+    """A topography file as ``geartrib surface`` reads it (by extension: .x3p, .h5, .xyz, .csv, ...;
+    docs/guide/surface.md): ``(z, dx, dy)`` with z[y, x] in metres (NaN: missing) and the spacings
+    [m]. `unit`: metres per length unit of ASCII files that do not state one; `spacing`: the grid
+    spacing of grid files without one (file units). X3P and HDF5 files are in metres."""
+    return _core.read_surface(str(path), float(unit), float(spacing))
+
+
+def write_surface(path: str | os.PathLike, z, dx: float, dy: float | None = None, *, unit: float = 1e-6) -> None:
+    """Writes a height grid z[y, x] [m] (NaN: missing) in the format of the extension, atomically:
+    .x3p (ISO 25178-72, float64 heights in metres), .h5, or ASCII lengths in `unit` metres."""
+    _core.write_surface(str(path), np.ascontiguousarray(z, dtype=float), float(dx), float(dy or 0.0), float(unit))
 
 
 def boundary_elements(profile, dx: float, modulus: float, *, line_load: float | None = None,
@@ -327,15 +372,22 @@ def _axis_text(key: str, values) -> str:
     """An axis as `geartrib sweep --set` takes it: key=v1,v2 or key=lo:hi:n."""
     if isinstance(values, str):
         return f"{key}={values}"
-    values = list(values)
+    values = [_value_text(v) for v in values]
     if not values:
         raise ValueError(f"sweep axis {key!r} has no values")
-    return f"{key}=" + ",".join(_value_text(v) for v in values)
+    for v in values:  # the axis is parsed as the command line's: a comma or a range would split it
+        if "," in v or (len(values) == 1 and v.count(":") == 2):
+            raise ValueError(f"sweep axis {key!r}: value {v!r} cannot be swept (a ',' or 'lo:hi:n' in a value)")
+    return f"{key}=" + ",".join(values)
 
 
 def _run_point(source, base_changes, changes, index):
-    """One point, on whichever worker runs it (the result is plain Python values)."""
-    file, text, name, directory = source
+    """One point, on whichever worker runs it (the result is plain Python values). A worker in the
+    submitting process's working directory names files as the command line does; elsewhere the
+    relative folder is taken from that directory (messages then name it in full)."""
+    file, text, name, directory, cwd = source
+    if not os.path.isabs(directory) and os.path.realpath(os.getcwd()) != os.path.realpath(cwd):
+        directory = os.path.join(cwd, directory)
     return _core.sweep_point(file, text, name, directory, base_changes, changes, index)
 
 

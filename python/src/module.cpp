@@ -17,6 +17,7 @@
 #include "io/input_error.hpp"
 #include "io/sweep_plan.hpp"
 #include "io/text_lines.hpp"
+#include "io/topography_files.hpp"
 #include "runs/asperity_columns.hpp"
 #include "runs/kinematics_table.hpp"
 #include "runs/mesh_cycle.hpp"
@@ -29,6 +30,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -192,14 +194,49 @@ std::vector<double> to_vector(const py::array_t<double, py::array::c_style | py:
   return std::vector<double>(a.data(), a.data() + a.size());
 }
 
+using HeightArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// A height array z[y, x] [m] (NaN: missing) as a grid of spacing dx, dy [m] (dy = 0: dx), within
+// the grid limits (surface::make_grid checks the size before allocating).
+surface::HeightGrid grid_from(const HeightArray& z, double dx, double dy) {
+  if (dy < 0.0) throw std::invalid_argument("dy must be positive (or absent: dx)");
+  if (z.ndim() != 2) throw std::invalid_argument("heights must be a 2-D array (ny, nx)");
+  if (z.shape(0) > std::numeric_limits<int>::max() || z.shape(1) > std::numeric_limits<int>::max())
+    throw std::invalid_argument("height array too large");
+  surface::HeightGrid g =
+      surface::make_grid(static_cast<int>(z.shape(1)), static_cast<int>(z.shape(0)), dx, dy > 0 ? dy : dx);
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const double v = z.data()[i];
+    if (std::isinf(v)) throw std::invalid_argument("heights must be finite (NaN marks a missing point)");
+    g.z[i] = std::isnan(v) ? 0.0 : v;
+    g.valid[i] = std::isnan(v) ? 0 : 1;
+  }
+  return g;
+}
+
+// The pair's six values by name (SI), each a number; ContactPair::validate checks their ranges.
 asperity::ContactPair pair_from(const py::dict& d) {
   asperity::ContactPair p;
-  p.radius = d["radius"].cast<double>();
-  p.modulus = d["modulus"].cast<double>();
-  p.youngs_modulus = d["youngs_modulus"].cast<double>();
-  p.poisson_ratio = d["poisson_ratio"].cast<double>();
-  p.yield_strength = d["yield_strength"].cast<double>();
-  p.hardness = d["hardness"].cast<double>();
+  const std::pair<const char*, double*> fields[] = {{"radius", &p.radius},
+                                                    {"modulus", &p.modulus},
+                                                    {"youngs_modulus", &p.youngs_modulus},
+                                                    {"poisson_ratio", &p.poisson_ratio},
+                                                    {"yield_strength", &p.yield_strength},
+                                                    {"hardness", &p.hardness}};
+  for (const auto& [name, value] : fields) {
+    if (!d.contains(name))
+      throw std::invalid_argument(std::string("pair: no '") + name +
+                                  "' (give radius, modulus, youngs_modulus, poisson_ratio, yield_strength, hardness)");
+    try {
+      *value = py::float_(d[name]).cast<double>();
+    } catch (const py::error_already_set&) {
+      throw std::invalid_argument(std::string("pair: '") + name + "' must be a number");
+    }
+  }
+  for (const auto& item : d)
+    if (std::none_of(std::begin(fields), std::end(fields),
+                     [&](const auto& f) { return py::str(item.first).cast<std::string>() == f.first; }))
+      throw std::invalid_argument("pair: unknown key '" + py::str(item.first).cast<std::string>() + "'");
   p.validate();
   return p;
 }
@@ -279,12 +316,12 @@ PYBIND11_MODULE(_geartrib, m) {
 
   m.def(
       "kinematics",
-      [](const Case& c, const std::vector<std::string>& points, int positions) {
+      [](const Case& c, const std::vector<std::string>& points, std::optional<int> positions) {
         io::Table t;
         {
           py::gil_scoped_release release;
           const gear::GearMesh mesh(c);
-          t = positions > 0 ? runs::kinematics_table(mesh, positions) : runs::kinematics_table(mesh, points);
+          t = positions ? runs::kinematics_table(mesh, *positions) : runs::kinematics_table(mesh, points);
         }
         py::array_t<double> rows(
             {static_cast<py::ssize_t>(t.rows.size()), static_cast<py::ssize_t>(t.header.size() - 1)});
@@ -315,6 +352,7 @@ PYBIND11_MODULE(_geartrib, m) {
         for (double v : d)
           if (!(v >= 0.0 && v <= 1e6))
             throw std::invalid_argument("delta_star must lie in [0, 1e6] (got " + std::to_string(v) + ")");
+        if (!c && !pair_values) throw std::invalid_argument("give a case or a pair");
         const asperity::ContactPair pair = pair_values ? pair_from(*pair_values) : asperity::contact_pair(*c);
         const std::unique_ptr<asperity::AsperityModel> model =
             c ? asperity::make_case_model(*c, model_name) : asperity::make_asperity_model(model_name);
@@ -360,19 +398,8 @@ PYBIND11_MODULE(_geartrib, m) {
 
   m.def(
       "surface_statistics",
-      [](const py::array_t<double, py::array::c_style | py::array::forcecast>& z, double dx, double dy, int form_degree,
-         double cutoff, double outliers) {
-        if (z.ndim() != 2) throw std::invalid_argument("heights must be a 2-D array (ny, nx)");
-        if (z.shape(0) > std::numeric_limits<int>::max() || z.shape(1) > std::numeric_limits<int>::max())
-          throw std::invalid_argument("height array too large");
-        surface::HeightGrid g =
-            surface::make_grid(static_cast<int>(z.shape(1)), static_cast<int>(z.shape(0)), dx, dy > 0 ? dy : dx);
-        for (std::size_t i = 0; i < g.size(); ++i) {
-          const double v = z.data()[i];
-          if (std::isinf(v)) throw std::invalid_argument("heights must be finite (NaN marks a missing point)");
-          g.z[i] = std::isnan(v) ? 0.0 : v;
-          g.valid[i] = std::isnan(v) ? 0 : 1;
-        }
+      [](const HeightArray& z, double dx, double dy, int form_degree, double cutoff, double outliers) {
+        surface::HeightGrid g = grid_from(z, dx, dy);
         surface::CleanupOptions clean;
         clean.form_degree = form_degree;
         clean.waviness_cutoff = cutoff;
@@ -415,6 +442,36 @@ PYBIND11_MODULE(_geartrib, m) {
       "Statistics of a height grid z[y, x] [m] (NaN missing) after the clean-up of `geartrib surface stats`.");
 
   m.def(
+      "read_surface",
+      [](const std::filesystem::path& path, double unit, double spacing) {
+        io::TopographyReadOptions o;
+        o.unit = unit;
+        o.spacing = spacing;
+        surface::HeightGrid g;
+        {
+          py::gil_scoped_release release;
+          g = io::read_topography(path, o);
+        }
+        py::array_t<double> z({static_cast<py::ssize_t>(g.ny), static_cast<py::ssize_t>(g.nx)});
+        double* out = z.mutable_data();
+        for (std::size_t i = 0; i < g.size(); ++i) out[i] = g.valid[i] ? g.z[i] : std::nan("");
+        return py::make_tuple(z, g.dx, g.dy);
+      },
+      py::arg("path"), py::arg("unit"), py::arg("spacing"),
+      "A topography file as `geartrib surface` reads it: (z[y, x] in m with NaN missing, dx, dy).");
+
+  m.def(
+      "write_surface",
+      [](const std::filesystem::path& path, const HeightArray& z, double dx, double dy, double unit) {
+        surface::HeightGrid g = grid_from(z, dx, dy);
+        g.validate();
+        py::gil_scoped_release release;
+        io::write_topography(path, g, unit);
+      },
+      py::arg("path"), py::arg("z"), py::arg("dx"), py::arg("dy"), py::arg("unit"),
+      "Writes a height grid in the format of the extension (.x3p, .h5, .csv, ...), atomically.");
+
+  m.def(
       "boundary_elements",
       [](const py::array_t<double, py::array::c_style | py::array::forcecast>& gap, double dx, double modulus,
          std::optional<double> line_load, std::optional<double> approach, double pressure_cap, bool periodic,
@@ -424,6 +481,11 @@ PYBIND11_MODULE(_geartrib, m) {
           throw std::invalid_argument("give the line load or the approach, one of them");
         if (gap.size() < 2 || gap.size() > (1 << 24))
           throw std::invalid_argument("the profile must have 2 to 2^24 elements");
+        for (py::ssize_t i = 0; i < gap.size(); ++i)
+          if (!std::isfinite(gap.data()[i]))
+            throw std::invalid_argument("the profile (gap) must be finite: element " + std::to_string(i));
+        if ((line_load && !(std::isfinite(*line_load) && *line_load >= 0.0)) || (approach && !std::isfinite(*approach)))
+          throw std::invalid_argument("the line load must be finite and >= 0, the approach finite");
         contact::HalfPlaneGrid grid{0.0, dx, static_cast<int>(gap.size())};
         if (!(dx > 0.0 && std::isfinite(dx))) throw std::invalid_argument("dx must be positive and finite");
         contact::BemOptions o;

@@ -8,6 +8,9 @@ from pathlib import Path
 import pytest
 
 SOURCE = Path(__file__).resolve().parents[2]
+# Relative case paths as in the command's examples (gears/m6z30.toml), also for the Dask workers a
+# module-scoped cluster starts before any test runs.
+os.chdir(SOURCE)
 
 
 @pytest.fixture(scope="session")

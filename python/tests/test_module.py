@@ -203,6 +203,23 @@ def test_surface_statistics_of_a_known_surface():
         gt.surface_statistics(np.ones(10), 1e-6)
 
 
+def test_x3p_from_python_reads_back_bit_for_bit(tool, tmp_path):
+    """An X3P the command writes reads into the same heights as its HDF5 twin; one Python writes
+    reads back bit for bit (NaN holes kept)."""
+    tool("surface", "generate", "self-affine", "--seed", "7", "-o", tmp_path / "a.x3p")
+    tool("surface", "generate", "self-affine", "--seed", "7", "-o", tmp_path / "a.h5")
+    z, dx, dy = gt.read_surface(tmp_path / "a.x3p")
+    z5, dx5, dy5 = gt.read_surface(tmp_path / "a.h5")
+    assert (dx, dy) == (dx5, dy5) and np.array_equal(z, z5)
+    z[2, 3] = np.nan
+    gt.write_surface(tmp_path / "b.x3p", z, dx, 2 * dy)
+    back, bdx, bdy = gt.read_surface(tmp_path / "b.x3p")
+    assert (bdx, bdy) == (dx, 2 * dy)
+    assert back.tobytes() == z.tobytes()  # NaN included: the same bits
+    with pytest.raises(gt.InputError, match="nope.x3p"):
+        gt.read_surface(tmp_path / "nope.x3p")
+
+
 def test_boundary_elements_reach_hertz():
     """A cylinder of radius R on a half-plane: Hertz's p0 = sqrt(P E*/(pi R)), half-width
     b = sqrt(4 P R/(pi E*)). 4096 elements over 4 b: the peak within 0.5% (the constant-pressure
@@ -246,3 +263,79 @@ def test_computation_releases_the_gil():
     t.join()
     assert elapsed > 0.02  # long enough for the counter to run many times
     assert during > 100, f"the counter ran {during} times in {elapsed:.3f} s: the GIL was held"
+
+
+# -- what a review found -------------------------------------------------------------------------
+
+def test_threads_plan_fft_concurrently():
+    """FFTW's planner is not thread-safe: boundary elements of many sizes on two threads at once
+    (each solve plans and destroys FFTs) give the serial results (bit for bit) and no crash."""
+    sizes = list(range(8, 400, 7))
+
+    def solve(n):
+        return gt.boundary_elements(np.sin(np.arange(n)) * 1e-7, 1e-7, 1e11, approach=2e-8)["pressure_Pa"]
+
+    serial = [solve(n) for n in sizes]
+    results = {}
+
+    def worker(tag, order):
+        results[tag] = [solve(n) for n in order]
+
+    threads = [threading.Thread(target=worker, args=("a", sizes)),
+               threading.Thread(target=worker, args=("b", sizes[::-1]))]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert all(np.array_equal(a, b) for a, b in zip(results["a"], serial))
+    assert all(np.array_equal(a, b) for a, b in zip(results["b"], serial[::-1]))
+
+
+def test_bad_arguments_raise_value_errors(tmp_path):
+    with pytest.raises(ValueError, match="no 'radius'"):
+        gt.asperity([1.0], pair={})
+    pair = gt._core.contact_pair(gt.load_case().loaded)
+    with pytest.raises(ValueError, match="'hardness' must be a number"):
+        gt.asperity([1.0], pair=dict(pair, hardness="hard"))
+    with pytest.raises(ValueError, match="unknown key 'colour'"):
+        gt.asperity([1.0], pair=dict(pair, colour=1.0))
+    with pytest.raises(ValueError, match="1-D"):
+        gt.asperity(np.ones((2, 2)))
+    with pytest.raises(ValueError, match="must be finite"):
+        gt.boundary_elements([0.0, np.nan, 1e-7, 0.0], 1e-7, 1e11, line_load=100.0)
+    with pytest.raises(ValueError, match="line load must be finite"):
+        gt.boundary_elements([0.0, 1e-7, 0.0], 1e-7, 1e11, line_load=math.inf)
+    with pytest.raises(ValueError, match=r"positions must lie in \[2, 100000\]"):
+        gt.kinematics(positions=0)
+    with pytest.raises(ValueError, match="m, mm, um or nm"):
+        gt.write_surface(tmp_path / "u.csv", np.zeros((4, 4)), 1e-6, unit=2e-6)
+    assert not (tmp_path / "u.csv").exists()
+    with pytest.raises(ValueError, match="dy must be positive"):
+        gt.surface_statistics(np.zeros((4, 4)), 1e-6, -1e-6)
+
+
+def test_dict_to_toml_round_trips():
+    """The dict a case is given as is the dict its TOML text reads back as (tomllib)."""
+    tables = {"title": 'a "quoted"\\ title\nover two lines \u00e9', "flag": True, "n": 3, "x": 0.1,
+              "list": ["a,b", 'q"', 2.5], "gear_pair": {"module": "6 mm", "odd key": 1, "a.b": {"c": "d"}}}
+    assert tomllib.loads(gt._toml(tables)) == tables
+    with pytest.raises(ValueError, match="None"):
+        gt._toml({"x": None})
+
+
+def test_a_key_set_again_takes_its_new_value():
+    case = gt.Case(DEFAULT).set(torque="-5Nm").set(torque="5Nm")
+    assert case["operating.pinion_torque"] == "5 N m"
+    assert case.changes == (("torque", "5Nm"),)
+
+
+def test_case_pickles_and_results_are_netcdf_attributes():
+    import pickle
+    case = gt.load_case(torque="1500Nm")
+    again = pickle.loads(pickle.dumps(case))
+    assert again["operating.pinion_torque"] == "1500 N m"
+    xr = pytest.importorskip("xarray")
+    ds = gt.run(case, positions=11)
+    assert isinstance(ds, xr.Dataset)
+    assert all(isinstance(v, (str, int, float, np.integer, np.floating)) and not isinstance(v, bool)
+               for v in ds.attrs.values())

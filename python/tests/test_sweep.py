@@ -48,6 +48,18 @@ def test_dask_sweep_equals_the_command(tool, tmp_path, client):
     assert command.attrs["sweep"]["points_total"] == "4"
 
 
+def test_failed_points_name_files_as_the_command_does(tool, tmp_path, client):
+    """A point whose material file is missing: the same message as the command's, path and all."""
+    sets = ["--set", "pinion.material=../materials/none.toml,../materials/steel-45.toml", "--set", "positions=11"]
+    tool("sweep", DEFAULT, *sets, "--threads", "1", "-q", "-o", tmp_path / "m.h5")
+    command = gt.read_sweep(tmp_path / "m.h5")
+    table = gt.sweep(DEFAULT, {"pinion.material": ["../materials/none.toml", "../materials/steel-45.toml"],
+                               "positions": [11]}, client=client)
+    assert list(table["status"]) == ["error", "ok"]
+    assert "gears/../materials/none.toml" in table["message"][0]
+    assert_same_table(table, command)
+
+
 def test_zipped_sweep_and_dict_result(client):
     table = gt.sweep(DEFAULT, {"torque": ["500Nm", "800Nm"], "positions": [21, 31]}, zip=True, client=client,
                      as_frame=False)
@@ -56,6 +68,19 @@ def test_zipped_sweep_and_dict_result(client):
     assert table["status"] == ["ok", "ok"]
     # The heavier point carries the higher Hertz pressure.
     assert table["hertz_p0_Pa_max"][1] > table["hertz_p0_Pa_max"][0]
+
+
+def test_dict_case_sweeps_as_its_file(client):
+    """A case given as a dict travels to the workers as text, its relative files taken from the
+    folder given (the workers run in another working directory)."""
+    import tomllib
+    with open(DEFAULT, "rb") as f:
+        tables = tomllib.load(f)
+    axes = {"torque": ["700Nm"], "positions": [21]}
+    from_dict = gt.sweep(gt.load_case(tables, directory="gears"), axes, client=client)
+    from_file = gt.sweep(DEFAULT, axes, client=client)
+    assert list(from_dict["status"]) == ["ok"]
+    assert_same_table(from_dict, from_file)
 
 
 def test_bad_axis_is_refused_before_any_point_runs(client):

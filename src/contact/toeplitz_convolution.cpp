@@ -1,5 +1,7 @@
 #include "contact/toeplitz_convolution.hpp"
 
+#include "core/fftw_planner.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
@@ -22,8 +24,11 @@ ToeplitzConvolution::ToeplitzConvolution(const std::vector<double>& kernel, int 
   real_ = fftw_alloc_real(static_cast<std::size_t>(m_));
   spectrum_ = fftw_alloc_complex(static_cast<std::size_t>(m_ / 2 + 1));
   if (!real_ || !spectrum_) throw std::bad_alloc();
-  forward_ = fftw_plan_dft_r2c_1d(m_, real_, spectrum_, FFTW_ESTIMATE);
-  backward_ = fftw_plan_dft_c2r_1d(m_, spectrum_, real_, FFTW_ESTIMATE);
+  {
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    forward_ = fftw_plan_dft_r2c_1d(m_, real_, spectrum_, FFTW_ESTIMATE);
+    backward_ = fftw_plan_dft_c2r_1d(m_, spectrum_, real_, FFTW_ESTIMATE);
+  }
   // Circular layout of the kernel: index m >= 0 at m, negative m at m_ + m.
   std::fill(real_, real_ + m_, 0.0);
   if (periodic) {
@@ -39,8 +44,11 @@ ToeplitzConvolution::ToeplitzConvolution(const std::vector<double>& kernel, int 
 }
 
 ToeplitzConvolution::~ToeplitzConvolution() {
-  fftw_destroy_plan(forward_);
-  fftw_destroy_plan(backward_);
+  {
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    fftw_destroy_plan(forward_);
+    fftw_destroy_plan(backward_);
+  }
   fftw_free(real_);
   fftw_free(spectrum_);
 }

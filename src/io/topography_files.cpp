@@ -540,7 +540,12 @@ void write_topography(const std::filesystem::path& file, const surface::HeightGr
     });
     return;
   }
-  const std::string symbol = length_symbol(unit).value_or("m");
+  // The file states its unit by symbol: one it cannot state would be read back at the wrong scale.
+  const std::optional<std::string> stated = length_symbol(unit);
+  if (!stated)
+    throw std::invalid_argument(fmt::format(
+        "{}: the length unit of a text topography file must be m, mm, um or nm (got {:g} m)", file.string(), unit));
+  const std::string& symbol = *stated;
   std::string out = "# geartrib surface\n# units: " + symbol + "\n";
   if (format == TopographyFormat::xyz) {
     for (int j = 0; j < g.ny; ++j)

@@ -69,8 +69,9 @@ void check_grid_height(const std::string& file, int line, const std::string& key
                        const std::string& hint = "");
 void check_valid_points(const surface::HeightGrid& g, const std::string& file, int line);
 
-// Writes atomically in the format of the extension; ASCII lengths in `unit` metres (an X3P and an
-// HDF5 file hold metres whatever `unit` says).
+// Writes atomically in the format of the extension; ASCII lengths in `unit` metres, one of m, mm,
+// um, nm (the file states it by symbol; std::invalid_argument otherwise). An X3P and an HDF5 file
+// hold metres whatever `unit` says.
 void write_topography(const std::filesystem::path& file, const surface::HeightGrid& g, double unit = 1e-6);
 
 }  // namespace geartrib::io

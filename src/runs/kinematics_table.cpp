@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace geartrib::runs {
 
@@ -88,7 +89,8 @@ io::Table kinematics_table(const gear::GearMesh& mesh, const std::vector<std::st
 }
 
 io::Table kinematics_table(const gear::GearMesh& mesh, int positions) {
-  if (positions < 2) throw std::invalid_argument("positions must be at least 2");
+  if (positions < 2 || positions > kMaxKinematicsPositions)
+    throw std::invalid_argument("positions must lie in [2, " + std::to_string(kMaxKinematicsPositions) + "]");
   const auto& p = mesh.pair().path();
   io::Table t = empty_table();
   for (int i = 0; i < positions; ++i) add_row(t, mesh, std::to_string(i), p.a + p.length * i / (positions - 1), false);

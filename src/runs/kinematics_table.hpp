@@ -14,7 +14,9 @@ namespace geartrib::runs {
 // Rows labelled by point: A, B, C, D, E (empty: all five); at B and D the single-tooth side of
 // the jump. Throws std::invalid_argument for another name.
 io::Table kinematics_table(const gear::GearMesh& mesh, const std::vector<std::string>& points);
-// `positions` (>= 2) evenly spaced from A to E, rows labelled 0, 1, ...
+// `positions` (2 to kMaxKinematicsPositions) evenly spaced from A to E, rows labelled 0, 1, ...;
+// std::invalid_argument outside.
+inline constexpr int kMaxKinematicsPositions = 100000;
 io::Table kinematics_table(const gear::GearMesh& mesh, int positions);
 
 }  // namespace geartrib::runs

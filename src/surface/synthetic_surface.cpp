@@ -1,5 +1,7 @@
 #include "surface/synthetic_surface.hpp"
 
+#include "core/fftw_planner.hpp"
+
 #include <fftw3.h>
 
 #include <cmath>
@@ -62,9 +64,16 @@ HeightGrid self_affine_surface(const SelfAffineSpec& s) {
     if (ny % 2 == 0) at(ny / 2) = std::abs(at(ny / 2));
   }
   std::vector<double> z(static_cast<std::size_t>(nx) * ny);
-  fftw_plan plan = fftw_plan_dft_c2r_2d(ny, nx, reinterpret_cast<fftw_complex*>(spec.data()), z.data(), FFTW_ESTIMATE);
+  fftw_plan plan = nullptr;
+  {
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    plan = fftw_plan_dft_c2r_2d(ny, nx, reinterpret_cast<fftw_complex*>(spec.data()), z.data(), FFTW_ESTIMATE);
+  }
   fftw_execute(plan);
-  fftw_destroy_plan(plan);
+  {
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    fftw_destroy_plan(plan);
+  }
   double mean = 0.0, var = 0.0;
   for (double v : z) mean += v;
   mean /= static_cast<double>(z.size());
