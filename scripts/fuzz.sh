@@ -22,10 +22,10 @@ rm -rf "$seeds"; mkdir -p "$seeds"/{case,material,topography,fit_data}
 cp gears/*.toml "$seeds/case/"
 cp materials/*.toml "$seeds/material/"
 k=0
-for f in gears/surfaces/* validation/*/*.xyz validation/*/*.csv; do
+for f in gears/surfaces/* validation/*/*.xyz validation/*/*.csv tests/fuzz/*.x3p; do
   [[ -f "$f" ]] || continue
   case "$f" in
-    *.xyz) b='\x00' ;; *.asc) b='\x01' ;; *.csv) b='\x02' ;; *.txt) b='\x03' ;; *.grd) b='\x04' ;; *.h5) b='\x05' ;; *) continue ;;
+    *.xyz) b='\x00' ;; *.asc) b='\x01' ;; *.csv) b='\x02' ;; *.txt) b='\x03' ;; *.grd) b='\x04' ;; *.h5) b='\x05' ;; *.x3p) b='\x06' ;; *) continue ;;
   esac
   [[ $(stat -c %s "$f") -lt 2000000 ]] || continue
   { printf "$b"; cat "$f"; } > "$seeds/topography/seed-$((k++))"
