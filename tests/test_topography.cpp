@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <numbers>
@@ -55,6 +56,26 @@ TEST(Topography, SelfAffineStatisticsComeBackThroughEveryFormat) {
     EXPECT_NEAR(back.dx / g.dx, 1.0, 1e-9) << ext;
     std::filesystem::remove(path);
   }
+}
+
+// NaN-marked heights (files, arrays) into a grid and back: the valid heights bit for bit, NaN
+// exactly where points are missing; a count that is not the grid's is refused.
+TEST(Topography, NanMarkedHeightsRoundTrip) {
+  surface::HeightGrid g = surface::make_grid(3, 2, 1e-6, 2e-6);
+  const std::vector<double> z = {1e-7, std::nan(""), -0.0, 4e-310, -2e-6, std::nan("")};
+  surface::set_heights(g, z);
+  EXPECT_EQ(g.missing(), 2u);
+  EXPECT_FALSE(g.ok(1, 0));
+  EXPECT_TRUE(g.ok(0, 1));
+  const std::vector<double> back = surface::heights_or_nan(g);
+  ASSERT_EQ(back.size(), z.size());
+  for (std::size_t k = 0; k < z.size(); ++k) {
+    EXPECT_EQ(std::isnan(back[k]), std::isnan(z[k])) << k;
+    if (!std::isnan(z[k])) {
+      EXPECT_EQ(std::memcmp(&back[k], &z[k], sizeof(double)), 0) << k;
+    }
+  }
+  EXPECT_THROW(surface::set_heights(g, std::vector<double>(5, 0.0)), std::invalid_argument);
 }
 
 TEST(Topography, McCoolBesideMeasuredSummits) {

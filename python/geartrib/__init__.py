@@ -325,8 +325,9 @@ def surface_statistics(z, dx: float, dy: float | None = None, *, form: int = 2, 
                        outliers: float = 0.0) -> dict:
     """Statistics of a measured height grid z[y, x] in metres (NaN: missing) with spacing dx, dy
     [m], after the clean-up of ``geartrib surface stats`` (form polynomial of degree `form`,
-    Gaussian waviness cut-off [m], outlier limit): Ra, Rq, Rsk, Rku, Rz, spectral moments, summits
-    and McCool's estimates; keys carry units."""
+    Gaussian waviness cut-off [m], outlier limit): Ra, Rq, Rsk, Rku, Rz, the lay, spectral moments,
+    summits and McCool's estimates, named as that command names them (units in the name: Ra_m,
+    lay_angle_deg, summit_density_1_per_m2); counts as floats."""
     z = np.ascontiguousarray(z, dtype=float)
     return _core.surface_statistics(z, float(dx), float(dy or 0.0), int(form), float(cutoff), float(outliers))
 

@@ -21,6 +21,7 @@
 #include "runs/asperity_columns.hpp"
 #include "runs/kinematics_table.hpp"
 #include "runs/mesh_cycle.hpp"
+#include "runs/surface_statistics_table.hpp"
 #include "runs/sweep_points.hpp"
 #include "surface/height_grid.hpp"
 #include "surface/surface_statistics.hpp"
@@ -205,12 +206,10 @@ surface::HeightGrid grid_from(const HeightArray& z, double dx, double dy) {
     throw std::invalid_argument("height array too large");
   surface::HeightGrid g =
       surface::make_grid(static_cast<int>(z.shape(1)), static_cast<int>(z.shape(0)), dx, dy > 0 ? dy : dx);
-  for (std::size_t i = 0; i < g.size(); ++i) {
-    const double v = z.data()[i];
-    if (std::isinf(v)) throw std::invalid_argument("heights must be finite (NaN marks a missing point)");
-    g.z[i] = std::isnan(v) ? 0.0 : v;
-    g.valid[i] = std::isnan(v) ? 0 : 1;
-  }
+  const std::span<const double> heights(z.data(), g.size());
+  if (std::any_of(heights.begin(), heights.end(), [](double v) { return std::isinf(v); }))
+    throw std::invalid_argument("heights must be finite (NaN marks a missing point)");
+  surface::set_heights(g, heights);
   return g;
 }
 
@@ -405,41 +404,20 @@ PYBIND11_MODULE(_geartrib, m) {
         clean.waviness_cutoff = cutoff;
         clean.outlier_limit = outliers;
         clean.validate();
-        surface::SurfaceStatistics s;
-        surface::CleanupReport report;
+        io::Table t;
         {
           py::gil_scoped_release release;
           g.validate();
-          report = surface::clean_surface(g, clean);
-          s = surface::surface_statistics(g);
+          const surface::CleanupReport report = surface::clean_surface(g, clean);
+          t = runs::surface_statistics_table(surface::surface_statistics(g), &report);
         }
         py::dict d;
-        d["points"] = s.points;
-        d["missing"] = s.missing;
-        d["outliers"] = report.outliers;
-        d["ra_m"] = s.ra;
-        d["rq_m"] = s.rq;
-        d["rsk"] = s.rsk;
-        d["rku"] = s.rku;
-        d["rz_m"] = s.rz;
-        d["lay_angle_rad"] = s.lay_angle;
-        d["m0_m2"] = s.m0;
-        d["m2_along"] = s.m2_along;
-        d["m4_along_per_m2"] = s.m4_along;
-        d["m2_across"] = s.m2_across;
-        d["m4_across_per_m2"] = s.m4_across;
-        d["summits"] = s.summits;
-        d["summit_density_per_m2"] = s.summit_density;
-        d["summit_radius_m"] = s.summit_radius;
-        d["summit_mean_height_m"] = s.summit_mean_height;
-        d["summit_sigma_m"] = s.summit_sigma;
-        d["mccool_density_per_m2"] = s.mccool_density;
-        d["mccool_radius_m"] = s.mccool_radius;
-        d["mccool_summit_sigma_m"] = s.mccool_summit_sigma;
+        for (std::size_t i = 0; i < t.rows.size(); ++i) d[py::str(t.labels[i])] = t.rows[i].front();
         return d;
       },
       py::arg("z"), py::arg("dx"), py::arg("dy"), py::arg("form_degree"), py::arg("cutoff"), py::arg("outliers"),
-      "Statistics of a height grid z[y, x] [m] (NaN missing) after the clean-up of `geartrib surface stats`.");
+      "Statistics of a height grid z[y, x] [m] (NaN missing) after the clean-up of `geartrib surface stats`,\n"
+      "named as that command names them.");
 
   m.def(
       "read_surface",
@@ -453,8 +431,8 @@ PYBIND11_MODULE(_geartrib, m) {
           g = io::read_topography(path, o);
         }
         py::array_t<double> z({static_cast<py::ssize_t>(g.ny), static_cast<py::ssize_t>(g.nx)});
-        double* out = z.mutable_data();
-        for (std::size_t i = 0; i < g.size(); ++i) out[i] = g.valid[i] ? g.z[i] : std::nan("");
+        const std::vector<double> heights = surface::heights_or_nan(g);
+        std::copy(heights.begin(), heights.end(), z.mutable_data());
         return py::make_tuple(z, g.dx, g.dy);
       },
       py::arg("path"), py::arg("unit"), py::arg("spacing"),

@@ -6,6 +6,7 @@
 
 #include "io/table_writer.hpp"
 #include "io/topography_files.hpp"
+#include "runs/surface_statistics_table.hpp"
 #include "surface/cylinder_reduction.hpp"
 #include "surface/surface_statistics.hpp"
 #include "surface/synthetic_surface.hpp"
@@ -13,7 +14,6 @@
 #include <fmt/format.h>
 
 #include <memory>
-#include <numbers>
 
 namespace geartrib::app {
 
@@ -55,38 +55,6 @@ void add_surface_input_options(CLI::App* cmd, SurfaceInputOptions& o) {
 }
 
 namespace {
-
-io::Table statistics_table(const surface::SurfaceStatistics& s, const surface::CleanupReport* report) {
-  io::Table t;
-  t.header = {"quantity", "value"};
-  t.add_row("points", {static_cast<double>(s.points)});
-  if (report) {
-    t.add_row("missing_in_file", {static_cast<double>(report->missing_in)});
-    t.add_row("outliers_masked", {static_cast<double>(report->outliers)});
-    t.add_row("points_filled", {static_cast<double>(report->filled)});
-  }
-  t.add_row("missing", {static_cast<double>(s.missing)});
-  t.add_row("Ra_m", {s.ra});
-  t.add_row("Rq_m", {s.rq});
-  t.add_row("Rsk", {s.rsk});
-  t.add_row("Rku", {s.rku});
-  t.add_row("Rz_m", {s.rz});
-  t.add_row("lay_angle_deg", {s.lay_angle * 180.0 / std::numbers::pi});
-  t.add_row("m0_m2", {s.m0});
-  t.add_row("m2_along_lay", {s.m2_along});
-  t.add_row("m4_along_lay_1_per_m2", {s.m4_along});
-  t.add_row("m2_across_lay", {s.m2_across});
-  t.add_row("m4_across_lay_1_per_m2", {s.m4_across});
-  t.add_row("summits", {static_cast<double>(s.summits)});
-  t.add_row("summit_density_1_per_m2", {s.summit_density});
-  t.add_row("summit_radius_m", {s.summit_radius});
-  t.add_row("summit_mean_height_m", {s.summit_mean_height});
-  t.add_row("summit_sigma_m", {s.summit_sigma});
-  t.add_row("mccool_summit_density_1_per_m2", {s.mccool_density});
-  t.add_row("mccool_summit_radius_m", {s.mccool_radius});
-  t.add_row("mccool_summit_sigma_m", {s.mccool_summit_sigma});
-  return t;
-}
 
 struct GenerateOptions {
   std::string kind = "self-affine";
@@ -160,7 +128,7 @@ void equivalent(const EquivalentOptions& o) {
   // The statistics before the surface is written: a surface they refuse leaves no file behind.
   const auto stats = about_surface(o.upper + " + " + o.lower, [&] { return surface::surface_statistics(e); });
   io::write_topography(o.output, e, quantity_option("--out-unit", "1 " + o.unit, io::Dimension::length));
-  emit_table(statistics_table(stats, nullptr), o.table);
+  emit_table(runs::surface_statistics_table(stats, nullptr), o.table);
 }
 
 struct AsperityOptions {
@@ -278,9 +246,9 @@ void add_surface_command(CLI::App& app) {
   add_table_options(st, s->table);
   st->callback([s] {
     const io::LoadedSurface in = load_surface_reporting(s->file, s->input);
-    emit_table(
-        statistics_table(about_surface(s->file, [&] { return surface::surface_statistics(in.grid); }), &in.cleanup),
-        s->table);
+    emit_table(runs::surface_statistics_table(
+                   about_surface(s->file, [&] { return surface::surface_statistics(in.grid); }), &in.cleanup),
+               s->table);
   });
 
   auto cl = std::make_shared<EquivalentOptions>();  // upper: the input; unit: of the output

@@ -340,10 +340,7 @@ ReadSurface read_grid(const std::filesystem::path& path, const TopographyReadOpt
   check_grid_spacing(file, spacing_line, "spacing", fmt::format("{:g} m", dx), dx, unit_hint(r.unit, r.unit_in_file));
   if (width < 2) throw InputError(file, n, "", "", "a height grid needs at least 2 columns");
   r.grid = surface::make_grid(static_cast<int>(width), static_cast<int>(rows), dx, dy > 0.0 ? dy : dx);
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    r.grid.z[k] = std::isnan(values[k]) ? 0.0 : values[k];
-    r.grid.valid[k] = !std::isnan(values[k]);
-  }
+  surface::set_heights(r.grid, values);
   check_valid_points(r.grid, file, n);
   return r;
 }
@@ -413,14 +410,11 @@ ReadSurface read_hdf5(const std::filesystem::path& path) {
     throw InputError(file, 0, "", "", std::string("not a readable HDF5 topography file (") + e.what() + ")");
   }
   r.grid = surface::make_grid(static_cast<int>(dims[1]), static_cast<int>(dims[0]), dx, dy);
-  for (std::size_t k = 0; k < z.size(); ++k) {
-    // NaN marks a missing point (the format's rule); infinities and absurd heights are refused.
+  for (std::size_t k = 0; k < z.size(); ++k)  // NaN marks a missing point; infinities, absurd heights refused
     if (!std::isnan(z[k]) && !(std::abs(z[k]) <= kMaxHeight))
       check_grid_height(file, 0, fmt::format("/z[{}][{}]", k / dims[1], k % dims[1]), fmt::format("{}", z[k]), z[k],
                         "NaN alone marks a missing point");
-    r.grid.valid[k] = !std::isnan(z[k]);
-    r.grid.z[k] = std::isnan(z[k]) ? 0.0 : z[k];
-  }
+  surface::set_heights(r.grid, z);
   check_valid_points(r.grid, file, 0);
   return r;
 }
@@ -530,9 +524,7 @@ void write_topography(const std::filesystem::path& file, const surface::HeightGr
       hdf5::Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose, "dataspace");
       hdf5::Handle d(H5Dcreate2(f, "/z", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
                      "dataset /z");
-      std::vector<double> z(g.z);
-      for (std::size_t k = 0; k < z.size(); ++k)
-        if (!g.valid[k]) z[k] = kNaN;
+      const std::vector<double> z = surface::heights_or_nan(g);
       hdf5::check(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, z.data()), "write /z");
       hdf5::string_attribute(d, "units", "m");  // of z and of the spacings dx, dy
       hdf5::number_attribute(d, "dx", g.dx);

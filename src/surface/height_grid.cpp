@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -20,6 +21,22 @@ void HeightGrid::validate() const {
         fmt::format("grid spacing {:g} x {:g} m outside {:g} m to {:g} m", dx, dy, kMinSpacing, kMaxSpacing));
   if (z.size() != static_cast<std::size_t>(nx) * ny || valid.size() != z.size())
     throw std::invalid_argument("height grid arrays have the wrong size");
+}
+
+void set_heights(HeightGrid& g, std::span<const double> z) {
+  if (z.size() != g.size())
+    throw std::invalid_argument(fmt::format("{} heights for a grid of {} points", z.size(), g.size()));
+  for (std::size_t k = 0; k < z.size(); ++k) {
+    g.valid[k] = !std::isnan(z[k]);
+    g.z[k] = std::isnan(z[k]) ? 0.0 : z[k];
+  }
+}
+
+std::vector<double> heights_or_nan(const HeightGrid& g) {
+  std::vector<double> z(g.z);
+  for (std::size_t k = 0; k < z.size(); ++k)
+    if (!g.valid[k]) z[k] = std::numeric_limits<double>::quiet_NaN();
+  return z;
 }
 
 HeightGrid make_grid(int nx, int ny, double dx, double dy) {

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace geartrib::surface {
@@ -33,6 +34,11 @@ struct HeightGrid {
 
 // Throws std::invalid_argument beyond kMaxGridPoints (before allocating) or the spacing limits.
 HeightGrid make_grid(int nx, int ny, double dx, double dy);
+
+// Heights in the form files and arrays hold them, NaN marking a missing point: into a grid of
+// their size (z[j * nx + i]; std::invalid_argument for another size), and out of one.
+void set_heights(HeightGrid& g, std::span<const double> z);
+std::vector<double> heights_or_nan(const HeightGrid& g);
 
 // Removes the least-squares polynomial form of total degree `degree` (1: plane; 2 or more for a
 // curved flank) fitted to the valid points.
