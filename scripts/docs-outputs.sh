@@ -341,7 +341,7 @@ else:
     w("| tests | count | total | slowest |")
     w("|---|---|---|---|")
     rows = [("default suite (`bash scripts/setup.sh test`: all but label `long`)", listed("-LE", "^long$"))]
-    for label in ("extremes", "validation", "fem", "examples", "install", "long"):
+    for label in ("extremes", "validation", "fem", "examples", "install", "python", "corpus", "long"):
         rows.append((f"label `{label}`", listed("-L", f"^{label}$")))
     for label, names in rows:
         known = [(seconds[n], n) for n in names if n in seconds]
