@@ -168,6 +168,28 @@ check lub-warm-oil-warned 0 "warning: key 'operating.oil_temperature': 130.0 deg
 # A dry run needs no lubricant: the seed's dry scene has no [lubricant] and writes no /lubrication.
 check dry-no-lubricant 0 "wrote" -- "$bin" run gears/m6z30-dry.toml -o "$tmp/dry.h5" -q
 
+# Deterministic fidelity (issue 20): no profile, a profile shorter than the flank it must cover,
+# elements finer than a profile's sampling: exit 2 naming the key and file; nothing written.
+check det-no-profile 2 "m6z30-dry.toml \(--set contact.fidelity=deterministic\): key 'pinion.flank': the deterministic fidelity rolls each flank's profile" -- \
+  "$bin" run gears/m6z30-dry.toml --set contact.fidelity=deterministic -o "$tmp/det-bad.h5" -q
+check det-short-profile 2 "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.file' = surfaces/pinion-flank.h5: its profile along x is 0.09575 mm long; the deterministic contact reads 11.3 mm" -- \
+  "$bin" run gears/m6z30-measured.toml --fidelity deterministic -o "$tmp/det-bad.h5" -q
+check det-sampling 2 "key 'contact.element_size' = 0.1 um: finer than the 0.125 um spacing of pinion.flank.profile.spacing" -- \
+  "$bin" run gears/m6z30-deterministic.toml --set contact.element_size=0.1um -o "$tmp/det-bad.h5" -q
+check det-smooth-statistical 2 "key 'pinion.flank.profile.kind'.*only contact.fidelity = \"deterministic\" takes it" -- \
+  "$bin" run gears/m6z30-deterministic.toml --fidelity uncoupled --set pinion.flank.profile.kind=smooth -o "$tmp/det-bad.h5" -q
+check det-strip 2 "key 'contact.strip_halfwidths' = 1: must lie in \[1.05, 20\]" -- \
+  "$bin" run gears/m6z30-deterministic.toml --set contact.strip_halfwidths=1 -o "$tmp/det-bad.h5" -q
+check det-teeth 2 "unknown tooth order 'all'" -- \
+  "$bin" run gears/m6z30-deterministic.toml --set running_in.teeth=all -o "$tmp/det-bad.h5" -q
+check det-running-in-positions 2 "key 'contact.positions' = 21: running-in needs every flank point in the strip at two positions or more.*use at least 50 positions" -- \
+  "$bin" run gears/m6z30-deterministic.toml --positions 21 --set running_in.meshes=3 -o "$tmp/det-bad.h5" -q
+check det-overload 2 "contact.strip_halfwidths = 2: the line load 1.478e\+07 N/m would yield the whole strip.*raise it to at least 5" -- \
+  "$bin" run gears/m6z30-deterministic.toml --set torque=1e5Nm --positions 11 -o "$tmp/det-bad.h5" -q
+[[ ! -e "$tmp/det-bad.h5" ]] && echo "ok   det-nothing-written"
+# The lightest load: elastic, a finite answer (the capped bracket cannot resolve it; the elastic solve can).
+check det-light-load 0 "wrote" -- "$bin" run gears/m6z30-deterministic.toml --set torque=1e-6Nm --positions 11 -o "$tmp/det-light.h5" -q || { echo "FAIL det-bad.h5 written"; fail=1; }
+
 # Output files: written whole, atomically; nothing written on error.
 check output-file 0 "" -- "$bin" asperity --csv -o "$tmp/out.csv" --delta-star 1,2
 grep -q "^$header\$" "$tmp/out.csv" && echo "ok   output-content" || { echo "FAIL output-content"; fail=1; }

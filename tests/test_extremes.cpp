@@ -48,7 +48,7 @@ double min_of(const contact::MeshContactResult& r, const std::string& name) {
 contact::MeshContactResult cycle(const Case& c, int positions = 21) {
   const gear::GearMesh mesh(c);
   const solvers::KinsolSolver kinsol;
-  return contact::run_mesh_contact(c, mesh, c.contact.coupled ? &kinsol : nullptr, {}, positions);
+  return contact::run_mesh_contact(c, mesh, c.contact.coupled() ? &kinsol : nullptr, {}, positions);
 }
 
 // The seed's rough surface and pair with the table sized for `max_pressure`.

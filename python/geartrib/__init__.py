@@ -237,37 +237,102 @@ def _xarray():
 
 
 def _dataset(coordinate: str, series: Iterable[tuple[str, str, np.ndarray, str]], attrs: dict,
-             as_dict: bool):
-    """Series as an xarray Dataset over `coordinate` (units in attrs), or a dict with "units"."""
+             as_dict: bool, variables: Sequence[tuple[str, str, tuple, np.ndarray, str]] = (),
+             coords: Sequence[tuple[str, str, tuple, np.ndarray]] = ()):
+    """Series as an xarray Dataset over `coordinate` (units in attrs), or a dict with "units".
+    `variables` (name, unit, dims, values, group) and `coords` (name, unit, dims, values) over
+    other dimensions join them (in a dict: arrays by name; a unit "" is none, as for text)."""
     series = list(series)
     xr = None if as_dict else _xarray()
     if xr is None:
         out = {name: values for name, _, values, _ in series}
+        out.update({name: values for name, _, _, values in coords})
+        out.update({name: values for name, _, _, values, _ in variables})
         out["units"] = {name: unit for name, unit, _, _ in series}
+        out["units"].update({name: unit for name, unit, _, _ in coords if unit})
+        out["units"].update({name: unit for name, unit, _, _, _ in variables})
         out["attrs"] = attrs
         return out
-    coords = {name: values for name, _, values, _ in series if name == coordinate}
+    coordinates = {name: values for name, _, values, _ in series if name == coordinate}
+    data = {name: (coordinate, values, {"units": unit, "group": group})
+            for name, unit, values, group in series if name != coordinate}
+    data.update({name: (dims, values, {"units": unit, "group": group})
+                 for name, unit, dims, values, group in variables})
     ds = xr.Dataset(
-        {name: (coordinate, values, {"units": unit, "group": group})
-         for name, unit, values, group in series if name != coordinate},
-        coords={coordinate: (coordinate, coords[coordinate],
-                             {"units": next(u for n, u, _, _ in series if n == coordinate)})},
+        data,
+        coords={coordinate: (coordinate, coordinates[coordinate],
+                             {"units": next(u for n, u, _, _ in series if n == coordinate)}),
+                **{name: (dims, values, {"units": unit} if unit else {}) for name, unit, dims, values in coords}},
         attrs=attrs)
     return ds
+
+
+# The result's per-position groups (geartrib run's /mesh, /contact, /contact/validity,
+# /lubrication, /statistical) and its parts over other dimensions.
+_GROUPS = ("mesh", "contact", "validity", "lubrication", "statistical")
+_PARTS = _GROUPS + ("pressure_profiles", "running_in")
+
+
+def _deterministic_parts(r: dict):
+    """A deterministic run's pressure profiles and running-in as (name, unit, dims, values, group)
+    variables and (name, unit, dims, values) coordinates, with the running-in's scalars (attrs);
+    nothing for the statistical fidelities."""
+    variables, coords, attrs = [], [], {}
+    profiles = r.get("pressure_profiles", [])
+    if profiles:
+        x = profiles[0]["x_m"]
+        if any(not np.array_equal(p["x_m"], x) for p in profiles):  # one strip grid for a run
+            raise RuntimeError("the pressure profiles are on different strips")
+        coords += [("position", "1", ("position",), np.array([p["position"] for p in profiles], dtype=np.int64)),
+                   ("point", "", ("position",), np.array([p["point"] for p in profiles], dtype=str)),
+                   ("position_s_m", "m", ("position",), np.array([p["s_m"] for p in profiles], dtype=float)),
+                   ("x_m", "m", ("x_m",), x)]
+        variables.append(("pressure_Pa", "Pa", ("position", "x_m"),
+                          np.stack([p["pressure_Pa"] for p in profiles]), "pressure_profiles"))
+    ri = r.get("running_in")
+    if ri is not None:
+        for name, unit, values in ri["history"]:
+            if name == "mesh":  # the dimension: 0 = the new flanks, then each mesh run
+                coords.append(("mesh", "1", ("mesh",), values.astype(np.int64)))
+            else:
+                variables.append((f"running_in_{name}", unit, ("mesh",), values, "running_in"))
+        for gear in ("pinion", "wheel"):
+            spacing = ri[f"{gear}_profile_spacing_m"]
+            dim = f"running_in_{gear}_arc_m"  # along the active flank from its root end
+            coords.append((dim, "m", (dim,), np.arange(ri[f"{gear}_profile_initial_m"].size) * spacing))
+            for when in ("initial", "final"):
+                variables.append((f"running_in_{gear}_profile_{when}_m", "m", (dim,), ri[f"{gear}_profile_{when}_m"],
+                                  "running_in"))
+        attrs = {k: v for k, v in ri.items() if k != "history" and not isinstance(v, np.ndarray)}
+    return variables, coords, attrs
 
 
 def run(case=None, *, positions: int | None = None, as_dict: bool = False):
     """The main job (``geartrib run``): the rough contact (and, lubricated, the film) at every
     position A -> E. An xarray Dataset with coordinate ``s_m`` (each variable's ``units`` and
-    ``group``: mesh, contact, validity, lubrication; attrs: regime, verdict, warnings, path points),
-    or, without xarray or with ``as_dict=True``, a dict of arrays with ``units`` and ``attrs``."""
+    ``group``: mesh, contact, validity, lubrication, statistical; attrs: regime, verdict, warnings,
+    path points), or, without xarray or with ``as_dict=True``, a dict of arrays with ``units`` and
+    ``attrs``.
+
+    A deterministic run (``contact.fidelity = "deterministic"``) adds the statistical model on the
+    same flanks (``statistical_*`` over ``s_m``, group statistical); the pressure across the strip
+    at the positions kept (``contact.pressure_profiles``) as ``pressure_Pa[position, x_m]``
+    (``position``: index along the path, 0 at A, with coordinates ``point`` (A..E or "") and
+    ``position_s_m``; ``x_m`` across the strip); and with ``running_in.meshes`` > 0 the running-in:
+    ``running_in_*`` over ``mesh`` (0: the new flanks, NaN in the contact columns), the flanks'
+    profiles ``running_in_{pinion,wheel}_profile_{initial,final}_m`` over
+    ``running_in_{pinion,wheel}_arc_m`` (along the active flank from its root end) and attrs
+    ``running_in.*`` (teeth, meshes, shakedown_mesh, tolerance_m, profile spacings). As a dict the
+    same names hold the same arrays (``attrs["running_in"]`` a dict)."""
     case = _as_case(case)
     if positions is not None:
         case = case.set({"contact.positions": positions})
     r = _core.run(case.loaded)
-    series = [(n, u, v, group) for group in ("mesh", "contact", "validity", "lubrication")
-              for n, u, v in r[group]]
-    attrs = {k: v for k, v in r.items() if k not in ("mesh", "contact", "validity", "lubrication")}
+    series = [(n, u, v, group) for group in _GROUPS for n, u, v in r.get(group, [])]
+    variables, coords, running_in = _deterministic_parts(r)
+    attrs = {k: v for k, v in r.items() if k not in _PARTS}
+    if running_in:
+        attrs["running_in"] = running_in
     attrs["case"] = repr(case)
     attrs["version"] = __version__
     if not (as_dict or _xarray() is None):  # netCDF-style attrs: flatten the nested ones
@@ -280,7 +345,7 @@ def run(case=None, *, positions: int | None = None, as_dict: bool = False):
             else:
                 flat[k] = v
         attrs = {k: int(v) if isinstance(v, bool) else v for k, v in flat.items()}  # netCDF has no bool
-    return _dataset("s_m", series, attrs, as_dict)
+    return _dataset("s_m", series, attrs, as_dict, variables, coords)
 
 
 def kinematics(case=None, points: str | Sequence[str] = "ABCDE", *, positions: int | None = None):

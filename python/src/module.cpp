@@ -87,6 +87,37 @@ py::dict result_dict(const contact::MeshContactResult& r) {
   d["contact"] = series_list(r.contact);
   d["validity"] = series_list(r.validity);
   d["lubrication"] = series_list(r.lubrication);
+  // Deterministic runs: the statistical model on the same flanks (empty otherwise), the pressure
+  // across the strip at the positions kept (empty: none kept) and the running-in (when run).
+  d["statistical"] = series_list(r.statistical);
+  py::list profiles;
+  for (const auto& p : r.pressure_profiles) {
+    py::dict q;
+    q["position"] = p.position;
+    q["point"] = p.point;
+    q["s_m"] = p.s;
+    q["x_m"] = to_array(p.x);
+    q["pressure_Pa"] = to_array(p.pressure);
+    profiles.append(q);
+  }
+  d["pressure_profiles"] = profiles;
+  if (r.running_in) {
+    const auto& ri = *r.running_in;
+    py::dict q;
+    q["teeth"] = ri.teeth;
+    q["meshes"] = ri.meshes;
+    q["shakedown_mesh"] = ri.shakedown_mesh;
+    q["tolerance_m"] = ri.tolerance;
+    q["history"] = series_list(ri.history);
+    const char* gear[2] = {"pinion", "wheel"};
+    for (int g = 0; g < 2; ++g) {
+      const std::string name = gear[g];
+      q[py::str(name + "_profile_initial_m")] = to_array(ri.initial[g]);
+      q[py::str(name + "_profile_final_m")] = to_array(ri.final[g]);
+      q[py::str(name + "_profile_spacing_m")] = ri.spacing[g];
+    }
+    d["running_in"] = q;
+  }
   d["regime"] = r.regime;
   d["verdict"] = r.verdict;
   d["warnings"] = r.warnings;

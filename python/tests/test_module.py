@@ -81,6 +81,120 @@ def test_changes_are_recorded_with_their_origin():
     assert gt.load_case()["operating.pinion_torque"] != value  # the original case is unchanged
 
 
+
+# -- the deterministic fidelity ------------------------------------------------------------------
+
+DETERMINISTIC = "gears/m6z30-deterministic.toml"
+# A coarse, short run (~0.4 s): 2 um elements, at most 3 running-in meshes, 81 positions (running-in
+# needs every flank point in the strip at two positions at least: 67 or more here).
+DETERMINISTIC_SETS = {"element_size": "2um", "running_in.meshes": "3"}
+DETERMINISTIC_POSITIONS = 81
+
+
+@pytest.fixture(scope="module")
+def deterministic():
+    """The deterministic case's run as a dict of arrays."""
+    return gt.run(gt.load_case(DETERMINISTIC).set(DETERMINISTIC_SETS), positions=DETERMINISTIC_POSITIONS, as_dict=True)
+
+
+def test_deterministic_run_has_its_parts(deterministic):
+    r = deterministic
+    n = r["s_m"].size
+    assert n == DETERMINISTIC_POSITIONS and r["attrs"]["fidelity"] == "deterministic"
+    # The statistical model on the same flanks, beside the boundary elements, over the positions.
+    statistical = [k for k in r["units"] if k.startswith("statistical_")]
+    assert "statistical_real_area_ratio" in statistical and "statistical_plastic_area_fraction" in statistical
+    assert all(r[k].shape == (n,) for k in statistical)
+    assert np.all(r["statistical_real_area_ratio"] > 0)
+    assert not any(k in r["attrs"] for k in ("statistical", "pressure_profiles", "history"))
+
+
+def test_deterministic_pressure_profiles_carry_the_line_load(deterministic):
+    """The pressure kept at A, B, C, D, E integrates (sum x element width: constant-pressure
+    elements) to the position's line load. The strip is dry, so its asperities carry the whole
+    load, and with the hardness cap the solver brackets the approach until the load it carries is
+    within max(1e-9, 100 x its complementarity tolerance 1e-8) = 1e-6 of the target (else it
+    raises: half_plane_bem.cpp, solve_load_capped): 1e-6 relative is the promise; the sum's
+    rounding (a few hundred terms) is ~1e-14."""
+    r = deterministic
+    assert list(r["point"]) == ["A", "B", "C", "D", "E"]
+    assert r["position"][0] == 0 and r["position"][-1] == r["s_m"].size - 1  # A and E end the path
+    assert np.array_equal(r["position_s_m"], r["s_m"][r["position"]])
+    x = r["x_m"]
+    dx = x[1] - x[0]
+    assert dx == pytest.approx(2e-6, rel=1e-9) and np.allclose(np.diff(x), dx, rtol=1e-9, atol=0)
+    assert r["pressure_Pa"].shape == (5, x.size)
+    assert r["units"]["pressure_Pa"] == "Pa" and r["units"]["x_m"] == "m"
+    for i, p in zip(r["position"], r["pressure_Pa"]):
+        assert np.all(p >= 0)
+        assert p.sum() * dx == pytest.approx(r["line_load_N_per_m"][i], rel=1e-6), r["point"]
+        assert p.max() == r["max_pressure_Pa"][i]
+
+
+def test_deterministic_running_in_history(deterministic):
+    r = deterministic
+    ri = r["attrs"]["running_in"]
+    assert ri["teeth"] == "pair" and ri["tolerance_m"] == pytest.approx(1e-9)
+    rows = r["mesh"].size
+    if ri["shakedown_mesh"] == 0:  # not shaken down: every mesh asked for ran
+        assert ri["meshes"] == 3 and rows == ri["meshes"] + 1
+    else:
+        assert ri["meshes"] == ri["shakedown_mesh"] and rows == ri["meshes"] + 1
+    assert list(r["mesh"]) == list(range(rows))  # row 0: the new flanks
+    history = [k for k in r["units"] if k.startswith("running_in_") and r[k].shape == (rows,)]
+    assert len(history) >= 10
+    assert np.isnan(r["running_in_new_plastic_deformation_m"][0])  # no contact yet on the new flanks
+    assert np.all(np.isfinite(r["running_in_new_plastic_deformation_m"][1:]))
+    rq = r["running_in_pinion_rq_m"]
+    assert np.all(np.isfinite(rq)) and np.all(np.diff(rq) <= 0), rq  # plastic flattening only lowers peaks
+    for gear in ("pinion", "wheel"):
+        initial, final = r[f"running_in_{gear}_profile_initial_m"], r[f"running_in_{gear}_profile_final_m"]
+        assert initial.shape == final.shape == r[f"running_in_{gear}_arc_m"].shape
+        assert np.all(final <= initial) and np.any(final < initial)  # lowered where it yielded, never raised
+
+
+def test_deterministic_run_as_xarray():
+    xr = pytest.importorskip("xarray")
+    ds = gt.run(gt.load_case(DETERMINISTIC).set(DETERMINISTIC_SETS), positions=DETERMINISTIC_POSITIONS)
+    assert isinstance(ds, xr.Dataset)
+    assert ds.statistical_real_area_ratio.dims == ("s_m",)
+    assert ds.statistical_real_area_ratio.attrs["group"] == "statistical"
+    assert ds.pressure_Pa.dims == ("position", "x_m") and ds.pressure_Pa.attrs["units"] == "Pa"
+    at_c = ds.pressure_Pa.sel(position=ds.position[ds.point == "C"].item())
+    assert at_c.position_s_m.item() == ds.s_m[at_c.position.item()].item()
+    assert ds.running_in_pinion_rq_m.dims == ("mesh",) and ds.running_in_pinion_rq_m.attrs["group"] == "running_in"
+    assert ds.running_in_pinion_profile_final_m.dims == ("running_in_pinion_arc_m",)
+    assert ds.attrs["running_in.teeth"] == "pair" and ds.attrs["running_in.meshes"] == ds.mesh.size - 1
+
+
+def test_deterministic_run_equals_the_command(tool, tmp_path, deterministic):
+    """The command's HDF5 /statistical, /contact/pressure and /running_in (float64) equal the
+    module's arrays exactly (NaN where the command has NaN)."""
+    h5py = pytest.importorskip("h5py")
+    path = tmp_path / "d.h5"
+    sets = [a for k, v in DETERMINISTIC_SETS.items() for a in ("--set", f"{k}={v}")]
+    tool("run", DETERMINISTIC, "--positions", DETERMINISTIC_POSITIONS, *sets, "-q", "-o", path)
+    r = deterministic
+    with h5py.File(path) as f:
+        for name, item in f["statistical"].items():
+            assert np.array_equal(item[()], r[name]), name
+            assert item.attrs["units"].decode() == r["units"][name], name
+        pressure = f["contact/pressure"]
+        assert np.array_equal(pressure["x_m"][()], r["x_m"])
+        for row, i in enumerate(r["position"]):
+            item = pressure[f"position_{i}"]
+            assert np.array_equal(item[()], r["pressure_Pa"][row]), i
+            assert item.attrs["point"].decode() == r["point"][row]
+            assert item.attrs["s_m"] == r["position_s_m"][row]
+        assert len(pressure) == len(r["position"]) + 1  # every profile kept, and x
+        running_in = f["running_in"]
+        for name, item in running_in.items():
+            key = name if name == "mesh" else f"running_in_{name}"
+            assert np.array_equal(item[()], r[key], equal_nan=True), name
+        ri = r["attrs"]["running_in"]
+        for name, value in running_in.attrs.items():
+            assert (value.decode() if isinstance(value, bytes) else value) == ri[name], name
+
 # -- kinematics and asperity laws ----------------------------------------------------------------
 
 def test_kinematics_equals_the_command(tool):

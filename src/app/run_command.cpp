@@ -47,7 +47,7 @@ void print_summary(const contact::MeshContactResult& r) {
       r.asperity_model, r.fidelity);
   fmt::print("{:<30} {:>6} {:>12} {:>9} {:>3} {:>12} {:>9} {:>3}\n", "quantity", "unit", "min", "at s mm", "", "max",
              "at s mm", "");
-  for (const auto* group : {&r.mesh, &r.contact, &r.lubrication})
+  for (const auto* group : {&r.mesh, &r.contact, &r.lubrication, &r.statistical})
     for (const auto& q : *group) {
       if (q.name == "s_m" || q.name == "ehl_regime" || q.name.rfind("flag_", 0) == 0) continue;
       std::size_t lo = 0, hi = 0;
@@ -80,6 +80,28 @@ void print_summary(const contact::MeshContactResult& r) {
     if (l.iso_scuffing_safety > 0.0)
       fmt::print("Scuffing (flash-temperature method): safety S_B {:.3g} (ISO mu_m), {:.3g} (local friction)\n",
                  l.iso_scuffing_safety, l.scuffing_safety);
+  }
+  if (r.running_in) {
+    const auto& ri = *r.running_in;
+    fmt::print("Running-in ({} order): {} meshes{}, {}\n", ri.teeth, ri.meshes,
+               ri.teeth == "hunting" ? " of each pinion tooth (a row per pinion revolution, the teeth's means)" : "",
+               ri.shakedown_mesh > 0
+                   ? fmt::format("shakedown at mesh {} (no flank point deformed by more than {:.3g} nm)",
+                                 ri.shakedown_mesh, ri.tolerance * 1e9)
+                   : fmt::format("no shakedown within them (tolerance {:.3g} nm)", ri.tolerance * 1e9));
+    fmt::print("{:>5} {:>12} {:>10} {:>10} {:>10} {:>8} {:>10} {:>10} {:>8} {:>10}\n", "mesh", "new plast nm", "A_r/2b",
+               "plastic", "pin Rq um", "pin Rsk", "pin R um", "whl Rq um", "whl Rsk", "whl R um");
+    auto col = [&](const char* name) -> const std::vector<double>& {
+      for (const auto& q : ri.history)
+        if (q.name == name) return q.values;
+      throw std::logic_error(name);
+    };
+    for (std::size_t i = 0; i < col("mesh").size(); ++i)
+      fmt::print("{:>5.0f} {:>12.4g} {:>10.4g} {:>10.4g} {:>10.4g} {:>8.3f} {:>10.4g} {:>10.4g} {:>8.3f} {:>10.4g}\n",
+                 col("mesh")[i], col("new_plastic_deformation_m")[i] * 1e9, col("real_area_ratio_mean")[i],
+                 col("plastic_area_fraction_mean")[i], col("pinion_rq_m")[i] * 1e6, col("pinion_rsk")[i],
+                 col("pinion_summit_radius_m")[i] * 1e6, col("wheel_rq_m")[i] * 1e6, col("wheel_rsk")[i],
+                 col("wheel_summit_radius_m")[i] * 1e6);
   }
   fmt::print("stages:");
   for (const auto& st : r.stages) fmt::print(" {} {:.3f} s;", st.name, st.seconds);
@@ -153,7 +175,11 @@ void add_run_command(CLI::App& app) {
       "power loss, flash and contact temperature, wear per engagement, and the ISO/TS 6336-20/22 values\n"
       "beside them (docs/theory/lubrication.md: each model's range). Writes HDF5 (/mesh, /contact,\n"
       "/lubrication with units, /scene and /parameters: the case as it ran, /meta with the stages and\n"
-      "their times) and prints each quantity's extremes and where on the path they occur.");
+      "their times) and prints each quantity's extremes and where on the path they occur.\n"
+      "contact.fidelity = \"deterministic\" rolls the flanks' profiles (measured or generated) through the\n"
+      "contact at every position, solved by boundary elements (pressure profiles in /contact/pressure), with\n"
+      "the statistical model on the same flanks beside it (/statistical) and, with [running_in] meshes,\n"
+      "the flanks' plastic deformation carried from mesh to mesh until shakedown (/running_in).");
   add_case_argument(cmd, o->case_options);
   add_output_option(cmd, o->output, "the HDF5 results (default: <case name>.h5 in the working directory)");
   add_csv_option(cmd, o->csv,
@@ -161,8 +187,9 @@ void add_run_command(CLI::App& app) {
                  "standard output in place of the summary");
   cmd->add_option("--positions", o->positions, "N: shorthand for --set contact.positions=N (default 201)")
       ->check(CLI::Range(2, 100000));
-  cmd->add_option("--fidelity", o->fidelity, "uncoupled or coupled: shorthand for --set contact.fidelity=...")
-      ->check(CLI::IsMember({"uncoupled", "coupled"}));
+  cmd->add_option("--fidelity", o->fidelity,
+                  "uncoupled, coupled or deterministic: shorthand for --set contact.fidelity=...")
+      ->check(CLI::IsMember({"uncoupled", "coupled", "deterministic"}));
   add_quiet_flag(cmd, o->quiet);
   cmd->callback([o] { run(*o); });
 }

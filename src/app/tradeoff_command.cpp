@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -60,11 +61,18 @@ std::vector<Knob> knobs_of(const Case& c) {
     return k;
   };
   std::vector<Knob> out;
+  if (c.contact.deterministic()) {
+    // The boundary elements' resolution and reach, and the positions (statistical knobs are moot).
+    out.push_back(ladder("positions", "contact.positions"));
+    out.push_back(ladder("element_size", "contact.element_size"));
+    out.push_back(ladder("strip_halfwidths", "contact.strip_halfwidths"));
+    return out;
+  }
   out.push_back(ladder("positions", "contact.positions"));
   out.push_back(ladder("height_points", "contact.height_points"));
   out.push_back(ladder("table_points", "contact.table_points"));
   out.push_back(ladder("strip_points", "contact.strip_points"));
-  if (!c.contact.coupled) out.push_back(ladder("strip_lookup", "contact.strip_lookup"));
+  if (!c.contact.coupled()) out.push_back(ladder("strip_lookup", "contact.strip_lookup"));
   if (c.contact.asperity_stress) out.push_back(ladder("stress_table", "contact.stress_table"));
   Knob fidelity{"fidelity", {{"uncoupled", {{"contact.fidelity", "uncoupled"}}}}, false};
   for (const auto& n : row("contact.coupled_nodes").ladder)
@@ -109,8 +117,13 @@ std::vector<Knob> knobs_of(const Case& c) {
   return out;
 }
 
-// The outputs compared, as named in the mesh-cycle result.
-constexpr const char* kOutputs[] = {"real_area_ratio", "plastic_area_fraction", "max_asperity_von_mises_Pa"};
+// The outputs compared, as named in the mesh-cycle result: the real-area ratio, the plastic area
+// fraction and the peak stress (statistical: the highest asperity's von Mises stress;
+// deterministic: the von Mises maximum below the strip).
+std::array<const char*, 3> outputs_of(const Case& c) {
+  return {"real_area_ratio", "plastic_area_fraction",
+          c.contact.deterministic() ? "max_von_mises_Pa" : "max_asperity_von_mises_Pa"};
+}
 
 struct Curves {
   std::vector<double> s;
@@ -139,7 +152,7 @@ Timed run_timed(const std::filesystem::path& case_file, const std::vector<io::Ca
     total += dt;
     if (repeat == 0) {
       t.curves.s = r.find("s_m")->values;
-      for (const char* name : kOutputs) {
+      for (const char* name : outputs_of(c)) {
         const contact::Series* q = r.find(name);
         if (!q)
           throw std::invalid_argument(std::string("tradeoff needs the case's contact outputs to include ") + name);
@@ -295,8 +308,7 @@ void add_tradeoff_command(CLI::App& app) {
       "height_points (summit-height quadrature), table_points (pressure-separation table per sigma),\n"
       "strip_points (uncoupled quadrature across the Hertz strip), strip_lookup (cubic cells or the exact\n"
       "table inversion), stress_table (intervals of the normalised von Mises table, 0: exact maximisation),\n"
-      "fidelity (uncoupled, coupled with N\n"
-      "nodes), integrator (odeint/cvode and tolerance of the dynamic cycle; recommended only when the case\n"
+      "fidelity (uncoupled, coupled with N nodes), integrator (odeint/cvode and tolerance of the dynamic cycle; recommended only when the case\n"
       "asks for dynamics); reported as physics choices, not recommended: dynamics (static against the\n"
       "dynamic cycle) and asperity_model. Each setting runs with the other knobs as the case has them and\n"
       "is compared with the knob's highest setting on the real-area ratio, the plastic area fraction and\n"
@@ -304,7 +316,10 @@ void add_tradeoff_command(CLI::App& app) {
       "maximum and, where the positions coincide, of any position, relative to the reference's largest\n"
       "value. Time: the fastest of up to 5 runs (at least --min-time in all).\n"
       "Then the case as given and the recommended combination against all knobs at their highest.\n"
-      "The boundary-element grid is not part of the mesh cycle: its trade is in `geartrib_bench\n"
+      "A deterministic case (contact.fidelity = deterministic) has its own knobs: positions, element_size\n"
+      "(boundary-element width) and strip_halfwidths (the strip's reach in Hertz half-widths), compared on\n"
+      "the real-area ratio, the plastic area fraction and the von Mises maximum below the strip (set\n"
+      "threads=1 for one core's times). The seed's multi-asperity grid: `geartrib_bench\n"
       "--benchmark_filter=multi_asperity` (docs/reference/timings.md).");
   add_case_argument(cmd, o->case_options);
   add_output_option(cmd, o->table.output,

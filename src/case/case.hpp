@@ -6,6 +6,7 @@
 
 #include "lubrication/lubricant.hpp"
 #include "material/material.hpp"
+#include "surface/flank_profile.hpp"
 #include "surface/height_grid.hpp"
 #include "surface/rough_surface.hpp"
 #include "surface/surface_statistics.hpp"
@@ -44,6 +45,10 @@ struct TopographySpec {
   double spacing = 0.0;   // grid spacing of files without one [m]; 0: from the file
   double resample = 0.0;  // regrid spacing [m]; 0: as measured
   surface::CleanupOptions clean;
+  // The deterministic fidelity's profile: the grid line along x (or y) at this fraction of the
+  // other axis, taken along the involute from root to tip.
+  bool profile_along_x = true;
+  double profile_at = 0.5;
 };
 
 // The rough flank of one gear: its roughness in one of the forms of surface::FlankRoughness
@@ -55,6 +60,10 @@ struct FlankSpec {
   // of the cleaned surface the roughness above was taken from.
   std::optional<TopographySpec> topography;
   std::optional<surface::SurfaceStatistics> measured;
+  std::optional<surface::FlankProfile> measured_profile;  // the topography's line for the deterministic fidelity
+  // A generated profile along the involute ([*.flank.profile]): the deterministic fidelity's flank,
+  // and (its statistics) the roughness of the others.
+  std::optional<surface::GeneratedProfileSpec> profile;
 };
 
 // One gear's body: its material and its flank (its geometry is in GearPairSpec).
@@ -108,9 +117,20 @@ struct RoughnessSettings {
   double eta_sigma_beta = surface::kTypicalEtaSigmaBeta;  // for flanks given by Ra or Rq
 };
 
+// How the rough contact across the strip is solved: the statistical model with the Hertz pressure
+// imposed (uncoupled) or solved with the bulk (coupled, Greenwood-Tripp), or the flanks' profiles
+// in contact through boundary elements (deterministic).
+enum class ContactFidelity { uncoupled, coupled, deterministic };
+
+// Which pressure profiles a deterministic run keeps: at the path's points A, B, C, D, E, at
+// every position, or none.
+enum class PressureProfiles { points, all, none };
+
 // The mesh-cycle contact run: fidelity, the outputs asked for, and the resolution knobs.
 struct ContactSettings {
-  bool coupled = false;   // "uncoupled" (Hertz pressure imposed) or "coupled" (Greenwood-Tripp)
+  ContactFidelity fidelity = ContactFidelity::uncoupled;
+  bool coupled() const { return fidelity == ContactFidelity::coupled; }
+  bool deterministic() const { return fidelity == ContactFidelity::deterministic; }
   bool real_area = true;  // outputs asked for
   bool plastic_fraction = true;
   bool asperity_stress = true;
@@ -122,6 +142,22 @@ struct ContactSettings {
   int coupled_nodes = 128;          // coupled pressure elements
   bool exact_strip_lookup = false;  // "cubic" cells in the pressure (false) or "exact": the table's inversion
   int stress_table = 64;  // von Mises table intervals over sqrt(plastic share); 0: exact maximisation each time
+  // Deterministic: boundary-element size, the strip's half-length in the path's largest Hertz
+  // half-widths, the pressure profiles kept and the threads (0: all cores).
+  double element_size = 0.5e-6;  // [m]
+  double strip_halfwidths = 2.0;
+  PressureProfiles pressure_profiles = PressureProfiles::points;
+  int threads = 0;
+};
+
+// Running-in (deterministic fidelity): the plastic deformation of each flank point carried from
+// one mesh of the same teeth to the next, until shakedown or `meshes` meshes.
+struct RunningInSettings {
+  int meshes = 0;  // 0: one mesh, no running-in
+  // Plastic deformation below this counts as none [m]: the plastic area's threshold, and
+  // shakedown: a mesh that deforms no flank point by more.
+  double tolerance = 1e-9;
+  std::string teeth = "pair";  // "pair": one pinion and one wheel tooth; "hunting": every tooth, in mesh order
 };
 
 // Mesh dynamics: the engine (none: static load sharing) and the model's data.
@@ -155,6 +191,7 @@ struct Case {
   DynamicsCase dynamics;
   RoughnessSettings roughness;
   ContactSettings contact;
+  RunningInSettings running_in;
   AsperitySettings asperity;
   std::string source_text;                    // the case file as read, with the --set changes (stored with the results)
   std::vector<ResolvedParameter> parameters;  // every key as it ran

@@ -3,6 +3,7 @@
 #include "asperity/case_setup.hpp"
 #include "asperity/side_contact.hpp"
 #include "contact/greenwood_williamson.hpp"
+#include "contact/mesh_deterministic.hpp"
 #include "contact/mesh_lubrication.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "contact/series_columns.hpp"
@@ -55,12 +56,13 @@ class Stopwatch {
 
 MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
                                    const std::function<void(int, int)>& progress, int positions,
-                                   const OdeIntegrator* dynamics) {
+                                   const OdeIntegrator* dynamics,
+                                   const std::function<RollingFlanks(const FlankSpan&, const int[2])>& flanks) {
   const ContactSettings& cs = c.contact;
   const int n = positions > 0 ? positions : cs.positions;
   MeshContactResult r;
   r.path = mesh.pair().path();
-  r.fidelity = cs.coupled ? "coupled" : "uncoupled";
+  r.fidelity = cs.deterministic() ? "deterministic" : cs.coupled() ? "coupled" : "uncoupled";
   Stopwatch clock;
 
   // Stage 1: kinematics and loading of one pair from A to E.
@@ -138,6 +140,12 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
     p0 = hp;
   }
 
+  if (cs.deterministic()) {  // the flanks' profiles through boundary elements (mesh_deterministic.cpp)
+    if (!flanks) throw std::invalid_argument("the deterministic fidelity needs the flanks' profiles");
+    run_deterministic(c, mesh, r, flanks, progress, dynamics);
+    return r;
+  }
+
   // Stage 2: the equivalent surface and its pressure-separation table (built once).
   r.surface = case_equivalent_surface(c);
   const asperity::ContactPair pair = asperity::contact_pair(c);
@@ -166,7 +174,7 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
 
   // Stage 3: the rough line contact across the strip at every position.
   StripOptions so;
-  so.fidelity = cs.coupled ? StripFidelity::coupled : StripFidelity::uncoupled;
+  so.fidelity = cs.coupled() ? StripFidelity::coupled : StripFidelity::uncoupled;
   so.strip_points = cs.strip_points;
   so.lookup = cs.exact_strip_lookup ? StripLookup::exact : StripLookup::cubic;
   so.coupled_nodes = cs.coupled_nodes;
@@ -184,7 +192,7 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
     }
     if (progress) progress(i + 1, n);
   }
-  r.stages.push_back({cs.coupled ? "strip_contact_coupled" : "strip_contact_uncoupled", clock.lap()});
+  r.stages.push_back({cs.coupled() ? "strip_contact_coupled" : "strip_contact_uncoupled", clock.lap()});
   using StripColumn = Column<StripResult>;
   if (cs.real_area)
     add_columns<StripResult>(

@@ -59,12 +59,38 @@ struct LubricationSummary {
   std::vector<NamedPoint> points;  // ISO/TS 6336-22's points, interpolated from the path
 };
 
+// A deterministic run's pressure across the strip at one position.
+struct PressureProfile {
+  int position = 0;                 // index along the path (0 at A)
+  std::string point;                // the path's point it stands for (A, B, C, D, E) or empty
+  double s = 0.0;                   // [m] from T1
+  std::vector<double> x, pressure;  // across the strip [m], [Pa]
+};
+
+// Running-in (deterministic): the history over the meshes (one entry per mesh of the pair, or per
+// pinion revolution in the hunting order) and the flanks' profiles before and after.
+struct RunningInResult {
+  std::string teeth;            // "pair" or "hunting"
+  int meshes = 0;               // meshes run (each pinion tooth's, hunting)
+  int shakedown_mesh = 0;       // the first mesh without new plastic deformation beyond the tolerance; 0: not reached
+  double tolerance = 0.0;       // [m]
+  std::vector<Series> history;  // mesh, new plastic deformation, Rq, Rsk, summit radius, real area, plastic fraction
+  // One pinion and one wheel flank (tooth 0) over their active part, before and after [m].
+  double spacing[2] = {0.0, 0.0};
+  std::vector<double> initial[2], final[2];
+};
+
 struct MeshContactResult {
   std::vector<Series> mesh;         // kinematics and loading: s_m, load_share, hertz_p0_Pa, ...
   std::vector<Series> contact;      // rough contact: real_area_ratio, plastic_area_fraction, ...
   std::vector<Series> validity;     // where the models hold: separation_over_sigma, flags, ... (validity.hpp)
   std::vector<Series> lubrication;  // lubricated runs: film, lambda, shares, friction, temperatures, wear
   std::optional<LubricationSummary> lubrication_summary;
+  // Deterministic runs: the statistical model on the same flanks (names prefixed statistical_),
+  // the pressure profiles kept and the running-in.
+  std::vector<Series> statistical;
+  std::vector<PressureProfile> pressure_profiles;
+  std::optional<RunningInResult> running_in;
   std::string regime;   // "elastic", "elastic-plastic" or "fully plastic"
   std::string verdict;  // one paragraph: the regime and every validity rule broken, and where
   struct FlagCount {
@@ -81,15 +107,22 @@ struct MeshContactResult {
   // Findings that make a result doubtful (e.g. a real area larger than the nominal one).
   std::vector<std::string> warnings;
   const Series* find(const std::string& name) const;  // in mesh, contact, validity, lubrication; nullptr if absent
-  // Every group, in the order of the CSV columns and of find().
-  std::array<const std::vector<Series>*, 4> groups() const { return {&mesh, &contact, &validity, &lubrication}; }
+  // Every per-position group, in the order of the CSV columns and of find().
+  std::array<const std::vector<Series>*, 5> groups() const {
+    return {&mesh, &contact, &validity, &lubrication, &statistical};
+  }
 };
 
+struct RollingFlanks;
+struct FlankSpan;
+
 // progress(done, total) is called after each position. positions <= 0: the case's number.
+// flanks: the deterministic fidelity's flank profiles for the span it reads (mesh_deterministic.hpp).
 // dynamics: when the case asks for dynamics (mesh.dynamics = cvode | odeint), the integrator that
 // computes the steady mesh cycle; each pair then carries its dynamic load instead of the static share.
 MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
                                    const std::function<void(int, int)>& progress = {}, int positions = 0,
-                                   const OdeIntegrator* dynamics = nullptr);
+                                   const OdeIntegrator* dynamics = nullptr,
+                                   const std::function<RollingFlanks(const FlankSpan&, const int[2])>& flanks = {});
 
 }  // namespace geartrib::contact

@@ -267,7 +267,8 @@ void read_model_constants(TomlReader& r, Case& c) {
   }
 }
 
-constexpr std::size_t kFewSummits = 100;  // below this a summit statistic scatters by more than 10%
+constexpr std::size_t kFewSummits = 100;           // below this a summit statistic scatters by more than 10%
+constexpr double kReferenceProfilePoints = 65536;  // a generated profile's sample for its statistics
 
 // The flank's roughness form: exactly one of ra, rq, summits, spectral moments or a measured
 // topography (loaded and reduced to its summit statistics here).
@@ -278,11 +279,11 @@ void read_flank(TomlReader& r, Case& c, int gear) {
   auto& rough = g.flank.roughness;
   using Form = surface::FlankRoughness::Form;
   const int forms = int(r.has(f + "ra")) + int(r.has(f + "rq")) + int(r.has(f + "summit_density")) +
-                    int(r.has(f + "m0")) + int(r.has(f + "topography"));
+                    int(r.has(f + "m0")) + int(r.has(f + "topography")) + int(r.has(f + "profile"));
   if (forms != 1)
     r.fail(p + "flank",
-           "give the roughness in exactly one form: ra, rq, summit_density + summit_sigma, m0 + m2 + m4, or a [" + p +
-               "flank.topography] table naming a measured surface");
+           "give the roughness in exactly one form: ra, rq, summit_density + summit_sigma, m0 + m2 + m4, a [" + p +
+               "flank.topography] table naming a measured surface, or a [" + p + "flank.profile] table generating one");
   auto need = [&](const std::string& leaf) {
     if (!r.has(f + leaf))
       r.fail(f + leaf, "missing required key (" + find_parameter(f + leaf).parameter->meaning + ")");
@@ -310,11 +311,44 @@ void read_flank(TomlReader& r, Case& c, int gear) {
       r.fail(t + "file", path.string() + ": " + e.what());
     }
     if (r.has(f + "summit_radius")) rough.summit_radius = given_radius;
+    try {  // the line along the involute the deterministic fidelity rolls
+      g.flank.measured_profile = surface::profile_from_grid(grid, spec.profile_along_x, spec.profile_at);
+    } catch (const std::invalid_argument& e) {
+      r.fail(t + "file", path.string() + ": its profile along " + (spec.profile_along_x ? "x" : "y") + ": " + e.what());
+    }
     if (g.flank.measured->summits < kFewSummits)
       c.warnings.push_back(
           fmt::format("{}: warning: key '{}': only {} summits on the measured surface (statistics scatter "
                       "by ~1/sqrt(n)); measure a larger area",
                       r.where(t + "file"), t + "file", g.flank.measured->summits));
+    return;
+  }
+  if (g.flank.profile) {
+    // A generated profile: its spectral moments (McCool's route to the summits) from a sample of
+    // kReferenceProfilePoints points; a deterministic run takes those of the profile it rolls.
+    if (r.has(f + "summit_radius"))
+      r.fail(f + "summit_radius", "a generated profile gives the summit radius (its spectral moments); remove it");
+    need("profile.kind");
+    const surface::GeneratedProfileSpec& spec = *g.flank.profile;
+    try {
+      spec.validate();
+      rough.form = Form::spectral;
+      if (spec.kind == surface::ProfileKind::smooth) {
+        if (!c.contact.deterministic())
+          throw std::invalid_argument(
+              "a smooth profile has no roughness for the statistical model: only contact.fidelity = "
+              "\"deterministic\" takes it");
+        rough.m0 = rough.m2 = rough.m4 = 0.0;  // no statistics: the deterministic run skips the statistical model
+        return;
+      }
+      const surface::FlankProfile sample = surface::generate_profile(spec, kReferenceProfilePoints * spec.spacing);
+      const surface::ProfileStatistics st = surface::profile_statistics(sample.z, sample.spacing);
+      rough.m0 = st.m0;
+      rough.m2 = st.m2;
+      rough.m4 = st.m4;
+    } catch (const std::invalid_argument& e) {
+      r.fail(f + "profile.kind", e.what());
+    }
     return;
   }
   if (r.has(f + "m0")) {
@@ -341,7 +375,7 @@ void read_flank(TomlReader& r, Case& c, int gear) {
 // The roughness forms of a flank and their keys (read_flank takes exactly one form).
 const std::vector<std::vector<std::string>>& roughness_forms() {
   static const std::vector<std::vector<std::string>> forms = {
-      {"ra"}, {"rq"}, {"summit_density", "summit_sigma"}, {"m0", "m2", "m4"}, {"topography"}};
+      {"ra"}, {"rq"}, {"summit_density", "summit_sigma"}, {"m0", "m2", "m4"}, {"topography"}, {"profile"}};
   return forms;
 }
 
@@ -532,9 +566,13 @@ Case load_case_from(TomlReader& r, const std::vector<CaseChange>& changes, unsig
     if (c.pinion.flank.roughness.form != c.wheel.flank.roughness.form)
       r.fail("wheel.flank", "give both flanks' roughness in the same form as the pinion's");
     // One radius per run: the flanks' radii consistent with the equivalent surface (spectral: McCool's).
-    const auto [r1, r2] = surface::flank_summit_radii(c.pinion.flank.roughness, c.wheel.flank.roughness);
-    c.pinion.flank.roughness.summit_radius = r1;
-    c.wheel.flank.roughness.summit_radius = r2;
+    // (A smooth generated profile has none: the deterministic run alone takes it.)
+    if (c.pinion.flank.roughness.form != surface::FlankRoughness::Form::spectral ||
+        (c.pinion.flank.roughness.m4 > 0.0 && c.wheel.flank.roughness.m4 > 0.0)) {
+      const auto [r1, r2] = surface::flank_summit_radii(c.pinion.flank.roughness, c.wheel.flank.roughness);
+      c.pinion.flank.roughness.summit_radius = r1;
+      c.wheel.flank.roughness.summit_radius = r2;
+    }
   }
 
   r.check_all_used();

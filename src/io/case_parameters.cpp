@@ -1,6 +1,7 @@
 #include "io/case_parameters.hpp"
 
 #include "asperity/model.hpp"
+#include "contact/deterministic_contact.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "lubrication/ehl_film.hpp"
@@ -326,6 +327,62 @@ std::vector<Parameter> build_table() {
                              topo_ref([](auto& t) -> auto& { return t.clean.fill; }));
     add(std::move(fill)).doc("Fill missing points from their neighbours");
   }
+  add(mapped_choice(
+          "{gear}.flank.topography.profile_axis", {"x", "y"},
+          topo_ref([](auto& t) -> auto& { return t.profile_along_x; }), [](const std::string& t) { return t == "x"; },
+          [](bool x) { return std::string(x ? "x" : "y"); }))
+      .doc("Deterministic: the surface's axis along the involute (root to tip), the profile's direction");
+  add(number("{gear}.flank.topography.profile_at", topo_ref([](auto& t) -> auto& { return t.profile_at; })))
+      .range(0.0, 1.0)
+      .doc("Deterministic: where across the other axis the profile is taken (fraction of its length)");
+  // A generated profile along the involute (a roughness form; the deterministic fidelity's flank).
+  auto prof = [gear](auto& c, int g) -> auto& { return gear(c, g).flank.profile; };
+  auto prof_spec = [prof](Case& c, int g) -> surface::GeneratedProfileSpec& {
+    auto& t = prof(c, g);
+    if (!t) t.emplace();
+    return *t;
+  };
+  auto prof_get = [prof](const Case& c, int g) -> const surface::GeneratedProfileSpec& {
+    static const surface::GeneratedProfileSpec kDefault;
+    const auto& t = prof(c, g);
+    return t ? *t : kDefault;
+  };
+  auto prof_ref = [prof_spec, prof_get](auto member) {
+    return [=](auto& c, int g) -> auto& {
+      if constexpr (std::is_const_v<std::remove_reference_t<decltype(c)>>) return member(prof_get(c, g));
+      else return member(prof_spec(c, g));
+    };
+  };
+  add(mapped_choice(
+          "{gear}.flank.profile.kind", {"smooth", "ground", "hobbed"},
+          prof_ref([](auto& t) -> auto& { return t.kind; }),
+          [](const std::string& t) { return surface::profile_kind(t); },
+          [](surface::ProfileKind k) { return std::string(surface::profile_kind_name(k)); }))
+      .doc(
+          "Form generated profile: smooth, ground (Gaussian random, Gaussian autocorrelation) or hobbed "
+          "(parabolic ridges meeting in sharp valleys, plus a ground-like random part)");
+  add(quantity("{gear}.flank.profile.spacing", D::length, prof_ref([](auto& t) -> auto& { return t.spacing; })))
+      .range(1e-9, 1e-4)
+      .doc("Generated profile: point spacing along the involute");
+  add(quantity("{gear}.flank.profile.rq", D::length, prof_ref([](auto& t) -> auto& { return t.rq; })))
+      .range(0.0, 1e-4)
+      .plausible(0.0, 25.0 * kUm)
+      .doc("Generated profile: Rq of the random part (ground: of the profile)");
+  add(quantity("{gear}.flank.profile.correlation_length", D::length,
+               prof_ref([](auto& t) -> auto& { return t.correlation_length; })))
+      .range(1e-9, 1e-2)
+      .doc("Generated profile: lambda of the random part's autocorrelation exp(-tau^2/lambda^2)");
+  add(quantity("{gear}.flank.profile.ridge_spacing", D::length,
+               prof_ref([](auto& t) -> auto& { return t.ridge_spacing; })))
+      .range(1e-8, 1e-2)
+      .doc("Hobbed profile: distance between the ridges");
+  add(quantity("{gear}.flank.profile.ridge_radius", D::length,
+               prof_ref([](auto& t) -> auto& { return t.ridge_radius; })))
+      .range(1e-8, 1.0)
+      .doc("Hobbed profile: the ridges' tip radius");
+  add(integer("{gear}.flank.profile.seed", prof_ref([](auto& t) -> auto& { return t.seed; })))
+      .range(0, 4294967295.0)
+      .doc("Generated profile: random seed");
 
   // [operating]
   add(quantity(
@@ -508,12 +565,23 @@ std::vector<Parameter> build_table() {
 
   // [contact]: the mesh cycle's fidelity, outputs and resolutions.
   add(mapped_choice(
-          "contact.fidelity", {"uncoupled", "coupled"}, [](auto& c, int) -> auto& { return c.contact.coupled; },
-          [](const std::string& t) { return t == "coupled"; },
-          [](bool coupled) { return std::string(coupled ? "coupled" : "uncoupled"); }))
+          "contact.fidelity", {"uncoupled", "coupled", "deterministic"},
+          [](auto& c, int) -> auto& { return c.contact.fidelity; },
+          [](const std::string& t) {
+            return t == "coupled"         ? ContactFidelity::coupled
+                   : t == "deterministic" ? ContactFidelity::deterministic
+                                          : ContactFidelity::uncoupled;
+          },
+          [](ContactFidelity f) {
+            return std::string(f == ContactFidelity::coupled         ? "coupled"
+                               : f == ContactFidelity::deterministic ? "deterministic"
+                                                                     : "uncoupled");
+          }))
       .alias({"fidelity"})
       .doc(
-          "uncoupled: Hertz pressure imposed on the rough surface; coupled: Greenwood-Tripp, bulk and asperities solved together");
+          "uncoupled: Hertz pressure imposed on the rough surface; coupled: Greenwood-Tripp, bulk and asperities "
+          "solved together; deterministic: the flanks' profiles in contact through boundary elements, sliding past "
+          "each other along the path");
   {
     Parameter outputs;
     outputs.key = "contact.outputs";
@@ -587,6 +655,62 @@ std::vector<Parameter> build_table() {
       .doc(
           "Asperity stresses: intervals of the normalised von Mises table over the square root of the plastic share "
           "(0: the exact maximisation at every position, the reference)");
+
+  // Deterministic fidelity: the boundary elements across the strip.
+  add(quantity(
+          "contact.element_size", D::length, [](auto& c, int) -> auto& { return c.contact.element_size; }))
+      .range(1e-9, 1e-3)
+      .plausible(0.01 * kUm, 10.0 * kUm)
+      .alias({"element_size"})
+      .ladder({"4 um", "2 um", "1 um", "0.5 um", "0.25 um", "0.125 um"})
+      .doc(
+          "Deterministic: boundary-element width across the strip; not below a flank profile's spacing (the profile "
+          "is averaged over each element)");
+  add(number(
+          "contact.strip_halfwidths", [](auto& c, int) -> auto& { return c.contact.strip_halfwidths; }))
+      .range(contact::DeterministicOptions::kMinStripHalfwidths, contact::DeterministicOptions::kMaxStripHalfwidths)
+      .alias({"strip_halfwidths"})
+      .ladder({"1.1", "1.25", "1.5", "2", "3"})
+      .doc(
+          "Deterministic: the strip's half-length in the path's largest Hertz half-width (a rough contact spreads "
+          "beyond the smooth one's)");
+  add(mapped_choice(
+          "contact.pressure_profiles", {"points", "all", "none"},
+          [](auto& c, int) -> auto& { return c.contact.pressure_profiles; },
+          [](const std::string& t) {
+            return t == "all" ? PressureProfiles::all : t == "none" ? PressureProfiles::none : PressureProfiles::points;
+          },
+          [](PressureProfiles p) {
+            return std::string(p == PressureProfiles::all ? "all" : p == PressureProfiles::none ? "none" : "points");
+          }))
+      .doc(
+          "Deterministic: the pressure profiles kept in the HDF5 file: at the positions nearest A, B, C, D, E "
+          "(points), at every position (all) or none");
+  add(integer(
+          "contact.threads", [](auto& c, int) -> auto& { return c.contact.threads; }))
+      .range(0, 1024)
+      .alias({"threads"})
+      .doc("Deterministic: threads solving the positions of a mesh (0: all cores)");
+  // [running_in]
+  add(integer(
+          "running_in.meshes", [](auto& c, int) -> auto& { return c.running_in.meshes; }))
+      .range(0, 100000)
+      .alias({"meshes"})
+      .doc(
+          "Deterministic: meshes of running-in, each flank's plastic deformation carried to its next mesh (0: the "
+          "new flanks only); stops earlier at shakedown");
+  add(quantity(
+          "running_in.tolerance", D::length, [](auto& c, int) -> auto& { return c.running_in.tolerance; }))
+      .range(1e-15, 1e-3, true, false)
+      .doc(
+          "Deterministic: plastic deformation below this counts as none (the plastic area's threshold); a mesh that "
+          "deforms no flank point by more ends the running-in (shakedown)");
+  add(text(
+          "running_in.teeth", K::choice, [](auto& c, int) -> auto& { return c.running_in.teeth; }))
+      .choices({"pair", "hunting"}, "tooth order")
+      .doc(
+          "pair: one pinion tooth meets one wheel tooth every mesh (the 1:1 pair's order); hunting: every tooth, "
+          "in the order they mesh (pinion tooth k meets wheel tooth k mod z2)");
 
   // [asperity]
   add(text(

@@ -42,6 +42,42 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
       for (const auto& f : r.flag_counts) number_attribute(validity, "positions_" + f.name, f.positions);
     }
   }
+  if (!r.pressure_profiles.empty()) {
+    // Deterministic: the pressure across the strip at the positions kept (one x for all).
+    Handle group(H5Gcreate2(file, "/contact/pressure", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                 "group /contact/pressure");
+    hdf5::number_dataset(group, "x_m", r.pressure_profiles.front().x, "m");
+    for (const auto& p : r.pressure_profiles) {
+      const std::string name = "position_" + std::to_string(p.position);
+      hdf5::number_dataset(group, name, p.pressure, "Pa");
+      Handle d(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, name);
+      number_attribute(d, "s_m", p.s);
+      number_attribute(d, "position", p.position);
+      if (!p.point.empty()) string_attribute(d, "point", p.point);
+    }
+  }
+  if (!r.statistical.empty()) {
+    Handle group(H5Gcreate2(file, "/statistical", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                 "group /statistical");
+    string_attribute(group, "meaning",
+                     "the statistical model (uncoupled) on the same flanks: their spectral moments from the profiles");
+    for (const auto& s : r.statistical) hdf5::number_dataset(group, s.name, s.values, s.unit);
+  }
+  if (r.running_in) {
+    const auto& ri = *r.running_in;
+    Handle group(H5Gcreate2(file, "/running_in", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /running_in");
+    for (const auto& s : ri.history) hdf5::number_dataset(group, s.name, s.values, s.unit);
+    string_attribute(group, "teeth", ri.teeth);
+    number_attribute(group, "meshes", ri.meshes);
+    number_attribute(group, "shakedown_mesh", ri.shakedown_mesh);
+    number_attribute(group, "tolerance_m", ri.tolerance);
+    const char* gear[2] = {"pinion", "wheel"};
+    for (int g = 0; g < 2; ++g) {
+      hdf5::number_dataset(group, std::string(gear[g]) + "_profile_initial_m", ri.initial[g], "m");
+      hdf5::number_dataset(group, std::string(gear[g]) + "_profile_final_m", ri.final[g], "m");
+      number_attribute(group, std::string(gear[g]) + "_profile_spacing_m", ri.spacing[g]);
+    }
+  }
   if (r.lubrication_summary) {
     const auto& l = *r.lubrication_summary;
     Handle lub(H5Gcreate2(file, "/lubrication", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /lubrication");

@@ -2,6 +2,7 @@
 
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
+#include "contact/mesh_deterministic.hpp"
 #include "gear/gear_mesh.hpp"
 #include "io/input_error.hpp"
 #include "solvers/integrators.hpp"
@@ -79,6 +80,105 @@ std::pair<std::string, int> location_of(const Case& c, const std::string& key) {
                            (roughness.empty() ? std::string() : " (" + roughness + ")"));
 }
 
+std::string um(double metres) { return fmt::format("{:.4g} um", metres * 1e6); }
+std::string mm(double metres) { return fmt::format("{:.4g} mm", metres * 1e3); }
+
+// The deterministic fidelity's flanks: each gear's measured profile (its topography's line along
+// the involute) or generated one, checked against the stretch of flank the run reads and the
+// element size. Hunting order: a generated profile per tooth (seed + tooth); a measured one is
+// every tooth's.
+contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& span, const int teeth[2]) {
+  contact::RollingFlanks out;
+  // Running-in carries each flank point's deformation from position to position: every point must
+  // pass through the strip at two positions or more (a step of at most the strip's half-length).
+  const double step = std::max(span.max_step[0], span.max_step[1]);
+  if (span.running_in && step > span.strip_half_length) {
+    const auto [file, line] = location_of(c, "contact.positions");
+    const int needed = static_cast<int>(std::ceil((span.positions - 1) * step / span.strip_half_length)) + 1;
+    throw io::InputError(file, line, "contact.positions", std::to_string(span.positions),
+                         fmt::format("running-in needs every flank point in the strip at two positions or more: the "
+                                     "contact point moves up to {} along a flank between positions, more than the "
+                                     "strip's half-length {}; use at least {} positions",
+                                     mm(step), mm(span.strip_half_length), needed));
+  }
+  for (int g = 0; g < 2; ++g) {
+    const std::string gear = g == 0 ? "pinion" : "wheel";
+    const FlankSpec& flank = (g == 0 ? c.pinion : c.wheel).flank;
+    auto& tracks = g == 0 ? out.pinion : out.wheel;
+    const double needed = span.length(g);
+    const std::string why_needed = fmt::format(
+        "the contact point rolls {} along the {}'s active flank and the strip reaches {} either side",
+        mm(span.active_last[g] - span.active_first[g]), gear, mm(span.strip_half_length + 2.0 * span.element_size));
+    // The elements average the profile: finer elements than its spacing resolve only the
+    // interpolation between its points.
+    auto check_spacing = [&](double spacing, const std::string& where) {
+      if (span.element_size < spacing * (1.0 - 1e-9)) {
+        const auto [file, line] = location_of(c, "contact.element_size");
+        throw io::InputError(file, line, "contact.element_size", um(span.element_size),
+                             fmt::format("finer than the {} spacing of {} ({}): the elements would resolve the "
+                                         "interpolation between its points; use elements of at least {}",
+                                         um(spacing), where, gear, um(spacing)));
+      }
+    };
+    if (flank.measured_profile) {
+      const surface::FlankProfile& p = *flank.measured_profile;
+      const std::string key = gear + ".flank.topography.file";
+      const std::string file = flank.topography ? flank.topography->file : std::string();
+      check_spacing(p.spacing, "the profile of " + file);
+      if (p.length() < needed) {
+        const auto [where, line] = location_of(c, key);
+        throw io::InputError(where, line, key, file,
+                             fmt::format("its profile along {} is {} long; the deterministic contact reads {} of it "
+                                         "({}): give a trace of the whole flank (profile_axis, resample) or a "
+                                         "generated [{}.flank.profile]",
+                                         flank.topography && !flank.topography->profile_along_x ? "y" : "x",
+                                         mm(p.length()), mm(needed), why_needed, gear));
+      }
+      // The trace centred on the active part (a knob that widens the strip does not move it).
+      const double start = span.centred_start(g, p.length());
+      if (start > span.first[g] || start + p.length() < span.last[g]) {
+        const auto [where, line] = location_of(c, key);
+        throw io::InputError(
+            where, line, key, file,
+            fmt::format("its profile along {} ({} long), centred on the {}'s active flank, does not "
+                        "reach {} beyond it either side ({})",
+                        flank.topography && !flank.topography->profile_along_x ? "y" : "x", mm(p.length()), gear,
+                        mm(0.5 * (needed - (span.active_last[g] - span.active_first[g]))), why_needed));
+      }
+      for (int t = 0; t < teeth[g]; ++t) tracks.push_back({p, start});
+    } else if (flank.profile) {
+      check_spacing(flank.profile->spacing, gear + ".flank.profile.spacing");
+      // Generated over a fixed stretch of the involute (a module either side of base circle to
+      // tip): the same flank whatever the strip, elements or load.
+      if (span.first[g] < span.generated_first[g] || span.last[g] > span.generated_last[g]) {
+        const auto [where, line] = location_of(c, "contact.strip_halfwidths");
+        throw io::InputError(where, line, "contact.strip_halfwidths", fmt::format("{:g}", c.contact.strip_halfwidths),
+                             fmt::format("the strip reaches {} beyond the {}'s active flank, past the generated "
+                                         "profile's end a module beyond its tip: narrow the strip",
+                                         mm(span.strip_half_length), gear));
+      }
+      for (int t = 0; t < teeth[g]; ++t) {
+        surface::GeneratedProfileSpec spec = *flank.profile;
+        spec.seed += static_cast<std::uint64_t>(t);
+        try {
+          tracks.push_back({surface::generate_profile(spec, span.generated_last[g] - span.generated_first[g]),
+                            span.generated_first[g]});
+        } catch (const std::invalid_argument& e) {
+          const auto [where, line] = location_of(c, gear + ".flank.profile.kind");
+          throw io::InputError(where, line, gear + ".flank.profile", "", e.what());
+        }
+      }
+    } else {
+      const auto [where, line] = location_of(c, "contact.fidelity");
+      throw io::InputError(where, line, gear + ".flank", "",
+                           "the deterministic fidelity rolls each flank's profile: give [" + gear +
+                               ".flank.profile] (generated) or [" + gear +
+                               ".flank.topography] (a measured surface, its line along the involute)");
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress) {
@@ -88,7 +188,9 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
       c.dynamics.engine != "none" ? solvers::make_integrator(c.dynamics.engine) : nullptr;
   contact::MeshContactResult r;
   try {
-    r = contact::run_mesh_contact(c, mesh, c.contact.coupled ? &kinsol : nullptr, progress, 0, integrator.get());
+    r = contact::run_mesh_contact(
+        c, mesh, c.contact.coupled() ? &kinsol : nullptr, progress, 0, integrator.get(),
+        [&c](const contact::FlankSpan& span, const int teeth[2]) { return rolling_flanks(c, span, teeth); });
   } catch (const contact::RoughSurfaceOverload& e) {
     throw_overload(c, e.what());  // at the torque, naming the roughness and where each came from
   } catch (const std::invalid_argument& e) {

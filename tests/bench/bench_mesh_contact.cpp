@@ -1,14 +1,15 @@
 // The mesh cycle's hot kernels on the seed's case, so that regressions show: the summit-height
 // quadrature at one separation, the pressure-separation table, the separation inversion, one
 // strip (uncoupled, coupled), the coupled strip along the path (cold, warm), the highest
-// asperity's stresses, and the whole cycle as `geartrib run` does it, dry and lubricated.
-// Run: ./build/tests/geartrib_bench --benchmark_filter='gw_|strip_|cycle'
+// asperity's stresses, the whole cycle as `geartrib run` does it, dry and lubricated, and the
+// deterministic cycle. Run: ./build/tests/geartrib_bench --benchmark_filter='gw_|strip_|cycle'
 #include "asperity/case_setup.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "gear/gear_mesh.hpp"
 #include "io/case_file.hpp"
+#include "runs/mesh_cycle.hpp"
 #include "solvers/kinsol_solver.hpp"
 
 #include <benchmark/benchmark.h>
@@ -119,10 +120,10 @@ void strip_highest_asperity(benchmark::State& state) {
 void cycle(benchmark::State& state) {
   Case c = setup().c;
   c.lubrication.lubricated = false;  // the dry cycle (the seed's scene)
-  c.contact.coupled = state.range(0) == 1;
+  c.contact.fidelity = state.range(0) == 1 ? ContactFidelity::coupled : ContactFidelity::uncoupled;
   const solvers::KinsolSolver kinsol;
   for (auto _ : state)
-    benchmark::DoNotOptimize(contact::run_mesh_contact(c, setup().mesh, c.contact.coupled ? &kinsol : nullptr));
+    benchmark::DoNotOptimize(contact::run_mesh_contact(c, setup().mesh, c.contact.coupled() ? &kinsol : nullptr));
 }
 // The lubricated cycle against the dry one at the same positions (issue 16: at most twice the
 // dry cycle's time): the default case with and without its [lubricant].
@@ -132,8 +133,24 @@ void cycle_lubricated(benchmark::State& state) {
   const int positions = static_cast<int>(state.range(1));
   for (auto _ : state) benchmark::DoNotOptimize(contact::run_mesh_contact(c, setup().mesh, nullptr, {}, positions));
 }
+// The deterministic cycle (issue 20: the default 201 positions in at most 5 s on one core):
+// gears/m6z30-deterministic.toml on one thread at element sizes 2, 1, 0.5 (its default) and
+// 0.25 um [nm in the argument].
+void cycle_deterministic(benchmark::State& state) {
+  Case c = io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30-deterministic.toml");
+  c.contact.threads = 1;
+  c.contact.element_size = static_cast<double>(state.range(0)) * 1e-9;
+  for (auto _ : state) benchmark::DoNotOptimize(runs::run_mesh_cycle(c));
+}
 }  // namespace
 
+BENCHMARK(cycle_deterministic)
+    ->Arg(2000)
+    ->Arg(1000)
+    ->Arg(500)
+    ->Arg(250)
+    ->ArgName("element_nm")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(cycle_lubricated)
     ->ArgsProduct({{0, 1}, {201, 1000}})
     ->ArgNames({"lubricated", "positions"})
