@@ -76,8 +76,8 @@ struct RunningInResult {
   double tolerance = 0.0;       // [m]
   std::vector<Series> history;  // mesh, new plastic deformation, Rq, Rsk, summit radius, real area, plastic fraction
   // One pinion and one wheel flank (tooth 0) over their active part, before and after [m].
-  double spacing[2] = {0.0, 0.0};
-  std::vector<double> initial[2], final[2];
+  std::array<double, 2> spacing = {0.0, 0.0};
+  std::array<std::vector<double>, 2> initial, final;
 };
 
 struct MeshContactResult {

@@ -381,8 +381,8 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
   add_contact_series(c, first.strips, r);
   {  // the pressure profiles kept (first mesh)
     const StripSolver grid_only(modulus, span.strip_half_length, o);
-    std::vector<double> x;
-    for (int j = 0; j < grid_only.grid().size; ++j) x.push_back(grid_only.grid().x(j));
+    std::vector<double> x(static_cast<std::size_t>(grid_only.grid().size));
+    for (std::size_t j = 0; j < x.size(); ++j) x[j] = grid_only.grid().x(static_cast<int>(j));
     for (int i = 0; i < n; ++i) {
       const auto k = static_cast<std::size_t>(i);
       if (first.strips[k].pressure.empty()) continue;
