@@ -187,6 +187,26 @@ check det-running-in-positions 2 "key 'contact.positions' = 21: running-in needs
 check det-overload 2 "contact.strip_halfwidths = 2: the line load 1.478e\+07 N/m would yield the whole strip.*raise it to at least 5" -- \
   "$bin" run gears/m6z30-deterministic.toml --set torque=1e5Nm --positions 11 -o "$tmp/det-bad.h5" -q
 [[ ! -e "$tmp/det-bad.h5" ]] && echo "ok   det-nothing-written"
+# A measured profile trace (a stylus's line along the involute, one grid row): its spectral
+# moments give the statistical roughness and the deterministic run rolls it; 14 mm covers the
+# seed's pinion (10.7 mm active plus the strip), 5 mm does not.
+rm -rf "$tmp/trace" && mkdir -p "$tmp/trace"
+for mm_long in 14 5; do
+  awk -v n=$((mm_long * 2000)) 'BEGIN { printf "# units: um\n# spacing: 0.5 um\n";
+    for (i = 0; i < n; i++) printf "%s%.5f", (i ? "," : ""), 0.2 * sin(i * 0.37) + 0.1 * sin(i * 0.091 + 1) + 0.05 * sin(i * 1.3);
+    printf "\n" }' > "$tmp/trace/trace-$mm_long.csv"
+  /usr/bin/python3 - "$tmp/trace/case-$mm_long.toml" "trace-$mm_long.csv" <<'PY'
+import re, sys
+s = open("gears/m6z30-deterministic.toml").read()
+for gear in ("pinion", "wheel"):
+    s = re.sub(r"\[%s\.flank\.profile\][^\[]*" % gear, '[%s.flank.topography]\nfile = "%s"\nform = 1\n\n' % (gear, sys.argv[2]), s)
+s = s.replace('"../materials/', '"' + __import__("os").path.abspath("materials") + "/")
+open(sys.argv[1], "w").write(s)
+PY
+done
+check det-measured-trace 0 "wrote" -- "$bin" run "$tmp/trace/case-14.toml" --positions 21 -o "$tmp/trace/o.h5" -q
+check det-measured-trace-short 2 "case-5.toml:[0-9]+: key 'pinion.flank.topography.file' = trace-5.csv: its profile along x is 4.999 mm long; the deterministic contact reads 11.3 mm" -- \
+  "$bin" run "$tmp/trace/case-5.toml" --positions 21 -o "$tmp/trace/bad.h5" -q
 # The lightest load: elastic, a finite answer (the capped bracket cannot resolve it; the elastic solve can).
 check det-light-load 0 "wrote" -- "$bin" run gears/m6z30-deterministic.toml --set torque=1e-6Nm --positions 11 -o "$tmp/det-light.h5" -q || { echo "FAIL det-bad.h5 written"; fail=1; }
 

@@ -304,6 +304,26 @@ void read_flank(TomlReader& r, Case& c, int gear) {
     const LoadedSurface loaded = load_surface(path, read, spec.clean);
     for (const auto& w : loaded.warnings) c.warnings.push_back(w);  // units implausible for a flank
     const surface::HeightGrid& grid = loaded.grid;
+    try {  // the line along the involute the deterministic fidelity rolls
+      g.flank.measured_profile = surface::profile_from_grid(grid, spec.profile_along_x, spec.profile_at);
+    } catch (const std::invalid_argument& e) {
+      r.fail(t + "file", path.string() + ": its profile along " + (spec.profile_along_x ? "x" : "y") + ": " + e.what());
+    }
+    if (grid.nx < 3 || grid.ny < 3) {
+      // A profile trace (a stylus's line along the involute): its spectral moments give the
+      // roughness (McCool's summits), as for a generated profile.
+      if (r.has(f + "summit_radius"))
+        r.fail(f + "summit_radius", "a profile trace gives the summit radius (its spectral moments); remove it");
+      try {
+        const surface::FlankProfile& line = *g.flank.measured_profile;
+        const surface::ProfileStatistics st = surface::profile_statistics(line.z, line.spacing);
+        rough.form = Form::spectral;
+        rough.m0 = st.m0, rough.m2 = st.m2, rough.m4 = st.m4;
+      } catch (const std::invalid_argument& e) {
+        r.fail(t + "file", path.string() + ": " + e.what());
+      }
+      return;
+    }
     try {
       g.flank.measured = surface::surface_statistics(grid);
       rough = surface::measured_roughness(*g.flank.measured);
@@ -311,11 +331,6 @@ void read_flank(TomlReader& r, Case& c, int gear) {
       r.fail(t + "file", path.string() + ": " + e.what());
     }
     if (r.has(f + "summit_radius")) rough.summit_radius = given_radius;
-    try {  // the line along the involute the deterministic fidelity rolls
-      g.flank.measured_profile = surface::profile_from_grid(grid, spec.profile_along_x, spec.profile_at);
-    } catch (const std::invalid_argument& e) {
-      r.fail(t + "file", path.string() + ": its profile along " + (spec.profile_along_x ? "x" : "y") + ": " + e.what());
-    }
     if (g.flank.measured->summits < kFewSummits)
       c.warnings.push_back(
           fmt::format("{}: warning: key '{}': only {} summits on the measured surface (statistics scatter "
