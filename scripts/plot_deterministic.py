@@ -197,8 +197,9 @@ def plot_running_in(f, window_um, title, out, written):
                 [("new_plastic_deformation_m", "max over the flanks", "o-")], True),
                ("plastic area\nfraction, mean [1]", 1.0, [("plastic_area_fraction_mean", "path mean", "o-")], False),
                ("real-area ratio,\nmean [1]", 1.0, [("real_area_ratio_mean", "path mean", "o-")], False),
-               ("Rq, Rp [um]", 1e6, [(f"{gr}_{q}_m", f"{gr} {q.capitalize()}", st)
-                                     for q, st in (("rq", "o-"), ("rp", "s--")) for gr in gears], False),
+               ("Rq, mean peak\nheight [um]", 1e6,
+                [(f"{gr}_{q}_m", f"{gr} {label}", st) for q, label, st in
+                 (("rq", "Rq", "o-"), ("peak_height", "peak height", "s--")) for gr in gears], False),
                ("Rsk [1]", 1.0, [(f"{gr}_rsk", gr, "o-") for gr in gears], False),
                ("summit radius [um]", 1e6, [(f"{gr}_summit_radius_m", gr, "o-") for gr in gears], False)]
     history = [(lab, sc, [c for c in cols if c[0] in h], log) for lab, sc, cols, log in history]
@@ -231,7 +232,7 @@ def plot_running_in(f, window_um, title, out, written):
         else:
             tidy_axis(ax, shown)
         if label.startswith("Rq"):
-            ax.set_ylim(0.0, 1.15 * np.nanmax(np.concatenate(shown)))  # the legend fits between Rq and Rp
+            ax.set_ylim(0.0, 1.15 * np.nanmax(np.concatenate(shown)))  # the legend fits between Rq and the peak height
         if shakedown > 0:
             ax.axvline(shakedown, color="C2", linestyle="--", linewidth=0.8)
         ax.set_ylabel(label, fontsize=8)
