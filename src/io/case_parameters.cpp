@@ -966,7 +966,10 @@ std::string parameter_text_error(const Parameter& p, const std::string& text) {
 
 std::string case_schema_csv() {
   std::string out;
-  for (std::size_t i = 0; i < std::size(kSchemaHeader); ++i) out += (i ? "," : "") + std::string(kSchemaHeader[i]);
+  for (std::size_t i = 0; i < std::size(kSchemaHeader); ++i) {
+    if (i) out += ',';
+    out += kSchemaHeader[i];  // (not "," + std::string: GCC 12's -Wrestrict misfires on it inlined)
+  }
   out += '\n';
   for (const auto& row : schema_rows()) {
     for (std::size_t i = 0; i < row.size(); ++i) {
