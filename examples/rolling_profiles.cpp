@@ -34,14 +34,14 @@ int main(int argc, char** argv) {
   // 1. Four positions: A, the pitch point, D and E; where each flank's contact point is.
   const double at[] = {path.a, path.c, path.d, path.e};
   std::vector<contact::StripPosition> positions;
+  std::vector<double> hertz_p0;
   for (double s : at) {
     const gear::FlankGeometry f = mesh.pair().flank(s);
     // The pair at s (at B and D two pairs are in contact: take this one's load).
     const gear::MeshInstant m = mesh.analysis().at(s);
-    const gear::PairLoad* load = &m.pairs.front();
-    for (const auto& l : m.pairs)
-      if (std::abs(l.s - s) < std::abs(load->s - s)) load = &l;
-    positions.push_back({load->line_load, f.radius_equivalent, load->hertz_half_width,
+    const gear::PairLoad& load = m.pair_at(s);
+    hertz_p0.push_back(load.hertz_peak);
+    positions.push_back({load.line_load, f.radius_equivalent, load.hertz_half_width,
                          f.radius_pinion * f.radius_pinion / (2.0 * rb1),
                          f.radius_wheel * f.radius_wheel / (2.0 * rb2)});
   }
@@ -71,9 +71,9 @@ int main(int argc, char** argv) {
   const char* name[] = {"A", "C", "D", "E"};
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const contact::DeterministicStrip r = strip.solve(flank[0], flank[1], positions[i], false);
-    const double p0 = mesh.analysis().pair_load(at[i], positions[i].line_load).hertz_peak;
-    std::printf("%-6s %10.1f %10.0f %8d %10.3f %10.3f %12.0f\n", name[i], positions[i].line_load * 1e-3, p0 * 1e-6,
-                r.contact_spots, r.real_area_ratio, r.plastic_area_fraction, r.peak_pressure * 1e-6);
+    std::printf("%-6s %10.1f %10.0f %8d %10.3f %10.3f %12.0f\n", name[i], positions[i].line_load * 1e-3,
+                hertz_p0[i] * 1e-6, r.contact_spots, r.real_area_ratio, r.plastic_area_fraction,
+                r.peak_pressure * 1e-6);
   }
   std::printf(
       "The peaks sit at the hardness (%.0f MPa): the flanks' summits yield, two to three times the\n"

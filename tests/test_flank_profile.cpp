@@ -111,6 +111,10 @@ TEST(FlankProfile, HobbedRidgesAreParabolasOfTheTipRadius) {
   EXPECT_NEAR(s.rq / (h * std::sqrt(4.0 / 45.0)), 1.0, 1e-3);
   EXPECT_NEAR(s.rsk, -2.0 * std::sqrt(5.0) / 7.0, 1e-3);
   EXPECT_NEAR(s.rku, 15.0 / 7.0, 2.5e-3);
+  // Each peak is a ridge tip, h/3 above the mean line (the mean of -h t^2 is -h/3); the sampled
+  // tip lies within half a spacing of the true one, at most 3 (spacing/L)^2 = 1.2e-4 of h/3 below
+  // it, and the discrete mean is off by ~1/160^2 = 4e-5: 2e-4.
+  EXPECT_NEAR(s.peak_height / (h / 3.0), 1.0, 2e-4);
 
   // With a random component: the same ridges (the phase is the generator's first draw) plus a
   // profile of mean 0 and Rq exactly rq (round-off).
@@ -174,6 +178,7 @@ TEST(FlankProfile, StatisticsOfAHandWorkedProfile) {
   EXPECT_EQ(s.peaks, 2);
   EXPECT_NEAR(s.summit_radius / (2.0 / 11.0 * 1e-6), 1.0, 1e-12);  // 1 / mean curvature, (2 + 9)/2 per um
   EXPECT_NEAR(s.peak_density / (2.0 / 9e-6), 1.0, 1e-12);          // 2 peaks over 9 um
+  EXPECT_NEAR(s.peak_height / 3.2e-6, 1.0, 1e-12);                 // (2.7 + 3.7)/2 um above the mean
   EXPECT_THROW(profile_statistics(std::vector<double>{0.0, 1e-6}, 1e-6), std::invalid_argument);
   EXPECT_THROW(profile_statistics(z, 0.0), std::invalid_argument);
   z[4] = std::nan("");

@@ -8,12 +8,12 @@
 #include "contact/rough_line_contact.hpp"
 #include "contact/series_columns.hpp"
 #include "contact/validity.hpp"
+#include "core/stopwatch.hpp"
 #include "gear/mesh_dynamics.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -37,22 +37,6 @@ double path_mean(const std::vector<double>& v) {
   for (std::size_t i = 1; i + 1 < v.size(); ++i) sum += v[i];
   return sum / static_cast<double>(v.size() - 1);
 }
-
-namespace {
-class Stopwatch {
- public:
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return s;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
-
-}  // namespace
 
 MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
                                    const std::function<void(int, int)>& progress, int positions,
@@ -94,9 +78,7 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
       const gear::MeshInstant m = mesh.analysis().at(
           s, false,
           stiffness ? gear::MeshAnalysis::PairStiffness::computed : gear::MeshAnalysis::PairStiffness::omitted);
-      const gear::PairLoad* own = &m.pairs.front();
-      for (const auto& l : m.pairs)
-        if (std::abs(l.s - s) < std::abs(own->s - s)) own = &l;
+      const gear::PairLoad* own = &m.pair_at(s);
       const gear::FlankGeometry f = mesh.pair().flank(s);
       const gear::FlankKinematics k = mesh.pair().kinematics(s, mesh.pinion_speed());
       s_v.push_back(s);

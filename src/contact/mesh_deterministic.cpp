@@ -1,12 +1,12 @@
 #include "contact/mesh_deterministic.hpp"
 
 #include "contact/series_columns.hpp"
+#include "core/stopwatch.hpp"
 #include "surface/rough_surface.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -20,10 +20,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Fewer elements than this across a contact spot on average: the spots are not resolved
 // (a Hertzian spot's peak pressure is within ~5% from four elements across; tests/test_deterministic_contact.cpp).
 constexpr double kMinElementsPerSpot = 4.0;
-
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 const std::vector<double>& series(const MeshContactResult& r, const char* name) {
   const Series* s = r.find(name);
@@ -40,11 +36,8 @@ MeshContactResult statistical_on_profiles(const Case& c, const gear::GearMesh& m
   const FlankTrack* tracks[2] = {&f.pinion.front(), &f.wheel.front()};
   GearSpec* gears[2] = {&sc.pinion, &sc.wheel};
   for (int g = 0; g < 2; ++g) {
-    const surface::ProfileStatistics st = active_statistics(*tracks[g], span.active_first[g], span.active_last[g]);
-    surface::FlankRoughness& rough = gears[g]->flank.roughness;
-    rough = {};
-    rough.form = surface::FlankRoughness::Form::spectral;
-    rough.m0 = st.m0, rough.m2 = st.m2, rough.m4 = st.m4;
+    gears[g]->flank.roughness =
+        surface::spectral_roughness(active_statistics(*tracks[g], span.active_first[g], span.active_last[g]));
   }
   const auto [r1, r2] = surface::flank_summit_radii(sc.pinion.flank.roughness, sc.wheel.flank.roughness);
   sc.pinion.flank.roughness.summit_radius = r1;
@@ -126,31 +119,16 @@ void add_contact_series(const Case& c, const std::vector<DeterministicStrip>& st
 struct HistoryRow {
   double mesh = 0.0, new_plastic = kNaN, real_area = kNaN, plastic_fraction = kNaN, peak_pressure = kNaN;
   surface::ProfileStatistics flank[2];
-  double peak_height[2] = {0.0, 0.0};
 };
 
 // A flank's statistics over its active part as the elements see it: the profile averaged over
 // element-sized cells (the summit curvature of the finer profile would count the kinks a plastic
 // flattening leaves between element centres).
-struct ElementStatistics {
-  surface::ProfileStatistics st;
-  double peak_height = 0.0;  // mean height of the peaks (the statistics' peaks) above the mean line [m]
-};
-ElementStatistics element_statistics(const FlankTrack& t, const FlankSpan& span, int g) {
+surface::ProfileStatistics element_statistics(const FlankTrack& t, const FlankSpan& span, int g) {
   std::vector<double> z;
   for (double a = span.active_first[g]; a + span.element_size <= span.active_last[g]; a += span.element_size)
     z.push_back(track_mean(t, a, a + span.element_size));
-  ElementStatistics out;
-  out.st = surface::profile_statistics(z, span.element_size);
-  double mean = 0.0;
-  for (double v : z) mean += v / static_cast<double>(z.size());
-  // Peaks as profile_statistics counts them: above both neighbours (a plateau: its first point)
-  // and above the mean line.
-  int peaks = 0;
-  for (std::size_t i = 1; i + 1 < z.size(); ++i)
-    if (z[i] > z[i - 1] && z[i] >= z[i + 1] && z[i] > mean) out.peak_height += z[i] - mean, ++peaks;
-  if (peaks > 0) out.peak_height /= peaks;
-  return out;
+  return surface::profile_statistics(z, span.element_size);
 }
 
 HistoryRow history_row(int mesh, const std::vector<const MeshPass*>& passes,
@@ -174,10 +152,9 @@ HistoryRow history_row(int mesh, const std::vector<const MeshPass*>& passes,
   for (int g = 0; g < 2; ++g) {  // the teeth's mean statistics, at the elements' sampling
     surface::ProfileStatistics& m = row.flank[g];
     for (const FlankTrack* t : tracks[g]) {
-      const ElementStatistics e = element_statistics(*t, span, g);
+      const surface::ProfileStatistics e = element_statistics(*t, span, g);
       const double w = 1.0 / static_cast<double>(tracks[g].size());
-      m.rq += w * e.st.rq, m.rsk += w * e.st.rsk, m.summit_radius += w * e.st.summit_radius;
-      row.peak_height[g] += w * e.peak_height;
+      m.rq += w * e.rq, m.rsk += w * e.rsk, m.summit_radius += w * e.summit_radius, m.peak_height += w * e.peak_height;
     }
   }
   return row;
@@ -203,7 +180,7 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
   const auto& rho1 = series(r, "rho1_m");
   const auto& rho2 = series(r, "rho2_m");
   const int n = static_cast<int>(s_m.size());
-  const auto start = std::chrono::steady_clock::now();
+  Stopwatch clock;
 
   // The strip, the span of each flank it reads, and the flanks.
   const double rb[2] = {mesh.pair().pinion().base_radius, mesh.pair().wheel().base_radius};
@@ -217,11 +194,20 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
     sigma[0].push_back(rho1[k] * rho1[k] / (2.0 * rb[0]));  // involute arc length from the base circle
     sigma[1].push_back(rho2[k] * rho2[k] / (2.0 * rb[1]));
   }
+  // The boundary elements: the softer flank's hardness caps the pressure and takes the plastic
+  // deformation (equal hardness: half each).
+  const Material& m1 = c.pinion.material;
+  const Material& m2 = c.wheel.material;
+  DeterministicOptions o;
+  o.element_size = cs.element_size;
+  o.strip_halfwidths = cs.strip_halfwidths;
+  o.pressure_cap = std::min(m1.hardness, m2.hardness);
+  o.poisson_ratio = m1.hardness <= m2.hardness ? m1.poisson_ratio : m2.poisson_ratio;
+  o.pinion_plastic_share = m1.hardness < 0.99 * m2.hardness ? 1.0 : m2.hardness < 0.99 * m1.hardness ? 0.0 : 0.5;
+  o.subsurface_stress = cs.asperity_stress;
+  o.plastic_overlap = c.running_in.tolerance;
   // The flanks are read over the grid's whole reach (at least 8 elements) and two elements more.
-  DeterministicOptions reach;
-  reach.element_size = cs.element_size;
-  reach.strip_halfwidths = cs.strip_halfwidths;
-  const HalfPlaneGrid grid = strip_grid(span.strip_half_length, reach);
+  const HalfPlaneGrid grid = strip_grid(span.strip_half_length, o);
   const double margin = 0.5 * grid.size * grid.spacing + 2.0 * cs.element_size;
   span.positions = n;
   span.running_in = c.running_in.meshes > 0;
@@ -244,10 +230,9 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
   RollingFlanks flanks = source(span, teeth);
   if (static_cast<int>(flanks.pinion.size()) != teeth[0] || static_cast<int>(flanks.wheel.size()) != teeth[1])
     throw std::logic_error("deterministic run: the flank source gave the wrong number of teeth");
-  r.stages.push_back({"flank_profiles", seconds_since(start)});
+  r.stages.push_back({"flank_profiles", clock.lap()});
 
   // The statistical model on the same flanks (both rough), and in lubricated runs the film's share.
-  auto lap = std::chrono::steady_clock::now();
   const bool statistics = rough(flanks.pinion.front()) && rough(flanks.wheel.front());
   std::vector<double> share(static_cast<std::size_t>(n), 1.0);
   if (c.lubrication.lubricated && !statistics)
@@ -265,22 +250,9 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
     r.asperity_model = st.asperity_model;
     for (const auto& w : st.warnings) r.warnings.push_back("statistical model: " + w);
     if (const Series* a = r.find("asperity_load_share")) share = a->values;
-    r.stages.push_back({"statistical_model", seconds_since(lap)});
-    lap = std::chrono::steady_clock::now();
+    r.stages.push_back({"statistical_model", clock.lap()});
   }
 
-  // The boundary elements: the softer flank's hardness caps the pressure and takes the plastic
-  // deformation (equal hardness: half each).
-  const Material& m1 = c.pinion.material;
-  const Material& m2 = c.wheel.material;
-  DeterministicOptions o;
-  o.element_size = cs.element_size;
-  o.strip_halfwidths = cs.strip_halfwidths;
-  o.pressure_cap = std::min(m1.hardness, m2.hardness);
-  o.poisson_ratio = m1.hardness <= m2.hardness ? m1.poisson_ratio : m2.poisson_ratio;
-  o.pinion_plastic_share = m1.hardness < 0.99 * m2.hardness ? 1.0 : m2.hardness < 0.99 * m1.hardness ? 0.0 : 0.5;
-  o.subsurface_stress = cs.asperity_stress;
-  o.plastic_overlap = c.running_in.tolerance;
   std::vector<StripPosition> positions;
   for (int i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
@@ -376,13 +348,12 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
     }
   }
   if (progress) progress(total_solves, total_solves);
-  r.stages.push_back({"deterministic_contact", seconds_since(lap)});
+  r.stages.push_back({"deterministic_contact", clock.lap()});
 
   add_contact_series(c, first.strips, r);
-  {  // the pressure profiles kept (first mesh)
-    const StripSolver grid_only(modulus, span.strip_half_length, o);
-    std::vector<double> x(static_cast<std::size_t>(grid_only.grid().size));
-    for (std::size_t j = 0; j < x.size(); ++j) x[j] = grid_only.grid().x(static_cast<int>(j));
+  {  // the pressure profiles kept (first mesh), on the strip's grid (the one every solver has)
+    std::vector<double> x(static_cast<std::size_t>(grid.size));
+    for (std::size_t j = 0; j < x.size(); ++j) x[j] = grid.x(static_cast<int>(j));
     for (int i = 0; i < n; ++i) {
       const auto k = static_cast<std::size_t>(i);
       if (first.strips[k].pressure.empty()) continue;
@@ -401,11 +372,11 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
                     C{"plastic_area_fraction_mean", "1", [](const H& h) { return h.plastic_fraction; }},
                     C{"max_pressure_Pa", "Pa", [](const H& h) { return h.peak_pressure; }},
                     C{"pinion_rq_m", "m", [](const H& h) { return h.flank[0].rq; }},
-                    C{"pinion_peak_height_m", "m", [](const H& h) { return h.peak_height[0]; }},
+                    C{"pinion_peak_height_m", "m", [](const H& h) { return h.flank[0].peak_height; }},
                     C{"pinion_rsk", "1", [](const H& h) { return h.flank[0].rsk; }},
                     C{"pinion_summit_radius_m", "m", [](const H& h) { return h.flank[0].summit_radius; }},
                     C{"wheel_rq_m", "m", [](const H& h) { return h.flank[1].rq; }},
-                    C{"wheel_peak_height_m", "m", [](const H& h) { return h.peak_height[1]; }},
+                    C{"wheel_peak_height_m", "m", [](const H& h) { return h.flank[1].peak_height; }},
                     C{"wheel_rsk", "1", [](const H& h) { return h.flank[1].rsk; }},
                     C{"wheel_summit_radius_m", "m", [](const H& h) { return h.flank[1].summit_radius; }}});
     r.running_in = std::move(ri);

@@ -28,6 +28,14 @@ PairLoad MeshAnalysis::pair_load(double s, double w) const {
   return l;
 }
 
+const PairLoad& MeshInstant::pair_at(double s) const {
+  if (pairs.empty()) throw std::logic_error("mesh instant without a pair in contact");
+  const PairLoad* own = &pairs.front();
+  for (const auto& l : pairs)
+    if (std::abs(l.s - s) < std::abs(own->s - s)) own = &l;
+  return *own;
+}
+
 MeshInstant MeshAnalysis::at(double s, bool single_side, PairStiffness stiffness) const {
   const PathOfContact& p = pair_.path();
   std::vector<double> positions = pairs_in_contact(p, s);

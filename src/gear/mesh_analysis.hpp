@@ -22,6 +22,8 @@ struct PairLoad {
 struct MeshInstant {
   std::vector<PairLoad> pairs;  // every pair in contact, in order of s
   double mesh_stiffness = 0.0;  // sum of the pair stiffnesses [N/m]
+  // The pair whose contact is at s (nearest it): the one `at(s)` was asked about.
+  const PairLoad& pair_at(double s) const;
 };
 
 class MeshAnalysis {

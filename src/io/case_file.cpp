@@ -316,9 +316,7 @@ void read_flank(TomlReader& r, Case& c, int gear) {
         r.fail(f + "summit_radius", "a profile trace gives the summit radius (its spectral moments); remove it");
       try {
         const surface::FlankProfile& line = *g.flank.measured_profile;
-        const surface::ProfileStatistics st = surface::profile_statistics(line.z, line.spacing);
-        rough.form = Form::spectral;
-        rough.m0 = st.m0, rough.m2 = st.m2, rough.m4 = st.m4;
+        rough = surface::spectral_roughness(surface::profile_statistics(line.z, line.spacing));
       } catch (const std::invalid_argument& e) {
         r.fail(t + "file", path.string() + ": " + e.what());
       }
@@ -357,10 +355,7 @@ void read_flank(TomlReader& r, Case& c, int gear) {
         return;
       }
       const surface::FlankProfile sample = surface::generate_profile(spec, kReferenceProfilePoints * spec.spacing);
-      const surface::ProfileStatistics st = surface::profile_statistics(sample.z, sample.spacing);
-      rough.m0 = st.m0;
-      rough.m2 = st.m2;
-      rough.m4 = st.m4;
+      rough = surface::spectral_roughness(surface::profile_statistics(sample.z, sample.spacing));
     } catch (const std::invalid_argument& e) {
       r.fail(f + "profile.kind", e.what());
     }

@@ -265,11 +265,20 @@ ProfileStatistics profile_statistics(std::span<const double> z, double spacing) 
     while (j < n && z[j] == z[i]) ++j;
     if (j == n || !(z[j] < z[i]) || !(z[i] > mean)) continue;
     curvature += -(z[i - 1] - 2.0 * z[i] + z[i + 1]) / (spacing * spacing);
+    s.peak_height += z[i] - mean;
     ++s.peaks;
   }
   if (s.peaks > 0) s.summit_radius = curvature > 0.0 ? s.peaks / curvature : 0.0;
+  if (s.peaks > 0) s.peak_height /= s.peaks;
   s.peak_density = s.peaks / (spacing * static_cast<double>(n - 1));
   return s;
+}
+
+FlankRoughness spectral_roughness(const ProfileStatistics& s) {
+  FlankRoughness r;
+  r.form = FlankRoughness::Form::spectral;
+  r.m0 = s.m0, r.m2 = s.m2, r.m4 = s.m4;
+  return r;
 }
 
 }  // namespace geartrib::surface

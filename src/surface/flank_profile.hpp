@@ -4,6 +4,7 @@
 #pragma once
 
 #include "surface/height_grid.hpp"
+#include "surface/rough_surface.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -60,14 +61,20 @@ FlankProfile profile_from_grid(const HeightGrid& g, bool along_x, double at);
 // (m0 = Rq^2, m2 = mean squared central-difference slope, m4 = mean squared second difference / spacing^4;
 // McCool 1986), and the peaks: points higher than both neighbours (a plateau: its first point) and above the mean
 // line; summit_radius = 1 / mean of their curvature -(z[i-1] - 2 z[i] + z[i+1]) / spacing^2 (0 when no peak),
-// peak_density = peaks per metre of profile length. Fewer than 3 points: invalid_argument.
+// peak_density = peaks per metre of profile length, peak_height = their mean height above the mean line (0 when
+// no peak). Fewer than 3 points: invalid_argument.
 struct ProfileStatistics {
   double ra = 0, rq = 0, rsk = 0, rku = 0;  // [m], [m], [-], [-]; Rsk = Rku = 0 for a flat profile
   double m0 = 0, m2 = 0, m4 = 0;            // [m^2], [-], [1/m^2]
   double summit_radius = 0;                 // [m]
   double peak_density = 0;                  // [1/m]
+  double peak_height = 0;                   // [m]
   int peaks = 0;
 };
 ProfileStatistics profile_statistics(std::span<const double> z, double spacing);
+
+// A profile's roughness for the statistical model: the spectral form of its moments m0, m2, m4
+// (McCool's summits; the profile twin of measured_roughness for an areal surface).
+FlankRoughness spectral_roughness(const ProfileStatistics& s);
 
 }  // namespace geartrib::surface
