@@ -49,14 +49,22 @@ assert "201 of 201 positions beyond continuous" in (verdict.decode() if isinstan
 # The default scene runs lubricated: /lubrication with units, shares in [0, 1] adding to 1, the
 # film and temperatures positive, wear zero only near the pitch point.
 lub = f["lubrication"]
-for n in ["film_m", "lambda", "asperity_load_share", "film_load_share", "friction_coefficient", "power_loss_W",
-          "flash_temperature_K", "contact_temperature_K", "iso_film_hy_m", "iso_lambda_gf", "wear_depth_pinion_m",
-          "wear_depth_wheel_m", "separation_m", "ehl_regime", "flag_low_peclet"]:
+for n in ["film_m", "lambda_smooth_film", "mean_gap_m", "lambda_mean_gap", "asperity_load_share", "film_load_share",
+          "friction_coefficient", "pair_power_loss_W", "flash_temperature_K", "contact_temperature_K",
+          "iso_flash_temperature_K", "iso_contact_temperature_K", "blok_flash_temperature_iso_mu_K", "iso_film_hy_m",
+          "iso_lambda_gf", "wear_depth_pinion_m", "wear_depth_wheel_m", "mean_plane_separation_m", "ehl_regime",
+          "flag_low_peclet", "flag_share_depends_on_closure"]:
     assert lub[n].shape == (201,) and np.all(np.isfinite(lub[n][()])) and "units" in lub[n].attrs, n
 a, fs = lub["asperity_load_share"][()], lub["film_load_share"][()]
 assert np.all((a >= 0) & (a <= 1)) and np.allclose(a + fs, 1.0, rtol=0, atol=1e-15)
 assert np.all(lub["film_m"][()] > 0) and np.all(lub["contact_temperature_K"][()] >= lub.attrs["bulk_temperature_K"])
-assert lub.attrs["oil_temperature_K"] == 343.15 and lub.attrs["iso_mean_friction"] > 0
+assert lub.attrs["oil_temperature_K"] == 343.15 and lub.attrs["mean_friction_iso"] > 0
+# The named points, B and D with the single pair's load (the largest line load on the path).
+pts = lub["points"]
+names = [x.decode() if isinstance(x, bytes) else x for x in pts["point"][()]]
+assert names == ["A", "AB", "B", "C", "D", "DE", "E"], names
+w = pts["line_load_N_per_m"][()]
+assert abs(w[2] / f["mesh/line_load_N_per_m"][()].max() - 1) < 1e-12 and abs(w[4] / w[2] - 1) < 1e-12
 PY
 "$bin" run -o "$tmp/v.h5" --positions 11 2>/dev/null | grep -c "^Validity: fully plastic regime" | grep -qx 1 \
   && ok verdict-printed-once || bad verdict-printed-once

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -174,25 +175,191 @@ TEST(Friction, EyringCappedByTheLimitingShearStress) {
   oil.pressure_viscosity = 2e-8;
   oil.eyring_stress = 5e6;
   oil.limiting_shear_coefficient = 0.075;
-  EXPECT_EQ(film_shear_stress(oil, 1e9, 0.0, 1e-6), 0.0);  // pure rolling: no shear
-  // Barely sheared: Newtonian, tau = eta v/h.
-  const double slow = film_shear_stress(oil, 1e6, 1e-9, 1e-6);
-  EXPECT_NEAR(slow / (0.04 * std::exp(2e-8 * 1e6) * 1e-9 / 1e-6), 1.0, 1e-9);
-  // Hard sheared at high pressure: the limiting shear stress.
-  EXPECT_DOUBLE_EQ(film_shear_stress(oil, 1e9, 5.0, 1e-7), 0.075 * 1e9);
+  oil.temperature_viscosity = 0.03;
+  oil.thermal_conductivity = 0.13;
+  for (FilmTraction t : {FilmTraction::isothermal_eyring, FilmTraction::thermal_eyring}) {
+    EXPECT_EQ(film_shear_stress(t, oil, 1e9, 0.0, 1e-6).shear_stress, 0.0);  // pure rolling: no shear
+    // Barely sheared: Newtonian, tau = eta v/h (the heating of 1e-9 m/s is nil).
+    const double slow = film_shear_stress(t, oil, 1e6, 1e-9, 1e-6).shear_stress;
+    EXPECT_NEAR(slow / (0.04 * std::exp(2e-8 * 1e6) * 1e-9 / 1e-6), 1.0, 1e-9);
+    // Hard sheared at high pressure: the limiting shear stress.
+    const FilmShear hard = film_shear_stress(t, oil, 1e9, 5.0, 1e-7);
+    EXPECT_DOUBLE_EQ(hard.shear_stress, 0.075 * 1e9);
+    EXPECT_TRUE(hard.limited);
+  }
   // The mixed coefficient weights boundary and film by their shares.
-  const MixedFriction f = mixed_friction(oil, {0.3, 0.7, 1e-7}, 0.1, 1.5e5, 2e-4, 5.0);
-  EXPECT_NEAR(f.coefficient, 0.3 * 0.1 + 0.7 * f.film_coefficient, 1e-15);
+  const MixedFriction f = mixed_friction({0.3, 0.7, 1e-7}, 0.1, 0.04);
+  EXPECT_NEAR(f.coefficient, 0.3 * 0.1 + 0.7 * 0.04, 1e-15);
 }
 
-TEST(FlashTemperature, BlokIdentitiesAndZeroAtThePitchPoint) {
-  const double b = thermal_contact_coefficient(48.0, 7850.0, 470.0);
-  // Equal bodies: the ISO/TS 6336-20 form 1.11 mu w |sqrt v1 - sqrt v2| / (2 B sqrt b).
-  const double iso = 1.11 * 0.05 * 1.5e5 * std::abs(std::sqrt(2.0) - std::sqrt(5.0)) / (2.0 * b * std::sqrt(2e-4));
-  EXPECT_NEAR(blok_flash_temperature(0.05, 1.5e5, 2e-4, 2.0, 5.0, b, b) / iso, 1.0, 1e-14);
-  EXPECT_EQ(blok_flash_temperature(0.05, 1.5e5, 2e-4, 3.0, 3.0, b, b), 0.0);  // pure rolling
-  // Linear in mu and in w.
-  EXPECT_NEAR(blok_flash_temperature(0.1, 1.5e5, 2e-4, 2.0, 5.0, b, b) / iso, 2.0, 1e-14);
+// The thermal Eyring law against a numerical solution of the energy equation it stands for (a
+// second derivation): k T'' = -tau gamma_dot(T) across the film, T = T_s on both walls, with
+// gamma_dot = (tau0/eta_s) sinh(tau/tau0) e^(-beta (T - T_s)) -> in theta = beta (T - T_s):
+// theta'' = -A e^theta, A = beta tau tau0 sinh(tau/tau0)/(k eta_s). Shooting on theta'(0) and
+// integrating the sliding speed v = int gamma_dot dy by RK4 gives v(tau); the closed form inverts it.
+double sliding_speed_by_shooting(double tau, double eta_s, double tau0, double beta, double k, double h) {
+  const double a = beta * tau * tau0 * std::sinh(tau / tau0) / (k * eta_s);
+  const int steps = 4000;
+  const double dy = h / steps;
+  auto shoot = [&](double slope, double* speed) {
+    double th = 0.0, dth = slope, v = 0.0;
+    const double rate = tau0 / eta_s * std::sinh(tau / tau0);
+    for (int i = 0; i < steps; ++i) {
+      // RK4 on (theta, theta', v).
+      auto f = [&](double t, double d) { return std::array<double, 3>{d, -a * std::exp(t), rate * std::exp(t)}; };
+      const auto k1 = f(th, dth);
+      const auto k2 = f(th + 0.5 * dy * k1[0], dth + 0.5 * dy * k1[1]);
+      const auto k3 = f(th + 0.5 * dy * k2[0], dth + 0.5 * dy * k2[1]);
+      const auto k4 = f(th + dy * k3[0], dth + dy * k3[1]);
+      th += dy / 6.0 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0]);
+      dth += dy / 6.0 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1]);
+      v += dy / 6.0 * (k1[2] + 2 * k2[2] + 2 * k3[2] + k4[2]);
+    }
+    if (speed) *speed = v;
+    return th;  // theta(h): zero at the right slope
+  };
+  // The lower (stable) branch: theta'(0) from 0 up to where theta(h) first crosses zero.
+  double lo = 0.0, hi = 1.0 / h;
+  while (shoot(hi, nullptr) < 0.0) hi *= 2.0;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (shoot(mid, nullptr) < 0.0 ? lo : hi) = mid;
+  }
+  double v = 0.0;
+  shoot(0.5 * (lo + hi), &v);
+  return v;
+}
+
+TEST(Friction, ThermalEyringSolvesTheFilmsEnergyEquation) {
+  const double eta_s = 0.05, tau0 = 5e6, beta = 0.03, k = 0.13, h = 1e-7;
+  for (double v : {0.5, 4.0, 12.0}) {
+    const FilmShear t = thermal_eyring_shear_stress(eta_s, tau0, beta, k, v, h);
+    // The shooting solution's speed at the closed form's stress: RK4 with 4000 steps is accurate
+    // to ~1e-10 of the speed; 1e-6 allows for the bisection of the slope.
+    EXPECT_NEAR(sliding_speed_by_shooting(t.shear_stress, eta_s, tau0, beta, k, h) / v, 1.0, 1e-6) << v;
+    EXPECT_LT(t.shear_stress, eyring_shear_stress(eta_s, tau0, v, h)) << v;  // heating lowers the traction
+    EXPECT_GT(t.midfilm_rise, 0.0);
+  }
+  // Isothermal limits: no temperature sensitivity, or a conductor that takes all the heat.
+  EXPECT_NEAR(thermal_eyring_shear_stress(eta_s, tau0, 1e-30, k, 4.0, h).shear_stress /
+                  eyring_shear_stress(eta_s, tau0, 4.0, h),
+              1.0, 1e-12);
+  EXPECT_NEAR(thermal_eyring_shear_stress(eta_s, tau0, beta, 1e30, 4.0, h).shear_stress /
+                  eyring_shear_stress(eta_s, tau0, 4.0, h),
+              1.0, 1e-12);
+  // The thermal maximum: the traction rises with the sliding speed, peaks, and falls
+  // (Johnson & Greenwood 1980: at X tanh X = 1).
+  double peak = 0.0, last = 0.0;
+  bool fell = false;
+  for (double v : test::log_space(1e-3, 1e4, 200)) {
+    const double tau = thermal_eyring_shear_stress(eta_s, tau0, beta, k, v, h).shear_stress;
+    if (tau < last) fell = true;
+    peak = std::max(peak, tau);
+    last = tau;
+  }
+  EXPECT_TRUE(fell);
+  EXPECT_LT(last, 0.9 * peak);
+}
+
+// Jaeger's high-Peclet surface temperature of a half-space under a moving band source, by
+// quadrature (a derivation independent of Blok's closed form): a flank point entering the band at
+// -b reaches x after (x + b)/v, and T(x) = (1/(B sqrt(pi v))) int_{-b}^{x} q(xi)/sqrt(x - xi) dxi.
+// For q = q0 sqrt(1 - xi^2/b^2), with xi = x - t^2 to remove the singularity.
+double jaeger_integral(double x) {  // int_{-1}^{x} sqrt(1 - u^2)/sqrt(x - u) du, |x| in band units
+  const int n = 20000;
+  const double top = std::sqrt(x + 1.0);
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) {  // midpoint rule in t = sqrt(x - u): smooth integrand 2 sqrt(1 - (x - t^2)^2)
+    const double t = (i + 0.5) * top / n;
+    sum += 2.0 * std::sqrt(std::max(0.0, 1.0 - (x - t * t) * (x - t * t)));
+  }
+  return sum * top / n;
+}
+double golden_maximum(double (*f)(double), double lo, double hi, double* at = nullptr) {
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double a = lo, b = hi;
+  for (int i = 0; i < 80; ++i) {
+    const double c = b - g * (b - a), d = a + g * (b - a);
+    (f(c) > f(d) ? b : a) = (f(c) > f(d) ? d : c);
+  }
+  if (at) *at = 0.5 * (a + b);
+  return f(0.5 * (a + b));
+}
+
+TEST(FlashTemperature, BlokAgainstJaegersMovingSourceIntegrated) {
+  double where = 0.0;
+  const double peak_integral = golden_maximum(jaeger_integral, -1.0, 1.0, &where);
+  // One body at speed v under the whole flux mu p0 v_s sqrt(1 - x^2/b^2), p0 = 2w/(pi b): its peak
+  // rise is (2/pi) (I_max/sqrt(pi)) mu w v_s / (B sqrt(v) sqrt(b)). Two bodies sharing the flux so
+  // that their peaks are equal (Blok's postulate) add their B sqrt(v) in the denominator.
+  const double constant_b = 2.0 / std::numbers::pi * peak_integral / std::sqrt(std::numbers::pi);
+  EXPECT_NEAR(constant_b, 0.78598, 2e-5);                               // to the quadrature's accuracy
+  EXPECT_NEAR(constant_b * std::sqrt(2.0) / kBlokConstant, 1.0, 2e-3);  // Blok's 1.11 is 1.1115 to 3 digits
+  EXPECT_NEAR(where, 0.652, 2e-3);                                      // the peak trails the band's centre
+  // The mean over the band, over the peak.
+  double mean = 0.0;
+  const int n = 2000;
+  for (int i = 0; i < n; ++i) mean += jaeger_integral(-1.0 + (i + 0.5) * 2.0 / n) / n;
+  EXPECT_NEAR(mean / peak_integral, kBlokMeanOverPeak, 2e-4);
+  // The partition: each body's own integral with its share of the flux reaches the formula's
+  // temperature (unequal bodies and speeds).
+  const double b1 = thermal_contact_coefficient(48.0, 7850.0, 470.0),
+               b2 = thermal_contact_coefficient(25.0, 8000.0, 500.0);
+  const double mu = 0.06, w = 2e5, b = 1.5e-4, v1 = 2.0, v2 = 6.5;
+  const double q0 = mu * 2.0 * w / (std::numbers::pi * b) * std::abs(v1 - v2);
+  const double phi = b1 * std::sqrt(v1) / (b1 * std::sqrt(v1) + b2 * std::sqrt(v2));
+  const double t1 = phi * q0 * std::sqrt(b) * peak_integral / (b1 * std::sqrt(std::numbers::pi * v1));
+  const double t2 = (1.0 - phi) * q0 * std::sqrt(b) * peak_integral / (b2 * std::sqrt(std::numbers::pi * v2));
+  EXPECT_NEAR(t1 / t2, 1.0, 1e-12);
+  EXPECT_NEAR(blok_flash_temperature(mu, w, b, v1, v2, b1, b2) / t1, 1.0, 2e-3);  // 1.11 vs 1.1115, as above
+  EXPECT_EQ(blok_flash_temperature(0.05, 1.5e5, 2e-4, 3.0, 3.0, b1, b1), 0.0);    // pure rolling
+  EXPECT_NEAR(blok_flash_temperature(0.1, 1.5e5, 2e-4, 2.0, 5.0, b1, b1) /
+                  blok_flash_temperature(0.05, 1.5e5, 2e-4, 2.0, 5.0, b1, b1),
+              2.0, 1e-14);  // linear in mu
+}
+
+TEST(FlashTemperature, IsoMethodsFactorsAndItsClosedFormIsBlok) {
+  // X_alpha_beta of a 20 deg rack: 0.978 at alpha_wt 20 deg and 1.007 at 22 deg (the standard's table as
+  // transcribed, three digits).
+  const double deg = std::numbers::pi / 180.0;
+  EXPECT_NEAR(iso_angle_factor(20.0 * deg, 20.0 * deg), 0.978, 1e-3);
+  EXPECT_NEAR(iso_angle_factor(22.0 * deg, 20.0 * deg), 1.007, 1e-3);
+  // X_M = 50 K N^-3/4 s^1/2 m^-1/2 mm for steel: E 206 GPa, nu 0.3, B_M 435 N/(mm^0.5 m^0.5 s^0.5 K).
+  const double e_r = 2.0 / (2.0 * (1.0 - 0.09) / 206e9);
+  const double b_m = 435.0 * std::sqrt(1000.0);
+  EXPECT_NEAR(iso_thermo_elastic_factor(e_r, b_m, b_m), 50.0, 0.2);  // the standard rounds to 50
+  // The standard's closed form (A.5) with X_J = X_Gamma = 1 against Blok's band formula with the
+  // same mu at the same point of a profile-shifted pair (the FZG C gear, a_w 91.5 mm).
+  const Case c = io::load_case(test::source_dir() / "validation/fzg-c-lubricated/fzg-c-lubricated.toml");
+  const gear::GearMesh mesh(c);
+  const auto& pair = mesh.pair();
+  IsoFlashGeometry g;
+  g.gear_ratio = 24.0 / 16.0;
+  g.center_distance = pair.center_distance();
+  g.operating_angle = pair.operating_pressure_angle();
+  g.reference_angle = pair.spec().pressure_angle;
+  const double face = pair.spec().face_width, torque = c.operating.pinion_torque;
+  const double w_bt = torque / pair.gear(0).pitch_radius / face, w_bn = torque / pair.gear(0).base_radius / face;
+  const double v_t = mesh.pinion_speed() * pair.gear(0).pitch_radius;  // ISO's v_t: the reference circle
+  const double bm = thermal_contact_coefficient(c.pinion.material.thermal_conductivity, c.pinion.material.density,
+                                                c.pinion.material.specific_heat);
+  const double x_m = iso_thermo_elastic_factor(2.0 * mesh.composite_modulus(), bm, bm);
+  for (double s : {0.3, 0.45, 0.7, 0.9}) {
+    const double at = pair.path().a + s * pair.path().length;
+    const auto f = pair.flank(at);
+    const auto k = pair.kinematics(at, mesh.pinion_speed());
+    const double b_h = std::sqrt(4.0 * w_bn * f.radius_equivalent / (std::numbers::pi * mesh.composite_modulus()));
+    const double blok = blok_flash_temperature(0.05, w_bn, b_h, k.rolling_pinion, k.rolling_wheel, bm, bm);
+    const double iso = iso_flash_temperature(0.05, x_m, 1.0, iso_geometry_factor(g, f.roll_parameter), 1.0, w_bt, v_t,
+                                             g.center_distance);
+    // 0.51 and 1.22 are the standard's rounded constants: agreement to 0.5 %.
+    EXPECT_NEAR(iso / blok, 1.0, 5e-3) << s;
+  }
+  // X_J: 1 in the recess, 1 + C_eff/50 (C in um) at the start of the approach.
+  g.gamma_a = -0.4;
+  g.gamma_e = 0.6;
+  EXPECT_EQ(iso_approach_factor(g, 0.2, 10e-6, 0.0), 1.0);
+  EXPECT_NEAR(iso_approach_factor(g, -0.4, 10e-6, 0.0), 1.0 + 10.0 / 50.0 * std::pow(0.4, 3.0), 1e-14);
 }
 
 TEST(IsoFilm, HyIsDowsonHiggins1966AtTheBulkTemperature) {
@@ -208,12 +375,46 @@ TEST(IsoFilm, HyIsDowsonHiggins1966AtTheBulkTemperature) {
   EXPECT_NEAR(iso_film_hy(rho, e, p_h, 2.0 * u, oil, oil) / expected, 1.0, 1e-12);
 }
 
-TEST(IsoFriction, MeanCoefficientInTheStandardsUnits) {
-  // mu_m = 0.045 (w/(v rho))^0.2 eta^-0.05 X_R X_L with X_R = 2.2 (Ra/rho)^0.25: w 200 N/mm,
-  // v_Sigma 10 m/s, rho 10 mm, eta 40 mPa s, Ra 0.5 um, X_L 1 (hand evaluation in those units).
+TEST(IsoFriction, MeanCoefficientsInTheStandardsUnits) {
+  // Hand evaluation in the formulas' units: w 200 N/mm, F_bn/b 212.8 N/mm, v_Sigma 10 m/s,
+  // rho 10 mm, eta 40 mPa s, Ra 0.5 um, X_L 1.
+  PitchPointLoad c;
+  c.tangential_load = 2e5;
+  c.normal_load = 2e5 / std::cos(20.0 * std::numbers::pi / 180.0);
+  c.pitch_line_speed = 10.0;
+  c.sum_speed = 10.0;
+  c.radius = 0.01;
+  c.eta_oil = 0.04;
+  c.mean_ra = 0.5e-6;
   const double x_r = 2.2 * std::pow(0.5 / 10.0, 0.25);
-  const double expected = 0.045 * std::pow(200.0 / (10.0 * 10.0), 0.2) * std::pow(40.0, -0.05) * x_r;
-  EXPECT_NEAR(iso_mean_friction(2e5, 10.0, 0.01, 0.04, 0.5e-6, 1.0) / expected, 1.0, 1e-13);
+  EXPECT_NEAR(mean_friction(MeanFrictionLaw::iso, c, BaseOil::mineral).coefficient /
+                  (0.045 * std::pow(200.0 / (10.0 * 10.0), 0.2) * std::pow(40.0, -0.05) * x_r),
+              1.0, 1e-13);
+  EXPECT_NEAR(mean_friction(MeanFrictionLaw::iso_flash, c, BaseOil::mineral).coefficient /
+                  (0.060 * std::pow(200.0 / (10.0 * 10.0), 0.2) * std::pow(40.0, -0.05) * std::pow(0.5, 0.25)),
+              1.0, 1e-13);
+  const double schlenk =
+      0.048 * std::pow(c.normal_load * 1e-3 / 100.0, 0.2) * std::pow(40.0, -0.05) * std::pow(0.5, 0.25);
+  EXPECT_NEAR(mean_friction(MeanFrictionLaw::schlenk, c, BaseOil::mineral).coefficient / schlenk, 1.0, 1e-13);
+  EXPECT_NEAR(mean_friction(MeanFrictionLaw::fernandes, c, BaseOil::pao).coefficient / (0.65 * schlenk), 1.0, 1e-13);
+  // The range: below 150 N/mm evaluated at 150; above 50 m/s at 50; below 1 m/s flagged.
+  c.tangential_load = 100e3;
+  const MeanFriction light = mean_friction(MeanFrictionLaw::iso, c, BaseOil::mineral);
+  EXPECT_TRUE(light.load_raised);
+  c.tangential_load = kIsoMinTangentialLoad;
+  EXPECT_EQ(light.coefficient, mean_friction(MeanFrictionLaw::iso, c, BaseOil::mineral).coefficient);
+  c.pitch_line_speed = 0.5;
+  EXPECT_TRUE(mean_friction(MeanFrictionLaw::iso, c, BaseOil::mineral).below_speed_range);
+  c.pitch_line_speed = 100.0;
+  c.sum_speed = 100.0;
+  const MeanFriction fast = mean_friction(MeanFrictionLaw::iso, c, BaseOil::mineral);
+  EXPECT_TRUE(fast.speed_capped);
+  c.pitch_line_speed = 50.0;
+  c.sum_speed = 50.0;
+  EXPECT_NEAR(fast.coefficient, mean_friction(MeanFrictionLaw::iso, c, BaseOil::mineral).coefficient, 1e-15);
+  // ISO tabulates no X_L for synthetic esters.
+  EXPECT_TRUE(std::isnan(iso_lubricant_factor(BaseOil::ester)));
+  EXPECT_EQ(iso_lubricant_factor(BaseOil::polyglycol_insoluble), 0.7);
 }
 
 // The lubricated default case through the whole mesh cycle.
@@ -241,7 +442,7 @@ TEST(LubricatedCycle, ThickFilmLeavesTheAsperitiesNothing) {
   const auto r =
       run(with({{"lubricant.dynamic_viscosity", "50 Pa s"}, {"lubricant.pressure_viscosity_coefficient", "2e-8"}}));
   for (double a : r.find("asperity_load_share")->values) EXPECT_LT(a, 1e-3);
-  for (double l : r.find("lambda")->values) EXPECT_GT(l, 3.0);
+  for (double l : r.find("lambda_smooth_film")->values) EXPECT_GT(l, 3.0);
 }
 
 TEST(LubricatedCycle, AsperityShareFallsWithSpeedAndRisesWithLoad) {
@@ -252,16 +453,34 @@ TEST(LubricatedCycle, AsperityShareFallsWithSpeedAndRisesWithLoad) {
     EXPECT_LT(share, last) << speed;
     last = share;
   }
-  const auto light = run(with({{"torque", "300 N m"}}));
-  const auto heavy = run(with({{"torque", "3000 N m"}}));
-  EXPECT_LT(contact::path_mean(light.find("asperity_load_share")->values),
-            contact::path_mean(heavy.find("asperity_load_share")->values));
+  // With load the asperities' share rises where the film is of the order of the roughness
+  // (lambda 1.3 to 1.9 here: ground flanks of Ra 0.05 um at 100 rpm). Below lambda ~ 1 the
+  // Johnson-Greenwood-Poon sharing reverses: the asperities' pressure at a separation does not
+  // grow with the load, the film's does, and the share falls (docs/theory/lubrication.md).
+  auto smooth = [&](const char* torque) {
+    return run(with({{"ra", "0.05 um"},
+                     {"pinion.flank.summit_radius", "300 um"},
+                     {"wheel.flank.summit_radius", "300 um"},
+                     {"speed", "100 rpm"},
+                     {"torque", torque}}));
+  };
+  last = 0.0;
+  for (const char* torque : {"300 N m", "1000 N m", "3000 N m"}) {
+    const auto r = smooth(torque);
+    const double share = contact::path_mean(r.find("asperity_load_share")->values);
+    EXPECT_GT(share, last) << torque;
+    EXPECT_GT(
+        *std::min_element(r.find("lambda_smooth_film")->values.begin(), r.find("lambda_smooth_film")->values.end()),
+        1.0)
+        << torque;  // the regime the trend is claimed for
+    last = share;
+  }
 }
 
 TEST(LubricatedCycle, WearAndFlashVanishAtThePitchPointOnly) {
   // 41 positions over the symmetric 30/30 pair put position 20 at C (to rounding: |v1 - v2| ~ 1e-15 m/s).
   const auto r = run(test::lubricated_case());
-  for (const char* q : {"wear_depth_pinion_m", "wear_depth_wheel_m", "flash_temperature_K", "power_loss_W"}) {
+  for (const char* q : {"wear_depth_pinion_m", "wear_depth_wheel_m", "flash_temperature_K", "pair_power_loss_W"}) {
     const auto& v = r.find(q)->values;
     const double top = *std::max_element(v.begin(), v.end());
     ASSERT_GT(top, 0.0) << q;

@@ -40,7 +40,7 @@ def main():
     peak = ds.real_area_ratio.argmax().item()
     print(f"  real-area ratio: max {ds.real_area_ratio[peak].item():.4g} at s = {ds.s_m[peak].item() * 1e3:.2f} mm"
           f" ({ds.real_area_ratio.attrs['units']})")
-    print(f"  film lambda: min {ds['lambda'].min().item():.3f}, asperity load share max "
+    print(f"  film lambda: min {ds['lambda_smooth_film'].min().item():.3f}, asperity load share max "
           f"{ds.asperity_load_share.max().item():.3f}")
 
     # 3. The plot: real-area ratio along the line of action, with the points A..E marked.
@@ -67,7 +67,7 @@ def main():
     print(f"  {'torque N m':>10} {'Ra um':>6} {'p0 max MPa':>11} {'lambda min':>11} {'Ar/An max':>10}  regime")
     for _, row in table.iterrows():
         print(f"  {row.torque:>10.0f} {row.ra * 1e6:>6.1f} {row.hertz_p0_Pa_max / 1e6:>11.0f} "
-              f"{row.lambda_min:>11.3f} {row.real_area_ratio_max:>10.4g}  {row.regime}")
+              f"{row.lambda_smooth_film_min:>11.3f} {row.real_area_ratio_max:>10.4g}  {row.regime}")
 
 
 if __name__ == "__main__":

@@ -337,13 +337,24 @@ def run(case=None, *, positions: int | None = None, as_dict: bool = False):
     attrs["version"] = __version__
     if not (as_dict or _xarray() is None):  # netCDF-style attrs: flatten the nested ones
         flat = {}
-        for k, v in attrs.items():
+
+        def flatten(prefix, v):
             if isinstance(v, dict):
-                flat.update({f"{k}.{kk}": vv for kk, vv in v.items()})
+                if "point" in v:  # the named points' table: one scalar per (quantity, point)
+                    for kk, vv in v.items():
+                        if kk != "point":
+                            for point, x in zip(v["point"], vv):
+                                flat[f"{prefix}.{kk}.{point}"] = x
+                    return
+                for kk, vv in v.items():
+                    flatten(f"{prefix}.{kk}", vv)
             elif isinstance(v, list):
-                flat[k] = "\n".join(v)
+                flat[prefix] = "\n".join(str(x) for x in v)
             else:
-                flat[k] = v
+                flat[prefix] = v
+
+        for k, v in attrs.items():
+            flatten(k, v)
         attrs = {k: int(v) if isinstance(v, bool) else v for k, v in flat.items()}  # netCDF has no bool
     return _dataset("s_m", series, attrs, as_dict, variables, coords)
 

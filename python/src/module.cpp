@@ -143,21 +143,22 @@ py::dict result_dict(const contact::MeshContactResult& r) {
   if (r.lubrication_summary) {
     const auto& l = *r.lubrication_summary;
     py::dict s;
+    // The same names as the HDF5 attributes of /lubrication (contact::summary_values).
     s["lubricant"] = l.lubricant;
     s["film_formula"] = l.film_formula;
     s["inlet_heating"] = l.inlet_heating;
-    s["oil_temperature_K"] = l.oil_temperature;
-    s["bulk_temperature_K"] = l.bulk_temperature;
-    s["bulk_estimated"] = l.bulk_estimated;
-    s["dynamic_viscosity_Pa_s"] = l.dynamic_viscosity;
-    s["pressure_viscosity_per_Pa"] = l.pressure_viscosity;
-    s["iso_friction"] = l.iso_friction;
-    s["mean_power_loss_W"] = l.mean_power_loss;
-    s["input_power_W"] = l.input_power;
-    s["loss_factor_path"] = l.loss_factor_path;
-    s["loss_factor_ohlendorf"] = l.loss_factor_ohlendorf;
-    s["iso_scuffing_safety"] = l.iso_scuffing_safety;
-    s["scuffing_safety"] = l.scuffing_safety;
+    s["film_gap"] = l.film_gap;
+    s["asperity_pressure"] = l.asperity_pressure;
+    s["traction"] = l.traction;
+    s["bulk_friction_law"] = l.bulk_friction_law;
+    s["roughness_source"] = l.roughness_source;
+    for (const auto& v : contact::summary_values(l)) s[py::str(v.name)] = v.value;
+    py::dict points;
+    std::vector<std::string> names;
+    for (const auto& p : l.points) names.push_back(p.name);
+    points["point"] = names;
+    for (const auto& q : contact::named_point_series(l)) points[py::str(q.name)] = q.values;
+    s["points"] = points;
     d["lubrication_summary"] = s;
   }
   return d;

@@ -63,23 +63,34 @@ void print_summary(const contact::MeshContactResult& r) {
     constexpr double kC = 273.15;
     fmt::print(
         "Lubricated: {}; oil {:.1f} degC, bulk {:.1f} degC{}; eta {:.4g} mPa s, alpha {:.4g} 1/GPa at bulk; film {} "
-        "with {} inlet heating\n",
+        "with {} inlet heating; the film fills the {} (asperity pressure {}), {} traction\n",
         l.lubricant, l.oil_temperature - kC, l.bulk_temperature - kC,
         l.bulk_estimated ? " (ISO/TS 6336-20 estimate)" : "", l.dynamic_viscosity * 1e3, l.pressure_viscosity * 1e9,
-        l.film_formula, l.inlet_heating);
-    fmt::print("{:<4} {:>9} {:>10} {:>8} {:>12} {:>10} {:>10}\n", "pt", "s mm", "film um", "lambda", "ISO h_Y um",
-               "lambda_GF", "asp share");
+        l.film_formula, l.inlet_heating, l.film_gap, l.asperity_pressure, l.traction);
+    fmt::print("Roughness: Rq {:.4g} um (composite), Ra {:.4g} um (mean) from {}; the summit model's sigma {:.4g} um\n",
+               l.composite_rq * 1e6, l.mean_ra * 1e6, l.roughness_source, l.summit_model_sigma * 1e6);
+    fmt::print("{:<4} {:>8} {:>9} {:>8} {:>9} {:>7} {:>9} {:>7} {:>8} {:>7} {:>8} {:>8} {:>8}\n", "pt", "s mm",
+               "film um", "lam_film", "gap um", "lam_gap", "ISO h_Y", "lam_GF", "asp shr", "mu", "flash K", "ISO fl K",
+               "T_B degC");
     for (const auto& p : l.points)
-      fmt::print("{:<4} {:>9.3f} {:>10.4f} {:>8.3f} {:>12.4f} {:>10.3f} {:>10.3f}\n", p.name, p.s * 1e3, p.film * 1e6,
-                 p.lambda, p.iso_film * 1e6, p.iso_lambda, p.asperity_share);
+      fmt::print(
+          "{:<4} {:>8.3f} {:>9.4f} {:>8.3f} {:>9.4f} {:>7.3f} {:>9.4f} {:>7.3f} {:>8.3f} {:>7.4f} {:>8.2f} "
+          "{:>8.2f} {:>8.1f}\n",
+          p.name, p.s * 1e3, p.film * 1e6, p.lambda_film, p.mean_gap * 1e6, p.lambda_gap, p.iso_film * 1e6,
+          p.iso_lambda, p.asperity_share, p.friction, p.flash, p.iso_flash, p.iso_contact_temperature - kC);
+    std::string laws;
+    for (const auto& m : l.mean_friction)
+      laws += fmt::format("{}{} {:.4f}", laws.empty() ? "" : ", ", m.law, m.coefficient);
+    fmt::print("Friction: model's gear-mean {:.4f} (power loss / (input x H_V)); gear-mean laws at C: {}\n",
+               l.mesh_mean_friction, laws);
     fmt::print(
-        "Friction: ISO/TS 6336-20 mu_m {:.4f}; power loss {:.4g} W mean of {:.4g} W input ({:.3f}%); gear loss factor "
-        "H_V {:.4f} (path), {:.4f} (Ohlendorf)\n",
-        l.iso_friction, l.mean_power_loss, l.input_power, 100.0 * l.mean_power_loss / l.input_power, l.loss_factor_path,
-        l.loss_factor_ohlendorf);
+        "Mesh: power loss {:.4g} W of {:.4g} W input (tooth-friction efficiency {:.3f}%); gear loss factor H_V "
+        "{:.4f} (path), {:.4f} (Ohlendorf)\n",
+        l.mesh_power_loss, l.input_power, 100.0 * l.efficiency, l.loss_factor_path, l.loss_factor_ohlendorf);
     if (l.iso_scuffing_safety > 0.0)
-      fmt::print("Scuffing (flash-temperature method): safety S_B {:.3g} (ISO mu_m), {:.3g} (local friction)\n",
-                 l.iso_scuffing_safety, l.scuffing_safety);
+      fmt::print(
+          "Scuffing (flash-temperature method): safety S_B {:.3g} (ISO/TS 6336-20), {:.3g} (Blok, local friction)\n",
+          l.iso_scuffing_safety, l.scuffing_safety);
   }
   if (r.running_in) {
     const auto& ri = *r.running_in;

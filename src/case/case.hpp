@@ -88,8 +88,12 @@ struct LubricationCase {
   lubrication::Lubricant lubricant;
   std::string film_formula = "dowson-higginson";  // lubrication/ehl_film.hpp
   std::string inlet_heating = "gupta";
-  double wear_coefficient = 1e-17;    // Archard's dimensional k [m^2/N = m^3/(N m)] (assumed order, mild wear)
-  double scuffing_temperature = 0.0;  // theta_S [K]; 0: no scuffing safety
+  std::string film_gap = "mean-gap";        // lubrication/film_closure.hpp
+  std::string asperity_pressure = "auto";   // contact/asperity_pressure.hpp
+  std::string traction = "thermal-eyring";  // lubrication/mixed_lubrication.hpp
+  std::string mean_friction = "iso-flash";  // lubrication/flank_temperature.hpp: the bulk estimate's law
+  double wear_coefficient = 1e-17;          // Archard's dimensional k [m^2/N = m^3/(N m)] (assumed order, mild wear)
+  double scuffing_temperature = 0.0;        // theta_S [K]; 0: no scuffing safety
 };
 
 // Single-asperity settings: the model by name, per-model constant overrides, the measured

@@ -38,6 +38,69 @@ double path_mean(const std::vector<double>& v) {
   return sum / static_cast<double>(v.size() - 1);
 }
 
+std::vector<SummaryValue> summary_values(const LubricationSummary& l) {
+  std::vector<SummaryValue> v = {{"oil_temperature_K", "K", l.oil_temperature},
+                                 {"bulk_temperature_K", "K", l.bulk_temperature},
+                                 {"bulk_temperature_estimated", "1", l.bulk_estimated ? 1.0 : 0.0},
+                                 {"dynamic_viscosity_at_bulk_Pa_s", "Pa s", l.dynamic_viscosity},
+                                 {"pressure_viscosity_at_bulk_per_Pa", "1/Pa", l.pressure_viscosity},
+                                 {"composite_rq_m", "m", l.composite_rq},
+                                 {"mean_ra_m", "m", l.mean_ra},
+                                 {"summit_model_sigma_m", "m", l.summit_model_sigma},
+                                 {"bearing_area_weight", "1", l.bearing_area_weight}};
+  for (const auto& m : l.mean_friction) {
+    std::string name = "mean_friction_" + m.law;
+    std::replace(name.begin(), name.end(), '-', '_');
+    v.push_back({name, "1", m.coefficient});
+  }
+  const std::vector<SummaryValue> rest = {
+      {"mesh_mean_friction", "1", l.mesh_mean_friction},
+      {"mesh_power_loss_W", "W", l.mesh_power_loss},
+      {"input_power_W", "W", l.input_power},
+      {"tooth_friction_efficiency", "1", l.efficiency},
+      {"gear_loss_factor_path", "1", l.loss_factor_path},
+      {"gear_loss_factor_ohlendorf", "1", l.loss_factor_ohlendorf},
+      {"max_contact_temperature_K", "K", l.max_contact_temperature},
+      {"max_iso_contact_temperature_K", "K", l.max_iso_contact_temperature},
+      {"min_iso_lambda_gf", "1", l.min_iso_lambda},
+      {"min_lambda_smooth_film", "1", l.min_lambda_film},
+      {"max_asperity_share_closure_spread", "1", l.max_share_spread},
+      {"positions_share_depends_on_closure", "1", static_cast<double>(l.closure_dependent_positions)}};
+  v.insert(v.end(), rest.begin(), rest.end());
+  if (l.iso_scuffing_safety > 0.0) {
+    v.push_back({"iso_scuffing_safety", "1", l.iso_scuffing_safety});
+    v.push_back({"scuffing_safety", "1", l.scuffing_safety});
+  }
+  return v;
+}
+
+std::vector<Series> named_point_series(const LubricationSummary& l) {
+  using P = LubricationSummary::NamedPoint;
+  const std::pair<Series, double P::*> fields[] = {
+      {{"s_m", "m", {}}, &P::s},
+      {{"line_load_N_per_m", "N/m", {}}, &P::line_load},
+      {{"film_m", "m", {}}, &P::film},
+      {{"lambda_smooth_film", "1", {}}, &P::lambda_film},
+      {{"mean_gap_m", "m", {}}, &P::mean_gap},
+      {{"lambda_mean_gap", "1", {}}, &P::lambda_gap},
+      {{"iso_film_hy_m", "m", {}}, &P::iso_film},
+      {{"iso_lambda_gf", "1", {}}, &P::iso_lambda},
+      {{"asperity_load_share", "1", {}}, &P::asperity_share},
+      {{"asperity_share_closure_spread", "1", {}}, &P::share_spread},
+      {{"friction_coefficient", "1", {}}, &P::friction},
+      {{"flash_temperature_K", "K", {}}, &P::flash},
+      {{"iso_flash_temperature_K", "K", {}}, &P::iso_flash},
+      {{"contact_temperature_K", "K", {}}, &P::contact_temperature},
+      {{"iso_contact_temperature_K", "K", {}}, &P::iso_contact_temperature}};
+  std::vector<Series> out;
+  for (const auto& [series, field] : fields) {
+    Series q = series;
+    for (const P& point : l.points) q.values.push_back(point.*field);
+    out.push_back(std::move(q));
+  }
+  return out;
+}
+
 MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
                                    const std::function<void(int, int)>& progress, int positions,
                                    const OdeIntegrator* dynamics,
@@ -52,6 +115,7 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   // Stage 1: kinematics and loading of one pair from A to E.
   const auto add = add_series;
   std::vector<double> s_m, share, line_load, r_eq, p0, b_h;
+  std::vector<std::pair<std::string, PathPoint>> named;
   {
     auto& s_v = add(r.mesh, "s_m", "m");
     auto& roll = add(r.mesh, "roll_angle_rad", "rad");
@@ -73,11 +137,11 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
     const bool stiffness = cs.mesh_stiffness || mesh.analysis().method() == gear::LoadSharing::stiffness;
     std::vector<double>* ks = stiffness ? &add(r.mesh, "mesh_stiffness_N_per_m", "N/m") : nullptr;
     const auto& path = r.path;
+    const auto pair_stiffness =
+        stiffness ? gear::MeshAnalysis::PairStiffness::computed : gear::MeshAnalysis::PairStiffness::omitted;
     for (int i = 0; i < n; ++i) {
       const double s = path.a + path.length * i / (n - 1);
-      const gear::MeshInstant m = mesh.analysis().at(
-          s, false,
-          stiffness ? gear::MeshAnalysis::PairStiffness::computed : gear::MeshAnalysis::PairStiffness::omitted);
+      const gear::MeshInstant m = mesh.analysis().at(s, false, pair_stiffness);
       const gear::PairLoad* own = &m.pair_at(s);
       const gear::FlankGeometry f = mesh.pair().flank(s);
       const gear::FlankKinematics k = mesh.pair().kinematics(s, mesh.pinion_speed());
@@ -100,7 +164,22 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
     }
     s_m = s_v;
     r_eq = req;
+    share = sh;
     r.stages.push_back({"kinematics", clock.lap()});
+    // ISO/TS 6336-22's named points where they stand, B and D with the single pair's load: the
+    // lubricated summary evaluates its models there.
+    if (c.lubrication.lubricated) {
+      const std::pair<const char*, double> points[] = {
+          {"A", path.a}, {"AB", 0.5 * (path.a + path.b)}, {"B", path.b}, {"C", path.c},
+          {"D", path.d}, {"DE", 0.5 * (path.d + path.e)}, {"E", path.e}};
+      for (const auto& [name, s] : points) {
+        const gear::PairLoad own = mesh.analysis().at(s, true, pair_stiffness).pair_at(s);
+        const gear::FlankGeometry f = mesh.pair().flank(s);
+        const gear::FlankKinematics k = mesh.pair().kinematics(s, mesh.pinion_speed());
+        named.emplace_back(name, PathPoint{s, own.line_load, own.hertz_half_width, own.hertz_peak, f.radius_equivalent,
+                                           k.rolling_pinion, k.rolling_wheel, own.share});
+      }
+    }
     if (c.dynamics.engine != "none") {
       // The steady mesh cycle at the operating speed; each pair's dynamic load replaces its share.
       if (!dynamics) throw std::invalid_argument("the case asks for dynamics but no integrator was given");
@@ -115,6 +194,12 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
         const gear::PairLoad l = mesh.analysis().pair_load(s_v[i], dynamic);
         hp[i] = l.hertz_peak;
         hb[i] = l.hertz_half_width;
+      }
+      for (auto& [name, point] : named) {
+        point.line_load = dyn.pair_force(cycle, point.s) / width;
+        const gear::PairLoad l = mesh.analysis().pair_load(point.s, point.line_load);
+        point.hertz_p0 = l.hertz_peak;
+        point.half_width = l.hertz_half_width;
       }
       r.stages.push_back({"dynamics_" + dynamics->name(), clock.lap()});
     }
@@ -149,7 +234,8 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   if (c.lubrication.lubricated) {
     auto series = [&](const char* name) { return r.find(name)->values; };
     path_state =
-        PathState{s_m, line_load, series("hertz_halfwidth_m"), p0, r_eq, series("v1_m_per_s"), series("v2_m_per_s")};
+        PathState{s_m,   line_load, series("hertz_halfwidth_m"), p0, r_eq, series("v1_m_per_s"), series("v2_m_per_s"),
+                  share, named};
     lubricated.emplace(c, mesh, *path_state, gw);
     r.stages.push_back({"film_and_load_sharing", clock.lap()});
   }

@@ -37,27 +37,53 @@ struct StageTiming {
 // The lubricated cycle's findings along the path (a case with [lubricant]).
 struct LubricationSummary {
   std::string lubricant;  // its name
-  std::string film_formula, inlet_heating;
-  double oil_temperature = 0.0;        // [K]
-  double bulk_temperature = 0.0;       // [K]
-  bool bulk_estimated = false;         // from the ISO/TS 6336-20 estimate
-  double dynamic_viscosity = 0.0;      // eta at the bulk temperature [Pa s]
-  double pressure_viscosity = 0.0;     // alpha at the bulk temperature [1/Pa]
-  double iso_friction = 0.0;           // ISO/TS 6336-20 mu_m
-  double composite_rq = 0.0;           // [m]
-  double mean_ra = 0.0;                // (Ra1 + Ra2)/2 [m]
-  double mean_power_loss = 0.0;        // over one mesh cycle, all pairs [W]
-  double input_power = 0.0;            // T1 omega1 [W]
-  double loss_factor_path = 0.0;       // H_V from the computed path: (1/p_b) int (w/w_t)(|v_s|/v_b) ds
-  double loss_factor_ohlendorf = 0.0;  // Ohlendorf's closed form pi (u + 1)/(z1 u)(1 - eps + eps1^2 + eps2^2)
-  double iso_scuffing_safety = 0.0;    // ISO/TS 6336-20 flash-temperature method; 0: no scuffing temperature
-  double scuffing_safety = 0.0;        // the same with the model's local friction
+  std::string film_formula, inlet_heating, film_gap, asperity_pressure, traction, bulk_friction_law;
+  double bearing_area_weight = 0.0;  // of the asperity pressure (contact/asperity_pressure.hpp)
+  double oil_temperature = 0.0;      // [K]
+  double bulk_temperature = 0.0;     // [K]
+  bool bulk_estimated = false;       // from the ISO/TS 6336-20 estimate
+  double dynamic_viscosity = 0.0;    // eta at the bulk temperature [Pa s]
+  double pressure_viscosity = 0.0;   // alpha at the bulk temperature [1/Pa]
+  double composite_rq = 0.0;         // sqrt(Rq1^2 + Rq2^2) of the flanks' heights [m]
+  double mean_ra = 0.0;              // (Ra1 + Ra2)/2 [m]
+  std::string roughness_source;      // where Rq and Ra came from
+  double summit_model_sigma = 0.0;   // the equivalent surface's composite sigma [m]
+  struct LawValue {
+    std::string law;
+    double coefficient = 0.0;
+  };
+  std::vector<LawValue> mean_friction;  // the gear-mean laws at C (iso, iso-flash, schlenk, fernandes)
+  double mesh_mean_friction = 0.0;      // the model's: mesh power loss / (input power x H_V,path)
+  double mesh_power_loss = 0.0;         // over one mesh cycle, all pairs [W]
+  double input_power = 0.0;             // T1 omega1 [W]
+  double efficiency = 1.0;              // 1 - mesh power loss / input power (tooth friction only)
+  double loss_factor_path = 0.0;        // H_V from the computed path: (1/p_b) int (w/w_t)(|v_s|/v_b) ds
+  double loss_factor_ohlendorf = 0.0;   // Ohlendorf's closed form pi (u + 1)/(z1 u)(1 - eps + eps1^2 + eps2^2)
+  double max_contact_temperature = 0.0, max_iso_contact_temperature = 0.0;  // [K]
+  double min_iso_lambda = 0.0, min_lambda_film = 0.0;
+  double max_share_spread = 0.0;        // the asperity share's largest range over the film gaps
+  int closure_dependent_positions = 0;  // positions where that range exceeds 0.1
+  double iso_scuffing_safety = 0.0;     // ISO/TS 6336-20 flash-temperature method; 0: no scuffing temperature
+  double scuffing_safety = 0.0;         // the same with the model's local friction (Blok)
   struct NamedPoint {
     std::string name;  // A, AB, B, C, D, DE, E
-    double s = 0.0, film = 0.0, lambda = 0.0, iso_film = 0.0, iso_lambda = 0.0, asperity_share = 0.0;
+    double s = 0.0, line_load = 0.0, film = 0.0, lambda_film = 0.0, mean_gap = 0.0, lambda_gap = 0.0, iso_film = 0.0,
+           iso_lambda = 0.0, asperity_share = 0.0, share_spread = 0.0, friction = 0.0, flash = 0.0, iso_flash = 0.0,
+           contact_temperature = 0.0, iso_contact_temperature = 0.0;
   };
-  std::vector<NamedPoint> points;  // ISO/TS 6336-22's points, interpolated from the path
+  std::vector<NamedPoint> points;  // ISO/TS 6336-22's points, each evaluated where it stands
 };
+
+// A summary's numbers by name and unit, in one order: the HDF5 attributes of /lubrication, the
+// Python module's dict and the sweep table's columns all come from here.
+struct SummaryValue {
+  std::string name, unit;
+  double value = 0.0;
+};
+std::vector<SummaryValue> summary_values(const LubricationSummary& s);
+// The named points' values as series over the points (in the order of s.points; the names are
+// s.points[i].name): /lubrication/points in HDF5, the Python module's table.
+std::vector<Series> named_point_series(const LubricationSummary& s);
 
 // A deterministic run's pressure across the strip at one position.
 struct PressureProfile {

@@ -1,11 +1,14 @@
 #include "contact/mesh_lubrication.hpp"
 
 #include "contact/series_columns.hpp"
-#include "lubrication/flank_temperature.hpp"
-#include "lubrication/mixed_lubrication.hpp"
+#include "gear/iso6336_stiffness.hpp"
+#include "gear/load_sharing.hpp"
+
+#include <boost/math/tools/roots.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 
@@ -15,28 +18,41 @@ namespace geartrib::contact {
 
 namespace lub = lubrication;
 
-double mean_arithmetic_roughness(const Case& c, const surface::EquivalentSurface& s) {
-  using Form = surface::FlankRoughness::Form;
-  const auto& a = c.pinion.flank.roughness;
-  const auto& b = c.wheel.flank.roughness;
-  if (a.form == Form::ra && b.form == Form::ra) return 0.5 * (a.ra + b.ra);
-  if (a.form == Form::rq && b.form == Form::rq) return 0.5 * (a.rq + b.rq) / surface::kRqOverRaGaussian;
-  return s.surface_sigma / (std::numbers::sqrt2 * surface::kRqOverRaGaussian);
+CompositeRoughness composite_roughness(const Case& c, const surface::EquivalentSurface& s) {
+  const surface::HeightRoughness a = surface::height_roughness(c.pinion.flank.roughness);
+  const surface::HeightRoughness b = surface::height_roughness(c.wheel.flank.roughness);
+  CompositeRoughness r;
+  if (a.known && b.known) {
+    r.rq = std::hypot(a.rq, b.rq);
+    r.mean_ra = 0.5 * (a.ra + b.ra);
+    r.source = std::string(a.source) == b.source ? a.source : std::string(a.source) + " / " + b.source;
+    return r;
+  }
+  // Flanks given by summit statistics alone: the summit model's sigma, shared equally.
+  r.rq = s.surface_sigma;
+  r.mean_ra = s.surface_sigma / (std::numbers::sqrt2 * surface::kRqOverRaGaussian);
+  r.from_heights = false;
+  r.source = "summit model";
+  return r;
 }
 
 namespace {
 using Position = MeshLubrication::Position;
-// Linear interpolation of one field over the evenly spaced positions s at x.
-double at(const std::vector<double>& s, const std::vector<Position>& v, double Position::*field, double x) {
-  if (v.size() < 2) return v.empty() ? 0.0 : v.front().*field;
-  const double t = std::clamp((x - s.front()) / (s.back() - s.front()), 0.0, 1.0) * double(v.size() - 1);
-  const std::size_t i = std::min(static_cast<std::size_t>(t), v.size() - 2);
-  return v[i].*field + (t - double(i)) * (v[i + 1].*field - v[i].*field);
-}
 double largest(const std::vector<Position>& v, double Position::*field) {
   double m = -std::numeric_limits<double>::infinity();
   for (const Position& q : v) m = std::max(m, q.*field);
   return m;
+}
+double smallest(const std::vector<Position>& v, double Position::*field) {
+  double m = std::numeric_limits<double>::infinity();
+  for (const Position& q : v) m = std::min(m, q.*field);
+  return m;
+}
+std::vector<double> series(const std::vector<Position>& v, double Position::*field) {
+  std::vector<double> out;
+  out.reserve(v.size());
+  for (const Position& q : v) out.push_back(q.*field);
+  return out;
 }
 }  // namespace
 
@@ -46,156 +62,298 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
       mesh_(mesh),
       path_(p),
       formula_(lub::film_formula_from_name(c.lubrication.film_formula)),
-      inlet_(lub::inlet_heating_from_name(c.lubrication.inlet_heating)) {
+      inlet_(lub::inlet_heating_from_name(c.lubrication.inlet_heating)),
+      film_gap_(lub::film_gap_from_name(c.lubrication.film_gap)),
+      traction_(lub::film_traction_from_name(c.lubrication.traction)),
+      bulk_law_(lub::mean_friction_law_from_name(c.lubrication.mean_friction)) {
   const auto& lubricant = c.lubrication.lubricant;
   reduced_modulus_ = 2.0 * mesh.composite_modulus();
   for (int g = 0; g < 2; ++g) {
     const Material& m = (g == 0 ? c.pinion : c.wheel).material;
     thermal_coefficient_[g] = lub::thermal_contact_coefficient(m.thermal_conductivity, m.density, m.specific_heat);
   }
-  composite_rq_ = gw.surface().surface_sigma;
-  mean_ra_ = mean_arithmetic_roughness(c, gw.surface());
+  roughness_ = composite_roughness(c, gw.surface());
   oil_at_inlet_ = lub::oil_state(lubricant, c.operating.oil_temperature);
 
-  // ISO/TS 6336-20 mean friction at the pitch point and its flash temperature along the path.
+  // The pitch point as the ISO mean-friction formulas take it, and every gear-mean law there.
   const gear::SpurPair& pair = mesh.pair();
+  const gear::PathOfContact& path = pair.path();
   const double face = pair.spec().face_width;
-  const double tangential_load = c.operating.pinion_torque / pair.gear(0).pitch_radius / face;  // w_Bt [N/m]
-  const gear::FlankKinematics kc = pair.kinematics(pair.path().c, mesh.pinion_speed());
-  iso_friction_ = lub::iso_mean_friction(tangential_load, kc.rolling_pinion + kc.rolling_wheel,
-                                         pair.flank(pair.path().c).radius_equivalent, oil_at_inlet_.dynamic_viscosity,
-                                         mean_ra_, oil_at_inlet_.iso_lubricant_factor);
+  const double torque = c.operating.pinion_torque, omega = mesh.pinion_speed();
+  const gear::FlankKinematics kc = pair.kinematics(path.c, omega);
+  pitch_.tangential_load = torque / pair.gear(0).pitch_radius / face;  // w_Bt = F_t/b [N/m]
+  pitch_.normal_load = torque / pair.gear(0).base_radius / face;       // F_bn/b [N/m]
+  pitch_.pitch_line_speed = omega * pair.gear(0).pitch_radius;         // v_t at the reference circle, as ISO 6336
+  pitch_.sum_speed = kc.rolling_pinion + kc.rolling_wheel;
+  pitch_.radius = pair.flank(path.c).radius_equivalent;
+  pitch_.eta_oil = oil_at_inlet_.dynamic_viscosity;
+  pitch_.mean_ra = roughness_.mean_ra;
+  pitch_.lubricant_factor = oil_at_inlet_.iso_lubricant_factor;
+  for (lub::MeanFrictionLaw law : {lub::MeanFrictionLaw::iso, lub::MeanFrictionLaw::iso_flash,
+                                   lub::MeanFrictionLaw::schlenk, lub::MeanFrictionLaw::fernandes})
+    mean_laws_.emplace_back(law, lub::mean_friction(law, pitch_, lubricant.base_oil));
+  auto law_value = [&](lub::MeanFrictionLaw law) {
+    for (const auto& [l, f] : mean_laws_)
+      if (l == law) return f.coefficient;
+    return 0.0;
+  };
+  iso_mu_ = law_value(lub::MeanFrictionLaw::iso);
+  iso_flash_mu_ = law_value(lub::MeanFrictionLaw::iso_flash);
+
+  // ISO/TS 6336-20's flash-temperature method: its factors fixed by the pair.
+  iso_geometry_.gear_ratio = double(pair.gear(1).teeth) / double(pair.gear(0).teeth);
+  iso_geometry_.center_distance = pair.center_distance();
+  iso_geometry_.operating_angle = pair.operating_pressure_angle();
+  iso_geometry_.reference_angle = pair.spec().pressure_angle;
+  iso_geometry_.gamma_a = pair.flank(path.a).roll_parameter;
+  iso_geometry_.gamma_e = pair.flank(path.e).roll_parameter;
+  iso_x_m_ = lub::iso_thermo_elastic_factor(reduced_modulus_, thermal_coefficient_[0], thermal_coefficient_[1]);
+  // C_eff = F_t/(b cos alpha_t c_gamma) (ISO/TR 13989-1 B.1), c_gamma_alpha of ISO 6336-1 method B;
+  // no tip relief is modelled (C_a = 0).
+  const gear::IsoMeshStiffness c_gamma = gear::iso6336_mesh_stiffness(pair, pitch_.tangential_load);
+  iso_effective_relief_ =
+      c_gamma.mesh > 0.0 ? pitch_.tangential_load / (std::cos(iso_geometry_.reference_angle) * c_gamma.mesh) : 0.0;
+
   const std::size_t n = p.s.size();
   positions_.resize(n);
-  std::vector<double> iso_flash;
-  for (std::size_t i = 0; i < n; ++i)
-    iso_flash.push_back(positions_[i].iso_flash =
-                            lub::blok_flash_temperature(iso_friction_, p.line_load[i], p.half_width[i], p.v1[i],
-                                                        p.v2[i], thermal_coefficient_[0], thermal_coefficient_[1]));
+  for (std::size_t i = 0; i < n; ++i) {
+    const PathPoint q = p.point(i);
+    positions_[i].iso_flash = iso_flash(q);
+    positions_[i].blok_iso_flash = lub::blok_flash_temperature(iso_mu_, q.line_load, q.half_width, q.v1, q.v2,
+                                                               thermal_coefficient_[0], thermal_coefficient_[1]);
+  }
+  // ISO/TS 6336-20 eq. 22: theta_M = theta_oil + 0.47 X_S X_mp theta_fl,m; the flash temperature is
+  // linear in mu_m, so another law's estimate scales the method's by its coefficient.
   bulk_estimated_ = !(c.operating.bulk_temperature > 0.0);
-  bulk_temperature_ = bulk_estimated_ ? lub::iso_bulk_temperature(c.operating.oil_temperature, path_mean(iso_flash))
-                                      : c.operating.bulk_temperature;
+  const double law_scale = iso_flash_mu_ > 0.0 ? law_value(bulk_law_) / iso_flash_mu_ : 0.0;
+  bulk_temperature_ = bulk_estimated_
+                          ? lub::iso_bulk_temperature(c.operating.oil_temperature,
+                                                      law_scale * path_mean(series(positions_, &Position::iso_flash)))
+                          : c.operating.bulk_temperature;
   oil_at_bulk_ = lub::oil_state(lubricant, bulk_temperature_);
 
-  // The smooth film at the bulk temperature, corrected for inlet heating, and the load shares.
-  const lub::FilmLaw& law = lub::film_law(formula_);
-  const double summit_offset = gw.surface().summit_mean_height;
-  const auto& oil = oil_at_bulk_;
+  // The asperities' pressure against the mean-plane separation, and the film and shares.
+  plasticity_index_ = surface::plasticity_index(gw.surface(), gw.pair().modulus, gw.pair().hardness);
+  const double weight =
+      bearing_area_weight(asperity_pressure_model_from_name(c.lubrication.asperity_pressure), plasticity_index_);
+  asperity_.emplace(gw, lub::CompositeHeights{roughness_.rq, c.roughness.distribution}, gw.pair().hardness, weight);
   double guess = std::numeric_limits<double>::quiet_NaN();  // ln(film share) at the last position
   for (std::size_t i = 0; i < n; ++i) {
-    Position& q = positions_[i];
-    const double u = 0.5 * (p.v1[i] + p.v2[i]);
-    const lub::EhlGroups g = lub::ehl_groups(oil.dynamic_viscosity, oil.pressure_viscosity, u, p.line_load[i],
-                                             p.radius[i], reduced_modulus_);
-    q.film_isothermal = lub::smooth_film(formula_, g, p.radius[i]);
-    const double load =
-        lub::thermal_loading(oil.temperature_viscosity, oil.dynamic_viscosity, u, oil.thermal_conductivity);
-    const double srr = u > 0.0 ? std::abs(p.v1[i] - p.v2[i]) / u : 0.0;
-    q.heating_factor = lub::inlet_heating_factor(inlet_, load, srr, p.hertz_p0[i] / reduced_modulus_);
-    q.film = q.heating_factor * q.film_isothermal;
-    q.regime = static_cast<double>(lub::ehl_regime(g));
-    const double p0 = p.hertz_p0[i];
-    // Mean-plane separation of the asperities carrying `share` of the Hertz pressure. Where the
-    // dry contact (share 1) would press them below the mean plane (GW beyond its range; the
-    // validity flags say so), the film's gap is counted from the dry contact's separation, so that
-    // a vanishing film gives the dry result and the film never carries load at a negative gap.
-    const double dry = gw.separation_for_pressure(p0) + summit_offset;
-    const double below = std::min(0.0, dry);
-    const auto gap = [&](double share) { return gw.separation_for_pressure(share * p0) + summit_offset - below; };
-    q.gap_from_dry = below < 0.0 ? 1.0 : 0.0;
-    if (p.line_load[i] > 0.0) {
-      const lub::LoadShare s = lub::share_load(q.film, law.speed_exponent - law.material_exponent, gap, guess);
-      if (s.film_share > 0.0) guess = std::log(s.film_share);
-      q.asperity_share = s.asperity_share;
-      q.film_gap = s.film_thickness;
-    } else {
-      q.film_gap = gap(0.0);
-    }
-    q.separation = q.film_gap + below;
+    Position q = film(p.point(i), guess);
+    q.iso_flash = positions_[i].iso_flash;
+    q.blok_iso_flash = positions_[i].blok_iso_flash;
+    positions_[i] = q;
   }
+}
+
+double MeshLubrication::iso_flash(const PathPoint& p) const {
+  const gear::SpurPair& pair = mesh_.pair();
+  const double gamma = pair.flank(p.s).roll_parameter;
+  // X_Gamma of unmodified profiles; at B and D the single-pair side where the point stands for it
+  // (its load sharing factor is then 1).
+  const bool single = p.load_sharing_factor >= 1.0;
+  const double x_gamma = gear::iso_load_sharing_factor(pair.path(), p.s, single);
+  return lub::iso_flash_temperature(iso_flash_mu_, iso_x_m_,
+                                    lub::iso_approach_factor(iso_geometry_, gamma, iso_effective_relief_, 0.0),
+                                    lub::iso_geometry_factor(iso_geometry_, gamma), x_gamma, pitch_.tangential_load,
+                                    pitch_.pitch_line_speed, iso_geometry_.center_distance);
+}
+
+Position MeshLubrication::film(const PathPoint& p, double& guess) const {
+  Position q;
+  const auto& oil = oil_at_bulk_;
+  const lub::FilmLaw& law = lub::film_law(formula_);
+  const double u = 0.5 * (p.v1 + p.v2);
+  const lub::EhlGroups g =
+      lub::ehl_groups(oil.dynamic_viscosity, oil.pressure_viscosity, u, p.line_load, p.radius, reduced_modulus_);
+  q.film_isothermal = lub::smooth_film(formula_, g, p.radius);
+  const double load =
+      lub::thermal_loading(oil.temperature_viscosity, oil.dynamic_viscosity, u, oil.thermal_conductivity);
+  const double srr = u > 0.0 ? std::abs(p.v1 - p.v2) / u : 0.0;
+  q.heating_factor = lub::inlet_heating_factor(inlet_, load, srr, p.hertz_p0 / reduced_modulus_);
+  q.film = q.heating_factor * q.film_isothermal;
+  q.regime = static_cast<double>(lub::ehl_regime(g));
+  const AsperityPressure& ap = *asperity_;
+  const lub::CompositeHeights& heights = ap.heights();
+  const double p0 = p.hertz_p0;
+  if (!(p.line_load > 0.0)) {
+    q.separation = ap.onset();
+    q.mean_gap = lub::film_gap(film_gap_, heights, q.separation, q.separation);
+    return q;
+  }
+  // The asperities carrying `share` of the Hertz peak at the strip's centre sit at h(share p0); the
+  // film fills the closure's gap there (lubrication/film_closure.hpp).
+  const double h_dry = ap.separation(p0);
+  q.bearing_saturated = ap.saturated(p0) ? 1.0 : 0.0;
+  const double exponent = law.speed_exponent - law.material_exponent;
+  auto share_for = [&](lub::FilmGap gap, double start) {
+    return lub::share_load(
+        q.film, exponent, [&](double share) { return lub::film_gap(gap, heights, ap.separation(share * p0), h_dry); },
+        start);
+  };
+  const lub::LoadShare s = share_for(film_gap_, guess);
+  if (s.film_share > 0.0) guess = std::log(s.film_share);
+  q.asperity_share = s.asperity_share;
+  q.mean_gap = s.film_thickness;
+  q.separation = ap.separation(s.asperity_share * p0);
+  double lo = s.asperity_share, hi = s.asperity_share;
+  for (lub::FilmGap other : {lub::FilmGap::mean_gap, lub::FilmGap::mean_plane, lub::FilmGap::dry_offset}) {
+    if (other == film_gap_) continue;
+    const double a = share_for(other, std::numeric_limits<double>::quiet_NaN()).asperity_share;
+    lo = std::min(lo, a);
+    hi = std::max(hi, a);
+  }
+  q.share_spread = hi - lo;
+  return q;
+}
+
+void MeshLubrication::rest(const PathPoint& p, Position& q) const {
+  const Case& c = case_;
+  const auto& lubricant = c.lubrication.lubricant;
+  const double face = mesh_.pair().spec().face_width;
+  const double mu_b = c.friction_coefficient, k_wear = c.lubrication.wear_coefficient;
+  const double vs = p.v1 - p.v2, u = 0.5 * (p.v1 + p.v2);
+  const double film_share = 1.0 - q.asperity_share;
+  const double p_f = p.half_width > 0.0 ? film_share * p.line_load / (2.0 * p.half_width) : 0.0;
+  auto blok = [&](double mu) {
+    return lub::blok_flash_temperature(mu, p.line_load, p.half_width, p.v1, p.v2, thermal_coefficient_[0],
+                                       thermal_coefficient_[1]);
+  };
+  // The film's traction coefficient at a friction mu: the surfaces at the bulk temperature plus the
+  // mean flash temperature over the band that mu makes (Eyring models); the curve at the bulk.
+  double rise = 0.0;
+  bool curve_outside = false;
+  auto film_coefficient = [&](double mu) {
+    if (!(film_share > 0.0) || !(p_f > 0.0) || vs == 0.0) return 0.0;
+    if (traction_ == lub::FilmTraction::curve) {
+      const lub::TractionValue t =
+          lubricant.traction.at(u > 0.0 ? std::abs(vs) / u : 0.0, p.hertz_p0, bulk_temperature_);
+      curve_outside = t.outside;
+      return t.coefficient;
+    }
+    const lub::OilState surface = lub::oil_state(lubricant, bulk_temperature_ + lub::kBlokMeanOverPeak * blok(mu));
+    const lub::FilmShear shear = lub::film_shear_stress(traction_, surface, p_f, vs, q.mean_gap);
+    rise = shear.midfilm_rise;
+    return shear.shear_stress / p_f;
+  };
+  auto mixed = [&](double mu) { return q.asperity_share * mu_b + film_share * film_coefficient(mu); };
+  double mu = mixed(0.0);
+  if (traction_ != lub::FilmTraction::curve && !lubricant.fixed() && vs != 0.0 && film_share > 0.0) {
+    // mu = F(mu): F falls as mu heats the surfaces, so mu - F(mu) rises through one root in [0, top].
+    const double top = std::max({mu_b, lubricant.limiting_shear_coefficient, mu});
+    const auto g = [&](double m) { return m - mixed(m); };
+    if (g(top) > 0.0) {
+      std::uintmax_t iterations = 100;
+      const auto [a, b] = boost::math::tools::toms748_solve(
+          g, 0.0, top, [](double l, double r) { return std::abs(r - l) <= 1e-12 * std::max(1e-6, r); }, iterations);
+      mu = 0.5 * (a + b);
+    } else {
+      mu = top;
+    }
+  }
+  const double film_coef = film_coefficient(mu);  // also sets rise and curve_outside at the answer
+  q.friction = q.asperity_share * mu_b + film_share * film_coef;
+  q.film_traction = film_coef;
+  q.midfilm_rise = rise;
+  q.curve_outside = curve_outside ? 1.0 : 0.0;
+  q.flash = blok(q.friction);
+  q.contact_temperature = bulk_temperature_ + q.flash;
+  q.iso_contact_temperature = bulk_temperature_ + q.iso_flash;
+  q.power_loss = q.friction * p.line_load * face * std::abs(vs);
+  // Archard per engagement: a flank point crosses 2b at its own speed v_i while the other slides
+  // |v_s| 2b/v_i past it under the asperities' mean pressure share w/(2b): h = k share w |v_s|/v_i.
+  const double asperity_load = q.asperity_share * p.line_load;
+  q.wear_pinion = p.v1 > 0.0 ? k_wear * asperity_load * std::abs(vs) / p.v1 : 0.0;
+  q.wear_wheel = p.v2 > 0.0 ? k_wear * asperity_load * std::abs(vs) / p.v2 : 0.0;
+  // ISO/TS 6336-22: the oil at theta_B = theta_M + theta_fl(mu_mC) (Blok's form with its mu).
+  const lub::OilState local = lub::oil_state(lubricant, bulk_temperature_ + q.blok_iso_flash);
+  q.iso_film = lub::iso_film_hy(p.radius, reduced_modulus_, p.hertz_p0, p.v1 + p.v2, oil_at_bulk_, local);
+  q.iso_lambda = q.iso_film / roughness_.mean_ra;
+  q.lambda_film = q.film / roughness_.rq;
+  q.lambda_gap = q.mean_gap / roughness_.rq;
+  bool low = false;
+  for (int g = 0; g < 2; ++g) {
+    const Material& m = (g == 0 ? c.pinion : c.wheel).material;
+    low = low || lub::peclet_number(g == 0 ? p.v1 : p.v2, p.half_width, m.thermal_conductivity, m.density,
+                                    m.specific_heat) < lub::kMinBlokPeclet;
+  }
+  q.low_peclet = low ? 1.0 : 0.0;
 }
 
 void MeshLubrication::finish(MeshContactResult& r) {
   const Case& c = case_;
   const auto& p = path_;
   const std::size_t n = p.s.size();
-  const double face = mesh_.pair().spec().face_width;
-  const double mu_b = c.friction_coefficient, k_wear = c.lubrication.wear_coefficient;
-  for (std::size_t i = 0; i < n; ++i) {
-    Position& q = positions_[i];
-    const double vs = p.v1[i] - p.v2[i];
-    const lub::LoadShare share{q.asperity_share, 1.0 - q.asperity_share, q.film_gap};
-    const lub::MixedFriction f = lub::mixed_friction(oil_at_bulk_, share, mu_b, p.line_load[i], p.half_width[i], vs);
-    q.friction = f.coefficient;
-    q.film_traction = f.film_coefficient;
-    q.flash = lub::blok_flash_temperature(f.coefficient, p.line_load[i], p.half_width[i], p.v1[i], p.v2[i],
-                                          thermal_coefficient_[0], thermal_coefficient_[1]);
-    q.contact_temperature = bulk_temperature_ + q.flash;
-    q.iso_contact_temperature = bulk_temperature_ + q.iso_flash;
-    q.power_loss = f.coefficient * p.line_load[i] * face * std::abs(vs);
-    // Archard per engagement: a flank point crosses 2b at its own speed v_i while the other slides
-    // |v_s| 2b/v_i past it under the asperities' mean pressure share w/(2b): h = k share w |v_s|/v_i.
-    const double asperity_load = q.asperity_share * p.line_load[i];
-    q.wear_pinion = p.v1[i] > 0.0 ? k_wear * asperity_load * std::abs(vs) / p.v1[i] : 0.0;
-    q.wear_wheel = p.v2[i] > 0.0 ? k_wear * asperity_load * std::abs(vs) / p.v2[i] : 0.0;
-    const lub::OilState local = lub::oil_state(c.lubrication.lubricant, q.iso_contact_temperature);
-    q.iso_film = lub::iso_film_hy(p.radius[i], reduced_modulus_, p.hertz_p0[i], p.v1[i] + p.v2[i], oil_at_bulk_, local);
-    q.iso_lambda = q.iso_film / mean_ra_;
-    q.lambda = q.film / composite_rq_;
-    bool low = false;
-    for (int g = 0; g < 2; ++g) {
-      const Material& m = (g == 0 ? c.pinion : c.wheel).material;
-      low = low || lub::peclet_number(g == 0 ? p.v1[i] : p.v2[i], p.half_width[i], m.thermal_conductivity, m.density,
-                                      m.specific_heat) < lub::kMinBlokPeclet;
-    }
-    q.low_peclet = low ? 1.0 : 0.0;
-  }
+  for (std::size_t i = 0; i < n; ++i) rest(p.point(i), positions_[i]);
+
   using C = Column<Position>;
-  add_columns<Position>(r.lubrication, positions_,
-                        {C{"film_isothermal_m", "m", [](const Position& q) { return q.film_isothermal; }},
-                         C{"inlet_heating_factor", "1", [](const Position& q) { return q.heating_factor; }},
-                         C{"film_m", "m", [](const Position& q) { return q.film; }},
-                         C{"lambda", "1", [](const Position& q) { return q.lambda; }},
-                         C{"ehl_regime", "1", [](const Position& q) { return q.regime; }},
-                         C{"separation_m", "m", [](const Position& q) { return q.separation; }},
-                         C{"asperity_load_share", "1", [](const Position& q) { return q.asperity_share; }},
-                         C{"film_load_share", "1", [](const Position& q) { return 1.0 - q.asperity_share; }},
-                         C{"friction_coefficient", "1", [](const Position& q) { return q.friction; }},
-                         C{"film_traction_coefficient", "1", [](const Position& q) { return q.film_traction; }}});
-  add_series(r.lubrication, "iso_friction_coefficient", "1").assign(n, iso_friction_);
   add_columns<Position>(
       r.lubrication, positions_,
-      {C{"power_loss_W", "W", [](const Position& q) { return q.power_loss; }},
+      {C{"film_isothermal_m", "m", [](const Position& q) { return q.film_isothermal; }},
+       C{"inlet_heating_factor", "1", [](const Position& q) { return q.heating_factor; }},
+       C{"film_m", "m", [](const Position& q) { return q.film; }},
+       C{"lambda_smooth_film", "1", [](const Position& q) { return q.lambda_film; }},
+       C{"ehl_regime", "1", [](const Position& q) { return q.regime; }},
+       C{"mean_plane_separation_m", "m", [](const Position& q) { return q.separation; }},
+       C{"mean_gap_m", "m", [](const Position& q) { return q.mean_gap; }},
+       C{"lambda_mean_gap", "1", [](const Position& q) { return q.lambda_gap; }},
+       C{"asperity_load_share", "1", [](const Position& q) { return q.asperity_share; }},
+       C{"film_load_share", "1", [](const Position& q) { return 1.0 - q.asperity_share; }},
+       C{"asperity_share_closure_spread", "1", [](const Position& q) { return q.share_spread; }},
+       C{"friction_coefficient", "1", [](const Position& q) { return q.friction; }},
+       C{"film_traction_coefficient", "1", [](const Position& q) { return q.film_traction; }},
+       C{"film_midplane_temperature_rise_K", "K", [](const Position& q) { return q.midfilm_rise; }},
+       C{"pair_power_loss_W", "W", [](const Position& q) { return q.power_loss; }},
        C{"flash_temperature_K", "K", [](const Position& q) { return q.flash; }},
        C{"contact_temperature_K", "K", [](const Position& q) { return q.contact_temperature; }},
        C{"iso_flash_temperature_K", "K", [](const Position& q) { return q.iso_flash; }},
        C{"iso_contact_temperature_K", "K", [](const Position& q) { return q.iso_contact_temperature; }},
+       C{"blok_flash_temperature_iso_mu_K", "K", [](const Position& q) { return q.blok_iso_flash; }},
        C{"iso_film_hy_m", "m", [](const Position& q) { return q.iso_film; }},
        C{"iso_lambda_gf", "1", [](const Position& q) { return q.iso_lambda; }},
        C{"wear_depth_pinion_m", "m", [](const Position& q) { return q.wear_pinion; }},
        C{"wear_depth_wheel_m", "m", [](const Position& q) { return q.wear_wheel; }},
        C{"flag_low_peclet", "1", [](const Position& q) { return q.low_peclet; }},
-       C{"flag_gap_from_dry_contact", "1", [](const Position& q) { return q.gap_from_dry; }}});
+       C{"flag_share_depends_on_closure", "1",
+         [](const Position& q) { return q.share_spread > kClosureSpreadFlag ? 1.0 : 0.0; }}});
+  if (asperity_->bearing_weight() >= 1.0)
+    add_columns<Position>(
+        r.lubrication, positions_,
+        {C{"flag_bearing_area_saturated", "1", [](const Position& q) { return q.bearing_saturated; }}});
+  if (traction_ == lub::FilmTraction::curve)
+    add_columns<Position>(
+        r.lubrication, positions_,
+        {C{"flag_traction_curve_extrapolated", "1", [](const Position& q) { return q.curve_outside; }}});
 
   LubricationSummary sum;
   sum.lubricant = c.lubrication.lubricant.name;
   sum.film_formula = c.lubrication.film_formula;
   sum.inlet_heating = c.lubrication.inlet_heating;
+  sum.film_gap = c.lubrication.film_gap;
+  sum.asperity_pressure = c.lubrication.asperity_pressure;
+  sum.bearing_area_weight = asperity_->bearing_weight();
+  sum.traction = c.lubrication.traction;
+  sum.bulk_friction_law = c.lubrication.mean_friction;
   sum.oil_temperature = c.operating.oil_temperature;
   sum.bulk_temperature = bulk_temperature_;
   sum.bulk_estimated = bulk_estimated_;
   sum.dynamic_viscosity = oil_at_bulk_.dynamic_viscosity;
   sum.pressure_viscosity = oil_at_bulk_.pressure_viscosity;
-  sum.iso_friction = iso_friction_;
-  sum.composite_rq = composite_rq_;
-  sum.mean_ra = mean_ra_;
+  sum.composite_rq = roughness_.rq;
+  sum.mean_ra = roughness_.mean_ra;
+  sum.roughness_source = roughness_.source;
+  sum.summit_model_sigma = r.surface.surface_sigma;
+  for (const auto& [law, f] : mean_laws_)
+    sum.mean_friction.push_back({lub::mean_friction_law_name(law), f.coefficient});
   const gear::SpurPair& pair = mesh_.pair();
   const gear::PathOfContact& path = pair.path();
+  const double face = pair.spec().face_width;
   // Time average over one mesh cycle of all pairs in contact: each pair sweeps A -> E at the
   // base speed, so the mean is (1/p_b) int_A^E P ds.
-  sum.mean_power_loss = path_mean(r.find("power_loss_W")->values) * path.length / path.base_pitch;
+  sum.mesh_power_loss = path_mean(series(positions_, &Position::power_loss)) * path.length / path.base_pitch;
   const double omega = mesh_.pinion_speed();
   sum.input_power = c.operating.pinion_torque * omega;
+  sum.efficiency = sum.input_power > 0.0 ? 1.0 - sum.mesh_power_loss / sum.input_power : 1.0;
   {
     const double base_load = c.operating.pinion_torque / pair.gear(0).base_radius / face;  // F_bt/b [N/m]
     const double base_speed = omega * pair.gear(0).base_radius;
@@ -207,33 +365,108 @@ void MeshLubrication::finish(MeshContactResult& r) {
     const double e1 = (path.e - path.c) / path.base_pitch, e2 = (path.c - path.a) / path.base_pitch;
     sum.loss_factor_ohlendorf =
         std::numbers::pi * (u + 1.0) / (z1 * u) * (1.0 - path.contact_ratio + e1 * e1 + e2 * e2);
+    // The gear-mean friction the FZG power-loss test measures: P = mu_mz P_in H_V (Ohlendorf's
+    // definition), with the path's H_V.
+    sum.mesh_mean_friction = sum.loss_factor_path > 0.0 && sum.input_power > 0.0
+                                 ? sum.mesh_power_loss / (sum.input_power * sum.loss_factor_path)
+                                 : 0.0;
   }
+  sum.max_contact_temperature = largest(positions_, &Position::contact_temperature);
+  sum.max_iso_contact_temperature = largest(positions_, &Position::iso_contact_temperature);
+  sum.min_iso_lambda = smallest(positions_, &Position::iso_lambda);
+  sum.min_lambda_film = smallest(positions_, &Position::lambda_film);
+  sum.max_share_spread = largest(positions_, &Position::share_spread);
+  sum.closure_dependent_positions = static_cast<int>(std::count_if(
+      positions_.begin(), positions_.end(), [](const Position& q) { return q.share_spread > kClosureSpreadFlag; }));
   if (c.lubrication.scuffing_temperature > 0.0) {
     const double t_s = c.lubrication.scuffing_temperature, t_oil = c.operating.oil_temperature;
-    sum.iso_scuffing_safety =
-        lub::iso_scuffing_safety(t_s, t_oil, largest(positions_, &Position::iso_contact_temperature));
-    sum.scuffing_safety = lub::iso_scuffing_safety(t_s, t_oil, largest(positions_, &Position::contact_temperature));
+    sum.iso_scuffing_safety = lub::iso_scuffing_safety(t_s, t_oil, sum.max_iso_contact_temperature);
+    sum.scuffing_safety = lub::iso_scuffing_safety(t_s, t_oil, sum.max_contact_temperature);
   }
-  const std::pair<const char*, double> named[] = {
-      {"A", path.a}, {"AB", 0.5 * (path.a + path.b)}, {"B", path.b}, {"C", path.c},
-      {"D", path.d}, {"DE", 0.5 * (path.d + path.e)}, {"E", path.e}};
-  for (const auto& [name, s] : named)
-    sum.points.push_back({name, s, at(p.s, positions_, &Position::film, s), at(p.s, positions_, &Position::lambda, s),
-                          at(p.s, positions_, &Position::iso_film, s), at(p.s, positions_, &Position::iso_lambda, s),
-                          at(p.s, positions_, &Position::asperity_share, s)});
-  r.lubrication_summary = std::move(sum);
+  // The named points, each evaluated where it stands (B and D with the single pair's load).
+  for (const auto& [name, point] : p.named) {
+    double guess = std::numeric_limits<double>::quiet_NaN();
+    Position q = film(point, guess);
+    q.iso_flash = iso_flash(point);
+    q.blok_iso_flash = lub::blok_flash_temperature(iso_mu_, point.line_load, point.half_width, point.v1, point.v2,
+                                                   thermal_coefficient_[0], thermal_coefficient_[1]);
+    rest(point, q);
+    LubricationSummary::NamedPoint np;
+    np.name = name;
+    np.s = point.s;
+    np.line_load = point.line_load;
+    np.film = q.film;
+    np.lambda_film = q.lambda_film;
+    np.mean_gap = q.mean_gap;
+    np.lambda_gap = q.lambda_gap;
+    np.iso_film = q.iso_film;
+    np.iso_lambda = q.iso_lambda;
+    np.asperity_share = q.asperity_share;
+    np.share_spread = q.share_spread;
+    np.friction = q.friction;
+    np.flash = q.flash;
+    np.iso_flash = q.iso_flash;
+    np.contact_temperature = q.contact_temperature;
+    np.iso_contact_temperature = q.iso_contact_temperature;
+    sum.points.push_back(np);
+  }
+  r.lubrication_summary = sum;
+
+  // What produced the numbers and where they rest on a choice: said in the verdict.
+  {
+    const double psi = plasticity_index_, w = sum.bearing_area_weight;
+    std::string pressure = w >= 1.0 ? fmt::format(
+                                          "by their bearing area at the hardness (the flanks fully plastic, "
+                                          "plasticity index {:.3g})",
+                                          psi)
+                           : w <= 0.0 ? fmt::format("by the {} model (plasticity index {:.3g})", r.asperity_model, psi)
+                                      : fmt::format(
+                                            "by a blend, {:.2f} bearing area and {:.2f} {} model (plasticity "
+                                            "index {:.3g}, between 0.6 and 1)",
+                                            w, 1.0 - w, r.asperity_model, psi);
+    std::string text = fmt::format(
+        " Lubricated ({}): the film fills the {} between the rough flanks and the asperities press {}", sum.lubricant,
+        film_gap_ == lub::FilmGap::mean_gap     ? "mean gap"
+        : film_gap_ == lub::FilmGap::mean_plane ? "separation of the mean planes"
+                                                : "gap counted from the dry contact",
+        pressure);
+    if (sum.closure_dependent_positions > 0) {
+      const auto worst =
+          std::max_element(positions_.begin(), positions_.end(),
+                           [](const Position& a, const Position& b) { return a.share_spread < b.share_spread; });
+      text += fmt::format(
+          "; the asperity share depends on that choice at {} of {} positions (it moves by up to {:.3f} between the "
+          "mean gap, the mean plane and the dry-contact datum, at s = {:.3f} mm): there it is a model's estimate",
+          sum.closure_dependent_positions, n, worst->share_spread,
+          p.s[static_cast<std::size_t>(worst - positions_.begin())] * 1e3);
+    } else {
+      text += fmt::format("; the asperity share moves by at most {:.3f} between the film datums", sum.max_share_spread);
+    }
+    const auto& l = c.lubrication.lubricant;
+    text += traction_ == lub::FilmTraction::curve
+                ? fmt::format(". Friction: the film's traction from {}'s measured traction curves", l.name)
+                : fmt::format(". Friction: the film's {} traction (tau0 {:.3g} MPa, Lambda {:.3g}, from {})",
+                              traction_ == lub::FilmTraction::thermal_eyring ? "thermal Eyring" : "isothermal Eyring",
+                              l.eyring_stress * 1e-6, l.limiting_shear_coefficient,
+                              l.fixed() ? "the case's fixed oil" : "the lubricant file");
+    text += fmt::format(
+        " and the asperities' boundary coefficient {:g} (friction.mu); the model's gear-mean {:.4f} "
+        "against ISO/TS 6336-21/-22's {:.4f}.",
+        c.friction_coefficient, sum.mesh_mean_friction, iso_mu_);
+    r.verdict += text;
+  }
 
   // Where the lubricated models leave their ranges: said, not silent.
   const auto& l = c.lubrication.lubricant;
+  constexpr double kC = 273.15;
   if (!l.fixed()) {
-    constexpr double kC = 273.15;
     if (bulk_temperature_ < l.min_temperature || bulk_temperature_ > l.max_temperature)
       r.warnings.push_back(
           fmt::format("bulk temperature {:.1f} degC{} lies outside {}'s data range [{:.0f}, {:.0f}] "
                       "degC: the film's viscosity is extrapolated (Walther)",
                       bulk_temperature_ - kC, bulk_estimated_ ? " (ISO estimate)" : "", l.name, l.min_temperature - kC,
                       l.max_temperature - kC));
-    const double hottest = largest(positions_, &Position::iso_contact_temperature);
+    const double hottest = bulk_temperature_ + largest(positions_, &Position::blok_iso_flash);
     if (hottest > l.max_temperature)
       r.warnings.push_back(
           fmt::format("ISO/TS 6336-22 h_Y evaluates the oil at contact temperatures up to {:.1f} degC, "
@@ -246,6 +479,47 @@ void MeshLubrication::finish(MeshContactResult& r) {
         fmt::format("{} of {} positions with a Peclet number below {:g} (flag_low_peclet): Blok's "
                     "flash temperature assumes fast-moving surfaces and overestimates there",
                     low, n, lub::kMinBlokPeclet));
+  for (const auto& [law, f] : mean_laws_)
+    if (f.below_speed_range) {
+      r.warnings.push_back(fmt::format(
+          "the ISO and gear-mean friction formulas are fitted above 1 m/s pitch-line speed; here {:.3g} m/s: their "
+          "mean coefficients ({} {:.4f}) are extrapolations (the standards expect more friction at such speeds)",
+          pitch_.pitch_line_speed, lub::mean_friction_law_name(law), f.coefficient));
+      break;
+    }
+  if (!roughness_.from_heights)
+    r.warnings.push_back(
+        "the flanks are given by summit statistics alone: lambda and the ISO formulas take the summit model's "
+        "composite sigma, not a measured Rq and Ra");
+  else if (const double ratio = r.surface.surface_sigma / roughness_.rq;
+           ratio > kRoughnessDisagreementFactor || ratio < 1.0 / kRoughnessDisagreementFactor)
+    r.warnings.push_back(fmt::format(
+        "the summit model's composite sigma {:.4g} um differs from the flanks' Rq {:.4g} um ({}) by a factor {:.3g}: "
+        "the Greenwood-Williamson parameters describe another surface than the one measured; lambda and the ISO "
+        "formulas take the flanks' Rq and Ra, the asperity contact the summit model",
+        r.surface.surface_sigma * 1e6, roughness_.rq * 1e6, roughness_.source, ratio));
+  if (largest(positions_, &Position::bearing_saturated) > 0.0)
+    r.warnings.push_back(
+        "the Hertz pressure reaches the hardness at some positions (flag_bearing_area_saturated): the bearing-area "
+        "model has flattened the flanks completely there");
+  if (traction_ == lub::FilmTraction::curve) {
+    if (largest(positions_, &Position::curve_outside) > 0.0)
+      r.warnings.push_back(fmt::format(
+          "{} of {} positions beyond the traction curves' measured SRR, pressure or "
+          "temperature (flag_traction_curve_extrapolated): the nearest values are used",
+          std::count_if(positions_.begin(), positions_.end(), [](const Position& q) { return q.curve_outside > 0.0; }),
+          n));
+    for (const auto& curve : l.traction.curves()) {
+      const double u = 0.5 * pitch_.sum_speed;
+      if (u > 2.0 * curve.entrainment_speed || u < 0.5 * curve.entrainment_speed) {
+        r.warnings.push_back(
+            fmt::format("traction curve '{}' was measured at {:.3g} m/s entrainment speed; the "
+                        "pitch point runs at {:.3g} m/s (the curves are used as measured)",
+                        curve.name, curve.entrainment_speed, u));
+        break;
+      }
+    }
+  }
 }
 
 }  // namespace geartrib::contact

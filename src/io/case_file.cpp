@@ -142,6 +142,44 @@ lubrication::Lubricant load_lubricant(const std::filesystem::path& file) {
   l.limiting_shear_coefficient = r.number("limiting_shear_coefficient");
   l.min_temperature = bounded_quantity(r, "min_temperature", D::temperature, 100.0, 1000.0);
   l.max_temperature = bounded_quantity(r, "max_temperature", D::temperature, 100.0, 1000.0);
+  if (r.has("iso_lubricant_factor")) {
+    l.iso_lubricant_factor = r.number("iso_lubricant_factor");
+    require(r, "iso_lubricant_factor", l.iso_lubricant_factor > 0.0 && l.iso_lubricant_factor <= 2.0,
+            "must lie in (0, 2] (ISO/TS 6336-20 tabulates 0.6 to 1.5)");
+  }
+  // Measured traction curves: [traction_curves.NAME] tables, each at one Hertz pressure, oil
+  // temperature and entrainment speed.
+  std::vector<lubrication::TractionCurve> curves;
+  for (const std::string& name : r.keys_of("traction_curves")) {
+    const std::string t = "traction_curves." + name + ".";
+    lubrication::TractionCurve c;
+    c.name = name;
+    c.source = r.string(t + "source");
+    c.hertz_pressure = bounded_quantity(r, t + "hertz_pressure", D::pressure, 1e6, 1e11);
+    c.temperature = bounded_quantity(r, t + "temperature", D::temperature, 100.0, 1000.0);
+    c.entrainment_speed = bounded_quantity(r, t + "entrainment_speed", D::speed, 1e-6, 1e3);
+    c.slide_to_roll = r.quantity_array(t + "slide_to_roll", D::dimensionless);
+    c.coefficient = r.quantity_array(t + "coefficient", D::dimensionless);
+    require(r, t + "coefficient", c.coefficient.size() == c.slide_to_roll.size(),
+            fmt::format("must have as many entries as slide_to_roll ({})", c.slide_to_roll.size()));
+    require(r, t + "slide_to_roll", c.slide_to_roll.size() >= 2, "needs at least two points");
+    require(r, t + "slide_to_roll", c.slide_to_roll.front() >= 0.0, "must start at 0 or above (SRR = |v1 - v2|/u)");
+    for (std::size_t i = 1; i < c.slide_to_roll.size(); ++i)
+      require(r, t + "slide_to_roll", c.slide_to_roll[i] > c.slide_to_roll[i - 1],
+              fmt::format("must increase strictly (entry {} after {:g})", i, c.slide_to_roll[i - 1]));
+    require(r, t + "slide_to_roll", c.slide_to_roll.back() <= 2.0, "must not exceed 2 (pure sliding)");
+    for (std::size_t i = 0; i < c.coefficient.size(); ++i)
+      require(r, t + "coefficient", c.coefficient[i] >= 0.0 && c.coefficient[i] <= 1.0,
+              fmt::format("must lie in [0, 1] (entry {}: {:g})", i, c.coefficient[i]));
+    curves.push_back(std::move(c));
+  }
+  if (!curves.empty()) {
+    try {
+      l.traction = lubrication::TractionCurves(std::move(curves));
+    } catch (const std::invalid_argument& e) {
+      r.fail("traction_curves", e.what());
+    }
+  }
   try {
     l.validate();
   } catch (const std::invalid_argument& e) {
@@ -402,6 +440,12 @@ const std::vector<std::string>& fixed_lubricant_keys() {
 }
 
 void apply_change(TomlReader& r, const std::string& key, const std::string& value) {
+  // lubricant=none runs a lubricated case dry: the [lubricant] table goes (the [lubrication]
+  // models and the oil temperature are then unused).
+  if (key == "lubricant.file" && value == "none") {
+    r.erase("lubricant");
+    return;
+  }
   // The lubricant's two forms replace each other: a file, or eta and alpha given in the case.
   if (key == "lubricant.file") {
     for (const std::string& k : fixed_lubricant_keys()) r.erase(k);
@@ -508,6 +552,16 @@ void read_lubrication(TomlReader& r, Case& c) {
   }
   if (lc.scuffing_temperature > 0.0 && !(lc.scuffing_temperature > c.operating.oil_temperature))
     r.fail("lubrication.scuffing_temperature", "must exceed the oil temperature (or be 0: no safety)");
+  if (l.fixed() && !(l.lubricant_factor() > 0.0))
+    r.fail("lubricant.base_oil", fmt::format("ISO/TS 6336-20 tabulates no lubricant factor X_L for '{}': give "
+                                             "lubricant.iso_lubricant_factor with its source",
+                                             lubrication::base_oil_name(l.base_oil)));
+  if (lc.traction == "curve" && l.traction.empty())
+    r.fail("lubrication.traction",
+           l.fixed() ? std::string("\"curve\" needs measured traction curves: give a lubricant file with "
+                                   "[traction_curves.NAME] tables")
+                     : "\"curve\" needs measured traction curves, and " + lc.lubricant_file +
+                           " has no [traction_curves.NAME] table");
   for (int gear = 0; gear < 2; ++gear) {
     const Material& m = (gear == 0 ? c.pinion : c.wheel).material;
     if (!(m.thermal_conductivity > 0.0 && m.specific_heat > 0.0))

@@ -1,10 +1,14 @@
 #include "io/case_parameters.hpp"
 
 #include "asperity/model.hpp"
+#include "contact/asperity_pressure.hpp"
 #include "contact/deterministic_contact.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "lubrication/ehl_film.hpp"
+#include "lubrication/film_closure.hpp"
+#include "lubrication/flank_temperature.hpp"
+#include "lubrication/mixed_lubrication.hpp"
 
 #include <fmt/format.h>
 
@@ -460,11 +464,18 @@ std::vector<Parameter> build_table() {
       .range(0.0, 1.0, true, false)
       .doc("Fixed form: limiting shear stress over pressure (typical mineral oil; assumed)");
   add(mapped_choice(
-          "lubricant.base_oil", {"mineral", "pao", "ester", "polyglycol"},
+          "lubricant.base_oil", lubrication::base_oil_names(),
           [](auto& c, int) -> auto& { return c.lubrication.lubricant.base_oil; },
           [](const std::string& t) { return lubrication::base_oil_from_name(t); },
           [](lubrication::BaseOil b) { return std::string(lubrication::base_oil_name(b)); }))
-      .doc("Fixed form: base stock, for the ISO/TS 6336-20 lubricant factor X_L");
+      .doc(
+          "Fixed form: base stock, for the ISO lubricant factor X_L (an ester needs lubricant.iso_lubricant_factor: "
+          "the standard tabulates none)");
+  add(number(
+          "lubricant.iso_lubricant_factor",
+          [](auto& c, int) -> auto& { return c.lubrication.lubricant.iso_lubricant_factor; }))
+      .range(0.0, 2.0)
+      .doc("Fixed form: the ISO lubricant factor X_L itself; 0: the base stock's tabulated value");
 
   // [lubrication]: the models along the path.
   add(text(
@@ -488,6 +499,35 @@ std::vector<Parameter> build_table() {
           [](auto& c, int) -> auto& { return c.lubrication.scuffing_temperature; }))
       .range(0.0, 2000.0)
       .doc("Scuffing temperature theta_S for the ISO/TS 6336-20 flash-temperature safety; 0: none");
+  add(text(
+          "lubrication.film_gap", K::choice, [](auto& c, int) -> auto& { return c.lubrication.film_gap; }))
+      .choices(lubrication::film_gap_names(), "film gap")
+      .alias({"film_gap"})
+      .doc(
+          "What the shared film's thickness equals: the mean gap between the rough flanks (Patir & Cheng), the "
+          "separation of their mean planes (JGP 1972), or the gap counted from the dry contact (geartrib 0.1)");
+  add(text(
+          "lubrication.asperity_pressure", K::choice,
+          [](auto& c, int) -> auto& { return c.lubrication.asperity_pressure; }))
+      .choices(contact::asperity_pressure_model_names(), "asperity pressure model")
+      .alias({"asperity_pressure"})
+      .doc(
+          "Asperity pressure in the load sharing: auto (the asperity model below plasticity index 0.6, the bearing "
+          "area at the hardness above 1, blended between), asperity-model or bearing-area");
+  add(text(
+          "lubrication.traction", K::choice, [](auto& c, int) -> auto& { return c.lubrication.traction; }))
+      .choices(lubrication::film_traction_names(), "film traction model")
+      .alias({"traction"})
+      .doc(
+          "Film traction: thermal Eyring (Johnson & Greenwood 1980), isothermal Eyring, or the lubricant's measured "
+          "traction curves");
+  add(text(
+          "lubrication.mean_friction", K::choice, [](auto& c, int) -> auto& { return c.lubrication.mean_friction; }))
+      .choices(lubrication::mean_friction_law_names(), "gear-mean friction law")
+      .alias({"mean_friction"})
+      .doc(
+          "Gear-mean friction law of the bulk-temperature estimate: iso-flash (ISO/TS 6336-20's own), iso "
+          "(ISO/TS 6336-21/-22), schlenk, fernandes; all are reported");
 
   // [friction]
   add(number(

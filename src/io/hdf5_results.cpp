@@ -87,22 +87,19 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
     string_attribute(lub, "inlet_heating", l.inlet_heating);
     string_attribute(lub, "ehl_regime_codes",
                      "0 rigid-isoviscous, 1 rigid-piezoviscous, 2 elastic-isoviscous, 3 elastic-piezoviscous");
-    number_attribute(lub, "oil_temperature_K", l.oil_temperature);
-    number_attribute(lub, "bulk_temperature_K", l.bulk_temperature);
-    number_attribute(lub, "bulk_temperature_estimated", l.bulk_estimated ? 1.0 : 0.0);
-    number_attribute(lub, "dynamic_viscosity_at_bulk_Pa_s", l.dynamic_viscosity);
-    number_attribute(lub, "pressure_viscosity_at_bulk_per_Pa", l.pressure_viscosity);
-    number_attribute(lub, "iso_mean_friction", l.iso_friction);
-    number_attribute(lub, "composite_rq_m", l.composite_rq);
-    number_attribute(lub, "mean_ra_m", l.mean_ra);
-    number_attribute(lub, "mean_power_loss_W", l.mean_power_loss);
-    number_attribute(lub, "input_power_W", l.input_power);
-    number_attribute(lub, "gear_loss_factor_path", l.loss_factor_path);
-    number_attribute(lub, "gear_loss_factor_ohlendorf", l.loss_factor_ohlendorf);
-    if (l.iso_scuffing_safety > 0.0) {
-      number_attribute(lub, "iso_scuffing_safety", l.iso_scuffing_safety);
-      number_attribute(lub, "scuffing_safety", l.scuffing_safety);
-    }
+    string_attribute(lub, "film_gap", l.film_gap);
+    string_attribute(lub, "asperity_pressure", l.asperity_pressure);
+    string_attribute(lub, "traction", l.traction);
+    string_attribute(lub, "bulk_friction_law", l.bulk_friction_law);
+    string_attribute(lub, "roughness_source", l.roughness_source);
+    for (const auto& v : contact::summary_values(l)) number_attribute(lub, v.name, v.value);
+    // The named points, each evaluated where it stands (B and D on the single pair's side).
+    Handle points(H5Gcreate2(lub, "points", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                  "group /lubrication/points");
+    std::vector<std::string> names;
+    for (const auto& p : l.points) names.push_back(p.name);
+    hdf5::strings_dataset(points, "point", names);
+    for (const auto& q : contact::named_point_series(l)) hdf5::number_dataset(points, q.name, q.values, q.unit);
   }
   {
     hdf5::string_dataset(file, "/scene", c.source_text);

@@ -1,7 +1,10 @@
 #include "lubrication/lubricant.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -27,38 +30,152 @@ Walther walther(const Lubricant& l) {
 double iso_alpha_temperature_factor(double t) { return 1.0 + 516.0 * (1.0 / t - 1.0 / 311.0); }
 }  // namespace
 
+namespace {
+struct BaseOilRow {
+  BaseOil base;
+  const char* name;
+  double iso_factor;  // ISO/TS 6336-20 X_L; NaN: not tabulated
+};
+constexpr BaseOilRow kBaseOils[] = {
+    {BaseOil::mineral, "mineral", 1.0},
+    {BaseOil::pao, "pao", 0.8},
+    {BaseOil::ester, "ester", std::numeric_limits<double>::quiet_NaN()},
+    {BaseOil::polyglycol_insoluble, "polyglycol-insoluble", 0.7},
+    {BaseOil::polyglycol_water_soluble, "polyglycol-water-soluble", 0.6},
+    {BaseOil::phosphate_ester, "phosphate-ester", 1.3},
+    {BaseOil::traction_fluid, "traction-fluid", 1.5},
+};
+}  // namespace
+
 BaseOil base_oil_from_name(const std::string& name) {
-  for (BaseOil b : {BaseOil::mineral, BaseOil::pao, BaseOil::ester, BaseOil::polyglycol})
-    if (name == base_oil_name(b)) return b;
-  throw std::invalid_argument("unknown base oil '" + name + "' (known: mineral, pao, ester, polyglycol)");
+  for (const auto& row : kBaseOils)
+    if (name == row.name) return row.base;
+  std::string known;
+  for (const auto& row : kBaseOils) known += (known.empty() ? "" : ", ") + std::string(row.name);
+  throw std::invalid_argument("unknown base oil '" + name + "' (known: " + known + ")");
 }
 
 const char* base_oil_name(BaseOil b) {
-  switch (b) {
-    case BaseOil::mineral:
-      return "mineral";
-    case BaseOil::pao:
-      return "pao";
-    case BaseOil::ester:
-      return "ester";
-    case BaseOil::polyglycol:
-      return "polyglycol";
-  }
+  for (const auto& row : kBaseOils)
+    if (row.base == b) return row.name;
   return "mineral";
 }
 
+std::vector<std::string> base_oil_names() {
+  std::vector<std::string> v;
+  for (const auto& row : kBaseOils) v.emplace_back(row.name);
+  return v;
+}
+
 double iso_lubricant_factor(BaseOil b) {
-  switch (b) {
-    case BaseOil::mineral:
-      return 1.0;
-    case BaseOil::pao:
-      return 0.8;
-    case BaseOil::ester:
-      return 0.7;
-    case BaseOil::polyglycol:
-      return 0.6;
+  for (const auto& row : kBaseOils)
+    if (row.base == b) return row.iso_factor;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+double Lubricant::lubricant_factor() const {
+  return iso_lubricant_factor > 0.0 ? iso_lubricant_factor : lubrication::iso_lubricant_factor(base_oil);
+}
+
+TractionCurves::TractionCurves(std::vector<TractionCurve> curves) : curves_(std::move(curves)) {
+  auto fail = [](const TractionCurve& c, const char* member, const std::string& rule) {
+    throw std::invalid_argument(fmt::format("traction_curves.{}.{}: {}", c.name, member, rule));
+  };
+  for (const TractionCurve& c : curves_) {
+    if (c.slide_to_roll.size() != c.coefficient.size())
+      fail(c, "coefficient", fmt::format("must have as many entries as slide_to_roll ({})", c.slide_to_roll.size()));
+    if (c.slide_to_roll.size() < 2) fail(c, "slide_to_roll", "needs at least two points");
+    if (!(c.slide_to_roll.front() >= 0.0)) fail(c, "slide_to_roll", "must start at 0 or above (SRR = |v1 - v2|/u)");
+    for (std::size_t i = 1; i < c.slide_to_roll.size(); ++i)
+      if (!(c.slide_to_roll[i] > c.slide_to_roll[i - 1]))
+        fail(c, "slide_to_roll", fmt::format("must increase strictly (entry {})", i));
+    if (!(c.slide_to_roll.back() <= 2.0)) fail(c, "slide_to_roll", "must not exceed 2 (pure sliding)");
+    for (std::size_t i = 0; i < c.coefficient.size(); ++i)
+      if (!(c.coefficient[i] >= 0.0 && c.coefficient[i] <= 1.0))
+        fail(c, "coefficient", fmt::format("must lie in [0, 1] (entry {}: {:g})", i, c.coefficient[i]));
+    if (!(c.hertz_pressure > 0.0)) fail(c, "hertz_pressure", "must be positive");
+    if (!(c.temperature > 0.0)) fail(c, "temperature", "must be positive (K)");
+    if (!(c.entrainment_speed > 0.0)) fail(c, "entrainment_speed", "must be positive");
   }
-  return 1.0;
+  for (const TractionCurve& c : curves_) {
+    if (std::find(pressures_.begin(), pressures_.end(), c.hertz_pressure) == pressures_.end())
+      pressures_.push_back(c.hertz_pressure);
+    if (std::find(temperatures_.begin(), temperatures_.end(), c.temperature) == temperatures_.end())
+      temperatures_.push_back(c.temperature);
+  }
+  std::sort(pressures_.begin(), pressures_.end());
+  std::sort(temperatures_.begin(), temperatures_.end());
+  const std::size_t np = pressures_.size(), nt = temperatures_.size();
+  index_.assign(np * nt, curves_.size());
+  for (std::size_t k = 0; k < curves_.size(); ++k) {
+    const TractionCurve& c = curves_[k];
+    const auto i = static_cast<std::size_t>(std::find(pressures_.begin(), pressures_.end(), c.hertz_pressure) -
+                                            pressures_.begin());
+    const auto j = static_cast<std::size_t>(std::find(temperatures_.begin(), temperatures_.end(), c.temperature) -
+                                            temperatures_.begin());
+    if (index_[i * nt + j] != curves_.size())
+      fail(c, "temperature",
+           fmt::format("a second curve at {:g} Pa and {:g} K (also '{}')", c.hertz_pressure, c.temperature,
+                       curves_[index_[i * nt + j]].name));
+    index_[i * nt + j] = k;
+  }
+  for (std::size_t i = 0; i < np; ++i)
+    for (std::size_t j = 0; j < nt; ++j)
+      if (index_[i * nt + j] == curves_.size())
+        throw std::invalid_argument(fmt::format(
+            "traction_curves: the curves must form a grid of Hertz pressure x temperature; none at {:g} Pa and {:g} K",
+            pressures_[i], temperatures_[j]));
+}
+
+namespace {
+// Linear interpolation in an ascending table, clamped at its ends; `outside` set when clamped.
+double table_value(const std::vector<double>& x, const std::vector<double>& y, double at, bool& outside) {
+  if (at <= x.front()) {
+    outside = outside || at < x.front();
+    return y.front();
+  }
+  if (at >= x.back()) {
+    outside = outside || at > x.back();
+    return y.back();
+  }
+  const auto k = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), at) - x.begin());
+  const double t = (at - x[k - 1]) / (x[k] - x[k - 1]);
+  return y[k - 1] + t * (y[k] - y[k - 1]);
+}
+// The bracketing pair (i, i + 1) of an ascending axis and the weight of i + 1, clamped.
+struct Bracket {
+  std::size_t lo, hi;
+  double t;
+};
+Bracket bracket(const std::vector<double>& axis, double at, bool& outside) {
+  if (axis.size() == 1 || at <= axis.front()) {
+    outside = outside || at < axis.front() || (axis.size() == 1 && at > axis.front());
+    return {0, 0, 0.0};
+  }
+  if (at >= axis.back()) {
+    outside = outside || at > axis.back();
+    return {axis.size() - 1, axis.size() - 1, 0.0};
+  }
+  const auto k = static_cast<std::size_t>(std::upper_bound(axis.begin(), axis.end(), at) - axis.begin());
+  return {k - 1, k, (at - axis[k - 1]) / (axis[k] - axis[k - 1])};
+}
+}  // namespace
+
+TractionValue TractionCurves::at(double srr, double p, double temperature) const {
+  TractionValue v;
+  if (curves_.empty()) return v;
+  // A single pressure or temperature is a stated condition, not a range: a value away from it is
+  // outside what was measured (flagged), the curve is used as it is.
+  const Bracket bp = bracket(pressures_, p, v.outside), bt = bracket(temperatures_, temperature, v.outside);
+  const std::size_t nt = temperatures_.size();
+  auto curve = [&](std::size_t i, std::size_t j) {
+    const TractionCurve& c = curves_[index_[i * nt + j]];
+    return table_value(c.slide_to_roll, c.coefficient, std::abs(srr), v.outside);
+  };
+  const double lo = (1.0 - bt.t) * curve(bp.lo, bt.lo) + bt.t * curve(bp.lo, bt.hi);
+  const double hi = (1.0 - bt.t) * curve(bp.hi, bt.lo) + bt.t * curve(bp.hi, bt.hi);
+  v.coefficient = (1.0 - bp.t) * lo + bp.t * hi;
+  return v;
 }
 
 void Lubricant::validate() const {
@@ -86,6 +203,13 @@ void Lubricant::validate() const {
     fail("limiting_shear_coefficient", "must lie in (0, 1]");
   if (!(min_temperature > 0.0 && max_temperature > min_temperature))
     fail("max_temperature", "must exceed min_temperature (both in K, positive)");
+  if (!(iso_lubricant_factor >= 0.0 && iso_lubricant_factor <= 2.0))
+    fail("iso_lubricant_factor", "must lie in (0, 2] (ISO/TS 6336-20 tabulates 0.6 to 1.5)");
+  if (!(lubricant_factor() > 0.0))
+    fail("iso_lubricant_factor",
+         fmt::format("ISO/TS 6336-20 tabulates no lubricant factor X_L for base oil '{}': give iso_lubricant_factor "
+                     "with its source",
+                     base_oil_name(base_oil)));
 }
 
 double kinematic_viscosity(const Lubricant& l, double t) {
@@ -114,7 +238,7 @@ OilState oil_state(const Lubricant& l, double t) {
   s.thermal_conductivity = l.thermal_conductivity;
   s.eyring_stress = l.eyring_stress;
   s.limiting_shear_coefficient = l.limiting_shear_coefficient;
-  s.iso_lubricant_factor = iso_lubricant_factor(l.base_oil);
+  s.iso_lubricant_factor = l.lubricant_factor();
   if (l.fixed()) {
     s.dynamic_viscosity = l.fixed_dynamic_viscosity;
     s.temperature_viscosity = l.fixed_temperature_viscosity;

@@ -6,16 +6,60 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace geartrib::lubrication {
 
 // The base stock, which selects the ISO/TS 6336-20 lubricant factor X_L of the mean friction.
-enum class BaseOil { mineral, pao, ester, polyglycol };
+// ISO/TS 6336-20 (ISO/TR 13989-1) tabulates X_L = 1.0 mineral, 0.8 polyalphaolefin, 0.7
+// non-water-soluble polyglycol, 0.6 water-soluble polyglycol, 1.3 phosphate ester, 1.5 traction
+// fluid. Synthetic (non-phosphate) esters are not in its table: an ester's file gives X_L itself.
+enum class BaseOil {
+  mineral,
+  pao,
+  ester,
+  polyglycol_insoluble,
+  polyglycol_water_soluble,
+  phosphate_ester,
+  traction_fluid
+};
 BaseOil base_oil_from_name(const std::string& name);  // throws std::invalid_argument
 const char* base_oil_name(BaseOil b);
-// ISO/TS 6336-20 (ISO/TR 13989-1) X_L: mineral 1.0, polyalphaolefin 0.8, ester (non-water-soluble
-// polyglycol class) 0.7, water-soluble polyglycol 0.6 -- as those documents tabulate them.
+std::vector<std::string> base_oil_names();
+// The tabulated X_L; NaN for a base stock the standard does not tabulate (ester).
 double iso_lubricant_factor(BaseOil b);
+
+// A traction curve measured on a twin-disc (or ball-on-disc) machine: the friction coefficient
+// against the slide-to-roll ratio |v1 - v2|/u at a stated Hertz pressure, oil temperature and
+// entrainment speed. Used as the film's traction coefficient (lubrication.traction = "curve").
+struct TractionCurve {
+  std::string name, source;
+  double hertz_pressure = 0.0;                     // p_H [Pa]
+  double temperature = 0.0;                        // oil (disc bulk) temperature [K]
+  double entrainment_speed = 0.0;                  // u [m/s], stated (not interpolated: a run warns far from it)
+  std::vector<double> slide_to_roll, coefficient;  // SRR ascending from >= 0, coefficient in [0, 1]
+};
+// A lubricant's curves form a grid in (Hertz pressure, temperature): every pressure at every
+// temperature (one of either is allowed). Interpolated linearly in SRR along each curve and
+// bilinearly between curves; beyond the grid the nearest curve's value, flagged.
+struct TractionValue {
+  double coefficient = 0.0;
+  bool outside = false;  // SRR, pressure or temperature beyond the measured ranges
+};
+class TractionCurves {
+ public:
+  TractionCurves() = default;
+  // Throws std::invalid_argument naming the curve and the rule (order, range, grid).
+  explicit TractionCurves(std::vector<TractionCurve> curves);
+  bool empty() const { return curves_.empty(); }
+  const std::vector<TractionCurve>& curves() const { return curves_; }
+  TractionValue at(double slide_to_roll, double hertz_pressure, double temperature) const;
+
+ private:
+  std::vector<TractionCurve> curves_;
+  std::vector<double> pressures_, temperatures_;  // the grid's axes, ascending
+  std::vector<std::size_t> index_;                // curve at (pressure i, temperature j): index_[i * nt + j]
+};
 
 struct Lubricant {
   static constexpr double kWaltherOffset = 0.7;  // cSt, ASTM D341 for nu >= 2 cSt
@@ -40,10 +84,15 @@ struct Lubricant {
   double limiting_shear_coefficient = 0.075;  // Lambda = tau_L / p [-]
   double min_temperature = 253.15;            // range of the data [K]
   double max_temperature = 423.15;
+  double iso_lubricant_factor = 0.0;  // X_L given in the file (an ester's); 0: the base stock's tabulated value
+  TractionCurves traction;            // measured traction curves (optional)
 
   bool fixed() const { return fixed_dynamic_viscosity > 0.0; }
+  // X_L: the file's, or the base stock's tabulated value.
+  double lubricant_factor() const;
   // Throws std::invalid_argument naming the member and the rule (positive viscosities with
-  // nu40 > nu100 >= 2 cSt, positive thermal data, 0 <= Lambda <= 1, min < max temperature).
+  // nu40 > nu100 >= 2 cSt, positive thermal data, 0 <= Lambda <= 1, min < max temperature, an
+  // X_L for an ester).
   void validate() const;
 };
 

@@ -8,6 +8,8 @@
 
 #include <functional>
 #include <limits>
+#include <string>
+#include <vector>
 
 namespace geartrib::lubrication {
 
@@ -32,12 +34,38 @@ inline constexpr double kNegligibleFilmShare = 1e-12;
 LoadShare share_load(double h_smooth, double film_exponent, const std::function<double(double)>& asperity_separation,
                      double guess = std::numeric_limits<double>::quiet_NaN());
 
-// Mean shear stress of the film [Pa]: Eyring, tau = tau0 asinh(eta v_s/(h tau0)), with the
-// Barus viscosity eta0 exp(alpha p) at the film's mean pressure p, capped by the limiting shear
-// stress Lambda p (Evans & Johnson, Proc. IMechE 200C, 1986, for the Eyring-limiting form).
-// Isothermal: the film's own shear heating is not modelled (it lowers the traction at high
-// sliding speed; the limiting shear stress bounds it).
-double film_shear_stress(const OilState& oil, double mean_pressure, double sliding_speed, double film_thickness);
+// The film's traction (tau_f at the film's mean pressure p_f and sliding speed v_s):
+//  - thermal-eyring (default): Eyring's fluid in simple shear with its own shear heating conducted
+//    to both surfaces at T_s, viscosity eta_s exp(-beta (T - T_s)) (Johnson & Greenwood, Wear 61
+//    (1980) 353-374). The energy equation is Bratu's; its closed form gives
+//      tau0 sinh(tau/tau0) = (eta_s v_s/h) X/(sinh X cosh X),   X tanh X = beta tau v_s h/(8 k_f),
+//    with the mid-film temperature rise (2/beta) ln cosh X. X -> 0 is the isothermal Eyring law;
+//    the traction has a thermal maximum (at X tanh X = 1) and falls beyond it as v_s grows;
+//  - isothermal-eyring: tau = tau0 asinh(eta v_s/(h tau0)) (geartrib 0.1's model);
+//  - curve: the lubricant's measured traction curves at the position's SRR, Hertz pressure and
+//    bulk temperature (lubrication/lubricant.hpp).
+// Both Eyring forms take eta = eta0(T) exp(alpha p_f) (Barus) and are capped by the limiting shear
+// stress Lambda p_f (Evans & Johnson, Proc. IMechE 200C (1986), the Eyring-limiting form).
+enum class FilmTraction { thermal_eyring, isothermal_eyring, curve };
+FilmTraction film_traction_from_name(const std::string& name);  // throws std::invalid_argument
+const char* film_traction_name(FilmTraction t);
+std::vector<std::string> film_traction_names();
+
+struct FilmShear {
+  double shear_stress = 0.0;  // tau_f [Pa]
+  double midfilm_rise = 0.0;  // thermal Eyring: the mid-film temperature above the surfaces [K]
+  bool limited = false;       // capped by Lambda p_f
+};
+// Isothermal Eyring [Pa]: eta [Pa s] already at the film's pressure and temperature.
+double eyring_shear_stress(double eta, double eyring_stress, double sliding_speed, double film_thickness);
+// Thermal Eyring (Johnson & Greenwood 1980) [Pa]: eta_s at the surfaces' temperature and the
+// film's pressure, beta = -d ln(eta)/dT [1/K], k_f [W/(m K)].
+FilmShear thermal_eyring_shear_stress(double eta_s, double eyring_stress, double temperature_viscosity,
+                                      double oil_conductivity, double sliding_speed, double film_thickness);
+// The film's shear stress by an Eyring model at the oil state `oil` (its temperature the surfaces'):
+// Barus at p_f, capped at Lambda p_f.
+FilmShear film_shear_stress(FilmTraction model, const OilState& oil, double mean_pressure, double sliding_speed,
+                            double film_thickness);
 
 // The mixed friction coefficient: mu = share_a mu_b + share_f tau_f/p_f, with p_f the film's mean
 // pressure over the Hertz width (film_share w / 2b).
@@ -45,7 +73,8 @@ struct MixedFriction {
   double coefficient = 0.0;       // mu [-]
   double film_coefficient = 0.0;  // tau_f / p_f [-]
 };
-MixedFriction mixed_friction(const OilState& oil, const LoadShare& share, double boundary_coefficient, double line_load,
-                             double hertz_half_width, double sliding_speed);
+inline MixedFriction mixed_friction(const LoadShare& share, double boundary_coefficient, double film_coefficient) {
+  return {share.asperity_share * boundary_coefficient + share.film_share * film_coefficient, film_coefficient};
+}
 
 }  // namespace geartrib::lubrication

@@ -278,6 +278,8 @@ FlankRoughness spectral_roughness(const ProfileStatistics& s) {
   FlankRoughness r;
   r.form = FlankRoughness::Form::spectral;
   r.m0 = s.m0, r.m2 = s.m2, r.m4 = s.m4;
+  r.height_rq = s.rq;
+  r.height_ra = s.ra;
   return r;
 }
 

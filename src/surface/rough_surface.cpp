@@ -2,6 +2,7 @@
 
 #include "core/series_radius.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -82,6 +83,26 @@ EquivalentSurface equivalent_surface(const FlankRoughness& a, const FlankRoughne
   }
   s.validate();
   return s;
+}
+
+HeightRoughness height_roughness(const FlankRoughness& f) {
+  using Form = FlankRoughness::Form;
+  if (f.height_rq > 0.0)
+    return {f.height_rq, f.height_ra > 0.0 ? f.height_ra : f.height_rq / kRqOverRaGaussian, true,
+            f.form == Form::summits ? "measured surface" : "profile"};
+  switch (f.form) {
+    case Form::ra:
+      return {kRqOverRaGaussian * f.ra, f.ra, true, "given Ra"};
+    case Form::rq:
+      return {f.rq, f.rq / kRqOverRaGaussian, true, "given Rq"};
+    case Form::spectral: {
+      const double rq = std::sqrt(std::max(f.m0, 0.0));
+      return {rq, rq / kRqOverRaGaussian, true, "spectral moments"};
+    }
+    case Form::summits:
+      break;
+  }
+  return {0.0, 0.0, false, "summit model"};
 }
 
 double plasticity_index(const EquivalentSurface& s, double composite_modulus, double hardness) {

@@ -19,7 +19,21 @@ struct FlankRoughness {
   double summit_density = 0.0;          // eta [1/m^2] (form summits)
   double summit_sigma = 0.0;            // std deviation of summit heights [m] (form summits)
   double m0 = 0.0, m2 = 0.0, m4 = 0.0;  // spectral moments [m^2], [-], [1/m^2] (form spectral)
+  // The heights' own Rq and Ra where a surface or profile gave the form (measured, generated) [m];
+  // 0: not known beyond the form (height_roughness derives them).
+  double height_rq = 0.0, height_ra = 0.0;
 };
+
+// A flank's height roughness as the film's lambda and the ISO formulas take it: the heights' own
+// Rq and Ra where known (measured or generated), else from the form: Ra given (Rq = 1.2533 Ra,
+// Gaussian), Rq given (Ra = Rq/1.2533), spectral (Rq = sqrt(m0)). The summit form alone has no
+// height statistics: `known` is false and the caller takes the summit model's.
+struct HeightRoughness {
+  double rq = 0.0, ra = 0.0;  // [m]
+  bool known = false;
+  const char* source = "";  // "measured", "given Ra", "given Rq", "spectral moments", "summit model"
+};
+HeightRoughness height_roughness(const FlankRoughness& f);
 
 // The equivalent rough surface: summits of one radius with normally (or exponentially)
 // distributed heights against a flat.

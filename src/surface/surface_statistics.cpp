@@ -161,6 +161,8 @@ FlankRoughness measured_roughness(const SurfaceStatistics& s) {
   r.summit_density = s.summit_density;
   r.summit_sigma = s.summit_sigma;
   r.summit_radius = s.summit_radius;
+  r.height_rq = s.rq;
+  r.height_ra = s.ra;
   return r;
 }
 

@@ -1,0 +1,95 @@
+#include "contact/asperity_pressure.hpp"
+
+#include <boost/math/tools/roots.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+
+namespace geartrib::contact {
+
+namespace {
+struct ModelName {
+  AsperityPressureModel model;
+  const char* name;
+};
+constexpr ModelName kModelNames[] = {{AsperityPressureModel::automatic, "auto"},
+                                     {AsperityPressureModel::asperity_model, "asperity-model"},
+                                     {AsperityPressureModel::bearing_area, "bearing-area"}};
+}  // namespace
+
+AsperityPressureModel asperity_pressure_model_from_name(const std::string& name) {
+  for (const auto& m : kModelNames)
+    if (name == m.name) return m.model;
+  throw std::invalid_argument("unknown asperity pressure model '" + name + "'");
+}
+std::vector<std::string> asperity_pressure_model_names() {
+  std::vector<std::string> v;
+  for (const auto& m : kModelNames) v.emplace_back(m.name);
+  return v;
+}
+
+double bearing_area_weight(AsperityPressureModel m, double psi) {
+  switch (m) {
+    case AsperityPressureModel::asperity_model:
+      return 0.0;
+    case AsperityPressureModel::bearing_area:
+      return 1.0;
+    case AsperityPressureModel::automatic:
+      break;
+  }
+  if (!(psi > kElasticPlasticityIndex)) return 0.0;
+  if (psi >= kPlasticPlasticityIndex) return 1.0;
+  return std::log(psi / kElasticPlasticityIndex) / std::log(kPlasticPlasticityIndex / kElasticPlasticityIndex);
+}
+
+AsperityPressure::AsperityPressure(const GreenwoodWilliamson& gw, lubrication::CompositeHeights heights,
+                                   double hardness, double w)
+    : gw_(gw), heights_(heights), hardness_(hardness), bearing_weight_(std::clamp(w, 0.0, 1.0)) {
+  if (bearing_weight_ > 0.0 && !(hardness > 0.0 && heights.sigma > 0.0))
+    throw std::invalid_argument("the bearing-area asperity pressure needs a positive hardness and roughness");
+  summit_offset_ = gw.surface().summit_mean_height;
+  onset_ = gw.contact_onset() + summit_offset_;
+  onset_bearing_ = bearing_weight_ > 0.0 ? lubrication::bearing_area_fraction(heights_, onset_) : 0.0;
+  saturation_height_ = -std::numeric_limits<double>::infinity();
+  saturation_pressure_ = std::numeric_limits<double>::infinity();
+  if (bearing_weight_ == 1.0) {  // only the bearing area: it cannot exceed H
+    saturation_height_ = lubrication::bearing_area_height(heights_, 1.0 - kSaturatedBearing);
+    saturation_pressure_ = pressure(saturation_height_);
+  }
+}
+
+double AsperityPressure::pressure(double h) const {
+  if (h >= onset_) return 0.0;
+  double p = 0.0;
+  if (bearing_weight_ < 1.0) p += (1.0 - bearing_weight_) * gw_.pressure(h - summit_offset_);
+  if (bearing_weight_ > 0.0)
+    p += bearing_weight_ * hardness_ * (lubrication::bearing_area_fraction(heights_, h) - onset_bearing_);
+  return p;
+}
+
+double AsperityPressure::separation(double p) const {
+  if (!(p >= 0.0) || !std::isfinite(p)) throw std::invalid_argument("nominal pressure must be finite and >= 0");
+  if (p == 0.0) return onset_;
+  if (bearing_weight_ == 0.0) return gw_.separation_for_pressure(p) + summit_offset_;
+  if (bearing_weight_ == 1.0) {
+    if (p >= saturation_pressure_) return saturation_height_;
+    return lubrication::bearing_area_height(heights_, p / hardness_ + onset_bearing_);
+  }
+  // A blend: each part alone at its share of p lies at or below the root (the other part only adds
+  // pressure), so the larger of the two heights brackets it from below.
+  double lo = gw_.separation_for_pressure(p / (1.0 - bearing_weight_)) + summit_offset_;
+  const double a = p / (bearing_weight_ * hardness_) + onset_bearing_;
+  if (a < 1.0) lo = std::max(lo, lubrication::bearing_area_height(heights_, a));
+  const double hi = onset_;
+  const auto f = [&](double h) { return pressure(h) - p; };
+  if (f(lo) <= 0.0) return lo;
+  std::uintmax_t iterations = 200;
+  const double scale = heights_.sigma;
+  const auto [l, r] = boost::math::tools::toms748_solve(
+      f, lo, hi, [scale](double x, double y) { return std::abs(y - x) <= 1e-13 * scale; }, iterations);
+  return 0.5 * (l + r);
+}
+
+}  // namespace geartrib::contact

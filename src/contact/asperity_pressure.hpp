@@ -1,0 +1,56 @@
+// The asperities' nominal pressure against the separation h of the flanks' mean planes of heights,
+// for the mixed-lubrication load sharing: the case's asperity model (Greenwood-Williamson over the
+// model's law) where it holds, and the bearing-area model p = H A_b(h) where the flanks are fully
+// plastic (every contact at the hardness H over the area a plane at h cuts through the heights:
+// Abbott & Firestone 1933; the fully plastic limit of GW 1966 and of Pullen & Williamson, Proc. R.
+// Soc. A 327 (1972) 159-173, without their volume conservation).
+#pragma once
+
+#include "contact/greenwood_williamson.hpp"
+#include "lubrication/film_closure.hpp"
+
+#include <string>
+#include <vector>
+
+namespace geartrib::contact {
+
+// auto (default): the bearing-area model's weight w rises from 0 at GW's elastic bound psi = 0.6
+// to 1 at its plastic bound psi = 1 (GW 1966: below 0.6 contacts are elastic but at extreme
+// pressures, above 1 they flow plastically at any load), linearly in ln psi: continuous across
+// a sweep. asperity-model: w = 0; bearing-area: w = 1.
+enum class AsperityPressureModel { automatic, asperity_model, bearing_area };
+AsperityPressureModel asperity_pressure_model_from_name(const std::string& name);  // throws std::invalid_argument
+std::vector<std::string> asperity_pressure_model_names();
+double bearing_area_weight(AsperityPressureModel m, double plasticity_index);
+inline constexpr double kElasticPlasticityIndex = 0.6, kPlasticPlasticityIndex = 1.0;
+
+class AsperityPressure {
+ public:
+  // p(h) = (1 - w) p_GW(h - y_s) + w H (A_b(h) - A_b(h_on)), y_s the summits' mean height above
+  // the mean plane, h_on = GW's contact onset + y_s (p = 0 there and above; A_b(h_on) < 1e-15).
+  AsperityPressure(const GreenwoodWilliamson& gw, lubrication::CompositeHeights heights, double hardness,
+                   double bearing_weight);
+  double pressure(double h) const;  // [Pa], non-increasing in h
+  // The separation h at which the asperities carry nominal pressure p >= 0 (onset() at p = 0). The
+  // bearing-area part cannot carry H or more: there h is that of A_b = 1 - kSaturatedBearing and
+  // saturated() says so.
+  double separation(double p) const;
+  bool saturated(double p) const { return bearing_weight_ > 0.0 && p >= saturation_pressure_; }
+  double onset() const { return onset_; }
+  double bearing_weight() const { return bearing_weight_; }
+  const lubrication::CompositeHeights& heights() const { return heights_; }
+  static constexpr double kSaturatedBearing = 1e-9;
+
+ private:
+  const GreenwoodWilliamson& gw_;
+  lubrication::CompositeHeights heights_;
+  double hardness_;
+  double bearing_weight_;
+  double summit_offset_;        // y_s [m]
+  double onset_;                // h_on [m]
+  double onset_bearing_;        // A_b(h_on)
+  double saturation_pressure_;  // the largest pressure the blend reaches where A_b saturates [Pa]
+  double saturation_height_;    // h there [m]
+};
+
+}  // namespace geartrib::contact

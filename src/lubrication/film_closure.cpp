@@ -1,0 +1,78 @@
+#include "lubrication/film_closure.hpp"
+
+#include <boost/math/special_functions/erf.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace geartrib::lubrication {
+
+namespace {
+struct GapName {
+  FilmGap gap;
+  const char* name;
+};
+constexpr GapName kGapNames[] = {
+    {FilmGap::mean_gap, "mean-gap"}, {FilmGap::mean_plane, "mean-plane"}, {FilmGap::dry_offset, "dry-offset"}};
+}  // namespace
+
+FilmGap film_gap_from_name(const std::string& name) {
+  for (const auto& g : kGapNames)
+    if (name == g.name) return g.gap;
+  throw std::invalid_argument("unknown film gap '" + name + "'");
+}
+const char* film_gap_name(FilmGap g) {
+  for (const auto& n : kGapNames)
+    if (n.gap == g) return n.name;
+  return "?";
+}
+std::vector<std::string> film_gap_names() {
+  std::vector<std::string> v;
+  for (const auto& g : kGapNames) v.emplace_back(g.name);
+  return v;
+}
+
+double mean_gap(const CompositeHeights& s, double h) {
+  if (!(s.sigma > 0.0)) return std::max(h, 0.0);
+  if (s.distribution == surface::HeightDistribution::exponential) {
+    const double c = h + s.sigma;
+    return c > 0.0 ? c - s.sigma * (-std::expm1(-c / s.sigma)) : 0.0;
+  }
+  const double t = h / s.sigma;
+  const double phi = std::exp(-0.5 * t * t) / std::sqrt(2.0 * std::numbers::pi);
+  // t Phi(t) + phi(t), Phi(t) = erfc(-t/sqrt 2)/2. Below the mean plane this is phi(a) - a Q(a)
+  // (a = -t): the two terms agree to about 1/a^2 of their size, so the difference keeps all but
+  // log10(a^2) of its digits (erfc is accurate relative to its value), until phi underflows.
+  return s.sigma * (t * 0.5 * std::erfc(-t / std::numbers::sqrt2) + phi);
+}
+
+double bearing_area_fraction(const CompositeHeights& s, double h) {
+  if (!(s.sigma > 0.0)) return h < 0.0 ? 1.0 : 0.0;
+  if (s.distribution == surface::HeightDistribution::exponential) {
+    const double c = h + s.sigma;
+    return c > 0.0 ? std::exp(-c / s.sigma) : 1.0;
+  }
+  return 0.5 * std::erfc(h / (s.sigma * std::numbers::sqrt2));
+}
+
+double bearing_area_height(const CompositeHeights& s, double a) {
+  if (!(a > 0.0 && a < 1.0)) throw std::invalid_argument("bearing area fraction must lie in (0, 1)");
+  if (s.distribution == surface::HeightDistribution::exponential) return -s.sigma * std::log(a) - s.sigma;
+  return s.sigma * std::numbers::sqrt2 * boost::math::erfc_inv(2.0 * a);
+}
+
+double film_gap(FilmGap g, const CompositeHeights& s, double h, double h_dry) {
+  switch (g) {
+    case FilmGap::mean_gap:
+      return mean_gap(s, h);
+    case FilmGap::mean_plane:
+      return h;
+    case FilmGap::dry_offset:
+      return h - std::min(0.0, h_dry);
+  }
+  return h;
+}
+
+}  // namespace geartrib::lubrication

@@ -1,0 +1,46 @@
+// The film's datum in mixed lubrication: which gap between the rough flanks the film's thickness
+// is, and the bearing area of their heights. Heights are the composite surface's (the two flanks'
+// heights summed), zero mean, standard deviation sigma = sqrt(Rq1^2 + Rq2^2); h is the
+// separation of the two flanks' mean planes of heights [m].
+#pragma once
+
+#include "surface/rough_surface.hpp"
+
+#include <string>
+#include <vector>
+
+namespace geartrib::lubrication {
+
+// What the Johnson-Greenwood-Poon film thickness is set equal to at the asperities' separation h:
+//  - mean_gap (default): the mean gap E[(h - z)+] between the rough surfaces, the volume of oil
+//    per nominal area (Patir & Cheng, J. Lubr. Technol. 100 (1978) 12-17, their average gap h_T).
+//    Positive at every separation, it reaches the dry contact without a shift;
+//  - mean_plane: the separation of the mean planes h itself (JGP 1972's own choice);
+//  - dry_offset: h less the dry contact's separation where that is negative (geartrib 0.1's
+//    device, kept for comparison; no physical basis).
+enum class FilmGap { mean_gap, mean_plane, dry_offset };
+FilmGap film_gap_from_name(const std::string& name);  // throws std::invalid_argument
+const char* film_gap_name(FilmGap g);
+std::vector<std::string> film_gap_names();
+
+struct CompositeHeights {
+  double sigma = 0.0;  // [m]
+  surface::HeightDistribution distribution = surface::HeightDistribution::gaussian;
+};
+
+// Mean gap E[(h - z)+] [m]. Gaussian: sigma (t Phi(t) + phi(t)), t = h/sigma. Exponential
+// (z = X - sigma, X ~ Exp(mean sigma)): c - sigma + sigma e^(-c/sigma) for c = h + sigma >= 0, else 0.
+// Increasing in h, > 0 (Gaussian), -> h for h >> sigma. sigma = 0: max(h, 0).
+double mean_gap(const CompositeHeights& heights, double h);
+// Bearing-area fraction P(z > h) (Abbott & Firestone, Mech. Eng. 55 (1933) 569-572): the share
+// of the nominal area a plane at h cuts through material. Gaussian: Phi(-h/sigma); exponential:
+// e^(-(h + sigma)/sigma) above -sigma, 1 below.
+double bearing_area_fraction(const CompositeHeights& heights, double h);
+// The inverse of bearing_area_fraction: the h at which a fraction a in (0, 1) bears.
+double bearing_area_height(const CompositeHeights& heights, double a);
+
+// The gap the film fills at the asperities' mean-plane separation h; h_dry is the dry contact's
+// separation (dry_offset only).
+double film_gap(FilmGap g, const CompositeHeights& heights, double h, double h_dry);
+
+}  // namespace geartrib::lubrication

@@ -1,0 +1,236 @@
+// The mixed-lubrication closure: the mean gap and bearing area of the composite heights against
+// quadrature, the asperity pressure of the sharing (asperity model, bearing area, their blend),
+// measured traction curves, and, through the mesh cycle, the named points where they stand and the
+// roughness lambda is computed with.
+#include "asperity/case_setup.hpp"
+#include "contact/asperity_pressure.hpp"
+#include "contact/greenwood_williamson.hpp"
+#include "contact/mesh_contact.hpp"
+#include "contact/mesh_lubrication.hpp"
+#include "gear/gear_mesh.hpp"
+#include "io/case_file.hpp"
+#include "io/input_error.hpp"
+#include "lubrication/film_closure.hpp"
+#include "lubrication/lubricant.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace geartrib {
+namespace {
+
+using namespace lubrication;
+
+// E[(h - z)+] and P(z > h) by the midpoint rule over the density (a derivation independent of the
+// closed forms: the integral of the definition).
+double gap_by_quadrature(const CompositeHeights& s, double h, bool bearing) {
+  const int n = 200000;
+  const bool gaussian = s.distribution == surface::HeightDistribution::gaussian;
+  const double lo = gaussian ? -12.0 * s.sigma : -s.sigma, hi = gaussian ? 12.0 * s.sigma : 60.0 * s.sigma;
+  const double dz = (hi - lo) / n;
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double z = lo + (i + 0.5) * dz;
+    const double density =
+        gaussian ? std::exp(-0.5 * z * z / (s.sigma * s.sigma)) / (s.sigma * std::sqrt(2.0 * std::numbers::pi))
+                 : std::exp(-(z + s.sigma) / s.sigma) / s.sigma;
+    sum += (bearing ? (z > h ? 1.0 : 0.0) : std::max(h - z, 0.0)) * density * dz;
+  }
+  return sum;
+}
+
+TEST(FilmClosure, MeanGapAndBearingAreaAgainstTheirIntegrals) {
+  for (auto distribution : {surface::HeightDistribution::gaussian, surface::HeightDistribution::exponential}) {
+    const CompositeHeights s{1.4e-6, distribution};
+    for (double t : {-3.0, -1.0, -0.3, 0.0, 0.4, 1.0, 2.5, 5.0}) {
+      const double h = t * s.sigma;
+      // Midpoint rule with 200000 cells (1.2e-4 sigma wide for the Gaussian, 3e-4 for the
+      // exponential): the kink of (h - z)+ costs about a cell squared times the density, the step of
+      // the bearing indicator up to half a cell times the density (<= 1/sigma).
+      EXPECT_NEAR(mean_gap(s, h) / s.sigma, gap_by_quadrature(s, h, false) / s.sigma, 2e-6) << t;
+      EXPECT_NEAR(bearing_area_fraction(s, h), gap_by_quadrature(s, h, true), 1.6e-4) << t;
+    }
+  }
+}
+
+TEST(FilmClosure, MeanGapLimitsAndInverse) {
+  const CompositeHeights s{1e-6, surface::HeightDistribution::gaussian};
+  EXPECT_NEAR(mean_gap(s, 0.0), s.sigma / std::sqrt(2.0 * std::numbers::pi), 1e-20);  // sigma phi(0)
+  EXPECT_NEAR(mean_gap(s, 10e-6) / 10e-6, 1.0, 1e-15);  // far above the heights: the separation
+  // Positive and rising at every separation, also deep below the mean plane (no cancellation to 0 or below).
+  double last = 0.0;
+  for (double t = -30.0; t <= 10.0; t += 0.25) {
+    const double g = mean_gap(s, t * s.sigma);
+    EXPECT_GT(g, last) << t;
+    last = g;
+  }
+  // The bearing area's inverse.
+  for (double a : {1e-12, 1e-3, 0.2, 0.5, 0.9, 1.0 - 1e-9})
+    EXPECT_NEAR(bearing_area_fraction(s, bearing_area_height(s, a)) / a, 1.0, 1e-9) << a;
+  EXPECT_EQ(film_gap(FilmGap::dry_offset, s, 0.3e-6, -0.5e-6), 0.8e-6);
+  EXPECT_EQ(film_gap(FilmGap::dry_offset, s, 0.3e-6, 0.5e-6), 0.3e-6);  // a positive dry separation: no shift
+  EXPECT_EQ(film_gap(FilmGap::mean_plane, s, -0.3e-6, 0.0), -0.3e-6);
+}
+
+// The seed's rough surface and its GW table.
+struct SeedSurface {
+  Case c = test::lubricated_case();
+  surface::EquivalentSurface surface = contact::case_equivalent_surface(c);
+  asperity::ContactPair pair = asperity::contact_pair(c);
+  std::unique_ptr<asperity::AsperityModel> model = asperity::make_case_model(c, c.asperity.model);
+  contact::GreenwoodWilliamson gw{surface, *model, pair, 2e9, contact::GreenwoodWilliamsonOptions{}};
+  CompositeHeights heights{surface.surface_sigma, surface::HeightDistribution::gaussian};
+};
+
+TEST(AsperityPressure, ItsTwoModelsAndTheirBlend) {
+  const SeedSurface s;
+  const double h_mean = s.pair.hardness;
+  const contact::AsperityPressure gw(s.gw, s.heights, h_mean, 0.0);
+  const contact::AsperityPressure bearing(s.gw, s.heights, h_mean, 1.0);
+  const contact::AsperityPressure half(s.gw, s.heights, h_mean, 0.5);
+  for (double p : {1e3, 1e6, 1e8, 4e8, 8e8}) {
+    // The asperity model alone: GW's separation, moved from the summit plane to the mean plane.
+    EXPECT_EQ(gw.separation(p), s.gw.separation_for_pressure(p) + s.surface.summit_mean_height);
+    // The bearing area alone: H A_b(h) = p (A_b(onset) ~ 1e-18 is below the tolerance).
+    EXPECT_NEAR(h_mean * bearing_area_fraction(s.heights, bearing.separation(p)) / p, 1.0, 1e-9) << p;
+    // The blend carries p at its separation, between the two.
+    const double h = half.separation(p);
+    EXPECT_NEAR(half.pressure(h) / p, 1.0, 1e-9) << p;
+    EXPECT_GE(h, std::min(gw.separation(p), bearing.separation(p)));
+    EXPECT_LE(h, std::max(gw.separation(p), bearing.separation(p)));
+  }
+  // Monotone in h, zero from the onset up.
+  double last = std::numeric_limits<double>::infinity();
+  for (double t = -4.0; t < 12.0; t += 0.05) {
+    const double p = half.pressure(t * s.heights.sigma);
+    EXPECT_LE(p, last) << t;
+    last = p;
+  }
+  EXPECT_EQ(half.pressure(half.onset()), 0.0);
+  EXPECT_EQ(half.separation(0.0), half.onset());
+  // The bearing area cannot exceed the hardness: saturated, flagged, not extrapolated.
+  EXPECT_TRUE(bearing.saturated(1.2 * h_mean));
+  EXPECT_FALSE(bearing.saturated(0.5 * h_mean));
+  EXPECT_TRUE(std::isfinite(bearing.separation(1.2 * h_mean)));
+}
+
+TEST(AsperityPressure, AutomaticWeightIsContinuousInThePlasticityIndex) {
+  using contact::AsperityPressureModel;
+  EXPECT_EQ(bearing_area_weight(AsperityPressureModel::automatic, 0.3), 0.0);
+  EXPECT_EQ(bearing_area_weight(AsperityPressureModel::automatic, 0.6), 0.0);
+  EXPECT_EQ(bearing_area_weight(AsperityPressureModel::automatic, 1.0), 1.0);
+  EXPECT_EQ(bearing_area_weight(AsperityPressureModel::automatic, 121.0), 1.0);
+  EXPECT_NEAR(bearing_area_weight(AsperityPressureModel::automatic, std::sqrt(0.6)), 0.5, 1e-15);  // mid in ln psi
+  EXPECT_NEAR(bearing_area_weight(AsperityPressureModel::automatic, 0.6 * (1.0 + 1e-12)), 0.0, 1e-10);
+  EXPECT_EQ(bearing_area_weight(AsperityPressureModel::asperity_model, 121.0), 0.0);
+  EXPECT_EQ(bearing_area_weight(AsperityPressureModel::bearing_area, 0.1), 1.0);
+}
+
+TEST(TractionCurves, InterpolatesAlongAndBetweenCurvesAndFlagsBeyond) {
+  auto curve = [](const char* name, double p, double t, std::vector<double> c) {
+    TractionCurve k;
+    k.name = name;
+    k.hertz_pressure = p;
+    k.temperature = t;
+    k.entrainment_speed = 5.0;
+    k.slide_to_roll = {0.0, 0.05, 0.2};
+    k.coefficient = std::move(c);
+    return k;
+  };
+  const TractionCurves grid({curve("a", 1e9, 313.15, {0.0, 0.04, 0.05}), curve("b", 2e9, 313.15, {0.0, 0.06, 0.07}),
+                             curve("c", 1e9, 353.15, {0.0, 0.02, 0.03}), curve("d", 2e9, 353.15, {0.0, 0.03, 0.05})});
+  EXPECT_NEAR(grid.at(0.05, 1e9, 313.15).coefficient, 0.04, 1e-15);   // a node
+  EXPECT_NEAR(grid.at(0.025, 1e9, 313.15).coefficient, 0.02, 1e-15);  // along a curve
+  EXPECT_NEAR(grid.at(-0.05, 1e9, 313.15).coefficient, 0.04, 1e-15);  // |SRR|
+  // The centre of the grid at SRR 0.05: the mean of the four curves' 0.04, 0.06, 0.02, 0.03.
+  const TractionValue mid = grid.at(0.05, 1.5e9, 333.15);
+  EXPECT_NEAR(mid.coefficient, 0.0375, 1e-15);
+  EXPECT_FALSE(mid.outside);
+  EXPECT_TRUE(grid.at(0.3, 1.5e9, 333.15).outside);                  // SRR beyond the measured
+  EXPECT_TRUE(grid.at(0.05, 3e9, 333.15).outside);                   // pressure beyond
+  EXPECT_NEAR(grid.at(0.05, 3e9, 313.15).coefficient, 0.06, 1e-15);  // the nearest curve's value
+  // Bad curves: out of order, outside [0, 1], not a grid.
+  EXPECT_THROW(TractionCurves({curve("x", 1e9, 313.15, {0.0, 0.04, 1.5})}), std::invalid_argument);
+  auto unordered = curve("y", 1e9, 313.15, {0.0, 0.04, 0.05});
+  unordered.slide_to_roll = {0.0, 0.2, 0.1};
+  EXPECT_THROW(TractionCurves({unordered}), std::invalid_argument);
+  EXPECT_THROW(TractionCurves({curve("a", 1e9, 313.15, {0.0, 0.04, 0.05}), curve("b", 2e9, 353.15, {0.0, 0.06, 0.07})}),
+               std::invalid_argument);
+}
+
+contact::MeshContactResult run(const Case& c, int positions = 41) {
+  const gear::GearMesh mesh(c);
+  return contact::run_mesh_contact(c, mesh, nullptr, {}, positions);
+}
+Case with(const std::vector<io::CaseChange>& changes) {
+  return io::load_case(test::source_dir() / "gears/m6z30.toml", changes);
+}
+
+TEST(LubricatedSummary, NamedPointsStandWhereTheyAreBAndDOnTheSinglePairSide) {
+  const Case c = with({});
+  const auto r = run(c, 401);
+  const auto& sum = *r.lubrication_summary;
+  ASSERT_EQ(sum.points.size(), 7u);
+  const gear::GearMesh mesh(c);
+  const double full = mesh.normal_force() / c.gear_pair.face_width;  // one pair carries all
+  const auto& s = r.find("s_m")->values;
+  const auto& film = r.find("mean_gap_m")->values;
+  for (const auto& p : sum.points) {
+    if (p.name != "B" && p.name != "D") continue;
+    EXPECT_NEAR(p.line_load / full, 1.0, 1e-12) << p.name;
+    // The single-pair side's limit: the grid's two nearest positions inside [B, D] extrapolated to
+    // B (or D) linearly; the values are smooth there, the step 0.15 mm leaves an O(step^2) residue.
+    std::size_t k = 0;
+    if (p.name == "B") {
+      while (s[k] < p.s) ++k;
+    } else {
+      k = s.size() - 1;
+      while (s[k] > p.s) --k;
+    }
+    const std::size_t j = p.name == "B" ? k + 1 : k - 1;
+    const double limit = film[k] + (p.s - s[k]) * (film[j] - film[k]) / (s[j] - s[k]);
+    EXPECT_NEAR(p.mean_gap / limit, 1.0, 1e-3) << p.name;
+    // ...and well away from the double-pair side's value just before B (after D).
+    const double other = film[p.name == "B" ? k - 1 : k + 1];
+    EXPECT_GT(std::abs(other / limit - 1.0), 0.05) << p.name;
+  }
+}
+
+TEST(LubricatedSummary, LambdaAndIsoTakeTheFlanksRoughness) {
+  // Ra given: Rq = 1.2533 Ra per flank, as the summit model's sigma.
+  const auto r = run(with({}));
+  const auto& sum = *r.lubrication_summary;
+  EXPECT_NEAR(sum.composite_rq, std::hypot(0.8e-6, 0.8e-6) * surface::kRqOverRaGaussian, 1e-18);
+  EXPECT_NEAR(sum.mean_ra, 0.8e-6, 1e-18);
+  EXPECT_NEAR(sum.summit_model_sigma / sum.composite_rq, 1.0, 1e-12);
+  // Measured flanks (the shipped dry case run lubricated): their own Rq and Ra, whatever the summit
+  // model rebuilds (1.87 um here against the measured 1.41 um).
+  const Case m = io::load_case(test::source_dir() / "gears/m6z30-measured.toml",
+                               {{"lubricant", "../lubricants/mineral-vg220.toml"}, {"oil_temperature", "70 degC"}});
+  const auto rm = run(m);
+  ASSERT_TRUE(rm.lubrication_summary.has_value());
+  const auto& ms = *rm.lubrication_summary;
+  EXPECT_GT(ms.summit_model_sigma / ms.composite_rq, contact::kRoughnessDisagreementFactor);
+  EXPECT_TRUE(std::any_of(rm.warnings.begin(), rm.warnings.end(),
+                          [](const std::string& w) { return w.find("summit model's composite sigma") != w.npos; }));
+  EXPECT_NEAR(ms.composite_rq, std::hypot(m.pinion.flank.measured->rq, m.wheel.flank.measured->rq), 1e-18);
+  EXPECT_NEAR(ms.mean_ra, 0.5 * (m.pinion.flank.measured->ra + m.wheel.flank.measured->ra), 1e-18);
+  const auto& lambda = rm.find("lambda_smooth_film")->values;
+  const auto& film = rm.find("film_m")->values;
+  for (std::size_t i = 0; i < film.size(); ++i) EXPECT_DOUBLE_EQ(lambda[i], film[i] / ms.composite_rq);
+}
+
+TEST(LubricatedSummary, NoLubricantRunsALubricatedCaseDry) {
+  const auto dry = run(io::load_case(test::source_dir() / "gears/m6z30.toml", {{"lubricant", "none"}}));
+  EXPECT_FALSE(dry.lubrication_summary.has_value());
+  EXPECT_TRUE(dry.lubrication.empty());
+  const auto seed = run(test::seed_case());
+  EXPECT_EQ(dry.find("real_area_ratio")->values, seed.find("real_area_ratio")->values);
+}
+
+}  // namespace
+}  // namespace geartrib
