@@ -38,9 +38,11 @@ KEYS = {  # key: (kind, required)
     "min_temperature": ("temperature", True),
     "max_temperature": ("temperature", True),
 }
-BASE_OILS = ("mineral", "pao", "ester", "polyglycol")
+BASE_OILS = ("mineral", "pao", "ester", "polyglycol-insoluble", "polyglycol-water-soluble", "phosphate-ester",
+             "traction-fluid")
 # Plausible viscosity index by base oil (ASTM D2270); outside -> failure.
-VI_RANGE = {"mineral": (70, 120), "pao": (120, 200), "ester": (110, 220), "polyglycol": (150, 300)}
+VI_RANGE = {"mineral": (70, 120), "pao": (120, 200), "ester": (110, 220), "polyglycol-insoluble": (150, 300),
+            "polyglycol-water-soluble": (150, 300)}
 # Plausible ranges in SI (key: (lo, hi)); the first four are the required ones of the brief.
 RANGES = {
     "kinematic_viscosity_40C": (5e-6, 2000e-6),
@@ -192,7 +194,11 @@ def check(path):
             errors.append(f"{key}: missing or not a text")
     if data.get("base_oil") not in BASE_OILS:
         errors.append(f"base_oil: {data.get('base_oil')!r} not one of {BASE_OILS}")
-    known = set(KEYS) | {"name", "source", "base_oil"}
+    known = set(KEYS) | {"name", "source", "base_oil", "iso_lubricant_factor", "traction_curves"}
+    if data.get("base_oil") == "ester" and "iso_lubricant_factor" not in data:
+        errors.append("iso_lubricant_factor: required for an ester (ISO/TS 6336-20 tabulates no X_L for it)")
+    if "iso_lubricant_factor" in data and not 0 < data["iso_lubricant_factor"] <= 2:
+        errors.append("iso_lubricant_factor: must lie in (0, 2]")
     errors += [f"{key}: unknown key" for key in data if key not in known]
     v = {}
     for key, (kind, required) in KEYS.items():

@@ -118,16 +118,19 @@ TEST(AsperityPressure, ItsTwoModelsAndTheirBlend) {
   EXPECT_TRUE(std::isfinite(bearing.separation(1.2 * h_mean)));
 }
 
-TEST(AsperityPressure, AutomaticWeightIsContinuousInThePlasticityIndex) {
+TEST(AsperityPressure, AutomaticWeightIsContinuousInThePlasticFraction) {
   using contact::AsperityPressureModel;
   EXPECT_EQ(bearing_area_weight(AsperityPressureModel::automatic, 0.3), 0.0);
-  EXPECT_EQ(bearing_area_weight(AsperityPressureModel::automatic, 0.6), 0.0);
+  EXPECT_EQ(bearing_area_weight(AsperityPressureModel::automatic, 0.9), 0.0);
+  EXPECT_EQ(bearing_area_weight(AsperityPressureModel::automatic, 0.99), 1.0);
   EXPECT_EQ(bearing_area_weight(AsperityPressureModel::automatic, 1.0), 1.0);
-  EXPECT_EQ(bearing_area_weight(AsperityPressureModel::automatic, 121.0), 1.0);
-  EXPECT_NEAR(bearing_area_weight(AsperityPressureModel::automatic, std::sqrt(0.6)), 0.5, 1e-15);  // mid in ln psi
-  EXPECT_NEAR(bearing_area_weight(AsperityPressureModel::automatic, 0.6 * (1.0 + 1e-12)), 0.0, 1e-10);
-  EXPECT_EQ(bearing_area_weight(AsperityPressureModel::asperity_model, 121.0), 0.0);
+  EXPECT_NEAR(bearing_area_weight(AsperityPressureModel::automatic, 0.945), 0.5, 1e-12);
+  EXPECT_NEAR(bearing_area_weight(AsperityPressureModel::automatic, 0.9 + 1e-12), 0.0, 1e-9);
+  EXPECT_EQ(bearing_area_weight(AsperityPressureModel::asperity_model, 1.0), 0.0);
   EXPECT_EQ(bearing_area_weight(AsperityPressureModel::bearing_area, 0.1), 1.0);
+  // The seed's flanks (plasticity index 121) are fully plastic at the default case's pressures.
+  const SeedSurface s;
+  EXPECT_GT(contact::smallest_plastic_fraction(s.gw, {3.9e8, 5.9e8}), 0.99);
 }
 
 TEST(TractionCurves, InterpolatesAlongAndBetweenCurvesAndFlagsBeyond) {

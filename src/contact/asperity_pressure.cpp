@@ -30,18 +30,23 @@ std::vector<std::string> asperity_pressure_model_names() {
   return v;
 }
 
-double bearing_area_weight(AsperityPressureModel m, double psi) {
+double bearing_area_weight(AsperityPressureModel m, double plastic) {
   switch (m) {
-    case AsperityPressureModel::asperity_model:
-      return 0.0;
-    case AsperityPressureModel::bearing_area:
-      return 1.0;
-    case AsperityPressureModel::automatic:
-      break;
+    case AsperityPressureModel::asperity_model: return 0.0;
+    case AsperityPressureModel::bearing_area: return 1.0;
+    case AsperityPressureModel::automatic: break;
   }
-  if (!(psi > kElasticPlasticityIndex)) return 0.0;
-  if (psi >= kPlasticPlasticityIndex) return 1.0;
-  return std::log(psi / kElasticPlasticityIndex) / std::log(kPlasticPlasticityIndex / kElasticPlasticityIndex);
+  return std::clamp((plastic - kPlasticBlendStart) / (kFullyPlasticFraction - kPlasticBlendStart), 0.0, 1.0);
+}
+
+double smallest_plastic_fraction(const GreenwoodWilliamson& gw, const std::vector<double>& pressures) {
+  double smallest = 1.0;
+  for (double p : pressures) {
+    if (!(p > 0.0)) continue;
+    const SurfaceContact c = gw.at_separation(gw.separation_for_pressure(p), true);
+    if (c.real_area_ratio > 0.0) smallest = std::min(smallest, c.plastic_area_ratio / c.real_area_ratio);
+  }
+  return smallest;
 }
 
 AsperityPressure::AsperityPressure(const GreenwoodWilliamson& gw, lubrication::CompositeHeights heights,

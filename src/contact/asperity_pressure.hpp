@@ -14,15 +14,19 @@
 
 namespace geartrib::contact {
 
-// auto (default): the bearing-area model's weight w rises from 0 at GW's elastic bound psi = 0.6
-// to 1 at its plastic bound psi = 1 (GW 1966: below 0.6 contacts are elastic but at extreme
-// pressures, above 1 they flow plastically at any load), linearly in ln psi: continuous across
-// a sweep. asperity-model: w = 0; bearing-area: w = 1.
+// auto (default): the bearing-area model's weight w rises from 0 to 1 as the asperity model's own
+// plastic area fraction under the whole load (at the strip's centre, its smallest along the path)
+// rises from 0.9 to 0.99, the bound above which the run's regime verdict calls the flanks fully
+// plastic: the asperity model where it holds, the bearing area where every contact flows, linear
+// between (continuous across a sweep). asperity-model: w = 0; bearing-area: w = 1.
 enum class AsperityPressureModel { automatic, asperity_model, bearing_area };
 AsperityPressureModel asperity_pressure_model_from_name(const std::string& name);  // throws std::invalid_argument
 std::vector<std::string> asperity_pressure_model_names();
-double bearing_area_weight(AsperityPressureModel m, double plasticity_index);
-inline constexpr double kElasticPlasticityIndex = 0.6, kPlasticPlasticityIndex = 1.0;
+double bearing_area_weight(AsperityPressureModel m, double plastic_area_fraction);
+inline constexpr double kPlasticBlendStart = 0.9, kFullyPlasticFraction = 0.99;
+// The asperity model's smallest plastic area fraction over the nominal pressures p0 (each the
+// whole load at the strip's centre): what `auto` weighs by.
+double smallest_plastic_fraction(const GreenwoodWilliamson& gw, const std::vector<double>& pressures);
 
 class AsperityPressure {
  public:

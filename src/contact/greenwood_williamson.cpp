@@ -254,7 +254,7 @@ double GreenwoodWilliamson::density(double z) const {
   return z >= 0.0 ? std::exp(-z / s) / s : 0.0;
 }
 
-SurfaceContact GreenwoodWilliamson::at_separation(double d) const {
+SurfaceContact GreenwoodWilliamson::at_separation(double d, bool plastic) const {
   SurfaceContact c;
   c.separation = d;
   const double z0 = std::max(d, z_low_);
@@ -287,7 +287,7 @@ SurfaceContact GreenwoodWilliamson::at_separation(double d) const {
           const asperity::AsperityState st = model_.evaluate(pair_, u, detail);
           c.nominal_pressure += st.load * phi;
           c.real_area_ratio += st.area * phi;
-          if (options_.plastic) c.plastic_area_ratio += st.area * st.plastic_fraction * phi;
+          if (plastic) c.plastic_area_ratio += st.area * st.plastic_fraction * phi;
         }
       }
     }

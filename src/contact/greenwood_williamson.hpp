@@ -57,8 +57,10 @@ class GreenwoodWilliamson {
                       const asperity::ContactPair& pair, double max_pressure,
                       const GreenwoodWilliamsonOptions& options);
 
-  // Direct quadrature at a separation (what the table is built from).
-  SurfaceContact at_separation(double d) const;
+  // Direct quadrature at a separation (what the table is built from); `plastic` sums the plastic
+  // area whether or not the table does.
+  SurfaceContact at_separation(double d) const { return at_separation(d, options_.plastic); }
+  SurfaceContact at_separation(double d, bool plastic) const;
   // From the table: monotone log-linear interpolation in d.
   SurfaceContact interpolate(double d) const;
   // Nominal pressure at d and its derivative dp/dd (<= 0), from the table.

@@ -134,8 +134,9 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
 
   // The asperities' pressure against the mean-plane separation, and the film and shares.
   plasticity_index_ = surface::plasticity_index(gw.surface(), gw.pair().modulus, gw.pair().hardness);
-  const double weight =
-      bearing_area_weight(asperity_pressure_model_from_name(c.lubrication.asperity_pressure), plasticity_index_);
+  const AsperityPressureModel model = asperity_pressure_model_from_name(c.lubrication.asperity_pressure);
+  plastic_fraction_ = model == AsperityPressureModel::automatic ? smallest_plastic_fraction(gw, p.hertz_p0) : 0.0;
+  const double weight = bearing_area_weight(model, plastic_fraction_);
   asperity_.emplace(gw, lub::CompositeHeights{roughness_.rq, c.roughness.distribution}, gw.pair().hardness, weight);
   double guess = std::numeric_limits<double>::quiet_NaN();  // ln(film share) at the last position
   for (std::size_t i = 0; i < n; ++i) {
@@ -414,16 +415,16 @@ void MeshLubrication::finish(MeshContactResult& r) {
 
   // What produced the numbers and where they rest on a choice: said in the verdict.
   {
-    const double psi = plasticity_index_, w = sum.bearing_area_weight;
-    std::string pressure = w >= 1.0 ? fmt::format(
-                                          "by their bearing area at the hardness (the flanks fully plastic, "
-                                          "plasticity index {:.3g})",
-                                          psi)
-                           : w <= 0.0 ? fmt::format("by the {} model (plasticity index {:.3g})", r.asperity_model, psi)
-                                      : fmt::format(
-                                            "by a blend, {:.2f} bearing area and {:.2f} {} model (plasticity "
-                                            "index {:.3g}, between 0.6 and 1)",
-                                            w, 1.0 - w, r.asperity_model, psi);
+    const double w = sum.bearing_area_weight;
+    const std::string why =
+        c.lubrication.asperity_pressure == "auto"
+            ? fmt::format(" (its plastic area fraction under the whole load at least {:.3g}; plasticity index {:.3g})",
+                          plastic_fraction_, plasticity_index_)
+            : fmt::format(" (lubrication.asperity_pressure = {})", c.lubrication.asperity_pressure);
+    std::string pressure = w >= 1.0   ? "by their bearing area at the hardness, the flanks fully plastic" + why
+                           : w <= 0.0 ? fmt::format("by the {} model{}", r.asperity_model, why)
+                                      : fmt::format("by a blend, {:.2f} bearing area and {:.2f} {} model{}", w, 1.0 - w,
+                                                    r.asperity_model, why);
     std::string text = fmt::format(
         " Lubricated ({}): the film fills the {} between the rough flanks and the asperities press {}", sum.lubricant,
         film_gap_ == lub::FilmGap::mean_gap     ? "mean gap"

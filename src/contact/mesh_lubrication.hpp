@@ -102,6 +102,7 @@ class MeshLubrication {
   bool bulk_estimated_ = false;
   CompositeRoughness roughness_;
   double plasticity_index_ = 0.0;
+  double plastic_fraction_ = 0.0;  // the asperity model's smallest along the path (auto's weight)
   std::optional<AsperityPressure> asperity_;
   std::vector<Position> positions_;
 };

@@ -512,8 +512,8 @@ std::vector<Parameter> build_table() {
       .choices(contact::asperity_pressure_model_names(), "asperity pressure model")
       .alias({"asperity_pressure"})
       .doc(
-          "Asperity pressure in the load sharing: auto (the asperity model below plasticity index 0.6, the bearing "
-          "area at the hardness above 1, blended between), asperity-model or bearing-area");
+          "Asperity pressure in the load sharing: auto (the asperity model, or the bearing area at the hardness "
+          "where its plastic area fraction exceeds 0.99, blended from 0.9), asperity-model or bearing-area");
   add(text(
           "lubrication.traction", K::choice, [](auto& c, int) -> auto& { return c.lubrication.traction; }))
       .choices(lubrication::film_traction_names(), "film traction model")

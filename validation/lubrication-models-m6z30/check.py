@@ -19,9 +19,15 @@ sys.path.insert(0, os.path.dirname(HERE))
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import expected_table  # noqa: E402
 
-QUANTITIES = [("film_m_min", "film min [m]"), ("film_m_mean", "film mean [m]"), ("lambda_min", "lambda min [1]"),
+QUANTITIES = [("film_m_min", "film min [m]"), ("film_m_mean", "film mean [m]"),
+              ("lambda_smooth_film_min", "lambda min [1]"),
               ("asperity_load_share_mean", "asperity share mean [1]"),
               ("friction_coefficient_mean", "friction mean [1]")]
+# The closures of the load sharing: what the film's thickness equals x how the asperities press.
+CLOSURE_QUANTITIES = [("asperity_load_share_min", "asperity share min [1]"),
+                      ("asperity_load_share_mean", "asperity share mean [1]"),
+                      ("asperity_load_share_max", "asperity share max [1]"),
+                      ("friction_coefficient_mean", "friction mean [1]"), ("mesh_mean_friction", "gear-mean friction [1]")]
 SPEEDS = ["1rpm", "3rpm", "10rpm", "30rpm", "100rpm", "300rpm", "1000rpm", "3000rpm", "10000rpm"]
 
 
@@ -46,9 +52,30 @@ def main(argv):
                                                "dowson-toyoda", "inlet_heating=gupta,murch-wilson,none"])
         stribeck = sweep(binary, tmp, "stribeck", ["speed=" + ",".join(SPEEDS), "positions=41",
                                                    "bulk_temperature=80degC", "ra=0.2um"])
+        closures = sweep(binary, tmp, "closures", ["film_gap=mean-gap,mean-plane,dry-offset",
+                                                   "asperity_pressure=auto,asperity-model"])
+        traction = sweep(binary, tmp, "traction", ["traction=thermal-eyring,isothermal-eyring",
+                                                   "speed=100rpm,1000rpm,3000rpm", "ra=0.2um"])
     for r in models:
         key = f"{r['film_formula']} {r['inlet_heating']}"
         rows += [{"key": key, "quantity": label, "model": float(r[q]), "reference": None} for q, label in QUANTITIES]
+    for r in closures:
+        key = f"{r['film_gap']} {r['asperity_pressure']}"
+        rows += [{"key": key, "quantity": label, "model": float(r[q]), "reference": None}
+                 for q, label in CLOSURE_QUANTITIES]
+    shares = [float(r["asperity_load_share_mean"]) for r in closures]
+    rows.append({"key": "closures", "quantity": "asperity share mean spread max - min [1]",
+                 "model": max(shares) - min(shares), "reference": None})
+    for r in traction:
+        key = f"{r['traction']} {r['speed']} Ra 0.2um"
+        rows += [{"key": key, "quantity": "film traction coefficient max [1]",
+                  "model": float(r["film_traction_coefficient_max"]), "reference": None},
+                 {"key": key, "quantity": "gear-mean friction [1]", "model": float(r["mesh_mean_friction"]),
+                  "reference": None}]
+    by = {(r["traction"], r["speed"]): float(r["film_traction_coefficient_max"]) for r in traction}
+    rows.append({"key": "traction", "quantity": "thermal below isothermal at every speed [bool]",
+                 "model": all(by[("thermal-eyring", v)] <= by[("isothermal-eyring", v)] for _, v in by),
+                 "reference": True})
     films = [float(r["film_m_min"]) for r in models if r["inlet_heating"] == "gupta"]
     rows.append({"key": "formulas (gupta)", "quantity": "film min spread max/min [1]",
                  "model": max(films) / min(films), "reference": None})
@@ -77,7 +104,8 @@ def main(argv):
               "reference": None}]
     return expected_table.check(
         rows, os.path.join(HERE, "expected.csv"), argv, binary,
-        "gears/m6z30.toml lubricated: film formulas x inlet-heating corrections; Stribeck sweep (Ra 0.2 um, bulk 80 degC)",
+        "gears/m6z30.toml lubricated: film formulas x inlet-heating corrections; Stribeck sweep (Ra 0.2 um, bulk "
+        "80 degC); film gap x asperity pressure closures; thermal and isothermal traction",
         "validation/lubrication-models-m6z30/check.py GEARTRIB --write (geartrib sweep gears/m6z30.toml "
         "--set film_formula=... --set inlet_heating=...; --set speed=1rpm..10000rpm positions=41 "
         "bulk_temperature=80degC ra=0.2um)")
