@@ -128,9 +128,16 @@ TEST(AsperityPressure, AutomaticWeightIsContinuousInThePlasticFraction) {
   EXPECT_NEAR(bearing_area_weight(AsperityPressureModel::automatic, 0.9 + 1e-12), 0.0, 1e-9);
   EXPECT_EQ(bearing_area_weight(AsperityPressureModel::asperity_model, 1.0), 0.0);
   EXPECT_EQ(bearing_area_weight(AsperityPressureModel::bearing_area, 0.1), 1.0);
-  // The seed's flanks (plasticity index 121) are fully plastic at the default case's pressures.
+  // The seed's flanks (plasticity index 121) are fully plastic at the default case's pressures; the
+  // fraction rises with the pressure (the lightest load decides).
   const SeedSurface s;
   EXPECT_GT(contact::smallest_plastic_fraction(s.gw, {3.9e8, 5.9e8}), 0.99);
+  double last = 0.0;
+  for (double p : test::log_space(1e2, 1e9, 30)) {
+    const double f = contact::smallest_plastic_fraction(s.gw, {p});
+    EXPECT_GE(f, last) << p;
+    last = f;
+  }
 }
 
 TEST(TractionCurves, InterpolatesAlongAndBetweenCurvesAndFlagsBeyond) {

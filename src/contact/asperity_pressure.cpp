@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 
 namespace geartrib::contact {
@@ -40,13 +41,14 @@ double bearing_area_weight(AsperityPressureModel m, double plastic) {
 }
 
 double smallest_plastic_fraction(const GreenwoodWilliamson& gw, const std::vector<double>& pressures) {
-  double smallest = 1.0;
-  for (double p : pressures) {
-    if (!(p > 0.0)) continue;
-    const SurfaceContact c = gw.at_separation(gw.separation_for_pressure(p), true);
-    if (c.real_area_ratio > 0.0) smallest = std::min(smallest, c.plastic_area_ratio / c.real_area_ratio);
-  }
-  return smallest;
+  // A summit's plastic share grows with its interference and a higher pressure presses every summit
+  // deeper: the fraction rises with the pressure, so the path's smallest is at its lightest load.
+  double lightest = std::numeric_limits<double>::infinity();
+  for (double p : pressures)
+    if (p > 0.0) lightest = std::min(lightest, p);
+  if (!std::isfinite(lightest)) return 1.0;
+  const SurfaceContact c = gw.at_separation(gw.separation_for_pressure(lightest), true);
+  return c.real_area_ratio > 0.0 ? c.plastic_area_ratio / c.real_area_ratio : 1.0;
 }
 
 AsperityPressure::AsperityPressure(const GreenwoodWilliamson& gw, lubrication::CompositeHeights heights,

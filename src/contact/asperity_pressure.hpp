@@ -25,7 +25,7 @@ std::vector<std::string> asperity_pressure_model_names();
 double bearing_area_weight(AsperityPressureModel m, double plastic_area_fraction);
 inline constexpr double kPlasticBlendStart = 0.9, kFullyPlasticFraction = 0.99;
 // The asperity model's smallest plastic area fraction over the nominal pressures p0 (each the
-// whole load at the strip's centre): what `auto` weighs by.
+// whole load at the strip's centre), at the lightest of them: what `auto` weighs by.
 double smallest_plastic_fraction(const GreenwoodWilliamson& gw, const std::vector<double>& pressures);
 
 class AsperityPressure {

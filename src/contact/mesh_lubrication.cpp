@@ -344,6 +344,7 @@ void MeshLubrication::finish(MeshContactResult& r) {
   sum.mean_ra = roughness_.mean_ra;
   sum.roughness_source = roughness_.source;
   sum.summit_model_sigma = r.surface.surface_sigma;
+  sum.iso_effective_relief = iso_effective_relief_;
   for (const auto& [law, f] : mean_laws_)
     sum.mean_friction.push_back({lub::mean_friction_law_name(law), f.coefficient});
   const gear::SpurPair& pair = mesh_.pair();

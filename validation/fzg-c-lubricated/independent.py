@@ -1,16 +1,22 @@
 #!/usr/bin/python3
-"""Independent computation of the lubrication numbers of fzg-c-lubricated.toml at A..E.
+"""Re-evaluation and independent computation of the lubrication numbers of fzg-c-lubricated.toml at A..E.
 
 Usage: validation/fzg-c-lubricated/independent.py RUN.h5 [CASE.toml]
 
-Written from the published formulas (README.md, "Independent computation"), not from geartrib's
-C++: it reads the case, the lubricant and material files with its own unit parser, recomputes the
-gear geometry and kinematics (base radii, working pressure angle, path of contact, A..E, radii and
-speeds), and the oil's viscosity, density, pressure-viscosity and temperature-viscosity
-coefficients. From the run's HDF5 it takes only what belongs to other parts of geartrib (the
-load sharing: line load and Hertz pressure and half-width per position; the positions s) and, for
-the strict comparison, the bulk temperature the run used; it also estimates the bulk temperature
-itself (see bulk_temperature()).
+Two kinds of check, kept apart because they can catch different errors:
+- RE-EVALUATED (the same published formulas, written again here from their sources, with this
+  script's own unit parser, TOML reading, gear geometry, kinematics and oil properties): catches
+  wrong units, temperatures, inputs and plumbing; it cannot catch a wrong formula or constant,
+  since it types the same one. The film (Dowson-Higginson), Gupta's inlet heating, lambda, the ISO
+  mean coefficients, the ISO/TS 6336-20 flash temperature (eq. A.5) and bulk temperature, h_Y and
+  lambda_GF.
+- INDEPENDENT (another derivation): the flash temperatures by numerical integration of the moving
+  band source (validation/flash-temperature/moving_source.py), with the run's local friction and
+  with ISO/TS 6336-22's mu_mC, at the named points.
+From the run's HDF5 it takes only what belongs to other parts of geartrib: the load sharing (line
+load per position and at the named points, which stand where they are: B and D with the single
+pair's load), the ISO effective tip relief C_eff (ISO 6336-1 stiffness), the local friction (for the
+local flash temperature), and for the strict comparison the bulk temperature.
 
 Formulas (SI unless stated):
   E' = 2 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2); u = (v1 + v2)/2; R = rho1 rho2/(rho1 + rho2)
@@ -18,17 +24,21 @@ Formulas (SI unless stated):
       U = eta u/(E' R), G = alpha E', W = w/(E' R), eta and alpha at the bulk temperature
   Gupta, Cheng, Zhu & Wedeven (1992) inlet heating: phi = (1 - 13.2 (p_h/E') L^0.42) /
       (1 + 0.213 (1 + 2.23 SRR^0.83) L^0.64), L = beta eta u^2/k_f, beta = -d ln(eta)/dT, SRR = |v1 - v2|/u
-  film = phi h; lambda = film / sqrt(Rq1^2 + Rq2^2), Rq = sqrt(pi/2) Ra (Gaussian profile)
+  film = phi h; lambda_smooth_film = film / sqrt(Rq1^2 + Rq2^2), Rq = sqrt(pi/2) Ra (Gaussian profile)
   Walther / ASTM D341: log10 log10(nu + 0.7) = A - B log10(T/K), nu in mm^2/s through the 40/100 degC points;
       rho(T) = rho15 (1 - c (T - 15 degC)); eta = nu rho
   alpha(T) = alpha_ref (1 + 516 (1/T - 1/311))/(1 + 516 (1/T_ref - 1/311)) (ISO/TR 15144-1 temperature law,
       anchored at the lubricant file's measured alpha)
-  ISO/TS 6336-20 mean friction: mu_m = 0.045 (w_Bt/(v_SigmaC rho_redC))^0.2 eta_oil^-0.05 X_R X_L,
-      X_R = 2.2 (Ra/rho_redC)^0.25; N/mm, m/s, mm, mPa s (oil temperature), um; w_Bt = T1/(r1 b), r1 = m z1/2
-  Blok flash temperature: theta = 1.11 mu w |v1 - v2| / (2 sqrt(b_H) (B1 sqrt(v1) + B2 sqrt(v2))), B = sqrt(lambda rho c)
-  Bulk temperature (ISO/TS 6336-20): theta_M = theta_oil + 0.47 mean(theta_fl(mu_m)) along A..E
+  ISO/TS 6336-21/-22 mean friction: mu_mC = 0.045 (w_Bt/(v_SigmaC rho_redC))^0.2 eta_oil^-0.05 X_R X_L,
+      X_R = 2.2 (Ra/rho_redC)^0.25; N/mm (at least 150), m/s, mm, mPa s (oil temperature), um; w_Bt = T1/(r1 b)
+  ISO/TS 6336-20 mean friction: mu_m = 0.060 (w_Bt/(v_SigmaC rho_redC))^0.2 X_L eta_oil^-0.05 Ra^0.25
+  ISO/TS 6336-20 flash temperature (ISO/TR 13989-1 A.5): theta = mu_m X_M X_J X_G (X_Gamma w_Bt)^0.75 v_t^0.5/a^0.25,
+      X_M = E_r^0.25/B_M (x 1000, ISO units), X_G = 0.51 X_ab sqrt(u+1) |sqrt(1+G) - sqrt(1-G/u)|/((1+G)^0.25 (u-G)^0.25),
+      X_ab = 1.22 sin^0.25 a_wt cos^0.25 a_n/(cos^0.5 a_wt cos^0.5 a_t), X_J = 1 + C_eff/50 (-G/(G_E - G_A))^3 (G < 0),
+      X_Gamma = the run's load share (ISO load sharing), v_t = omega1 r1
+  Bulk temperature (ISO/TS 6336-20): theta_M = theta_oil + 0.47 mean(theta_fl) along A..E (trapezoidal)
   ISO/TS 6336-22 (ISO/TR 15144-1): h_Y = 1.6 R G^0.6 U^0.7 W^-0.13 S_GF^0.22, U = eta_M (v1 + v2)/(2 E' R),
-      W = 2 pi p_H^2/E'^2, S_GF = alpha(theta_B) eta(theta_B)/(alpha_M eta_M), theta_B = theta_M + theta_fl(mu_m);
+      W = 2 pi p_H^2/E'^2, S_GF = alpha(theta_B) eta(theta_B)/(alpha_M eta_M), theta_B = theta_M + Blok(mu_mC);
       lambda_GF = h_Y / ((Ra1 + Ra2)/2)
 """
 import math
@@ -39,6 +49,9 @@ import tomllib
 
 import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "flash-temperature"))
+import moving_source  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASE = os.path.join(HERE, "fzg-c-lubricated.toml")
@@ -91,6 +104,7 @@ class Oil:
         self.t_alpha = si(d.get("pressure_viscosity_temperature", "40 degC"))
         self.k = si(d["thermal_conductivity"])
         self.base = d["base_oil"]
+        self.x_l_given = float(d.get("iso_lubricant_factor", 0.0))
         self.t_max = si(d["max_temperature"])
         # Walther constants: W(T) = A - B log10 T through the 40 and 100 degC points.
         w40 = math.log10(math.log10(self.nu40 + 0.7))
@@ -127,7 +141,10 @@ class Oil:
         return 2.657e-8 * eta38 ** 0.1348 * law(t)
 
     def x_l(self):
-        return {"mineral": 1.0, "pao": 0.8, "ester": 0.7, "polyglycol": 0.6}[self.base]
+        """ISO/TS 6336-20's table (ISO/TR 13989-1); an ester's file gives its own."""
+        return self.x_l_given or {"mineral": 1.0, "pao": 0.8, "polyglycol-insoluble": 0.7,
+                                  "polyglycol-water-soluble": 0.6, "phosphate-ester": 1.3,
+                                  "traction-fluid": 1.5}[self.base]
 
 
 # --- the gears ----------------------------------------------------------------------------------
@@ -171,8 +188,8 @@ class Gears:
         e = [si(mm["youngs_modulus"]) for mm in mats]
         nu = [float(mm["poisson_ratio"]) for mm in mats]
         self.e_red = 2.0 / ((1 - nu[0] ** 2) / e[0] + (1 - nu[1] ** 2) / e[1])
-        self.b_m = [math.sqrt(si(mm["thermal_conductivity"]) * si(mm["density"]) * si(mm["specific_heat"]))
-                    for mm in mats]
+        self.thermal = [(si(mm["thermal_conductivity"]), si(mm["density"]), si(mm["specific_heat"])) for mm in mats]
+        self.b_m = [math.sqrt(k * rho * c) for k, rho, c in self.thermal]
 
     # kinematics at a position s along the line of action, measured from T1 (pinion side)
     def rho(self, s):
@@ -189,51 +206,80 @@ class Gears:
     def pitch_line_velocity(self):
         return self.w1 * self.rw1
 
-    def mean_friction_iso(self):
-        """ISO/TS 6336-20 mu_m at the pitch point, in the standard's units."""
-        w_bt = self.torque / (self.r1 * self.b) * 1e-3                 # N/mm
+    def pitch_point(self):
+        """(w_Bt N/mm, v_SigmaC m/s, rho_redC mm, eta_oil mPa s, Ra um) as the ISO formulas take them."""
+        w_bt = self.torque / (self.r1 * self.b) * 1e-3
         v1c, v2c = self.speeds(self.s["C"])
-        v_sum = v1c + v2c                                               # m/s
-        rho_red = self.radius(self.s["C"]) * 1e3                        # mm
-        eta_oil = self.oil.eta(self.t_oil) * 1e3                        # mPa s
-        ra = 0.5 * (self.ra[0] + self.ra[1]) * 1e6                      # um
-        x_r = 2.2 * (ra / rho_red) ** 0.25
-        return 0.045 * (w_bt / (v_sum * rho_red)) ** 0.2 * eta_oil ** -0.05 * x_r * self.oil.x_l()
+        return (w_bt, v1c + v2c, self.radius(self.s["C"]) * 1e3, self.oil.eta(self.t_oil) * 1e3,
+                0.5 * (self.ra[0] + self.ra[1]) * 1e6)
+
+    def mean_friction_iso(self):
+        """ISO/TS 6336-21/-22 mu_mC at the pitch point, in the standard's units (w_Bt at least 150 N/mm)."""
+        w_bt, v_sum, rho, eta, ra = self.pitch_point()
+        x_r = 2.2 * (ra / rho) ** 0.25
+        return 0.045 * (max(w_bt, 150.0) / (v_sum * rho)) ** 0.2 * eta ** -0.05 * x_r * self.oil.x_l()
+
+    def mean_friction_iso_flash(self):
+        """ISO/TS 6336-20 mu_m (ISO/TR 13989-1 eqs. 25-28 as transcribed) at the pitch point."""
+        w_bt, v_sum, rho, eta, ra = self.pitch_point()
+        return 0.060 * (w_bt / (v_sum * rho)) ** 0.2 * self.oil.x_l() * eta ** -0.05 * ra ** 0.25
+
+    def gamma(self, s):
+        return s / self.s["C"] - 1.0
+
+    def iso_flash(self, s, share, c_eff):
+        """ISO/TS 6336-20 eq. A.5 at s with X_Gamma = share and the effective tip relief c_eff [m]."""
+        u = self.z2 / self.z1
+        g = self.gamma(s)
+        x_ab = (1.22 * math.sin(self.alpha_w) ** 0.25 * math.cos(self.alpha) ** 0.25 /
+                (math.cos(self.alpha_w) ** 0.5 * math.cos(self.alpha) ** 0.5))
+        x_g = (0.51 * x_ab * math.sqrt(u + 1.0) * abs(math.sqrt(1.0 + g) - math.sqrt(1.0 - g / u)) /
+               ((1.0 + g) ** 0.25 * (u - g) ** 0.25))
+        e_r_nmm2 = self.e_red * 1e-6
+        b_iso = 0.5 * (self.b_m[0] + self.b_m[1]) / math.sqrt(1000.0)
+        x_m = e_r_nmm2 ** 0.25 / b_iso * 1000.0
+        g_a, g_e = self.gamma(self.s["A"]), self.gamma(self.s["E"])
+        x_j = 1.0 if g >= 0.0 else max(1.0, 1.0 + c_eff * 1e6 / 50.0 * (-g / (g_e - g_a)) ** 3)
+        w_bt = self.torque / (self.r1 * self.b) * 1e-3
+        v_t = self.w1 * self.r1
+        return self.mean_friction_iso_flash() * x_m * x_j * x_g * (share * w_bt) ** 0.75 * v_t ** 0.5 / \
+            (self.a_w * 1e3) ** 0.25
+
+    def materials(self):
+        """(k, rho, c) of pinion and wheel, for the moving-source integration."""
+        return self.thermal
 
 
-def flash_temperature(mu, w, b_h, v1, v2, b1, b2):
-    """Blok's flash temperature [K]."""
-    return 1.11 * mu * w * abs(v1 - v2) / (2.0 * math.sqrt(b_h) * (b1 * math.sqrt(v1) + b2 * math.sqrt(v2)))
+def flash_temperature(mu, w, b_h, v1, v2, g):
+    """The flash temperature [K] by integrating the moving band source (not Blok's closed form)."""
+    return moving_source.flash_temperature(mu, w, b_h, v1, v2, *g.materials())[0]
 
 
 def read_run(h5):
     with h5py.File(h5, "r") as f:
         mesh = {k: f["mesh"][k][()] for k in f["mesh"]}
-        lub = {k: f["lubrication"][k][()] for k in f["lubrication"]}
+        lub = {k: f["lubrication"][k][()] for k in f["lubrication"] if isinstance(f["lubrication"][k], h5py.Dataset)}
+        points = {k: f["lubrication/points"][k][()] for k in f["lubrication/points"]}
         mesh_attrs = dict(f["mesh"].attrs)
         lub_attrs = dict(f["lubrication"].attrs)
-    return mesh, lub, mesh_attrs, lub_attrs
-
-
-def nearest_rows(gears, s):
-    """Grid row nearest each named point (A and E are the grid's ends)."""
-    return {p: int(np.argmin(np.abs(s - gears.s[p]))) for p in POINTS}
+    points["point"] = [x.decode() if isinstance(x, bytes) else x for x in points["point"]]
+    return mesh, lub, points, mesh_attrs, lub_attrs
 
 
 def compute(h5, case_path=CASE, bulk=None):
-    """Per named point: the independent values (dict of dicts) and the run's rows used.
+    """Per named point (at its own place, from /lubrication/points): the re-evaluated and independent
+    values; and along the path the ISO quantities.
 
     bulk: the bulk temperature [K] the film uses; None takes the run's (so that only the formulas are
     compared), 'own' this script's estimate."""
     g = Gears(case_path)
-    mesh, lub, mesh_attrs, lub_attrs = read_run(h5)
+    mesh, lub, points, mesh_attrs, lub_attrs = read_run(h5)
     s = mesh["s_m"]
-    rows = nearest_rows(g, s)
-    mu_m = g.mean_friction_iso()
-    v1_all, v2_all = g.speeds(s)
-    th_all = np.array([flash_temperature(mu_m, w, b, a, c, *g.b_m) for w, b, a, c in
-                       zip(mesh["line_load_N_per_m"], mesh["hertz_halfwidth_m"], v1_all, v2_all)])
-    mean_trapz = float(np.sum(0.5 * (th_all[1:] + th_all[:-1]) * np.diff(s)) / (s[-1] - s[0]))
+    c_eff = float(lub_attrs["iso_effective_tip_relief_m"])
+    mu_mc = g.mean_friction_iso()
+    mu_m = g.mean_friction_iso_flash()
+    iso_all = np.array([g.iso_flash(x, share, c_eff) for x, share in zip(s, mesh["load_share"])])
+    mean_trapz = float(np.sum(0.5 * (iso_all[1:] + iso_all[:-1]) * np.diff(s)) / (s[-1] - s[0]))
     own_bulk = g.t_oil + 0.47 * mean_trapz
     if g.t_bulk_given:
         own_bulk = g.t_bulk_given
@@ -243,14 +289,16 @@ def compute(h5, case_path=CASE, bulk=None):
     rq = math.sqrt(math.pi / 2.0) * math.hypot(*g.ra)
     ra_mean = 0.5 * (g.ra[0] + g.ra[1])
     out = {}
-    for p, i in rows.items():
-        si_ = s[i]
-        w = mesh["line_load_N_per_m"][i]
-        b_h = mesh["hertz_halfwidth_m"][i]
-        p_h = mesh["hertz_p0_Pa"][i]
+    for k, p in enumerate(points["point"]):
+        if p not in POINTS:
+            continue
+        si_ = float(points["s_m"][k])
+        w = float(points["line_load_N_per_m"][k])
         r = g.radius(si_)
         v1, v2 = g.speeds(si_)
         u = 0.5 * (v1 + v2)
+        b_h = math.sqrt(8.0 * w * r / (math.pi * g.e_red))   # Hertz from the point's line load
+        p_h = 2.0 * w / (math.pi * b_h)
         U = eta_m * u / (g.e_red * r)
         G = alpha_m * g.e_red
         W = w / (g.e_red * r)
@@ -259,36 +307,30 @@ def compute(h5, case_path=CASE, bulk=None):
         srr = abs(v1 - v2) / u
         phi = (1.0 - 13.2 * (p_h / g.e_red) * L ** 0.42) / (1.0 + 0.213 * (1.0 + 2.23 * srr ** 0.83) * L ** 0.64)
         film = phi * h_iso
-        th_fl = flash_temperature(mu_m, w, b_h, v1, v2, *g.b_m)
-        t_b = t_m + th_fl
+        th_blok_iso = flash_temperature(mu_mc, w, b_h, v1, v2, g)
+        t_b = t_m + th_blok_iso
         s_gf = oil.alpha(t_b) * oil.eta(t_b) / (alpha_m * eta_m)
         U_y = eta_m * (v1 + v2) / (2.0 * g.e_red * r)
         W_y = 2.0 * math.pi * p_h ** 2 / g.e_red ** 2
         h_y = 1.6 * r * G ** 0.6 * U_y ** 0.7 * W_y ** -0.13 * s_gf ** 0.22
-        # Hertz from the run's line load (a cross-check of the inputs taken from /mesh)
-        b_hertz = math.sqrt(8.0 * w * r / (math.pi * g.e_red))
+        share = w / (g.torque / g.rb1 / g.b)   # X_Gamma: the point's share of the normal load
+        iso_fl = g.iso_flash(si_, share, c_eff)
         out[p] = {
-            "row": i, "s_m": si_, "s_named_m": g.s[p],
-            "r_eq_m": r, "v1_m_per_s": v1, "v2_m_per_s": v2, "hertz_halfwidth_m": b_hertz,
-            "hertz_p0_Pa": 2.0 * w / (math.pi * b_hertz),
-            "film_isothermal_m": h_iso, "inlet_heating_factor": phi, "film_m": film, "lambda": film / rq,
-            "iso_flash_temperature_K": th_fl, "iso_contact_temperature_K": t_b,
-            "iso_film_hy_m": h_y, "iso_lambda_gf": h_y / ra_mean,
-            # Blok with the run's local friction coefficient (checks the formula, not the friction model)
-            "flash_temperature_K": flash_temperature(lub["friction_coefficient"][i], w, b_h, v1, v2, *g.b_m),
+            "index": k, "s_m": si_, "s_named_m": g.s[p], "line_load_N_per_m": w,
+            "film_m": film, "lambda_smooth_film": film / rq, "iso_film_hy_m": h_y, "iso_lambda_gf": h_y / ra_mean,
+            "iso_flash_temperature_K": iso_fl, "iso_contact_temperature_K": t_m + iso_fl,
+            # Independent: the moving band source integrated, with the point's local friction.
+            "flash_temperature_K": flash_temperature(float(points["friction_coefficient"][k]), w, b_h, v1, v2, g),
+            "blok_flash_temperature_iso_mu_K": th_blok_iso,
         }
     summary = {
-        "mu_m": mu_m, "bulk_temperature_K": own_bulk, "bulk_used_K": t_m,
-        "mean_iso_flash_K": mean_trapz, "mean_iso_flash_arithmetic_K": float(np.mean(th_all)),
-        "max_iso_flash_K": float(th_all.max()),
-        "max_local_flash_K": float(max(flash_temperature(mu, w, b, a, c, *g.b_m) for mu, w, b, a, c in
-                                       zip(lub["friction_coefficient"], mesh["line_load_N_per_m"],
-                                           mesh["hertz_halfwidth_m"], v1_all, v2_all))),
+        "mu_mc": mu_mc, "mu_m": mu_m, "bulk_temperature_K": own_bulk, "bulk_used_K": t_m,
+        "mean_iso_flash_K": mean_trapz, "max_iso_flash_K": float(iso_all.max()),
         "eta_bulk_Pa_s": eta_m, "alpha_bulk_per_Pa": alpha_m, "beta_bulk_per_K": beta_m,
         "eta_oil_Pa_s": oil.eta(g.t_oil), "composite_rq_m": rq, "mean_ra_m": ra_mean,
         "pitch_line_velocity_m_per_s": g.pitch_line_velocity(), "operating_pressure_angle_deg": math.degrees(g.alpha_w),
         "d_w1_m": 2 * g.rw1, "d_w2_m": 2 * g.rw2, "oil_max_temperature_K": oil.t_max,
-        "s_named": dict(g.s), "rows": rows,
+        "s_named": dict(g.s),
     }
     return out, summary
 
@@ -300,15 +342,16 @@ def main(argv):
     case = argv[2] if len(argv) > 2 else CASE
     pts, summ = compute(argv[1], case)
     own, _ = compute(argv[1], case, bulk="own")
-    print(f"mu_m {summ['mu_m']:.6g}; bulk (own estimate) {summ['bulk_temperature_K'] - ZERO_C:.3f} degC, "
-          f"(run's) {summ['bulk_used_K'] - ZERO_C:.3f} degC; eta {summ['eta_bulk_Pa_s'] * 1e3:.5g} mPa s, "
-          f"alpha {summ['alpha_bulk_per_Pa'] * 1e9:.5g} 1/GPa, beta {summ['beta_bulk_per_K']:.5g} 1/K at the run's bulk")
-    print(f"{'pt':<3} {'s mm':>8} {'h_iso um':>9} {'phi':>7} {'film um':>9} {'lambda':>7} {'th_fl K':>8} "
+    print(f"mu_mC {summ['mu_mc']:.6g} (ISO/TS 6336-21/-22), mu_m {summ['mu_m']:.6g} (ISO/TS 6336-20); bulk (own "
+          f"estimate) {summ['bulk_temperature_K'] - ZERO_C:.3f} degC, (run's) {summ['bulk_used_K'] - ZERO_C:.3f} degC; "
+          f"eta {summ['eta_bulk_Pa_s'] * 1e3:.5g} mPa s, alpha {summ['alpha_bulk_per_Pa'] * 1e9:.5g} 1/GPa, beta "
+          f"{summ['beta_bulk_per_K']:.5g} 1/K at the run's bulk")
+    print(f"{'pt':<3} {'s mm':>8} {'w N/mm':>8} {'film um':>9} {'lambda':>7} {'ISO fl K':>9} {'flash K':>8} "
           f"{'h_Y um':>8} {'lam_GF':>7} {'film(own bulk)':>14}")
     for p in POINTS:
         r = pts[p]
-        print(f"{p:<3} {r['s_m'] * 1e3:8.3f} {r['film_isothermal_m'] * 1e6:9.5f} {r['inlet_heating_factor']:7.4f} "
-              f"{r['film_m'] * 1e6:9.5f} {r['lambda']:7.4f} {r['iso_flash_temperature_K']:8.3f} "
+        print(f"{p:<3} {r['s_m'] * 1e3:8.3f} {r['line_load_N_per_m'] * 1e-3:8.2f} {r['film_m'] * 1e6:9.5f} "
+              f"{r['lambda_smooth_film']:7.4f} {r['iso_flash_temperature_K']:9.3f} {r['flash_temperature_K']:8.3f} "
               f"{r['iso_film_hy_m'] * 1e6:8.5f} {r['iso_lambda_gf']:7.4f} {own[p]['film_m'] * 1e6:14.5f}")
     return 0
 
