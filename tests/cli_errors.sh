@@ -160,6 +160,26 @@ bad_case lub-file-viscosity lubricants/mineral-vg220.toml 's#^kinematic_viscosit
   "mineral-vg220.toml:[0-9]+: key 'kinematic_viscosity_40C' = \"-220 mm\\^2/s\": must be positive"
 bad_case lub-no-thermal-data materials/steel-45.toml '/^thermal_conductivity/d' \
   "key 'pinion.material'.*thermal_conductivity and specific_heat"
+# Issue 29: measured traction curves out of order or outside [0, 1], an ester without its ISO
+# lubricant factor, a traction model without curves: exit 2 naming file, line, key, value, rule.
+curve='$a [traction_curves.a]\nsource = "test"\nhertz_pressure = "1 GPa"\ntemperature = "80 degC"\nentrainment_speed = "5 m/s"'
+bad_case lub-curve-order lubricants/mineral-vg220.toml "$curve\nslide_to_roll = [0.0, 0.2, 0.1]\ncoefficient = [0.0, 0.04, 0.05]" \
+  "mineral-vg220.toml:[0-9]+: key 'traction_curves.a.slide_to_roll' = \\[0, 0.2, 0.1\\]: must increase strictly \\(entry 2 after 0.2\\)"
+bad_case lub-curve-range lubricants/mineral-vg220.toml "$curve\nslide_to_roll = [0.0, 0.1]\ncoefficient = [0.0, 1.2]" \
+  "mineral-vg220.toml:[0-9]+: key 'traction_curves.a.coefficient' = \\[0, 1.2\\]: must lie in \\[0, 1\\] \\(entry 1: 1.2\\)"
+rm -rf "$tmp/b" && mkdir -p "$tmp/b/gears" "$tmp/b/materials" && cp gears/m6z30.toml "$tmp/b/gears/" \
+  && cp materials/steel-45.toml "$tmp/b/materials/" && cp -r lubricants "$tmp/b/"
+sed -i '/^iso_lubricant_factor/d' "$tmp/b/lubricants/ester-vg320-estr.toml"
+sed -i 's#mineral-vg220.toml#ester-vg320-estr.toml#' "$tmp/b/gears/m6z30.toml"
+check lub-ester-no-factor 2 "ester-vg320-estr.toml.*key 'iso_lubricant_factor'.*tabulates no lubricant factor X_L for base oil 'ester'" -- "$bin" run "$tmp/b/gears/m6z30.toml" -o "$tmp/b/out.h5" -q
+[[ ! -e "$tmp/b/out.h5" ]] && echo "ok   lub-ester-nothing-written" || { echo "FAIL lub-ester-nothing-written"; fail=1; }
+check lub-traction-no-curves 2 "m6z30.toml .--set lubrication.traction=curve.: key 'lubrication.traction' = \"?curve\"?: \"curve\" needs measured traction curves, and ../lubricants/mineral-vg220.toml has no \\[traction_curves.NAME\\] table" -- \
+  "$bin" run gears/m6z30.toml --set lubrication.traction=curve -o "$tmp/nocurve.h5" -q
+[[ ! -e "$tmp/nocurve.h5" ]] && echo "ok   lub-traction-nothing-written" || { echo "FAIL lub-traction-nothing-written"; fail=1; }
+# A lubricated case runs dry from the command line.
+check lub-none 0 "wrote" -- "$bin" run gears/m6z30.toml --set lubricant=none -o "$tmp/none.h5" -q
+/usr/bin/python3 -c "import h5py, sys; sys.exit('lubrication' in h5py.File(sys.argv[1]))" "$tmp/none.h5" \
+  && echo "ok   lub-none-dry" || { echo "FAIL lub-none-dry: /lubrication written"; fail=1; }
 # Warned, not refused: 130 degC lies 10 K beyond the oil's data (Walther extrapolated).
 rm -rf "$tmp/w" && mkdir -p "$tmp/w/gears" && cp -r materials lubricants "$tmp/w/"
 sed 's#^oil_temperature = "70 degC"#oil_temperature = "130 degC"#' gears/m6z30.toml > "$tmp/w/gears/m6z30.toml"

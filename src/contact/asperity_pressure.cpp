@@ -33,9 +33,12 @@ std::vector<std::string> asperity_pressure_model_names() {
 
 double bearing_area_weight(AsperityPressureModel m, double plastic) {
   switch (m) {
-    case AsperityPressureModel::asperity_model: return 0.0;
-    case AsperityPressureModel::bearing_area: return 1.0;
-    case AsperityPressureModel::automatic: break;
+    case AsperityPressureModel::asperity_model:
+      return 0.0;
+    case AsperityPressureModel::bearing_area:
+      return 1.0;
+    case AsperityPressureModel::automatic:
+      break;
   }
   return std::clamp((plastic - kPlasticBlendStart) / (kFullyPlasticFraction - kPlasticBlendStart), 0.0, 1.0);
 }

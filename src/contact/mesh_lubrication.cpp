@@ -455,6 +455,12 @@ void MeshLubrication::finish(MeshContactResult& r) {
         " and the asperities' boundary coefficient {:g} (friction.mu); the model's gear-mean {:.4f} "
         "against ISO/TS 6336-21/-22's {:.4f}.",
         c.friction_coefficient, sum.mesh_mean_friction, iso_mu_);
+    if (const double ratio = r.surface.surface_sigma / roughness_.rq;
+        roughness_.from_heights && (ratio > kRoughnessDisagreementFactor || ratio < 1.0 / kRoughnessDisagreementFactor))
+      text += fmt::format(
+          " The asperity model's surface is not the measured one: its composite sigma is {:.3g} times the flanks' Rq "
+          "(lambda and the ISO formulas take the Rq).",
+          ratio);
     r.verdict += text;
   }
 

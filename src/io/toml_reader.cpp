@@ -117,12 +117,21 @@ int TomlReader::line_of(std::string_view key) const {
 std::string TomlReader::value_text(std::string_view key) const {
   const toml::node* n = find(key);
   if (!n) return "";
-  std::ostringstream os;
-  if (n->is_string()) os << '"' << n->as_string()->get() << '"';
-  else if (n->is_floating_point()) os << fmt::format("{}", n->as_floating_point()->get());  // shortest round trip: 0.7
-  else if (n->is_table()) os << "(table)";
-  else n->visit([&](auto&& v) { os << v; });
-  return os.str();
+  // As the file writes it: strings quoted, floats by their shortest round trip (0.7), arrays item by item.
+  const auto scalar = [](const toml::node& v) {
+    std::ostringstream os;
+    if (v.is_string()) os << '"' << v.as_string()->get() << '"';
+    else if (v.is_floating_point()) os << fmt::format("{}", v.as_floating_point()->get());
+    else if (v.is_table()) os << "(table)";
+    else v.visit([&](auto&& x) { os << x; });
+    return os.str();
+  };
+  if (const toml::array* a = n->as_array()) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < a->size(); ++i) out += (i ? ", " : "") + scalar(*a->get(i));
+    return out + "]";
+  }
+  return scalar(*n);
 }
 
 const std::pair<const std::string, std::string>* TomlReader::change_of(std::string_view key) const {
