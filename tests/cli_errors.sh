@@ -31,6 +31,15 @@ for key in center_distance_m operating_pressure_angle_rad base_pitch_m length_of
   check "summary-$key" 0 "^$key," -- "$bin" kinematics --summary --csv
 done
 check kinematics-positions 0 "^10," -- "$bin" kinematics --positions 11 --load-sharing stiffness --csv
+# The mesh stiffness beyond a factor 1.5 of ISO's c_gamma_alpha is warned, naming the bores: bores at
+# the fillet-foundation fit's end (r_f/r_bore = 7) give 0.469 of ISO; solid bodies (a shaft seat
+# at r_f/3) lie within the band.
+check stiffness-band-warned 0 "warning: the mean mesh stiffness .* is 0.469 x ISO 6336-1's c_gamma_alpha.*r_f/r_bore = 7 for pinion.bore_diameter" -- \
+  "$bin" kinematics --summary --set pinion.bore_diameter=23.5714mm --set wheel.bore_diameter=23.5714mm
+solid_out="$("$bin" kinematics --summary --csv --set pinion.bore_diameter=0 --set wheel.bore_diameter=0 2>&1)"
+grep -q "warning" <<<"$solid_out" && { echo "FAIL stiffness-solid-not-warned"; fail=1; } || echo "ok   stiffness-solid-not-warned"
+check stiffness-band-run 0 "warning: the mean mesh stiffness .* x ISO 6336-1's c_gamma_alpha" -- \
+  "$bin" run gears/m6z30-dry.toml --set load_sharing=stiffness --set pinion.bore_diameter=10mm --positions 5 -o "$tmp/k.h5" -q
 check kinematics-bad-point 2 "unknown point 'F'" -- "$bin" kinematics --points A,F
 check kinematics-bad-sharing 2 "" -- "$bin" kinematics --load-sharing equal
 
