@@ -174,6 +174,13 @@ rm -rf "$tmp/w" && mkdir -p "$tmp/w/gears" && cp -r materials lubricants "$tmp/w
 sed 's#^oil_temperature = "70 degC"#oil_temperature = "130 degC"#' gears/m6z30.toml > "$tmp/w/gears/m6z30.toml"
 check lub-warm-oil-warned 0 "warning: key 'operating.oil_temperature': 130.0 degC lies outside" -- \
   "$bin" run "$tmp/w/gears/m6z30.toml" -o "$tmp/w/out.h5" -q
+# A run requires only what it uses: no cylinder asperity (asperity.cylinder.tip_radius); the
+# multi-asperity study, which uses it, still requires it at its key.
+rm -rf "$tmp/nocyl" && mkdir -p "$tmp/nocyl/gears" && cp -r materials lubricants "$tmp/nocyl/"
+sed '/^tip_radius = /d' gears/m6z30-dry.toml > "$tmp/nocyl/gears/dry.toml"
+check run-without-cylinder 0 "wrote" -- "$bin" run "$tmp/nocyl/gears/dry.toml" --positions 5 -o "$tmp/nocyl/o.h5" -q
+check multi-needs-cylinder 2 "dry.toml:[0-9]+: key 'asperity.cylinder.tip_radius': missing required key" -- \
+  "$bin" multi-asperity --case "$tmp/nocyl/gears/dry.toml" --layout H --elements 2048
 # A dry run needs no lubricant: the seed's dry scene has no [lubricant] and writes no /lubrication.
 check dry-no-lubricant 0 "wrote" -- "$bin" run gears/m6z30-dry.toml -o "$tmp/dry.h5" -q
 

@@ -254,7 +254,8 @@ TEST_F(BadInput, MeasuredFlankErrorsNameTheFile) {
 }
 
 // The parameter table: a kinematics-only case needs no friction, flank roughness or cylinder
-// radius; a run (all parts) still requires them, at the key that is missing.
+// radius; a run (the mesh cycle's parts, the default) requires the friction but not the cylinder
+// radius it never uses; the cylinder studies (all parts) require it, at the key that is missing.
 TEST_F(BadInput, PartsRequireOnlyTheKeysTheyUse) {
   edit("gears/m6z30.toml", "[friction]\nmu = 0.1", "[friction]");
   edit("gears/m6z30.toml", "tip_radius = \"6.6 um\"", "");
@@ -264,6 +265,7 @@ TEST_F(BadInput, PartsRequireOnlyTheKeysTheyUse) {
   const io::InputError e = load_error();
   EXPECT_EQ(e.key(), "friction.mu");
   EXPECT_NE(e.rule().find("missing required key"), std::string::npos) << e.rule();
+  EXPECT_EQ(io::load_case(dir_ / "gears/m6z30.toml", {{"mu", "0.1"}}).asperity.cylinder_tip_radius, 0.0);
   try {
     io::load_case(dir_ / "gears/m6z30.toml", {{"mu", "0.1"}}, io::kAllParts);
     ADD_FAILURE() << "no InputError for the cylinder radius";

@@ -26,6 +26,10 @@ enum CasePart : unsigned {
   kCylinderPart = 8u,   // the cylinder asperity of the multi-asperity and FEM studies
   kAllParts = 15u,
 };
+// What the mesh cycle uses (`geartrib run`, `sweep`, `tradeoff`, the Python module): every part
+// but the cylinder asperity, which only the multi-asperity and FEM studies (and `geartrib asperity
+// --summary`) ask for. The default of the case loaders.
+inline constexpr unsigned kMeshCycleParts = kGeometryPart | kRoughnessPart | kFrictionPart;
 
 enum class ParameterKind {
   quantity,  // a number with a unit of its dimension, or a bare SI number
