@@ -145,6 +145,9 @@ bad_case wrong-type gears/m6z30.toml '0,/teeth = 30/s//teeth = "thirty"/' \
   "m6z30.toml:[0-9]+: key 'pinion.teeth' = \"thirty\": expected an integer"
 bad_case missing-key gears/m6z30.toml '/^face_width/d' \
   "m6z30.toml:[0-9]+: key 'gear_pair.face_width': missing required key"
+# A flank's summit radius has no default: the error gives the rule for choosing it.
+bad_case missing-summit-radius gears/m6z30.toml '0,/^summit_radius = /{/^summit_radius = /d}' \
+  "m6z30.toml:[0-9]+: key 'pinion.flank.summit_radius': missing required key \\(Mean summit radius .*required with ra, rq or summit_density.*geartrib surface stats FILE.*McCool's beta = 0.375 sqrt\\(pi/m4\\)"
 bad_case contact-ratio gears/m6z30.toml 's/^tip_shortening = 0.0/tip_shortening = 0.6/' \
   "m6z30.toml:[0-9]+: key 'gear_pair.addendum_coefficient'.*contact ratio 0.[0-9]+ is below 1"
 bad_case tip-interference gears/m6z30.toml '0,/teeth = 30/s//teeth = 8/; 0,/bore_diameter = "60 mm"/s//bore_diameter = "10 mm"/' \

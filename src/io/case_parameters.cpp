@@ -282,7 +282,13 @@ std::vector<Parameter> build_table() {
       .plausible(0.1 * kUm, 10.0 * kMm)
       .no_default()
       .alias({"summit_radius"})
-      .doc("Mean summit radius beta (forms ra, rq, summits; a measured flank's overrides the measured one)");
+      .doc(
+          "Mean summit radius beta of the flank's asperities: required with ra, rq or summit_density + summit_sigma, "
+          "no default (it sets the plasticity index and depends on the finish and the sampling interval). Measured: "
+          "`geartrib surface stats FILE` (summit_radius_m, mccool_summit_radius_m); from a profile, McCool's beta = "
+          "0.375 sqrt(pi/m4) with m4 = bandwidth x (rms slope)^4/Rq^2 (Rq 0.4 um, slope 0.05, bandwidth 5: 48 um). "
+          "Typical: ground flanks tens of um; the thesis's hobbed, run-in flanks 1.65 and 1.75 um. Given with a "
+          "measured flank, it overrides the measured radius");
   auto topo = [gear](auto& c, int g) -> auto& { return gear(c, g).flank.topography; };
   // A measured flank: the rows fill the topography spec (created on first use).
   auto topo_spec = [topo](Case& c, int g) -> TopographySpec& {
