@@ -190,9 +190,25 @@ TEST(ToothStiffness, WarnsBeyondTheIsoBand) {
   EXPECT_NE(w.find("0.469 x ISO 6336-1's c_gamma_alpha"), std::string::npos) << w;
   EXPECT_NE(w.find("r_f/r_bore = 7 for pinion.bore_diameter, 7 for wheel.bore_diameter"), std::string::npos) << w;
   for (double edge : {kIsoStiffnessBand, 1.0 / kIsoStiffnessBand}) {
-    k.ratio = edge;
+    k.full_load_ratio = edge;
     EXPECT_TRUE(iso_stiffness_warning(mesh, k).empty()) << edge;
-    k.ratio = edge * (edge > 1.0 ? 1.001 : 0.999);
+    k.full_load_ratio = edge * (edge > 1.0 ? 1.001 : 0.999);
     EXPECT_FALSE(iso_stiffness_warning(mesh, k).empty()) << edge;
   }
+}
+
+// Below 100 N/mm ISO scales c' down with the load (real teeth's deviations); the model of perfect
+// involutes does not: the band is checked against ISO at full load. At 10 N m (1.4 N/mm) the
+// seed pair is 63 times the load-scaled c_gamma_alpha b and unchanged against full load.
+TEST(ToothStiffness, IsoBandAtFullLoad) {
+  Case light = test::seed_case();
+  light.operating.pinion_torque = 10.0;
+  const GearMesh heavy_mesh(test::seed_case()), light_mesh(light);
+  const IsoStiffnessComparison heavy = heavy_mesh.iso_comparison(64), k = light_mesh.iso_comparison(64);
+  EXPECT_GT(heavy_mesh.tangential_line_load(), kIsoFullLineLoad);  // 139 N/mm: ISO unscaled
+  EXPECT_EQ(heavy.ratio, heavy.full_load_ratio);
+  // The load enters neither the model nor ISO at full load: the same ratio, to rounding.
+  EXPECT_NEAR(k.full_load_ratio / heavy.full_load_ratio, 1.0, 1e-12);
+  EXPECT_NEAR(k.ratio / k.full_load_ratio, kIsoFullLineLoad / light_mesh.tangential_line_load(), 1e-9);
+  EXPECT_TRUE(iso_stiffness_warning(light_mesh, k).empty());
 }

@@ -18,8 +18,12 @@ namespace geartrib::gear {
 // (method B, solid steel gears) at the case's load.
 struct IsoStiffnessComparison {
   MeshStiffnessStats model;  // [N/m]
-  IsoMeshStiffness iso;      // per unit face width
+  IsoMeshStiffness iso;      // per unit face width, at the case's line load
   double ratio = 0.0;        // model.mean / (iso.mesh b)
+  // The same against ISO at full load (kIsoFullLineLoad or more): the band is checked on this. The
+  // model has perfect involutes, no light-load term: below 100 N/mm ISO's c' falls with the load
+  // and any model of perfect teeth leaves it, whatever the bodies.
+  double full_load_ratio = 0.0;
 };
 
 // How far either way the mean mesh stiffness may lie from ISO's c_gamma_alpha b before a run
