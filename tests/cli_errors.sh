@@ -148,6 +148,18 @@ bad_case missing-key gears/m6z30.toml '/^face_width/d' \
 # A flank's summit radius has no default: the error gives the rule for choosing it.
 bad_case missing-summit-radius gears/m6z30.toml '0,/^summit_radius = /{/^summit_radius = /d}' \
   "m6z30.toml:[0-9]+: key 'pinion.flank.summit_radius': missing required key \\(Mean summit radius .*required with ra, rq or summit_density.*geartrib surface stats FILE.*McCool's beta = 0.375 sqrt\\(pi/m4\\)"
+# A bare number is SI: module = 4.5 is 4.5 m. Implausible as SI but plausible in another unit, it is
+# refused at its own key, saying how it was read and what was meant (before any geometry error).
+bad_case bare-module gears/m6z30.toml 's/module = "6 mm"/module = 4.5/' \
+  "m6z30.toml:[0-9]+: key 'gear_pair.module' = 4.5: read as 4.5 m \\(a bare number is SI\\), above the plausible band \\[5e-05 m, 0.1 m\\] of a spur gear: did you mean \"4.5 mm\"\\?"
+check bare-pressure-angle 2 "m6z30.toml \\(--set gear_pair.pressure_angle=20\\): key 'gear_pair.pressure_angle' = 20: read as 20 rad .*did you mean \"20 deg\"" -- \
+  "$bin" run --set pressure_angle=20 -o "$tmp/bare.h5" -q
+check bare-module-fzg 2 "fzg-c.toml \\(--set gear_pair.module=4.5\\): key 'gear_pair.module' = 4.5: read as 4.5 m" -- \
+  "$bin" run validation/fzg-type-c/fzg-c.toml --set module=4.5 -o "$tmp/bare.h5" -q
+[[ ! -e "$tmp/bare.h5" ]] && echo "ok   bare-nothing-written" || { echo "FAIL bare.h5 written"; fail=1; }
+# With its unit the value is read; an impossible pair from it is blamed on it first.
+check implausible-module-geometry 2 "key 'gear_pair.module' = \"4.5 m\": above the plausible band .* the pair it gives cannot exist: centre distance too small.*\\(key 'gear_pair.center_distance'\\)" -- \
+  "$bin" kinematics validation/fzg-type-c/fzg-c.toml --set "module=4.5 m"
 bad_case contact-ratio gears/m6z30.toml 's/^tip_shortening = 0.0/tip_shortening = 0.6/' \
   "m6z30.toml:[0-9]+: key 'gear_pair.addendum_coefficient'.*contact ratio 0.[0-9]+ is below 1"
 bad_case tip-interference gears/m6z30.toml '0,/teeth = 30/s//teeth = 8/; 0,/bore_diameter = "60 mm"/s//bore_diameter = "10 mm"/' \

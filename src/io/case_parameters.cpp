@@ -872,6 +872,31 @@ std::string implausible_text(const Parameter& p, double v) {
                      v < p.plausible_min ? "below" : "above", p.plausible_text(), p.range_text());
 }
 
+std::string bare_number_rule(const Parameter& p, double bare) {
+  const bool banded = std::isfinite(p.plausible_min) || std::isfinite(p.plausible_max);
+  if (p.kind != ParameterKind::quantity || !banded || !std::isfinite(bare)) return "";
+  if (p.in_range(bare) && p.plausible(bare)) return "";
+  std::string meant;
+  std::vector<double> factors;
+  for (const UnitScale& u : units_of(p.dimension)) {
+    if (u.to_si == 1.0 && u.offset == 0.0) continue;  // the SI unit's spellings: the reading itself
+    if (std::find(factors.begin(), factors.end(), u.to_si) != factors.end()) continue;  // um and µm
+    const double si = bare * u.to_si + u.offset;
+    if (!p.in_range(si) || !p.plausible(si)) continue;
+    factors.push_back(u.to_si);
+    meant += fmt::format("{}\"{:g} {}\"", meant.empty() ? "" : " or ", bare, u.symbol);
+  }
+  if (meant.empty()) return "";
+  const std::string si = fmt::format("{:g} {}", bare, si_symbol(p.dimension));
+  const std::string where = !p.in_range(bare)
+                                ? "outside the range " + p.range_text()
+                                : fmt::format("{} the plausible band {} of a spur gear",
+                                              bare < p.plausible_min ? "below" : "above", p.plausible_text());
+  // Inside the range the SI reading may be meant: it is read when its unit is given.
+  return fmt::format("read as {} (a bare number is SI), {}: did you mean {}? Give the unit{}", si, where, meant,
+                     p.in_range(bare) ? fmt::format(" (\"{}\" if that is meant)", si) : std::string());
+}
+
 std::string Parameter::key_for(int gear) const {
   if (!per_gear()) return key;
   return kGearPrefix[gear] + key.substr(std::string_view("{gear}.").size());
@@ -949,6 +974,8 @@ std::string parameter_text_error(const Parameter& p, const std::string& text) {
       } catch (const std::invalid_argument& e) {
         return e.what();
       }
+      if (const auto any = parse_any_quantity(text); any && any->dimension == Dimension::dimensionless)
+        if (std::string rule = bare_number_rule(p, v); !rule.empty()) return rule;
       break;
     case ParameterKind::number:
     case ParameterKind::integer: {
@@ -1004,7 +1031,9 @@ std::string case_schema_markdown() {
       "A value outside its range is refused (exit 2, naming the file, line or --set, and the key); ranges are\n"
       "checked in SI, after the unit is applied, and a value must be finite. A gear value inside its range but\n"
       "outside the plausible band of a spur gear (a 6 m module, 1e6 rpm) is read and warned about, naming the\n"
-      "key. Units, limits and the bands' sources: [units.md](units.md#ranges-and-plausible-bands).\n\n";
+      "key; given as a bare number that another unit would make plausible (module = 4.5, read as 4.5 m), it\n"
+      "is refused, naming the unit probably meant. Units, limits and the bands' sources:\n"
+      "[units.md](units.md#ranges-and-plausible-bands).\n\n";
   out += "|";
   for (const char* h : kSchemaHeader) out += std::string(" ") + h + " |";
   out += "\n|";

@@ -103,6 +103,15 @@ bool TomlReader::is_string(std::string_view key) const {
   return n && n->is_string();
 }
 
+bool TomlReader::is_bare_number(std::string_view key) const {
+  const toml::node* n = find(key);
+  if (!n) return false;
+  if (n->is_integer() || n->is_floating_point()) return true;
+  if (!n->is_string()) return false;
+  const auto any = parse_any_quantity(n->as_string()->get());
+  return any && any->dimension == Dimension::dimensionless;
+}
+
 int TomlReader::line_of(std::string_view key) const {
   // The key's own line, else the nearest enclosing table that exists.
   std::string k(key);

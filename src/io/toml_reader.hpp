@@ -45,6 +45,9 @@ class TomlReader {
   // Whether the key was given (or removed) by a command-line change.
   bool changed(std::string_view key) const { return changed_.contains(key); }
   bool is_string(std::string_view key) const;
+  // Whether the key's value is a bare number: a TOML number, or a string holding a number
+  // without a unit ("4.5"; a --set value typed 4.5 is a TOML number).
+  bool is_bare_number(std::string_view key) const;
   // A quantity with a unit ("6 mm") or a bare SI number; required unless a fallback is given.
   double quantity(std::string_view key, Dimension d, std::optional<double> fallback = std::nullopt);
   std::vector<double> quantity_array(std::string_view key, Dimension d);

@@ -165,6 +165,13 @@ std::string allowed_units(Dimension d) {
   return out;
 }
 
+std::vector<UnitScale> units_of(Dimension d) {
+  std::vector<UnitScale> out;
+  for (const auto& u : kUnits)
+    if (u.dimension == d) out.push_back({u.symbol, u.to_si, u.offset});
+  return out;
+}
+
 double unit_factor(std::string_view unit, Dimension d) {
   for (const auto& u : kUnits) {
     if (u.symbol != unit) continue;
