@@ -238,6 +238,19 @@ done
 check det-measured-trace 0 "wrote" -- "$bin" run "$tmp/trace/case-14.toml" --positions 21 -o "$tmp/trace/o.h5" -q
 check det-measured-trace-short 2 "case-5.toml:[0-9]+: key 'pinion.flank.topography.file' = trace-5.csv: its profile along x is 4.999 mm long; the deterministic contact reads 11.3 mm" -- \
   "$bin" run "$tmp/trace/case-5.toml" --positions 21 -o "$tmp/trace/bad.h5" -q
+# A measured patch with a missing point on the line the deterministic fidelity would roll: a
+# statistical run reads its summits and never that line (runs); the deterministic run names the
+# line and the keys that mend it.
+rm -rf "$tmp/holes" && mkdir -p "$tmp/holes"
+awk 'BEGIN { printf "# units: um\n# spacing: 0.5 um\n"; for (j = 0; j < 256; j++) { for (i = 0; i < 256; i++)
+  printf "%s%s", (i ? "," : ""), (j == 128 && i == 100) ? "NaN" : sprintf("%.4f", 0.5 * sin(i * 0.31 + j * 0.07) + 0.4 * sin(i * 0.13 - j * 0.29 + 1) + 0.2 * sin(i * 1.7 + j * 2.3));
+  printf "\n" } }' > "$tmp/holes/patch.csv"
+sed -e 's#"surfaces/[a-z]*-flank.h5"#"patch.csv"#' -e 's#^fill = true#fill = false#' -e "s#\"\.\./materials/#\"$PWD/materials/#" \
+  gears/m6z30-measured.toml > "$tmp/holes/case.toml"
+check holes-statistical 0 "wrote" -- "$bin" run "$tmp/holes/case.toml" --positions 5 -o "$tmp/holes/o.h5" -q
+check holes-deterministic 2 "case.toml:[0-9]+: key 'pinion.flank.topography.file' = \"patch.csv\": .*patch.csv: the line the deterministic fidelity rolls along x: row 128 \\(y = 6.4e-05 m\\) has 1 missing point\\(s\\).*pinion.flank.topography.fill = true fills missing points" -- \
+  "$bin" run "$tmp/holes/case.toml" --fidelity deterministic --positions 5 -o "$tmp/holes/d.h5" -q
+[[ ! -e "$tmp/holes/d.h5" ]] && echo "ok   holes-nothing-written" || { echo "FAIL holes d.h5 written"; fail=1; }
 # The lightest load: elastic, a finite answer (the capped bracket cannot resolve it; the elastic solve can).
 check det-light-load 0 "wrote" -- "$bin" run gears/m6z30-deterministic.toml --set torque=1e-6Nm --positions 11 -o "$tmp/det-light.h5" -q || { echo "FAIL det-bad.h5 written"; fail=1; }
 

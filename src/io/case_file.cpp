@@ -314,12 +314,22 @@ void read_flank(TomlReader& r, Case& c, int gear) {
     const LoadedSurface loaded = load_surface(path, read, spec.clean);
     for (const auto& w : loaded.warnings) c.warnings.push_back(w);  // units implausible for a flank
     const surface::HeightGrid& grid = loaded.grid;
-    try {  // the line along the involute the deterministic fidelity rolls
-      g.flank.measured_profile = surface::profile_from_grid(grid, spec.profile_along_x, spec.profile_at);
-    } catch (const std::invalid_argument& e) {
-      r.fail(t + "file", path.string() + ": its profile along " + (spec.profile_along_x ? "x" : "y") + ": " + e.what());
+    const bool trace = grid.nx < 3 || grid.ny < 3;
+    // The line along the involute: what the deterministic fidelity rolls, and a profile trace's
+    // roughness. A statistical run of an areal surface takes its summits only, not this line.
+    if (trace || c.contact.deterministic()) {
+      try {
+        g.flank.measured_profile = surface::profile_from_grid(grid, spec.profile_along_x, spec.profile_at);
+      } catch (const std::invalid_argument& e) {
+        r.fail(t + "file", fmt::format("{}: {} along {}: {}{}", path.string(),
+                                       trace ? "the profile trace" : "the line the deterministic fidelity rolls",
+                                       spec.profile_along_x ? "x" : "y", e.what(),
+                                       trace ? ""
+                                             : " (" + t + "fill = true fills missing points; " + t +
+                                                   "profile_axis and " + t + "profile_at choose the line)"));
+      }
     }
-    if (grid.nx < 3 || grid.ny < 3) {
+    if (trace) {
       // A profile trace (a stylus's line along the involute): its spectral moments give the
       // roughness (McCool's summits), as for a generated profile.
       if (r.has(f + "summit_radius"))
