@@ -119,6 +119,10 @@ check surface-bad-outliers 2 "outlier limit" -- "$bin" surface stats "$tmp/a.h5"
 check case-listing 0 "^gear_pair.module +0.005 m +--set" -- "$bin" case --set module=5mm
 check case-schema 0 "^key,kind,SI unit,default,range,required by,aliases,meaning" -- "$bin" case --schema
 check case-bad-set 2 "key 'contact.positions'" -- "$bin" case --set positions=1
+# A --set list may be typed with bare words; a string where the list belongs says how to write it.
+check set-bare-list 0 "^contact.outputs +\\[real_area, plastic_fraction\\] +--set" -- "$bin" case --set 'contact.outputs=[real_area, plastic_fraction]'
+check set-list-as-string 2 "\\(--set contact.outputs=real_area\\): key 'contact.outputs' = \"real_area\": expected an array of strings, written \\[\"a\", \"b\"\\] in a case file; --set takes the same or bare words: KEY=\\[a, b\\]" -- \
+  "$bin" run --set contact.outputs=real_area -o "$tmp/list.h5" -q
 check unknown-model 2 "unknown asperity model 'nope'" -- "$bin" asperity --model nope
 check bad-range 2 "MIN:MAX:COUNT" -- "$bin" asperity --range 1:0:5
 check bad-contact 2 "" -- "$bin" asperity --contact sideways

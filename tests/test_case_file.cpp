@@ -490,6 +490,31 @@ TEST(CaseLimits, BareNumbersAUnitWouldMakePlausibleAreRefused) {
   EXPECT_EQ(io::parameter_text_error(module, "0.004"), "");
 }
 
+// A --set list may be typed without TOML's quotes: [real_area, plastic_fraction] is the array of
+// those strings (each item a TOML value when it is one); quoted, the same. A string where the
+// list is expected says how to write one.
+TEST(CaseParameters, SetListsTakeBareWords) {
+  const auto path = test::source_dir() / "gears/m6z30.toml";
+  for (const char* typed : {"[real_area, plastic_fraction]", "[\"real_area\", \"plastic_fraction\"]",
+                            " [ real_area ,plastic_fraction ] ", "[real_area, \"plastic_fraction\"]"}) {
+    const Case c = io::load_case(path, {{"contact.outputs", typed}});
+    EXPECT_TRUE(c.contact.real_area) << typed;
+    EXPECT_TRUE(c.contact.plastic_fraction) << typed;
+    EXPECT_FALSE(c.contact.asperity_stress) << typed;
+  }
+  io::InputError e = change_error({{"contact.outputs", "[real_area, nope]"}});
+  EXPECT_EQ(e.key(), "contact.outputs");
+  EXPECT_NE(e.rule().find("unknown entry 'nope'"), std::string::npos) << e.rule();
+  e = change_error({{"contact.outputs", "real_area"}});
+  EXPECT_NE(e.rule().find("expected an array of strings, written [\"a\", \"b\"] in a case file; --set takes the "
+                          "same or bare words: KEY=[a, b]"),
+            std::string::npos)
+      << e.rule();
+  // An empty item is no list: the text stays a string, refused as above.
+  EXPECT_NE(change_error({{"contact.outputs", "[real_area,,plastic_fraction]"}}).rule().find("expected an array"),
+            std::string::npos);
+}
+
 // An impossible pair built from an implausible geometry value is refused at that value, naming
 // the geometry's own complaint after it (was: only the centre distance was blamed).
 TEST(CaseLimits, ImplausibleGeometryIsBlamedBeforeThePairItGives) {

@@ -29,8 +29,9 @@ class TomlReader {
   TomlReader(std::string text, const std::filesystem::path& name, const std::filesystem::path& directory = {});
 
   // Command-line changes, applied before reading: `set` gives a dotted key a value typed as on
-  // the command line (TOML syntax if it parses as a TOML value: 30, 0.1, true, "x"; otherwise the
-  // text as a string: 4mm, kogut-etsion), creating tables as needed; `erase` removes a key.
+  // the command line (TOML syntax if it parses as a TOML value: 30, 0.1, true, "x"; a bracketed
+  // list of bare words as an array of them: [real_area, plastic_fraction]; otherwise the text as a
+  // string: 4mm, kogut-etsion), creating tables as needed; `erase` removes a key.
   // Errors about a changed key name "--set key=value" instead of a line.
   void set(std::string_view key, const std::string& value_text);
   void erase(std::string_view key);
