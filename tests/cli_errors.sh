@@ -114,6 +114,18 @@ with h5py.File(sys.argv[1], "w") as f: f["z"] = numpy.zeros((4, 4))
 PY
 check surface-bad-outliers 2 "outlier limit" -- "$bin" surface stats "$tmp/a.h5" --outliers 1
 
+# What users read names no section of the thesis or internal errata ("seed section 5"): the help of
+# every command, the schema (the missing-key errors quote its meanings), the summaries, the citations.
+seed_refs=""
+for args in "--help" "run --help" "sweep --help" "tradeoff --help" "kinematics --help" "dynamics --help" \
+            "asperity --help" "asperity --summary" "asperity --constants --model continuous" "multi-asperity --help" \
+            "surface --help" "surface asperities --help" "surface generate --help" "fem --help" \
+            "fem single-asperity --help" "fem three-cylinders --help" "fit --help" "case --help" "case --schema"; do
+  # shellcheck disable=SC2086
+  if "$bin" $args 2>&1 | grep -qiE "seed section|seed sections|seed's|\\(seed\\b|errata"; then seed_refs+=" [$args]"; fi
+done
+[[ -z "$seed_refs" ]] && echo "ok   no-seed-references" || { echo "FAIL seed references in:$seed_refs"; fail=1; }
+
 # Bad input: exit 2 with a message naming what is wrong.
 # The case as it would run, and the parameter table.
 check case-listing 0 "^gear_pair.module +0.005 m +--set" -- "$bin" case --set module=5mm

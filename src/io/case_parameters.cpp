@@ -504,8 +504,8 @@ std::vector<Parameter> build_table() {
       .required(kFrictionPart)
       .alias({"mu"})
       .doc(
-          "Coulomb friction coefficient of the asperity contacts: side contact (seed section 4) and the "
-          "boundary coefficient of a lubricated run");
+          "Coulomb friction coefficient of the asperity contacts: the side contact of sliding summits (contact "
+          "normal tilted by atan(mu)) and the boundary coefficient of a lubricated run");
 
   // [mesh]
   add(text(
@@ -750,7 +750,9 @@ std::vector<Parameter> build_table() {
           [](auto& c, int) -> auto& { return c.asperity.cylinder_tip_radius; }))
       .range(1e-9, 1.0)
       .required(kCylinderPart)
-      .doc("Tip radius R_m of the cylinder asperity (seed section 5)");
+      .doc(
+          "Tip radius R_m of the parabolic-cylinder asperities (a hobbed flank's ridges) of the multi-asperity and "
+          "FEM studies; geartrib surface asperities --cylinders measures it");
   add(number(
           "asperity.cylinder.yield_constant", [](auto& c, int) -> auto& { return c.asperity.cylinder_yield_constant; }))
       .range(0.5, 5.0, true, true)
