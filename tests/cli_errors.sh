@@ -31,6 +31,15 @@ for key in center_distance_m operating_pressure_angle_rad base_pitch_m length_of
   check "summary-$key" 0 "^$key," -- "$bin" kinematics --summary --csv
 done
 check kinematics-positions 0 "^10," -- "$bin" kinematics --positions 11 --load-sharing stiffness --csv
+# The mesh stiffness beyond a factor 1.5 of ISO's c_gamma_alpha is warned, naming the bores: bores at
+# the fillet-foundation fit's end (r_f/r_bore = 7) give 0.469 of ISO; solid bodies (a shaft seat
+# at r_f/3) lie within the band.
+check stiffness-band-warned 0 "warning: the mean mesh stiffness .* is 0.469 x ISO 6336-1's c_gamma_alpha.*r_f/r_bore = 7 for pinion.bore_diameter" -- \
+  "$bin" kinematics --summary --set pinion.bore_diameter=23.5714mm --set wheel.bore_diameter=23.5714mm
+solid_out="$("$bin" kinematics --summary --csv --set pinion.bore_diameter=0 --set wheel.bore_diameter=0 2>&1)"
+grep -q "warning" <<<"$solid_out" && { echo "FAIL stiffness-solid-not-warned"; fail=1; } || echo "ok   stiffness-solid-not-warned"
+check stiffness-band-run 0 "warning: the mean mesh stiffness .* x ISO 6336-1's c_gamma_alpha" -- \
+  "$bin" run gears/m6z30-dry.toml --set load_sharing=stiffness --set pinion.bore_diameter=10mm --positions 5 -o "$tmp/k.h5" -q
 check kinematics-bad-point 2 "unknown point 'F'" -- "$bin" kinematics --points A,F
 check kinematics-bad-sharing 2 "" -- "$bin" kinematics --load-sharing equal
 
@@ -105,11 +114,27 @@ with h5py.File(sys.argv[1], "w") as f: f["z"] = numpy.zeros((4, 4))
 PY
 check surface-bad-outliers 2 "outlier limit" -- "$bin" surface stats "$tmp/a.h5" --outliers 1
 
+# What users read names no section of the thesis or internal errata ("seed section 5"): the help of
+# every command, the schema (the missing-key errors quote its meanings), the summaries, the citations.
+seed_refs=""
+for args in "--help" "run --help" "sweep --help" "tradeoff --help" "kinematics --help" "dynamics --help" \
+            "asperity --help" "asperity --summary" "asperity --constants --model continuous" "multi-asperity --help" \
+            "surface --help" "surface asperities --help" "surface generate --help" "fem --help" \
+            "fem single-asperity --help" "fem three-cylinders --help" "fit --help" "case --help" "case --schema"; do
+  # shellcheck disable=SC2086
+  if "$bin" $args 2>&1 | grep -qiE "seed section|seed sections|seed's|\\(seed\\b|errata"; then seed_refs+=" [$args]"; fi
+done
+[[ -z "$seed_refs" ]] && echo "ok   no-seed-references" || { echo "FAIL seed references in:$seed_refs"; fail=1; }
+
 # Bad input: exit 2 with a message naming what is wrong.
 # The case as it would run, and the parameter table.
 check case-listing 0 "^gear_pair.module +0.005 m +--set" -- "$bin" case --set module=5mm
 check case-schema 0 "^key,kind,SI unit,default,range,required by,aliases,meaning" -- "$bin" case --schema
 check case-bad-set 2 "key 'contact.positions'" -- "$bin" case --set positions=1
+# A --set list may be typed with bare words; a string where the list belongs says how to write it.
+check set-bare-list 0 "^contact.outputs +\\[real_area, plastic_fraction\\] +--set" -- "$bin" case --set 'contact.outputs=[real_area, plastic_fraction]'
+check set-list-as-string 2 "\\(--set contact.outputs=real_area\\): key 'contact.outputs' = \"real_area\": expected an array of strings, written \\[\"a\", \"b\"\\] in a case file; --set takes the same or bare words: KEY=\\[a, b\\]" -- \
+  "$bin" run --set contact.outputs=real_area -o "$tmp/list.h5" -q
 check unknown-model 2 "unknown asperity model 'nope'" -- "$bin" asperity --model nope
 check bad-range 2 "MIN:MAX:COUNT" -- "$bin" asperity --range 1:0:5
 check bad-contact 2 "" -- "$bin" asperity --contact sideways
@@ -136,6 +161,21 @@ bad_case wrong-type gears/m6z30.toml '0,/teeth = 30/s//teeth = "thirty"/' \
   "m6z30.toml:[0-9]+: key 'pinion.teeth' = \"thirty\": expected an integer"
 bad_case missing-key gears/m6z30.toml '/^face_width/d' \
   "m6z30.toml:[0-9]+: key 'gear_pair.face_width': missing required key"
+# A flank's summit radius has no default: the error gives the rule for choosing it.
+bad_case missing-summit-radius gears/m6z30.toml '0,/^summit_radius = /{/^summit_radius = /d}' \
+  "m6z30.toml:[0-9]+: key 'pinion.flank.summit_radius': missing required key \\(Mean summit radius .*required with ra, rq or summit_density.*geartrib surface stats FILE.*McCool's beta = 0.375 sqrt\\(pi/m4\\)"
+# A bare number is SI: module = 4.5 is 4.5 m. Implausible as SI but plausible in another unit, it is
+# refused at its own key, saying how it was read and what was meant (before any geometry error).
+bad_case bare-module gears/m6z30.toml 's/module = "6 mm"/module = 4.5/' \
+  "m6z30.toml:[0-9]+: key 'gear_pair.module' = 4.5: read as 4.5 m \\(a bare number is SI\\), above the plausible band \\[5e-05 m, 0.1 m\\] of a spur gear: did you mean \"4.5 mm\"\\?"
+check bare-pressure-angle 2 "m6z30.toml \\(--set gear_pair.pressure_angle=20\\): key 'gear_pair.pressure_angle' = 20: read as 20 rad .*did you mean \"20 deg\"" -- \
+  "$bin" run --set pressure_angle=20 -o "$tmp/bare.h5" -q
+check bare-module-fzg 2 "fzg-c.toml \\(--set gear_pair.module=4.5\\): key 'gear_pair.module' = 4.5: read as 4.5 m" -- \
+  "$bin" run validation/fzg-type-c/fzg-c.toml --set module=4.5 -o "$tmp/bare.h5" -q
+[[ ! -e "$tmp/bare.h5" ]] && echo "ok   bare-nothing-written" || { echo "FAIL bare.h5 written"; fail=1; }
+# With its unit the value is read; an impossible pair from it is blamed on it first.
+check implausible-module-geometry 2 "key 'gear_pair.module' = \"4.5 m\": above the plausible band .* the pair it gives cannot exist: centre distance too small.*\\(key 'gear_pair.center_distance'\\)" -- \
+  "$bin" kinematics validation/fzg-type-c/fzg-c.toml --set "module=4.5 m"
 bad_case contact-ratio gears/m6z30.toml 's/^tip_shortening = 0.0/tip_shortening = 0.6/' \
   "m6z30.toml:[0-9]+: key 'gear_pair.addendum_coefficient'.*contact ratio 0.[0-9]+ is below 1"
 bad_case tip-interference gears/m6z30.toml '0,/teeth = 30/s//teeth = 8/; 0,/bore_diameter = "60 mm"/s//bore_diameter = "10 mm"/' \
@@ -185,6 +225,13 @@ rm -rf "$tmp/w" && mkdir -p "$tmp/w/gears" && cp -r materials lubricants "$tmp/w
 sed 's#^oil_temperature = "70 degC"#oil_temperature = "130 degC"#' gears/m6z30.toml > "$tmp/w/gears/m6z30.toml"
 check lub-warm-oil-warned 0 "warning: key 'operating.oil_temperature': 130.0 degC lies outside" -- \
   "$bin" run "$tmp/w/gears/m6z30.toml" -o "$tmp/w/out.h5" -q
+# A run requires only what it uses: no cylinder asperity (asperity.cylinder.tip_radius); the
+# multi-asperity study, which uses it, still requires it at its key.
+rm -rf "$tmp/nocyl" && mkdir -p "$tmp/nocyl/gears" && cp -r materials lubricants "$tmp/nocyl/"
+sed '/^tip_radius = /d' gears/m6z30-dry.toml > "$tmp/nocyl/gears/dry.toml"
+check run-without-cylinder 0 "wrote" -- "$bin" run "$tmp/nocyl/gears/dry.toml" --positions 5 -o "$tmp/nocyl/o.h5" -q
+check multi-needs-cylinder 2 "dry.toml:[0-9]+: key 'asperity.cylinder.tip_radius': missing required key" -- \
+  "$bin" multi-asperity --case "$tmp/nocyl/gears/dry.toml" --layout H --elements 2048
 # A dry run needs no lubricant: the seed's dry scene has no [lubricant] and writes no /lubrication.
 check dry-no-lubricant 0 "wrote" -- "$bin" run gears/m6z30-dry.toml -o "$tmp/dry.h5" -q
 
@@ -227,6 +274,19 @@ done
 check det-measured-trace 0 "wrote" -- "$bin" run "$tmp/trace/case-14.toml" --positions 21 -o "$tmp/trace/o.h5" -q
 check det-measured-trace-short 2 "case-5.toml:[0-9]+: key 'pinion.flank.topography.file' = trace-5.csv: its profile along x is 4.999 mm long; the deterministic contact reads 11.3 mm" -- \
   "$bin" run "$tmp/trace/case-5.toml" --positions 21 -o "$tmp/trace/bad.h5" -q
+# A measured patch with a missing point on the line the deterministic fidelity would roll: a
+# statistical run reads its summits and never that line (runs); the deterministic run names the
+# line and the keys that mend it.
+rm -rf "$tmp/holes" && mkdir -p "$tmp/holes"
+awk 'BEGIN { printf "# units: um\n# spacing: 0.5 um\n"; for (j = 0; j < 256; j++) { for (i = 0; i < 256; i++)
+  printf "%s%s", (i ? "," : ""), (j == 128 && i == 100) ? "NaN" : sprintf("%.4f", 0.5 * sin(i * 0.31 + j * 0.07) + 0.4 * sin(i * 0.13 - j * 0.29 + 1) + 0.2 * sin(i * 1.7 + j * 2.3));
+  printf "\n" } }' > "$tmp/holes/patch.csv"
+sed -e 's#"surfaces/[a-z]*-flank.h5"#"patch.csv"#' -e 's#^fill = true#fill = false#' -e "s#\"\.\./materials/#\"$PWD/materials/#" \
+  gears/m6z30-measured.toml > "$tmp/holes/case.toml"
+check holes-statistical 0 "wrote" -- "$bin" run "$tmp/holes/case.toml" --positions 5 -o "$tmp/holes/o.h5" -q
+check holes-deterministic 2 "case.toml:[0-9]+: key 'pinion.flank.topography.file' = \"patch.csv\": .*patch.csv: the line the deterministic fidelity rolls along x: row 128 \\(y = 6.4e-05 m\\) has 1 missing point\\(s\\).*pinion.flank.topography.fill = true fills missing points" -- \
+  "$bin" run "$tmp/holes/case.toml" --fidelity deterministic --positions 5 -o "$tmp/holes/d.h5" -q
+[[ ! -e "$tmp/holes/d.h5" ]] && echo "ok   holes-nothing-written" || { echo "FAIL holes d.h5 written"; fail=1; }
 # The lightest load: elastic, a finite answer (the capped bracket cannot resolve it; the elastic solve can).
 check det-light-load 0 "wrote" -- "$bin" run gears/m6z30-deterministic.toml --set torque=1e-6Nm --positions 11 -o "$tmp/det-light.h5" -q || { echo "FAIL det-bad.h5 written"; fail=1; }
 

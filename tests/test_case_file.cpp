@@ -254,7 +254,8 @@ TEST_F(BadInput, MeasuredFlankErrorsNameTheFile) {
 }
 
 // The parameter table: a kinematics-only case needs no friction, flank roughness or cylinder
-// radius; a run (all parts) still requires them, at the key that is missing.
+// radius; a run (the mesh cycle's parts, the default) requires the friction but not the cylinder
+// radius it never uses; the cylinder studies (all parts) require it, at the key that is missing.
 TEST_F(BadInput, PartsRequireOnlyTheKeysTheyUse) {
   edit("gears/m6z30.toml", "[friction]\nmu = 0.1", "[friction]");
   edit("gears/m6z30.toml", "tip_radius = \"6.6 um\"", "");
@@ -264,6 +265,7 @@ TEST_F(BadInput, PartsRequireOnlyTheKeysTheyUse) {
   const io::InputError e = load_error();
   EXPECT_EQ(e.key(), "friction.mu");
   EXPECT_NE(e.rule().find("missing required key"), std::string::npos) << e.rule();
+  EXPECT_EQ(io::load_case(dir_ / "gears/m6z30.toml", {{"mu", "0.1"}}).asperity.cylinder_tip_radius, 0.0);
   try {
     io::load_case(dir_ / "gears/m6z30.toml", {{"mu", "0.1"}}, io::kAllParts);
     ADD_FAILURE() << "no InputError for the cylinder radius";
@@ -451,6 +453,89 @@ TEST(CaseLimits, ImplausibleGearValuesAreWarned) {
   EXPECT_TRUE(warned(io::load_case(path, {{"torque", "1.0001e7 N m"}}), "operating.pinion_torque"));
   EXPECT_FALSE(warned(io::load_case(path, {{"ra", "25 um"}}), "pinion.flank.ra"));
   EXPECT_TRUE(warned(io::load_case(path, {{"ra", "26 um"}}), "pinion.flank.ra"));
+}
+
+// A bare number is SI: one that is implausible (or out of range) as SI but plausible in another
+// unit of its dimension is refused at its key, saying how it was read and what was probably
+// meant, before any geometry built from it can blame another key. With its unit the SI value is
+// read (and warned about).
+TEST(CaseLimits, BareNumbersAUnitWouldMakePlausibleAreRefused) {
+  const auto path = test::source_dir() / "gears/m6z30.toml";
+  io::InputError e = change_error({{"module", "4.5"}});
+  EXPECT_EQ(e.key(), "gear_pair.module");
+  EXPECT_NE(e.rule().find("read as 4.5 m (a bare number is SI), above the plausible band"), std::string::npos)
+      << e.rule();
+  EXPECT_NE(e.rule().find("did you mean \"4.5 mm\"? Give the unit (\"4.5 m\" if that is meant)"), std::string::npos)
+      << e.rule();
+  EXPECT_TRUE(warned(io::load_case(path, solid({{"module", "4.5 m"}})), "gear_pair.module"));
+  // Out of range as SI: the unit probably meant (no "if that is meant": it would be refused).
+  e = change_error({{"pressure_angle", "20"}});
+  EXPECT_EQ(e.key(), "gear_pair.pressure_angle");
+  EXPECT_NE(e.rule().find("read as 20 rad (a bare number is SI), outside the range (0 rad, 0.785398 rad): did "
+                          "you mean \"20 deg\"? Give the unit"),
+            std::string::npos)
+      << e.rule();
+  EXPECT_EQ(e.rule().find("if that is meant"), std::string::npos) << e.rule();
+  // Every unit that fits, once each (um and µm are one).
+  e = change_error({{"summit_radius", "5"}});
+  EXPECT_NE(e.rule().find("did you mean \"5 mm\" or \"5 um\"?"), std::string::npos) << e.rule();
+  // A bare number plausible as SI is read; one no unit makes plausible is warned about, as before.
+  EXPECT_TRUE(io::load_case(path, {{"module", "0.006"}}).warnings.empty());
+  const Case heavy = io::load_case(path, {{"torque", "1e8"}});  // 1e8 kN m would be out of range
+  EXPECT_TRUE(warned(heavy, "operating.pinion_torque"));
+  // A sweep axis is checked the same way before any point runs.
+  const io::Parameter& module = *io::find_parameter("gear_pair.module").parameter;
+  EXPECT_NE(io::parameter_text_error(module, "4").find("did you mean \"4 mm\"?"), std::string::npos);
+  EXPECT_EQ(io::parameter_text_error(module, "4 m"), "");
+  EXPECT_EQ(io::parameter_text_error(module, "0.004"), "");
+}
+
+// A --set list may be typed without TOML's quotes: [real_area, plastic_fraction] is the array of
+// those strings (each item a TOML value when it is one); quoted, the same. A string where the
+// list is expected says how to write one.
+TEST(CaseParameters, SetListsTakeBareWords) {
+  const auto path = test::source_dir() / "gears/m6z30.toml";
+  for (const char* typed : {"[real_area, plastic_fraction]", "[\"real_area\", \"plastic_fraction\"]",
+                            " [ real_area ,plastic_fraction ] ", "[real_area, \"plastic_fraction\"]"}) {
+    const Case c = io::load_case(path, {{"contact.outputs", typed}});
+    EXPECT_TRUE(c.contact.real_area) << typed;
+    EXPECT_TRUE(c.contact.plastic_fraction) << typed;
+    EXPECT_FALSE(c.contact.asperity_stress) << typed;
+  }
+  io::InputError e = change_error({{"contact.outputs", "[real_area, nope]"}});
+  EXPECT_EQ(e.key(), "contact.outputs");
+  EXPECT_NE(e.rule().find("unknown entry 'nope'"), std::string::npos) << e.rule();
+  e = change_error({{"contact.outputs", "real_area"}});
+  EXPECT_NE(e.rule().find("expected an array of strings, written [\"a\", \"b\"] in a case file; --set takes the "
+                          "same or bare words: KEY=[a, b]"),
+            std::string::npos)
+      << e.rule();
+  // An empty item is no list: the text stays a string, refused as above.
+  EXPECT_NE(change_error({{"contact.outputs", "[real_area,,plastic_fraction]"}}).rule().find("expected an array"),
+            std::string::npos);
+}
+
+// An impossible pair built from an implausible geometry value is refused at that value, naming
+// the geometry's own complaint after it (was: only the centre distance was blamed).
+TEST(CaseLimits, ImplausibleGeometryIsBlamedBeforeThePairItGives) {
+  const auto fzg = test::source_dir() / "validation/fzg-type-c/fzg-c.toml";
+  try {
+    io::load_case(fzg, {{"module", "4.5 m"}});
+    ADD_FAILURE() << "no InputError";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.key(), "gear_pair.module");
+    EXPECT_NE(e.rule().find("above the plausible band"), std::string::npos) << e.rule();
+    EXPECT_NE(e.rule().find("the pair it gives cannot exist: centre distance too small"), std::string::npos)
+        << e.rule();
+    EXPECT_NE(e.rule().find("(key 'gear_pair.center_distance')"), std::string::npos) << e.rule();
+  }
+  // A plausible module with an impossible centre distance still blames the centre distance.
+  try {
+    io::load_case(fzg, {{"center_distance", "80 mm"}});
+    ADD_FAILURE() << "no InputError";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.key(), "gear_pair.center_distance");
+  }
 }
 
 // A vanishing bore (NaN fillet-foundation stiffness) is refused at the bore; 1/50 of the root

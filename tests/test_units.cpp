@@ -23,6 +23,22 @@ TEST(Units, ConvertsTheTableToSi) {
   EXPECT_DOUBLE_EQ(parse_quantity("  2.5e-3 ", Dimension::length), 2.5e-3);  // bare number is SI
 }
 
+// A speed in revolutions per minute has four spellings: rpm, 1/min (DIN and ISO 6336), rev/min,
+// r/min; all the same factor 2 pi/60, exactly.
+TEST(Units, RevolutionsPerMinuteSpellings) {
+  const double rpm = parse_quantity("1500 rpm", Dimension::angular_speed);
+  EXPECT_DOUBLE_EQ(rpm, 1500.0 * 2.0 * std::numbers::pi / 60.0);
+  for (const char* text : {"1500 1/min", "1500 rev/min", "1500 r/min", "1500rev/min", "1500r/min"})
+    EXPECT_EQ(parse_quantity(text, Dimension::angular_speed), rpm) << text;
+  // 1/min is a speed, not a length or a frequency of another kind; "15001/min" reads the digit
+  // into the number (the space is needed), leaving the unknown unit "/min".
+  EXPECT_THROW(parse_quantity("1500 1/min", Dimension::length), std::invalid_argument);
+  EXPECT_THROW(parse_quantity("15001/min", Dimension::angular_speed), std::invalid_argument);
+  const auto any = geartrib::io::parse_any_quantity("1500 1/min");
+  ASSERT_TRUE(any.has_value());
+  EXPECT_EQ(any->dimension, Dimension::angular_speed);
+}
+
 TEST(Units, RejectsUnknownUnitsWrongDimensionsAndGarbage) {
   EXPECT_THROW(parse_quantity("6 parsec", Dimension::length), std::invalid_argument);
   EXPECT_THROW(parse_quantity("6 MPa", Dimension::length), std::invalid_argument);

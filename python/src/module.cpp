@@ -58,7 +58,7 @@ struct CaseSource {
   std::optional<std::string> text;
   std::string name;
   std::string directory;
-  Case load(const std::vector<io::CaseChange>& changes, unsigned parts = io::kAllParts) const {
+  Case load(const std::vector<io::CaseChange>& changes, unsigned parts = io::kMeshCycleParts) const {
     return text ? io::load_case_text(*text, name, changes, parts, directory) : io::load_case(file, changes, parts);
   }
 };

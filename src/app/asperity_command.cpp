@@ -78,7 +78,7 @@ void print_summary(const Case& c, const asperity::AsperityModel& model, double m
   const HertzYieldPoint y = hertz_yield_point(p.poisson_ratio);
   const double a_c = hertz_contact_radius(crit.interference, p.radius);
   fmt::print("Case: {}\n", c.title);
-  fmt::print("Equivalent asperity (seed sections 1-2)\n");
+  fmt::print("Equivalent asperity (the two flanks' mean summits against a rigid flat)\n");
   fmt::print("  E_t      composite modulus           {:.5g} GPa\n", p.modulus / 1e9);
   fmt::print("  R        equivalent tip radius       {:.5g} um\n", p.radius * 1e6);
   fmt::print("  k        CEB pressure factor         {:.4g}\n", k);
@@ -99,7 +99,7 @@ void print_summary(const Case& c, const asperity::AsperityModel& model, double m
   const SideContactGeometry g =
       side_contact_geometry(c.pinion.flank.roughness.summit_radius, c.wheel.flank.roughness.summit_radius, mu);
   const ContactPair p0 = with_radius(p, g.radius_0);
-  fmt::print("Side contact, mu = {:.4g} (seed section 2.1; model {})\n", mu, model.name());
+  fmt::print("Side contact of sliding summits, mu = {:.4g} (model {})\n", mu, model.name());
   fmt::print("  theta    contact-normal tilt atan(mu) {:.4f} deg\n", g.theta * 180.0 / std::numbers::pi);
   fmt::print("  d        axis offset (R1+R2) mu       {:.4g} um; tip gap at touch {:.4g} um\n", g.axis_offset * 1e6,
              g.tip_gap * 1e6);
@@ -123,8 +123,8 @@ void print_summary(const Case& c, const asperity::AsperityModel& model, double m
   const LineCritical lc = line_critical(cyl);
   CylinderAsperity seed_c = cyl;
   seed_c.yield_constant = 1.64;
-  fmt::print("Cylinder asperity (seed section 5), R_m = {:.4g} um\n", cyl.tip_radius * 1e6);
-  fmt::print("  delta_pc (2 R_m s/E_t)[ln(2 E_t/s) - 1] C, C = {:.4g}: {:.4g} um (the seed prints 0.38 um",
+  fmt::print("Cylinder asperity (the multi-asperity and FEM studies), R_m = {:.4g} um\n", cyl.tip_radius * 1e6);
+  fmt::print("  delta_pc (2 R_m s/E_t)[ln(2 E_t/s) - 1] C, C = {:.4g}: {:.4g} um (the thesis prints 0.38 um",
              cyl.yield_constant, seed_critical_interference(cyl) * 1e6);
   if (cyl.yield_constant != 1.64)
     fmt::print("; its C = 1.64 gives {:.4g} um", seed_critical_interference(seed_c) * 1e6);

@@ -20,7 +20,8 @@ std::filesystem::path default_case_file();
 std::filesystem::path case_path(const CaseOptions& o);
 std::vector<io::CaseChange> case_changes(const CaseOptions& o);
 // Loads the case (the default one when the file is empty) with the command line's key=value
-// changes, requiring the keys of `parts` (io::CasePart), printing its warnings to stderr.
-Case load_case_reporting(const CaseOptions& o, unsigned parts = io::kAllParts);
+// changes, requiring the keys of `parts` (io::CasePart; default: what the mesh cycle uses),
+// printing its warnings to stderr.
+Case load_case_reporting(const CaseOptions& o, unsigned parts = io::kMeshCycleParts);
 
 }  // namespace geartrib::app

@@ -51,6 +51,9 @@ void run(const Options& o) {
   if (!o.rtol.empty()) co.changes.push_back("dynamics.relative_tolerance=" + o.rtol);
   const Case c = load_case_reporting(co, io::kGeometryPart);
   const gear::GearMesh mesh(c);
+  // The dynamics rest on the mesh stiffness: warned when it leaves ISO's band.
+  if (const std::string w = gear::iso_stiffness_warning(mesh, mesh.iso_comparison(c.mesh.positions)); !w.empty())
+    std::cerr << "warning: " << w << '\n';
   const gear::DynamicsSettings settings = gear::dynamics_settings(c);
   const std::string engine = c.dynamics.engine == "none" ? "cvode" : c.dynamics.engine;
   const auto integrator = solvers::make_integrator(engine);

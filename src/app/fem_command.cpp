@@ -300,9 +300,9 @@ void add_fem_command(CLI::App& app) {
   auto c = std::make_shared<CylinderOptions>();
   auto* cyl = cmd->add_subcommand(
       "three-cylinders",
-      "The seed's section 6 model: parabolic cylinders (R_m from the case) on a base in plane strain, pressed by a rigid\n"
-      "flat to the approaches (in delta_pc); per asperity its load, contact width, surface von Mises and plastic strain,\n"
-      "for comparison with `geartrib multi-asperity`.");
+      "The thesis's finite-element model of a hobbed flank: parabolic cylinders (R_m from the case) on a base\n"
+      "in plane strain, pressed by a rigid flat to the approaches (in delta_pc); per asperity its load, contact\n"
+      "width, surface von Mises and plastic strain, for comparison with `geartrib multi-asperity`.");
   add_case_option(cyl, c->case_options);
   cyl->add_option("--layout", c->layout, "H (high) and L (low) letters, e.g. HLH, LHL, or H alone (default HLH)");
   cyl->add_option("--height-step", c->height_step,
@@ -313,7 +313,8 @@ void add_fem_command(CLI::App& app) {
                   "Comma-separated approaches of the flat after touching the high tips, in delta_pc (default 6)")
       ->delimiter(',');
   cyl->add_option("--delta-pc", c->delta_pc,
-                  "The unit of --height-step and --approach (default: the seed's formula; its tables imply 0.5797nm)");
+                  "The unit of --height-step and --approach (default: the cylinder's critical interference by the\n"
+                  "thesis's formula, geartrib asperity --summary; the thesis's tables imply 0.5797nm)");
   cyl->add_option("--asperity-height", c->asperity_height, "High tips above the base plane (default 4um, assumed)");
   cyl->add_option("--depth", c->depth,
                   "Body depth below the high tips; its bottom is fixed (default 50um, the BEM's L_ref)");

@@ -5,7 +5,6 @@
 #include "runs/kinematics_table.hpp"
 
 #include "gear/gear_mesh.hpp"
-#include "gear/iso6336_stiffness.hpp"
 #include "io/table_writer.hpp"
 
 #include <fmt/format.h>
@@ -29,28 +28,15 @@ struct Options {
   bool summary = false;
 };
 
-// Mean, minimum and maximum mesh stiffness over one base pitch.
-struct StiffnessStats {
-  double mean = 0.0, min = 0.0, max = 0.0;
-};
-StiffnessStats mesh_stiffness_stats(const gear::MeshAnalysis& analysis, int n) {
-  const auto cycle = analysis.cycle(n);
-  StiffnessStats s{0.0, cycle.front().mesh_stiffness, cycle.front().mesh_stiffness};
-  for (const auto& m : cycle) {
-    s.mean += m.mesh_stiffness / n;
-    s.min = std::min(s.min, m.mesh_stiffness);
-    s.max = std::max(s.max, m.mesh_stiffness);
-  }
-  return s;
-}
-
 void run_summary(const Options& o, const Case& c, const gear::GearMesh& mesh) {
   const auto& pair = mesh.pair();
   const auto& p = pair.path();
-  const StiffnessStats k = mesh_stiffness_stats(mesh.analysis(), c.mesh.positions);
+  const gear::IsoStiffnessComparison comparison = mesh.iso_comparison(c.mesh.positions);
+  const gear::MeshStiffnessStats& k = comparison.model;
+  const gear::IsoMeshStiffness& iso = comparison.iso;
   const double b = pair.spec().face_width;
-  const double tangential_line_load = c.operating.pinion_torque / pair.pinion().pitch_radius / b;
-  const gear::IsoMeshStiffness iso = gear::iso6336_mesh_stiffness(pair, tangential_line_load);
+  if (const std::string w = gear::iso_stiffness_warning(mesh, comparison); !w.empty())
+    std::cerr << "warning: " << w << '\n';
   const double to_n_per_m_um = 1e-6;  // N/m per m width -> N/(m um)
   io::Table t;
   t.header = {"name", "value"};
@@ -84,7 +70,7 @@ void run_summary(const Options& o, const Case& c, const gear::GearMesh& mesh) {
   t.add_row("mean_mesh_stiffness_per_width_N_per_m_um", {k.mean / b * to_n_per_m_um});
   t.add_row("iso_c_prime_N_per_m_um", {iso.single * to_n_per_m_um});
   t.add_row("iso_c_gamma_alpha_N_per_m_um", {iso.mesh * to_n_per_m_um});
-  t.add_row("mean_mesh_stiffness_over_iso_c_gamma_alpha", {k.mean / (iso.mesh * b)});
+  t.add_row("mean_mesh_stiffness_over_iso_c_gamma_alpha", {comparison.ratio});
   emit_table(t, o.table);
 }
 

@@ -78,8 +78,9 @@ constexpr std::pair<std::string_view, AddCommand> kCommands[] = {
 int main(int argc, char** argv) try {
   CLI::App app{
       "geartrib - rough-surface asperity contact of spur gears along the line of action.\n"
-      "Implements the elastic-plastic asperity contact thesis of the seed (m = 6 mm, z = 30/30, 45 steel)\n"
-      "with the CEB, Kogut-Etsion, Jackson-Green and Zhao-Maietta-Chang models beside it.\n"
+      "Implements the thesis \"Spur Gear Rough Surface Asperity Elastic-Plastic Contact Model\" (its pair:\n"
+      "m = 6 mm, z = 30/30, 45 steel) with the CEB, Kogut-Etsion, Jackson-Green and Zhao-Maietta-Chang models\n"
+      "beside it.\n"
       "All quantities are SI inside; data files give units (\"206 GPa\", \"6 mm\").\n"
       "Exit status: 0 success, 2 bad input (the message names file, line, key, value and rule), 1 other failure.",
       "geartrib"};

@@ -177,8 +177,9 @@ void add_multi_asperity_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "multi-asperity",
       "Parallel parabolic-cylinder asperities y = -x^2/(2 R_m) (the case's asperity.cylinder R_m) on a base\n"
-      "plane, pressed by a rigid flat (seed sections 5-7), by plane-strain boundary elements with an\n"
-      "elastic-perfectly-plastic pressure cap and the composite modulus E_t (--modulus). Height step and approach in units of the seed's delta_pc.\n"
+      "plane, pressed by a rigid flat (the thesis's multi-asperity model of a hobbed flank), by plane-strain\n"
+      "boundary elements with an elastic-perfectly-plastic pressure cap and the composite modulus E_t (--modulus).\n"
+      "Height step and approach in units of the cylinder's critical interference delta_pc (--delta-pc).\n"
       "Prints per asperity its load, contact width, peak pressure, surface von Mises stress and\n"
       "largest deformation, then the total contact area (10 um long cylinders), the von Mises stress at the\n"
       "surface midway between neighbours and the inflection point of the von Mises profile below the middle\n"
@@ -198,15 +199,16 @@ void add_multi_asperity_command(CLI::App& app) {
                   "High asperities' height above the base plane (default 4um, assumed)");
   cmd->add_option(
       "--delta-pc", o->delta_pc,
-      "The unit of --height-step and --approach (default: the seed's formula, 0.423 um for the default case; "
-      "the seed's deformation table implies 0.58nm)");
+      "The unit of --height-step and --approach (default: the cylinder's critical interference by the thesis's "
+      "formula, geartrib asperity --summary: 0.423 um for the default case; the thesis's deformation table implies "
+      "0.58nm)");
   cmd->add_option("--elements", o->elements, "Boundary elements over the domain (default 16384)")
       ->check(CLI::Range(64, 1 << 22));
   cmd->add_option("--pressure-cap", o->cap, "hardness (H), yield (Prandtl punch (2+pi) S_y/sqrt3) or none (elastic)")
       ->check(CLI::IsMember({"hardness", "yield", "none"}));
   cmd->add_option(
          "--modulus", o->modulus,
-         "composite (default: E_t of both flanks on a rigid flat, the seed's equivalent surface, consistent\n"
+         "composite (default: E_t of both flanks on a rigid flat, the equivalent rough surface's, consistent\n"
          "with delta_pc) or single-body (E/(1 - nu^2) of the softer body, as the CalculiX three-cylinder model)")
       ->check(CLI::IsMember({"composite", "single-body"}));
   cmd->add_option("--reference-depth", o->reference_depth,

@@ -205,7 +205,7 @@ io::LoadedSurface load_surface_reporting(const std::string& file, const SurfaceI
 void add_surface_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "surface",
-      "Measured topography (seed section 4): generate synthetic surfaces, clean profiler exports, compute Ra, Rq, Rsk,\n"
+      "Measured topography: generate synthetic surfaces, clean profiler exports, compute Ra, Rq, Rsk,\n"
       "Rku, Rz, spectral moments along and across the lay, summits beside McCool's predictions, the equivalent surface\n"
       "of two flanks, and the reduction to parabolic-cylinder asperities.\n"
       "Formats by extension: .xyz/.asc point clouds (x y z, header lines skipped, 'Bad' or NaN missing), .csv/.txt/.grd\n"
@@ -287,7 +287,7 @@ void add_surface_command(CLI::App& app) {
   auto* as = cmd->add_subcommand(
       "asperities",
       "Reduce a surface to asperities: its summits (eight-neighbour peaks: position, height, radius), or with\n"
-      "--cylinders the profile across the lay cut into parabolic cylinders (the seed's model: centre, tip\n"
+      "--cylinders the profile across the lay cut into parabolic cylinders (the thesis's hobbed-flank model: centre, tip\n"
       "height, tip radius R_m, spacing). A summary with the distributions goes to stderr.");
   as->add_option("file", a->file, "Surface file")->required();
   as->add_flag("--cylinders", a->cylinders, "Parabolic-cylinder asperities across the lay instead of summits");

@@ -319,7 +319,7 @@ void add_tradeoff_command(CLI::App& app) {
       "A deterministic case (contact.fidelity = deterministic) has its own knobs: positions, element_size\n"
       "(boundary-element width) and strip_halfwidths (the strip's reach in Hertz half-widths), compared on\n"
       "the real-area ratio, the plastic area fraction and the von Mises maximum below the strip (set\n"
-      "threads=1 for one core's times). The seed's multi-asperity grid: `geartrib_bench\n"
+      "threads=1 for one core's times). The multi-asperity study's boundary-element grid: `geartrib_bench\n"
       "--benchmark_filter=multi_asperity` (docs/reference/timings.md).");
   add_case_argument(cmd, o->case_options);
   add_output_option(cmd, o->table.output,

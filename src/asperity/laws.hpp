@@ -263,7 +263,7 @@ struct ZmcLaw {
 struct ContinuousLaw {
   static constexpr std::string_view name = "continuous";
   static constexpr std::string_view citation =
-      "seed section 2, closure re-derived (ERRATA); area and load fitted to KE 2002 / JG 2005, plastic core to the project's CalculiX surface yield";
+      "the thesis's continuous model (its section 2), closure re-derived (docs/theory/departures-from-the-thesis.md); area and load fitted to KE 2002 / JG 2005, plastic core to the project's CalculiX surface yield";
   static constexpr std::array<ConstantSpec, 7> constants{{
       {"area_scale", fitted::continuous_area_scale, 0.1, 1e4,
        "da: delta* - 1 at which r_a^2 is halfway from R delta to 2 R delta"},

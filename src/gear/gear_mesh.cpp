@@ -1,5 +1,9 @@
 #include "gear/gear_mesh.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+
 namespace geartrib::gear {
 
 namespace {
@@ -9,10 +13,39 @@ ToothMaterial tooth_material(const Material& m) { return {m.youngs_modulus, m.po
 GearMesh::GearMesh(const Case& c, std::optional<LoadSharing> method)
     : composite_modulus_(geartrib::composite_modulus(c.pinion.material, c.wheel.material)),
       pinion_speed_(c.operating.pinion_speed),
+      pinion_torque_(c.operating.pinion_torque),
       pair_(c.gear_pair),
       stiffness_(pair_, tooth_material(c.pinion.material), tooth_material(c.wheel.material), composite_modulus_,
                  c.mesh.plane_strain),
       analysis_(pair_, stiffness_, method.value_or(parse_load_sharing(c.mesh.load_sharing)),
                 c.operating.pinion_torque / pair_.pinion().base_radius, composite_modulus_) {}
+
+IsoStiffnessComparison GearMesh::iso_comparison(int positions) const {
+  IsoStiffnessComparison k;
+  k.model = analysis_.stiffness_stats(positions);
+  k.iso = iso6336_mesh_stiffness(pair_, tangential_line_load());
+  const double b = pair_.spec().face_width;
+  k.ratio = k.model.mean / (k.iso.mesh * b);
+  const double full = iso6336_mesh_stiffness(pair_, std::max(tangential_line_load(), kIsoFullLineLoad)).mesh * b;
+  k.full_load_ratio = k.model.mean / full;
+  return k;
+}
+
+std::string iso_stiffness_warning(const GearMesh& mesh, const IsoStiffnessComparison& k) {
+  const double ratio = k.full_load_ratio;
+  if (ratio <= kIsoStiffnessBand && ratio >= 1.0 / kIsoStiffnessBand) return "";
+  auto body = [&](int i) {
+    const GearBody& g = mesh.pair().gear(i);
+    return g.bore_radius > 0.0 ? fmt::format("{:.3g}", foundation_rim_ratio(g))
+                               : fmt::format("{:g} (solid)", kSolidBodyRimRatio);
+  };
+  return fmt::format(
+      "the mean mesh stiffness {:.4g} N/m (potential energy) is {:.3g} x ISO 6336-1's c_gamma_alpha b = {:.4g} N/m "
+      "(solid steel gears at 100 N/mm or more), beyond the factor {:g} either way that typical gear bodies stay "
+      "within; the stiffness load sharing, the mesh_stiffness output and the dynamics use it. Check the bodies "
+      "(r_f/r_bore = {} for pinion.bore_diameter, {} for wheel.bore_diameter; the foundation fit covers 1.4 to 7) "
+      "and the materials (ISO's value is for steel)",
+      k.model.mean, ratio, k.model.mean / ratio, kIsoStiffnessBand, body(0), body(1));
+}
 
 }  // namespace geartrib::gear

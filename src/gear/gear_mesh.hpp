@@ -3,14 +3,36 @@
 #pragma once
 
 #include "case/case.hpp"
+#include "gear/iso6336_stiffness.hpp"
 #include "gear/load_sharing.hpp"
 #include "gear/mesh_analysis.hpp"
 #include "gear/spur_pair.hpp"
 #include "gear/tooth_stiffness.hpp"
 
 #include <optional>
+#include <string>
 
 namespace geartrib::gear {
+
+// The potential-energy mesh stiffness over one base pitch beside ISO 6336-1's c_gamma_alpha b
+// (method B, solid steel gears) at the case's load.
+struct IsoStiffnessComparison {
+  MeshStiffnessStats model;  // [N/m]
+  IsoMeshStiffness iso;      // per unit face width, at the case's line load
+  double ratio = 0.0;        // model.mean / (iso.mesh b)
+  // The same against ISO at full load (kIsoFullLineLoad or more): the band is checked on this. The
+  // model has perfect involutes, no light-load term: below 100 N/mm ISO's c' falls with the load
+  // and any model of perfect teeth leaves it, whatever the bodies.
+  double full_load_ratio = 0.0;
+};
+
+// How far either way the mean mesh stiffness may lie from ISO's c_gamma_alpha b before a run
+// that uses it is warned. Bodies on shaft seats from thin rims (r_f/r_bore = 1.4) to a quarter of
+// the root diameter (4) give 0.72 to 1.10 of ISO on the shipped pairs (and ISO is itself an
+// empirical fit); a factor 1.5 lies beyond that spread, so past it the bores, the materials (ISO's
+// value is steel's) or the tooth form are outside what either method describes for typical gears
+// (docs/theory/gear-geometry.md).
+inline constexpr double kIsoStiffnessBand = 1.5;
 
 class GearMesh {
  public:
@@ -26,13 +48,22 @@ class GearMesh {
   double pinion_speed() const { return pinion_speed_; }
   // F_bn = T1 / r_b1 [N]
   double normal_force() const { return analysis_.normal_force(); }
+  // ISO's tangential line load F_t/b = T1/(r1 b) [N/m].
+  double tangential_line_load() const { return pinion_torque_ / pair_.pinion().pitch_radius / pair_.spec().face_width; }
+  // The mean mesh stiffness over `positions` of one base pitch beside ISO's.
+  IsoStiffnessComparison iso_comparison(int positions) const;
 
  private:
   double composite_modulus_;
   double pinion_speed_;
+  double pinion_torque_;
   SpurPair pair_;
   MeshStiffnessModel stiffness_;
   MeshAnalysis analysis_;
 };
+
+// The warning when the comparison's ratio lies beyond kIsoStiffnessBand either way, naming the
+// bodies' rim ratios; empty within it.
+std::string iso_stiffness_warning(const GearMesh& mesh, const IsoStiffnessComparison& k);
 
 }  // namespace geartrib::gear

@@ -2,6 +2,7 @@
 
 #include "asperity/cylinder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -68,6 +69,17 @@ std::vector<MeshInstant> MeshAnalysis::cycle(int n) const {
   const PathOfContact& p = pair_.path();
   for (int i = 0; i < n; ++i) out.push_back(at(p.a + p.base_pitch * i / n));
   return out;
+}
+
+MeshStiffnessStats MeshAnalysis::stiffness_stats(int n) const {
+  const auto instants = cycle(n);
+  MeshStiffnessStats s{0.0, instants.front().mesh_stiffness, instants.front().mesh_stiffness};
+  for (const auto& m : instants) {
+    s.mean += m.mesh_stiffness / n;
+    s.min = std::min(s.min, m.mesh_stiffness);
+    s.max = std::max(s.max, m.mesh_stiffness);
+  }
+  return s;
 }
 
 }  // namespace geartrib::gear

@@ -26,6 +26,11 @@ struct MeshInstant {
   const PairLoad& pair_at(double s) const;
 };
 
+// The mesh stiffness over one base pitch: its mean, least and largest [N/m].
+struct MeshStiffnessStats {
+  double mean = 0.0, min = 0.0, max = 0.0;
+};
+
 class MeshAnalysis {
  public:
   // normal_force: the total normal tooth force F_bn = T1/r_b1 [N]; composite_modulus E_t [Pa].
@@ -41,6 +46,8 @@ class MeshAnalysis {
   PairLoad pair_load(double s, double line_load) const;
   // One base pitch of pinion rotation, n positions s0 = A + i p_b/n, i = 0..n-1.
   std::vector<MeshInstant> cycle(int n) const;
+  // The mesh stiffness over cycle(n).
+  MeshStiffnessStats stiffness_stats(int n) const;
 
   double normal_force() const { return normal_force_; }
   LoadSharing method() const { return method_; }

@@ -34,9 +34,12 @@ double root_half_angle(const GearBody& g) {
 
 }  // namespace
 
+double foundation_rim_ratio(const GearBody& g) {
+  return g.bore_radius > 0.0 ? g.root_radius / g.bore_radius : kSolidBodyRimRatio;
+}
+
 bool fillet_foundation_in_range(const GearBody& g) {
-  if (!(g.bore_radius > 0.0)) return false;
-  const double h = g.root_radius / g.bore_radius, theta = root_half_angle(g);
+  const double h = foundation_rim_ratio(g), theta = root_half_angle(g);
   return h >= 1.4 && h <= 7.0 && theta >= 0.01 && theta <= 0.12;
 }
 
@@ -96,17 +99,16 @@ ToothCompliance tooth_compliance(const GearBody& g, double roll_angle, const Too
     c.axial += sa * sa * len / (e_beam * area);
   }
   // Fillet foundation (Sainsot et al. 2004): u_f from the root circle to where the force line
-  // crosses the centre line, S_f = 2 r_f theta_f the root thickness.
-  if (g.bore_radius > 0.0) {
-    const double theta_f = root_half_angle(g);
-    const double h = g.root_radius / g.bore_radius;
-    const double uf = (yc - xc * std::tan(a1)) - g.root_radius;
-    const double sf = 2.0 * g.root_radius * theta_f;
-    const double ratio = uf / sf;
-    c.foundation = ca * ca / (mat.youngs_modulus * b) *
-                   (kL(h, theta_f) * ratio * ratio + kM(h, theta_f) * ratio +
-                    kP(h, theta_f) * (1.0 + kQ(h, theta_f) * std::tan(a1) * std::tan(a1)));
-  }
+  // crosses the centre line, S_f = 2 r_f theta_f the root thickness. Every body has one: a solid
+  // body's at its shaft seat (foundation_rim_ratio).
+  const double theta_f = root_half_angle(g);
+  const double h = foundation_rim_ratio(g);
+  const double uf = (yc - xc * std::tan(a1)) - g.root_radius;
+  const double sf = 2.0 * g.root_radius * theta_f;
+  const double ratio = uf / sf;
+  c.foundation = ca * ca / (mat.youngs_modulus * b) *
+                 (kL(h, theta_f) * ratio * ratio + kM(h, theta_f) * ratio +
+                  kP(h, theta_f) * (1.0 + kQ(h, theta_f) * std::tan(a1) * std::tan(a1)));
   return c;
 }
 

@@ -217,6 +217,15 @@ std::string range_rule(const Parameter& p, double v) {
   return "must be " + range;
 }
 
+// The rule a numeric value read at `key` breaks, or empty: a bare number (SI) that a unit would
+// have made plausible first (`module = 4.5` read as 4.5 m: did you mean 4.5 mm?), then the range.
+// Inside the range, an implausible value is warned about, not refused.
+std::string value_rule(const TomlReader& r, const Parameter& p, const std::string& key, double v) {
+  if (r.is_bare_number(key))
+    if (std::string rule = bare_number_rule(p, v); !rule.empty()) return rule;
+  return p.in_range(v) ? "" : range_rule(p, v);
+}
+
 std::string choices_text(const std::vector<std::string>& choices) {
   std::string s;
   for (const auto& c : choices) s += (s.empty() ? "" : ", ") + c;
@@ -275,7 +284,8 @@ void read_parameter(TomlReader& r, const Parameter& p, int gear, Case& c, unsign
     case ParameterKind::model_constants:
       return;  // read_model_constants
   }
-  if (numeric && !p.in_range(v.number)) r.fail(key, range_rule(p, v.number));
+  if (numeric)
+    if (const std::string rule = value_rule(r, p, key, v.number); !rule.empty()) r.fail(key, rule);
   if (numeric && !p.plausible(v.number)) c.warnings.push_back(r.warning(key, implausible_text(p, v.number)));
   p.set(c, gear, v);
   c.parameters.push_back({key, p.format(v), r.changed(key) ? "--set" : r.where(key)});
@@ -342,12 +352,22 @@ void read_flank(TomlReader& r, Case& c, int gear) {
     const LoadedSurface loaded = load_surface(path, read, spec.clean);
     for (const auto& w : loaded.warnings) c.warnings.push_back(w);  // units implausible for a flank
     const surface::HeightGrid& grid = loaded.grid;
-    try {  // the line along the involute the deterministic fidelity rolls
-      g.flank.measured_profile = surface::profile_from_grid(grid, spec.profile_along_x, spec.profile_at);
-    } catch (const std::invalid_argument& e) {
-      r.fail(t + "file", path.string() + ": its profile along " + (spec.profile_along_x ? "x" : "y") + ": " + e.what());
+    const bool trace = grid.nx < 3 || grid.ny < 3;
+    // The line along the involute: what the deterministic fidelity rolls, and a profile trace's
+    // roughness. A statistical run of an areal surface takes its summits only, not this line.
+    if (trace || c.contact.deterministic()) {
+      try {
+        g.flank.measured_profile = surface::profile_from_grid(grid, spec.profile_along_x, spec.profile_at);
+      } catch (const std::invalid_argument& e) {
+        r.fail(t + "file", fmt::format("{}: {} along {}: {}{}", path.string(),
+                                       trace ? "the profile trace" : "the line the deterministic fidelity rolls",
+                                       spec.profile_along_x ? "x" : "y", e.what(),
+                                       trace ? ""
+                                             : " (" + t + "fill = true fills missing points; " + t +
+                                                   "profile_axis and " + t + "profile_at choose the line)"));
+      }
     }
-    if (grid.nx < 3 || grid.ny < 3) {
+    if (trace) {
       // A profile trace (a stylus's line along the involute): its spectral moments give the
       // roughness (McCool's summits), as for a generated profile.
       if (r.has(f + "summit_radius"))
@@ -490,7 +510,7 @@ void check_change(TomlReader& r, const std::string& key) {
     default:
       return;
   }
-  if (!p->in_range(v)) r.fail(key, range_rule(*p, v));
+  if (const std::string rule = value_rule(r, *p, key, v); !rule.empty()) r.fail(key, rule);
 }
 
 // Extrapolating Walther's law this far beyond a lubricant's data range is refused; within it, warned.
@@ -644,12 +664,21 @@ Case load_case_from(TomlReader& r, const std::vector<CaseChange>& changes, unsig
   for (const CaseChange& ch : changes) c.source_text += "\n# --set " + ch.key + "=" + ch.value;
 
   // The pair must exist: an impossible geometry is an error at the key to change; findings
-  // such as undercut are kept as located warnings.
+  // such as undercut are kept as located warnings. A pair built from an implausible value (a
+  // "4.5 m" module) is refused at that value first: it is the likely cause.
   try {
     const gear::SpurPair pair(c.gear_pair);
     for (const auto& w : pair.warnings())
       c.warnings.push_back(fmt::format("{}: warning: key '{}': {}", r.where(w.key), w.key, w.message));
   } catch (const gear::GeometryError& e) {
+    for (const Parameter& p : case_parameters()) {
+      if (p.key.rfind("gear_pair.", 0) != 0 || !r.has(p.key)) continue;
+      const double v = p.get(c, -1).number;
+      if (!p.plausible(v))
+        r.fail(p.key, fmt::format("{} the plausible band {} of a spur gear, and the pair it gives cannot exist: {} "
+                                  "(key '{}')",
+                                  v < p.plausible_min ? "below" : "above", p.plausible_text(), e.what(), e.key()));
+    }
     r.fail(e.key(), e.what());
   }
   return c;

@@ -23,9 +23,9 @@ CaseChange parse_case_change(const std::string& text);
 
 // Throws InputError (file, line, key, value, rule) on any problem; an error about a changed key
 // names its --set. Setting one roughness form of a flank (ra, rq, summit_density, m0, topography)
-// removes that flank's other forms. `parts` (io::CasePart bits): what the caller uses; a key
-// without a default is required only when one of them needs it. Every key's value and origin is
-// recorded in Case::parameters.
+// removes that flank's other forms. `parts` (io::CasePart bits): what the caller uses (default:
+// the mesh cycle's); a key without a default is required only when one of them needs it. Every
+// key's value and origin is recorded in Case::parameters.
 Material load_material(const std::filesystem::path& file);
 // The same, appending located warnings (a value outside the plausible band of gear materials) to
 // `warnings` when it is not null. Youngs's modulus lies in [1e6, 1e13] Pa, the density in
@@ -35,12 +35,12 @@ Material load_material(const std::filesystem::path& file, std::vector<std::strin
 // coefficient optional (the ISO/TR 15144-1 correlation without it).
 lubrication::Lubricant load_lubricant(const std::filesystem::path& file);
 Case load_case(const std::filesystem::path& file, const std::vector<CaseChange>& changes = {},
-               unsigned parts = kAllParts);
+               unsigned parts = kMeshCycleParts);
 // The same from a case's text in memory (the Python module's cases, on whichever machine runs
 // them): `name` stands for the file in messages; `directory` resolves the material, lubricant
 // and topography files (empty: name's folder).
 Case load_case_text(const std::string& text, const std::filesystem::path& name,
-                    const std::vector<CaseChange>& changes = {}, unsigned parts = kAllParts,
+                    const std::vector<CaseChange>& changes = {}, unsigned parts = kMeshCycleParts,
                     const std::filesystem::path& directory = {});
 
 }  // namespace geartrib::io

@@ -226,7 +226,9 @@ std::vector<Parameter> build_table() {
   add(quantity(
           "{gear}.bore_diameter", D::length, [](auto& c, int g) -> auto& { return c.gear_pair.bore_diameter[g]; }))
       .range(0.0, kMaxBodyLength)
-      .doc("Bore of the gear body (fillet-foundation stiffness); 0: solid");
+      .doc(
+          "Bore of the gear body: the shaft seat of its fillet-foundation stiffness (fitted for r_f/r_bore 1.4 to 7); "
+          "0: a solid body, seated at a third of the root diameter (r_f/r_bore = 3)");
   add(text(
           "{gear}.material", K::text, [gear](auto& c, int g) -> auto& { return gear(c, g).material_file; }))
       .required(kGeometryPart)
@@ -284,7 +286,13 @@ std::vector<Parameter> build_table() {
       .plausible(0.1 * kUm, 10.0 * kMm)
       .no_default()
       .alias({"summit_radius"})
-      .doc("Mean summit radius beta (forms ra, rq, summits; a measured flank's overrides the measured one)");
+      .doc(
+          "Mean summit radius beta of the flank's asperities: required with ra, rq or summit_density + summit_sigma, "
+          "no default (it sets the plasticity index and depends on the finish and the sampling interval). Measured: "
+          "`geartrib surface stats FILE` (summit_radius_m, mccool_summit_radius_m); from a profile, McCool's beta = "
+          "0.375 sqrt(pi/m4) with m4 = bandwidth x (rms slope)^4/Rq^2 (Rq 0.4 um, slope 0.05, bandwidth 5: 48 um). "
+          "Typical: ground flanks tens of um; the thesis's hobbed, run-in flanks 1.65 and 1.75 um. Given with a "
+          "measured flank, it overrides the measured radius");
   auto topo = [gear](auto& c, int g) -> auto& { return gear(c, g).flank.topography; };
   // A measured flank: the rows fill the topography spec (created on first use).
   auto topo_spec = [topo](Case& c, int g) -> TopographySpec& {
@@ -536,8 +544,8 @@ std::vector<Parameter> build_table() {
       .required(kFrictionPart)
       .alias({"mu"})
       .doc(
-          "Coulomb friction coefficient of the asperity contacts: side contact (seed section 4) and the "
-          "boundary coefficient of a lubricated run");
+          "Coulomb friction coefficient of the asperity contacts: the side contact of sliding summits (contact "
+          "normal tilted by atan(mu)) and the boundary coefficient of a lubricated run");
 
   // [mesh]
   add(text(
@@ -782,7 +790,9 @@ std::vector<Parameter> build_table() {
           [](auto& c, int) -> auto& { return c.asperity.cylinder_tip_radius; }))
       .range(1e-9, 1.0)
       .required(kCylinderPart)
-      .doc("Tip radius R_m of the cylinder asperity (seed section 5)");
+      .doc(
+          "Tip radius R_m of the parabolic-cylinder asperities (a hobbed flank's ridges) of the multi-asperity and "
+          "FEM studies; geartrib surface asperities --cylinders measures it");
   add(number(
           "asperity.cylinder.yield_constant", [](auto& c, int) -> auto& { return c.asperity.cylinder_yield_constant; }))
       .range(0.5, 5.0, true, true)
@@ -904,6 +914,31 @@ std::string implausible_text(const Parameter& p, double v) {
                      v < p.plausible_min ? "below" : "above", p.plausible_text(), p.range_text());
 }
 
+std::string bare_number_rule(const Parameter& p, double bare) {
+  const bool banded = std::isfinite(p.plausible_min) || std::isfinite(p.plausible_max);
+  if (p.kind != ParameterKind::quantity || !banded || !std::isfinite(bare)) return "";
+  if (p.in_range(bare) && p.plausible(bare)) return "";
+  std::string meant;
+  std::vector<double> factors;
+  for (const UnitScale& u : units_of(p.dimension)) {
+    if (u.to_si == 1.0 && u.offset == 0.0) continue;  // the SI unit's spellings: the reading itself
+    if (std::find(factors.begin(), factors.end(), u.to_si) != factors.end()) continue;  // um and µm
+    const double si = bare * u.to_si + u.offset;
+    if (!p.in_range(si) || !p.plausible(si)) continue;
+    factors.push_back(u.to_si);
+    meant += fmt::format("{}\"{:g} {}\"", meant.empty() ? "" : " or ", bare, u.symbol);
+  }
+  if (meant.empty()) return "";
+  const std::string si = fmt::format("{:g} {}", bare, si_symbol(p.dimension));
+  const std::string where = !p.in_range(bare)
+                                ? "outside the range " + p.range_text()
+                                : fmt::format("{} the plausible band {} of a spur gear",
+                                              bare < p.plausible_min ? "below" : "above", p.plausible_text());
+  // Inside the range the SI reading may be meant: it is read when its unit is given.
+  return fmt::format("read as {} (a bare number is SI), {}: did you mean {}? Give the unit{}", si, where, meant,
+                     p.in_range(bare) ? fmt::format(" (\"{}\" if that is meant)", si) : std::string());
+}
+
 std::string Parameter::key_for(int gear) const {
   if (!per_gear()) return key;
   return kGearPrefix[gear] + key.substr(std::string_view("{gear}.").size());
@@ -981,6 +1016,8 @@ std::string parameter_text_error(const Parameter& p, const std::string& text) {
       } catch (const std::invalid_argument& e) {
         return e.what();
       }
+      if (const auto any = parse_any_quantity(text); any && any->dimension == Dimension::dimensionless)
+        if (std::string rule = bare_number_rule(p, v); !rule.empty()) return rule;
       break;
     case ParameterKind::number:
     case ParameterKind::integer: {
@@ -1027,13 +1064,18 @@ std::string case_schema_markdown() {
       "Generated by `geartrib case --schema --markdown` from the parameter table (src/io/case_parameters.cpp);\n"
       "do not edit by hand. Values with a dimension take a unit from the unit table (\"6 mm\", \"20 deg\",\n"
       "\"1000 rpm\") or a bare SI number. `{gear}` stands for `pinion` and `wheel`. A key without a default\n"
-      "is required when a command uses its part (\"required by\"); `geartrib case CASE` shows what a case\n"
-      "resolves to. Aliases are the short names `--set` and `geartrib sweep` accept. A flank takes exactly\n"
-      "one roughness form: ra; rq; summit_density + summit_sigma; m0 + m2 + m4; or a topography table.\n\n"
+      "is required when a command uses its part (\"required by\"): geometry by every command; roughness by\n"
+      "run, sweep, tradeoff, asperity, fit and fem single-asperity; friction by run, sweep, tradeoff and\n"
+      "asperity --contact side or --summary; cylinder by multi-asperity, fem three-cylinders and asperity\n"
+      "--summary. `geartrib case CASE` shows what a case resolves to. Aliases are the short names `--set`\n"
+      "and `geartrib sweep` accept. A flank takes exactly one roughness form: ra; rq; summit_density +\n"
+      "summit_sigma; m0 + m2 + m4; or a topography table.\n\n"
       "A value outside its range is refused (exit 2, naming the file, line or --set, and the key); ranges are\n"
       "checked in SI, after the unit is applied, and a value must be finite. A gear value inside its range but\n"
       "outside the plausible band of a spur gear (a 6 m module, 1e6 rpm) is read and warned about, naming the\n"
-      "key. Units, limits and the bands' sources: [units.md](units.md#ranges-and-plausible-bands).\n\n";
+      "key; given as a bare number that another unit would make plausible (module = 4.5, read as 4.5 m), it\n"
+      "is refused, naming the unit probably meant. Units, limits and the bands' sources:\n"
+      "[units.md](units.md#ranges-and-plausible-bands).\n\n";
   out += "|";
   for (const char* h : kSchemaHeader) out += std::string(" ") + h + " |";
   out += "\n|";

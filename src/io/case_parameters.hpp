@@ -26,6 +26,10 @@ enum CasePart : unsigned {
   kCylinderPart = 8u,   // the cylinder asperity of the multi-asperity and FEM studies
   kAllParts = 15u,
 };
+// What the mesh cycle uses (`geartrib run`, `sweep`, `tradeoff`, the Python module): every part
+// but the cylinder asperity, which only the multi-asperity and FEM studies (and `geartrib asperity
+// --summary`) ask for. The default of the case loaders.
+inline constexpr unsigned kMeshCycleParts = kGeometryPart | kRoughnessPart | kFrictionPart;
 
 enum class ParameterKind {
   quantity,  // a number with a unit of its dimension, or a bare SI number
@@ -114,6 +118,13 @@ std::string parameter_text_error(const Parameter& p, const std::string& text);
 // A value of a row (SI) outside its plausible band: the warning's text, naming the band and the
 // range; empty when the value is plausible.
 std::string implausible_text(const Parameter& p, double v);
+
+// A bare number (SI: `module = 4.5` is 4.5 m) outside a quantity row's plausible band, or its
+// range, that another unit of its dimension puts inside both: the rule naming the SI reading and
+// the units probably meant ("read as 4.5 m (a bare number is SI), above the plausible band ...:
+// did you mean \"4.5 mm\"? ..."). Empty when the row has no band, the value is plausible, or no
+// unit helps (a value with its unit is only warned about: the unit says what was meant).
+std::string bare_number_rule(const Parameter& p, double bare);
 
 // The schema: one row per key (gear rows once, as "{gear}.key"), as CSV or Markdown.
 std::string case_schema_csv();

@@ -53,18 +53,53 @@ void TomlReader::parse() {
   }
 }
 
+namespace {
+
+// A value typed on the command line as TOML when it parses as one ("30", "0.1", "\"x\""), else
+// nothing.
+std::optional<toml::table> toml_value(const std::string& text) {
+  try {
+    toml::table parsed = toml::parse("v = " + text);
+    if (parsed.contains("v") && parsed.size() == 1) return parsed;
+  } catch (const toml::parse_error&) {
+  }
+  return std::nullopt;
+}
+
+// A bracketed list typed without TOML's quotes, [real_area, plastic_fraction]: an array of its
+// comma-separated items, each a TOML value when it parses as one, else its text as a string (as
+// a single value is); nothing for other text or an empty item.
+std::optional<toml::array> bare_list(std::string_view text) {
+  auto trim = [](std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+    return s;
+  };
+  text = trim(text);
+  if (text.size() < 2 || text.front() != '[' || text.back() != ']') return std::nullopt;
+  text = text.substr(1, text.size() - 2);
+  toml::array out;
+  while (true) {
+    const auto comma = text.find(',');
+    const std::string item(trim(text.substr(0, comma)));
+    if (item.empty()) return std::nullopt;
+    if (const auto parsed = toml_value(item)) out.push_back(*parsed->get("v"));
+    else out.push_back(item);
+    if (comma == std::string_view::npos) return out;
+    text.remove_prefix(comma + 1);
+  }
+}
+
+}  // namespace
+
 void TomlReader::set(std::string_view key, const std::string& value_text) {
   const std::string where = file_ + " (--set " + std::string(key) + "=" + value_text + ")";
   if (key.empty() || key.front() == '.' || key.back() == '.' || key.find("..") != std::string_view::npos)
     throw InputError(where, 0, std::string(key), value_text, "expected a dotted key such as gear_pair.module");
-  // The value: a TOML value when it parses as one, else the text as a string ("4mm").
-  toml::table parsed;
-  bool is_toml = false;
-  try {
-    parsed = toml::parse("v = " + value_text);
-    is_toml = parsed.contains("v") && parsed.size() == 1;
-  } catch (const toml::parse_error&) {
-  }
+  // The value: a TOML value when it parses as one, else a bracketed list of bare words as an
+  // array, else the text as a string ("4mm").
+  const std::optional<toml::table> parsed = toml_value(value_text);
+  const std::optional<toml::array> list = parsed ? std::nullopt : bare_list(value_text);
   toml::table* t = &root_;
   std::string_view rest = key;
   std::string prefix;
@@ -72,7 +107,8 @@ void TomlReader::set(std::string_view key, const std::string& value_text) {
     const auto dot = rest.find('.');
     const std::string part(rest.substr(0, dot));
     if (dot == std::string_view::npos) {
-      if (is_toml) t->insert_or_assign(part, *parsed.get("v"));
+      if (parsed) t->insert_or_assign(part, *parsed->get("v"));
+      else if (list) t->insert_or_assign(part, *list);
       else t->insert_or_assign(part, value_text);
       break;
     }
@@ -101,6 +137,15 @@ bool TomlReader::has(std::string_view key) const { return find(key) != nullptr; 
 bool TomlReader::is_string(std::string_view key) const {
   const toml::node* n = find(key);
   return n && n->is_string();
+}
+
+bool TomlReader::is_bare_number(std::string_view key) const {
+  const toml::node* n = find(key);
+  if (!n) return false;
+  if (n->is_integer() || n->is_floating_point()) return true;
+  if (!n->is_string()) return false;
+  const auto any = parse_any_quantity(n->as_string()->get());
+  return any && any->dimension == Dimension::dimensionless;
 }
 
 int TomlReader::line_of(std::string_view key) const {
@@ -259,7 +304,10 @@ std::string TomlReader::string(std::string_view key, std::optional<std::string> 
 std::vector<std::string> TomlReader::string_array(std::string_view key) {
   const toml::node* n = take(key, false, "an array of strings");
   const toml::array* arr = n->as_array();
-  if (!arr) fail(key, "expected an array of strings");
+  if (!arr)
+    fail(key,
+         "expected an array of strings, written [\"a\", \"b\"] in a case file; --set takes the same or bare "
+         "words: KEY=[a, b]");
   std::vector<std::string> out;
   for (std::size_t i = 0; i < arr->size(); ++i) {
     const toml::node& e = *arr->get(i);

@@ -29,8 +29,9 @@ class TomlReader {
   TomlReader(std::string text, const std::filesystem::path& name, const std::filesystem::path& directory = {});
 
   // Command-line changes, applied before reading: `set` gives a dotted key a value typed as on
-  // the command line (TOML syntax if it parses as a TOML value: 30, 0.1, true, "x"; otherwise the
-  // text as a string: 4mm, kogut-etsion), creating tables as needed; `erase` removes a key.
+  // the command line (TOML syntax if it parses as a TOML value: 30, 0.1, true, "x"; a bracketed
+  // list of bare words as an array of them: [real_area, plastic_fraction]; otherwise the text as a
+  // string: 4mm, kogut-etsion), creating tables as needed; `erase` removes a key.
   // Errors about a changed key name "--set key=value" instead of a line.
   void set(std::string_view key, const std::string& value_text);
   void erase(std::string_view key);
@@ -45,6 +46,9 @@ class TomlReader {
   // Whether the key was given (or removed) by a command-line change.
   bool changed(std::string_view key) const { return changed_.contains(key); }
   bool is_string(std::string_view key) const;
+  // Whether the key's value is a bare number: a TOML number, or a string holding a number
+  // without a unit ("4.5"; a --set value typed 4.5 is a TOML number).
+  bool is_bare_number(std::string_view key) const;
   // A quantity with a unit ("6 mm") or a bare SI number; required unless a fallback is given.
   double quantity(std::string_view key, Dimension d, std::optional<double> fallback = std::nullopt);
   std::vector<double> quantity_array(std::string_view key, Dimension d);

@@ -20,7 +20,7 @@ struct UnitEntry {
 constexpr double kPi = std::numbers::pi;
 
 // The whole table. Symbols are matched exactly (case-sensitive: "MPa" is not "mpa").
-constexpr std::array<UnitEntry, 56> kUnits{{
+constexpr std::array<UnitEntry, 59> kUnits{{
     {"m", Dimension::length, 1.0},
     {"mm", Dimension::length, 1e-3},
     {"um", Dimension::length, 1e-6},
@@ -47,6 +47,9 @@ constexpr std::array<UnitEntry, 56> kUnits{{
     {"deg", Dimension::angle, kPi / 180.0},
     {"rad/s", Dimension::angular_speed, 1.0},
     {"rpm", Dimension::angular_speed, 2.0 * kPi / 60.0},
+    {"1/min", Dimension::angular_speed, 2.0 * kPi / 60.0},  // a speed n in revolutions per minute (DIN, ISO 6336)
+    {"rev/min", Dimension::angular_speed, 2.0 * kPi / 60.0},
+    {"r/min", Dimension::angular_speed, 2.0 * kPi / 60.0},
     {"kg/m^3", Dimension::density, 1.0},
     {"kg/m3", Dimension::density, 1.0},
     {"g/cm^3", Dimension::density, 1e3},
@@ -159,6 +162,13 @@ std::string allowed_units(Dimension d) {
   std::string out;
   for (const auto& u : kUnits)
     if (u.dimension == d) out += (out.empty() ? "" : ", ") + std::string(u.symbol);
+  return out;
+}
+
+std::vector<UnitScale> units_of(Dimension d) {
+  std::vector<UnitScale> out;
+  for (const auto& u : kUnits)
+    if (u.dimension == d) out.push_back({u.symbol, u.to_si, u.offset});
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace geartrib::io {
 
@@ -33,6 +34,15 @@ enum class Dimension {
 std::string_view dimension_name(Dimension d);
 // The units accepted for a dimension, comma separated (for error messages and --help).
 std::string allowed_units(Dimension d);
+
+// The units of a dimension in the table's order, each with the SI value of one unit (and degC's
+// offset): what a bare number, read as SI, may have been meant in.
+struct UnitScale {
+  std::string_view symbol;
+  double to_si = 1.0;
+  double offset = 0.0;
+};
+std::vector<UnitScale> units_of(Dimension d);
 
 // SI factor of `unit` for dimension `d`; throws std::invalid_argument("unknown unit ...") when
 // the unit is not in the table or belongs to another dimension.

@@ -202,6 +202,12 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
     for (const auto& q : *group)
       for (double v : q.values)
         if (!std::isfinite(v)) throw std::runtime_error("non-finite value in " + q.name);
+  // A run whose outputs rest on the mesh stiffness is warned, first, when it leaves ISO's band.
+  const bool uses_stiffness = c.contact.mesh_stiffness || mesh.analysis().method() == gear::LoadSharing::stiffness ||
+                              c.dynamics.engine != "none";
+  if (uses_stiffness)
+    if (std::string w = gear::iso_stiffness_warning(mesh, mesh.iso_comparison(c.mesh.positions)); !w.empty())
+      r.warnings.insert(r.warnings.begin(), std::move(w));
   return r;
 }
 
