@@ -1,5 +1,7 @@
 #include "contact/asperity_pressure.hpp"
 
+#include "core/named_choices.hpp"
+
 #include <boost/math/tools/roots.hpp>
 
 #include <algorithm>
@@ -11,25 +13,15 @@
 namespace geartrib::contact {
 
 namespace {
-struct ModelName {
-  AsperityPressureModel model;
-  const char* name;
-};
-constexpr ModelName kModelNames[] = {{AsperityPressureModel::automatic, "auto"},
-                                     {AsperityPressureModel::asperity_model, "asperity-model"},
-                                     {AsperityPressureModel::bearing_area, "bearing-area"}};
+constexpr NamedChoice<AsperityPressureModel> kModelNames[] = {{AsperityPressureModel::automatic, "auto"},
+                                                              {AsperityPressureModel::asperity_model, "asperity-model"},
+                                                              {AsperityPressureModel::bearing_area, "bearing-area"}};
 }  // namespace
 
 AsperityPressureModel asperity_pressure_model_from_name(const std::string& name) {
-  for (const auto& m : kModelNames)
-    if (name == m.name) return m.model;
-  throw std::invalid_argument("unknown asperity pressure model '" + name + "'");
+  return choice_from_name<AsperityPressureModel>(kModelNames, name, "asperity pressure model");
 }
-std::vector<std::string> asperity_pressure_model_names() {
-  std::vector<std::string> v;
-  for (const auto& m : kModelNames) v.emplace_back(m.name);
-  return v;
-}
+std::vector<std::string> asperity_pressure_model_names() { return choice_names<AsperityPressureModel>(kModelNames); }
 
 double bearing_area_weight(AsperityPressureModel m, double plastic) {
   switch (m) {

@@ -1,5 +1,7 @@
 #include "lubrication/film_closure.hpp"
 
+#include "core/named_choices.hpp"
+
 #include <boost/math/special_functions/erf.hpp>
 
 #include <algorithm>
@@ -10,29 +12,13 @@
 namespace geartrib::lubrication {
 
 namespace {
-struct GapName {
-  FilmGap gap;
-  const char* name;
-};
-constexpr GapName kGapNames[] = {
+constexpr NamedChoice<FilmGap> kGapNames[] = {
     {FilmGap::mean_gap, "mean-gap"}, {FilmGap::mean_plane, "mean-plane"}, {FilmGap::dry_offset, "dry-offset"}};
 }  // namespace
 
-FilmGap film_gap_from_name(const std::string& name) {
-  for (const auto& g : kGapNames)
-    if (name == g.name) return g.gap;
-  throw std::invalid_argument("unknown film gap '" + name + "'");
-}
-const char* film_gap_name(FilmGap g) {
-  for (const auto& n : kGapNames)
-    if (n.gap == g) return n.name;
-  return "?";
-}
-std::vector<std::string> film_gap_names() {
-  std::vector<std::string> v;
-  for (const auto& g : kGapNames) v.emplace_back(g.name);
-  return v;
-}
+FilmGap film_gap_from_name(const std::string& name) { return choice_from_name<FilmGap>(kGapNames, name, "film gap"); }
+const char* film_gap_name(FilmGap g) { return choice_name<FilmGap>(kGapNames, g); }
+std::vector<std::string> film_gap_names() { return choice_names<FilmGap>(kGapNames); }
 
 double mean_gap(const CompositeHeights& s, double h) {
   if (!(s.sigma > 0.0)) return std::max(h, 0.0);

@@ -1,5 +1,7 @@
 #include "lubrication/flank_temperature.hpp"
 
+#include "core/named_choices.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -19,31 +21,17 @@ double blok_flash_temperature(double mu, double w, double b, double v1, double v
 double peclet_number(double v, double b, double k, double rho, double c) { return v * b * rho * c / (2.0 * k); }
 
 namespace {
-struct LawName {
-  MeanFrictionLaw law;
-  const char* name;
-};
-constexpr LawName kLawNames[] = {{MeanFrictionLaw::iso, "iso"},
-                                 {MeanFrictionLaw::iso_flash, "iso-flash"},
-                                 {MeanFrictionLaw::schlenk, "schlenk"},
-                                 {MeanFrictionLaw::fernandes, "fernandes"}};
+constexpr NamedChoice<MeanFrictionLaw> kLawNames[] = {{MeanFrictionLaw::iso, "iso"},
+                                                      {MeanFrictionLaw::iso_flash, "iso-flash"},
+                                                      {MeanFrictionLaw::schlenk, "schlenk"},
+                                                      {MeanFrictionLaw::fernandes, "fernandes"}};
 }  // namespace
 
 MeanFrictionLaw mean_friction_law_from_name(const std::string& name) {
-  for (const auto& l : kLawNames)
-    if (name == l.name) return l.law;
-  throw std::invalid_argument("unknown mean friction law '" + name + "'");
+  return choice_from_name<MeanFrictionLaw>(kLawNames, name, "mean friction law");
 }
-const char* mean_friction_law_name(MeanFrictionLaw law) {
-  for (const auto& l : kLawNames)
-    if (l.law == law) return l.name;
-  return "?";
-}
-std::vector<std::string> mean_friction_law_names() {
-  std::vector<std::string> v;
-  for (const auto& l : kLawNames) v.emplace_back(l.name);
-  return v;
-}
+const char* mean_friction_law_name(MeanFrictionLaw law) { return choice_name<MeanFrictionLaw>(kLawNames, law); }
+std::vector<std::string> mean_friction_law_names() { return choice_names<MeanFrictionLaw>(kLawNames); }
 
 double fernandes_lubricant_factor(BaseOil b, double iso_factor) {
   switch (b) {

@@ -1,5 +1,7 @@
 #include "lubrication/lubricant.hpp"
 
+#include "core/named_choices.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -31,45 +33,46 @@ double iso_alpha_temperature_factor(double t) { return 1.0 + 516.0 * (1.0 / t - 
 }  // namespace
 
 namespace {
-struct BaseOilRow {
-  BaseOil base;
-  const char* name;
-  double iso_factor;  // ISO/TS 6336-20 X_L; NaN: not tabulated
-};
-constexpr BaseOilRow kBaseOils[] = {
-    {BaseOil::mineral, "mineral", 1.0},
-    {BaseOil::pao, "pao", 0.8},
-    {BaseOil::ester, "ester", std::numeric_limits<double>::quiet_NaN()},
-    {BaseOil::polyglycol_insoluble, "polyglycol-insoluble", 0.7},
-    {BaseOil::polyglycol_water_soluble, "polyglycol-water-soluble", 0.6},
-    {BaseOil::phosphate_ester, "phosphate-ester", 1.3},
-    {BaseOil::traction_fluid, "traction-fluid", 1.5},
+constexpr NamedChoice<BaseOil> kBaseOils[] = {
+    {BaseOil::mineral, "mineral"},
+    {BaseOil::pao, "pao"},
+    {BaseOil::ester, "ester"},
+    {BaseOil::polyglycol_insoluble, "polyglycol-insoluble"},
+    {BaseOil::polyglycol_water_soluble, "polyglycol-water-soluble"},
+    {BaseOil::phosphate_ester, "phosphate-ester"},
+    {BaseOil::traction_fluid, "traction-fluid"},
 };
 }  // namespace
 
 BaseOil base_oil_from_name(const std::string& name) {
-  for (const auto& row : kBaseOils)
-    if (name == row.name) return row.base;
-  std::string known;
-  for (const auto& row : kBaseOils) known += (known.empty() ? "" : ", ") + std::string(row.name);
-  throw std::invalid_argument("unknown base oil '" + name + "' (known: " + known + ")");
+  try {
+    return choice_from_name<BaseOil>(kBaseOils, name, "base oil");
+  } catch (const std::invalid_argument& e) {
+    std::string known;
+    for (const auto& n : base_oil_names()) known += (known.empty() ? "" : ", ") + n;
+    throw std::invalid_argument(std::string(e.what()) + " (known: " + known + ")");
+  }
 }
-
-const char* base_oil_name(BaseOil b) {
-  for (const auto& row : kBaseOils)
-    if (row.base == b) return row.name;
-  return "mineral";
-}
-
-std::vector<std::string> base_oil_names() {
-  std::vector<std::string> v;
-  for (const auto& row : kBaseOils) v.emplace_back(row.name);
-  return v;
-}
+const char* base_oil_name(BaseOil b) { return choice_name<BaseOil>(kBaseOils, b); }
+std::vector<std::string> base_oil_names() { return choice_names<BaseOil>(kBaseOils); }
 
 double iso_lubricant_factor(BaseOil b) {
-  for (const auto& row : kBaseOils)
-    if (row.base == b) return row.iso_factor;
+  switch (b) {
+    case BaseOil::mineral:
+      return 1.0;
+    case BaseOil::pao:
+      return 0.8;
+    case BaseOil::polyglycol_insoluble:
+      return 0.7;
+    case BaseOil::polyglycol_water_soluble:
+      return 0.6;
+    case BaseOil::phosphate_ester:
+      return 1.3;
+    case BaseOil::traction_fluid:
+      return 1.5;
+    case BaseOil::ester:
+      break;  // not tabulated
+  }
   return std::numeric_limits<double>::quiet_NaN();
 }
 

@@ -1,5 +1,7 @@
 #include "lubrication/mixed_lubrication.hpp"
 
+#include "core/named_choices.hpp"
+
 #include <boost/math/tools/roots.hpp>
 
 #include <algorithm>
@@ -47,13 +49,9 @@ LoadShare share_load(double h_smooth, double e, const std::function<double(doubl
 }
 
 namespace {
-struct TractionName {
-  FilmTraction model;
-  const char* name;
-};
-constexpr TractionName kTractionNames[] = {{FilmTraction::thermal_eyring, "thermal-eyring"},
-                                           {FilmTraction::isothermal_eyring, "isothermal-eyring"},
-                                           {FilmTraction::curve, "curve"}};
+constexpr NamedChoice<FilmTraction> kTractionNames[] = {{FilmTraction::thermal_eyring, "thermal-eyring"},
+                                                        {FilmTraction::isothermal_eyring, "isothermal-eyring"},
+                                                        {FilmTraction::curve, "curve"}};
 
 // ln sinh(t), t > 0, without overflow or loss of digits at either end.
 double log_sinh(double t) {
@@ -68,20 +66,10 @@ double asinh_exp(double l) { return l > 20.0 ? l + std::numbers::ln2 : std::asin
 }  // namespace
 
 FilmTraction film_traction_from_name(const std::string& name) {
-  for (const auto& t : kTractionNames)
-    if (name == t.name) return t.model;
-  throw std::invalid_argument("unknown film traction model '" + name + "'");
+  return choice_from_name<FilmTraction>(kTractionNames, name, "film traction model");
 }
-const char* film_traction_name(FilmTraction t) {
-  for (const auto& n : kTractionNames)
-    if (n.model == t) return n.name;
-  return "?";
-}
-std::vector<std::string> film_traction_names() {
-  std::vector<std::string> v;
-  for (const auto& t : kTractionNames) v.emplace_back(t.name);
-  return v;
-}
+const char* film_traction_name(FilmTraction t) { return choice_name<FilmTraction>(kTractionNames, t); }
+std::vector<std::string> film_traction_names() { return choice_names<FilmTraction>(kTractionNames); }
 
 double eyring_shear_stress(double eta, double tau0, double vs, double h) {
   if (!(h > 0.0) || vs == 0.0 || !(eta > 0.0)) return 0.0;
