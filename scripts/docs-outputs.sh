@@ -89,20 +89,32 @@ sh_ex run-deterministic "/usr/bin/python3 scripts/plot_deterministic.py runin.h5
 cp runin-running-in.png "$fig/deterministic-running-in.png"
 
 fresh sweep
-ex sweep sweep --set module=4mm,6mm,8mm --set face_width=40mm:80mm:3 --set rq=0.2um,0.8um -o sweep.h5 --csv sweep.csv
-blank sweep
-echo "(selected columns of sweep.csv)" >> "$out/sweep.txt"
-$py - >> "$out/sweep.txt" <<'PY'
-import csv
-rows = list(csv.DictReader(l for l in open("sweep.csv") if not l.startswith("#")))
-cols = ["point", "module", "face_width", "rq", "status", "hertz_p0_Pa_max", "real_area_ratio_min", "plastic_area_fraction_max"]
+# columns FILE COLUMN...: selected columns of a sweep's CSV, numbers to 4 digits.
+columns() {
+  $py - "$@" >> "$out/sweep.txt" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+cols = sys.argv[2:]
 print("  ".join(f"{c:>{max(len(c), 10)}}" for c in cols))
 for r in rows:
     print("  ".join(f"{(r[c] if c in ('status', 'point') else format(float(r[c]), '.4g')):>{max(len(c), 10)}}" for c in cols))
 PY
+}
+ex sweep sweep --set module=4mm,6mm,8mm --set face_width=40mm:80mm:3 --set rq=0.2um,0.8um -o sweep.h5 --csv sweep.csv
 blank sweep
-sh_ex sweep "/usr/bin/python3 scripts/plot_design_sweep.py sweep.csv hertz_p0_Pa_max module face_width -o p0.png"
+echo "(selected columns of sweep.csv)" >> "$out/sweep.txt"
+columns sweep.csv point module face_width rq status hertz_p0_Pa_max real_area_ratio_min mesh_power_loss_W min_iso_lambda_gf
+blank sweep
+sh_ex sweep "/usr/bin/python3 scripts/plot_design_sweep.py sweep.h5 --quantity hertz_p0_Pa_max,mesh_power_loss_W --at rq=2e-7 -o p0.png"
 cp p0.png "$fig/sweep-hertz-p0.png"
+blank sweep
+echo "(torque x roughness: the mesh-level values of the lubricated runs, one column each)" >> "$out/sweep.txt"
+ex sweep sweep --set torque=500Nm,1000Nm,2000Nm --set ra=0.4um,0.8um -o torque.h5 --csv torque.csv
+blank sweep
+columns torque.csv torque ra mesh_power_loss_W pair_power_loss_W_mean tooth_friction_efficiency gear_loss_factor_path bulk_temperature_K min_iso_lambda_gf
+blank sweep
+sh_ex sweep "/usr/bin/python3 scripts/plot_design_sweep.py torque.h5 -o torque.png"
+cp torque.png "$fig/sweep-mesh-level.png"
 blank sweep
 echo "(a Stribeck curve: the lubricated default case over speed, ground flanks, bulk temperature fixed)" >> "$out/sweep.txt"
 ex sweep sweep --set speed=1rpm,3rpm,10rpm,30rpm,100rpm,300rpm,1000rpm,3000rpm,10000rpm --set ra=0.2um --set bulk_temperature=80degC --set positions=41 -o stribeck.h5 --csv stribeck.csv

@@ -31,7 +31,7 @@ def main(argv):
     u = [float(r["entrainment_m_per_s_mean"]) for r in rows]
     mu = [float(r["friction_coefficient_mean"]) for r in rows]
     share = [float(r["asperity_load_share_mean"]) for r in rows]
-    lam = [float(r["lambda_min"]) for r in rows]
+    lam = [float(r["lambda_smooth_film_min"]) for r in rows]
     fig, ax = plt.subplots(figsize=(7.0, 4.2), dpi=110)
     ax.semilogx(u, mu, "o-", color="C0", label="friction coefficient (path mean)")
     ax.set_xlabel("entrainment speed, path mean [m/s]")
@@ -44,7 +44,7 @@ def main(argv):
     top = ax.secondary_xaxis("top", functions=(lambda x: x, lambda x: x))
     top.set_xticks(u[:: max(1, len(u) // 6)])
     top.set_xticklabels([f"{x:.2g}" for x in lam[:: max(1, len(u) // 6)]])
-    top.set_xlabel("lambda (path minimum)")
+    top.set_xlabel("lambda, smooth film (path minimum)")
     lines = ax.get_legend_handles_labels()[0] + right.get_legend_handles_labels()[0]
     labels = ax.get_legend_handles_labels()[1] + right.get_legend_handles_labels()[1]
     ax.legend(lines, labels, fontsize=8, loc="upper right")

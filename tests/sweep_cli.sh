@@ -19,6 +19,14 @@ check merge-not-a-sweep 2 "not a readable geartrib sweep file" -- "$bin" sweep -
 check merge-twice 2 "given twice" -- "$bin" sweep --merge "$tmp/s0.h5" "$tmp/s0.h5" -o "$tmp/bad.h5"
 "$bin" sweep -q --set module=4mm,5mm --set positions=21 --shard 1/2 -o "$tmp/other.h5" >/dev/null 2>&1
 check merge-other-sweep 2 "from another sweep" -- "$bin" sweep --merge "$tmp/s0.h5" "$tmp/other.h5" -o "$tmp/bad.h5"
+# A shard whose column has another unit (edited here) is refused, not merged under the first unit.
+cp "$tmp/s1.h5" "$tmp/s1-unit.h5"
+/usr/bin/python3 -c 'import sys, h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    v = f["points/values"]
+    units = v.attrs["units"].decode().replace("1,m,", "1,mm,", 1).encode()
+    v.attrs.create("units", units, dtype=h5py.string_dtype("utf-8", len(units)))' "$tmp/s1-unit.h5"
+check merge-unit-differs 2 "column module is numeric \[mm\] here and numeric \[m\] in another shard" -- "$bin" sweep --merge "$tmp/s0.h5" "$tmp/s1-unit.h5" -o "$tmp/bad.h5"
 [[ ! -e "$tmp/bad.h5" ]] && echo "ok   nothing-written-on-error" || { echo "FAIL bad.h5 written"; fail=1; }
 
 # Merged equals unsharded (all columns but the timing), and the trends physics requires.
@@ -69,6 +77,64 @@ with h5py.File(sys.argv[3]) as f:
         if ri == 8e-7: assert regime[i] == "fully plastic" and beyond[i] == 21, (regime[i], beyond[i])
     assert all(len(v) > 0 for v in p["validity"])
 print("ok   validity-per-point")
+PY
+
+# The lubricated runs' mesh-level values, one column each: those of `geartrib run` at the same point
+# (its /lubrication attributes, bit for bit: one computation), with units; the per-pair loss is
+# pair_power_loss_W_*, and the mesh's mean loss is its path mean times the contact ratio.
+lub=(--set torque=500Nm,2000Nm --set ra=0.4um,0.8um --set lubrication.scuffing_temperature=300degC --set positions=21)
+check lubricated 0 "4 points, 0 failed" -- "$bin" sweep "${lub[@]}" -o "$tmp/lub.h5"
+"$bin" run -q --set torque=2000Nm --set ra=0.4um --set lubrication.scuffing_temperature=300degC --set positions=21 -o "$tmp/lub-run.h5" >/dev/null
+# A mixed sweep (lubricant=none runs the case dry): dry points have NaN there. Its shards are one
+# dry and one lubricated (point % 2), merged dry shard first: the columns in the unsharded order.
+mixed=(--set torque=500Nm,1000Nm --set lubricant=none,../lubricants/mineral-vg220.toml --set positions=21)
+"$bin" sweep -q "${mixed[@]}" -o "$tmp/mixed.h5" --csv "$tmp/mixed.csv" >/dev/null
+"$bin" sweep -q "${mixed[@]}" --shard 0/2 -o "$tmp/mixed0.h5" >/dev/null
+"$bin" sweep -q "${mixed[@]}" --shard 1/2 -o "$tmp/mixed1.h5" >/dev/null
+check merge-mixed 0 "4 points, 0 failed" -- "$bin" sweep --merge "$tmp/mixed0.h5" "$tmp/mixed1.h5" -o "$tmp/mixed-merged.h5" --csv "$tmp/mixed-merged.csv"
+/usr/bin/python3 - "$tmp" <<'PY' || fail=1
+import csv, math, sys
+import h5py
+tmp = sys.argv[1]
+def text(x):
+    return x.decode() if isinstance(x, bytes) else x
+def table(path):
+    with h5py.File(path) as f:
+        v = f["points/values"]
+        names, units = text(v.attrs["columns"]).split(","), text(v.attrs["units"]).split(",")
+        return {n: v[:, k] for k, n in enumerate(names)}, dict(zip(names, units)), text(f["sweep"].attrs["axes"])
+p, units, axes = table(f"{tmp}/lub.h5")
+assert axes == "torque,ra,lubrication.scuffing_temperature,positions", axes
+with h5py.File(f"{tmp}/lub-run.h5") as f:
+    run = {k: float(v) for k, v in f["lubrication"].attrs.items() if not isinstance(v, (bytes, str))}
+for name in ("mesh_power_loss_W", "tooth_friction_efficiency", "gear_loss_factor_path", "bulk_temperature_K",
+             "iso_scuffing_safety", "scuffing_safety", "min_iso_lambda_gf"):
+    assert name in run, name
+i = [k for k in range(4) if p["torque"][k] == 2000 and p["ra"][k] == 4e-7][0]
+for name, value in run.items():  # every value of the run's summary, as one column, the run's number
+    assert name in p and not any(name + s in p for s in ("_min", "_mean", "_max")), name
+    assert p[name][i] == value or (math.isnan(value) and math.isnan(p[name][i])), (name, p[name][i], value)
+assert (units["mesh_power_loss_W"], units["bulk_temperature_K"], units["tooth_friction_efficiency"]) == ("W", "K", "1")
+assert all(f"pair_power_loss_W_{s}" in p for s in ("min", "mean", "max"))
+assert not any(n.startswith("power_loss_W") for n in p)
+for k in range(4):
+    # Both trapezoidal over the same positions: equal to rounding (1e-12 relative).
+    mesh = p["pair_power_loss_W_mean"][k] * p["contact_ratio"][k]
+    assert math.isclose(p["mesh_power_loss_W"][k], mesh, rel_tol=1e-12), (p["mesh_power_loss_W"][k], mesh)
+    assert p["tooth_friction_efficiency"][k] < 1.0 and p["scuffing_safety"][k] > 0.0
+print("ok   lubricated-mesh-level-columns")
+m, _, _ = table(f"{tmp}/mixed.h5")
+lubed = [not math.isnan(x) for x in m["mesh_power_loss_W"]]
+assert lubed == [False, True, False, True], lubed  # points (500, none), (500, oil), (1000, none), (1000, oil)
+def rows(path):
+    lines = [l for l in open(path) if not l.startswith("#")]
+    r = list(csv.reader(lines))
+    s = r[0].index("seconds")
+    return [x[:s] + x[s + 1:] for x in r]
+full, merged = rows(f"{tmp}/mixed.csv"), rows(f"{tmp}/mixed-merged.csv")
+assert full[0] == merged[0], "merged columns not in the unsharded order"
+assert full == merged, "merged mixed shards differ from the unsharded sweep"
+print("ok   mixed-sweep-merged-equals-unsharded")
 PY
 
 # A point whose geometry is impossible is reported in its row; the others run.

@@ -494,7 +494,8 @@ def sweep(case, axes: Mapping[str, Any], *, zip: bool = False, client=None, as_f
 
     Returns the command's table, row for row and column for column (point, the swept values,
     status, message, seconds, contact ratio, plasticity index, regime, validity, positions per
-    flag, each quantity's _min/_mean/_max), as a pandas DataFrame with ``attrs["units"]`` (a dict
+    flag, a lubricated run's mesh-level values (NaN for a dry point), each quantity's
+    _min/_mean/_max), as a pandas DataFrame with ``attrs["units"]`` (a dict
     of columns with "units" when ``as_frame=False`` or without pandas). A point that fails has
     status "error" and its message; the sweep goes on.
     """

@@ -175,10 +175,12 @@ py::dict point_dict(const runs::SweepPoint& p) {
   d["plasticity_index"] = p.plasticity_index;
   d["regime"] = p.regime;
   d["verdict"] = p.verdict;
-  py::list flags, quantities;
+  py::list flags, summary, quantities;
   for (const auto& f : p.flag_counts) flags.append(py::make_tuple(f.name, f.positions));
+  for (const auto& v : p.summary) summary.append(py::make_tuple(v.name, v.unit, v.value));
   for (const auto& q : p.quantities) quantities.append(py::make_tuple(q.name, q.unit, q.min, q.mean, q.max));
   d["flag_counts"] = flags;
+  d["summary"] = summary;
   d["quantities"] = quantities;
   return d;
 }
@@ -196,6 +198,10 @@ runs::SweepPoint point_from(const py::dict& d) {
   for (const auto& f : d["flag_counts"].cast<py::list>()) {
     const auto t = f.cast<py::tuple>();
     p.flag_counts.push_back({t[0].cast<std::string>(), t[1].cast<int>()});
+  }
+  for (const auto& v : d["summary"].cast<py::list>()) {
+    const auto t = v.cast<py::tuple>();
+    p.summary.push_back({t[0].cast<std::string>(), t[1].cast<std::string>(), t[2].cast<double>()});
   }
   for (const auto& q : d["quantities"].cast<py::list>()) {
     const auto t = q.cast<py::tuple>();

@@ -46,6 +46,21 @@ def test_dask_sweep_equals_the_command(tool, tmp_path, client):
     assert_same_table(table, command)
     assert (table["seconds"] > 0).all()
     assert command.attrs["sweep"]["points_total"] == "4"
+    # The lubricated runs' mesh-level values, one column each; NaN at the failed points.
+    loss = table["mesh_power_loss_W"].to_numpy()
+    assert (loss[:2] > 0).all() and np.isnan(loss[2:]).all()
+
+
+def test_mixed_dry_and_lubricated_points(tool, tmp_path, client):
+    """lubricant=none runs a point dry: no mesh-level values there (NaN), as in the command's table."""
+    sets = ["--set", "lubricant=none,../lubricants/mineral-vg220.toml", "--set", "positions=21"]
+    tool("sweep", DEFAULT, *sets, "--threads", "2", "-q", "-o", tmp_path / "d.h5")
+    command = gt.read_sweep(tmp_path / "d.h5")
+    table = gt.sweep(DEFAULT, {"lubricant": ["none", "../lubricants/mineral-vg220.toml"], "positions": [21]},
+                     client=client)
+    assert list(table["status"]) == ["ok", "ok"]
+    assert np.isnan(table["tooth_friction_efficiency"][0]) and table["tooth_friction_efficiency"][1] < 1.0
+    assert_same_table(table, command)
 
 
 def test_failed_points_name_files_as_the_command_does(tool, tmp_path, client):

@@ -1,8 +1,9 @@
 // `geartrib sweep`: what-if studies. One mesh-cycle run per point of a factorial (or zipped) set
 // of case changes, in parallel on threads, each point summarised by every mesh-cycle quantity's
-// minimum, mean and maximum along A -> E. Points that fail (impossible geometry, a solver that
-// does not converge) are reported in their row and the sweep goes on. `--shard i/n` runs a share
-// of the points; `--merge` joins the shards' files into the file the whole sweep would write.
+// minimum, mean and maximum along A -> E and, lubricated, by the run's mesh-level values. Points
+// that fail (impossible geometry, a solver that does not converge) are reported in their row and
+// the sweep goes on. `--shard i/n` runs a share of the points; `--merge` joins the shards' files
+// into the file the whole sweep would write.
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
 #include "app/progress_bar.hpp"
@@ -45,6 +46,14 @@ struct Options {
 
 std::string signature(const std::string& scene, const std::string& plan) {
   return fmt::format("{:016x}", std::hash<std::string>{}(scene + '\n' + plan));
+}
+
+// The table's columns that are the plan's axes, in --set order, comma-separated (the /sweep
+// attribute "axes": what a plot takes as its x, lines and panels).
+std::string axis_columns(const io::SweepPlan& plan) {
+  std::string s;
+  for (const auto& a : plan.axes) s += (s.empty() ? "" : ",") + a.key;
+  return s;
 }
 
 std::filesystem::path output_path(const Options& o) { return o.output.empty() ? "sweep.h5" : o.output; }
@@ -141,10 +150,22 @@ void merge(const Options& o) {
     if (!shard_seen[s])
       throw std::invalid_argument(fmt::format("--merge: shard {}/{} is missing", s, shard_seen.size()));
   std::sort(order.begin(), order.end());
-  // Columns: the union in order of first appearance (shards may lack a quantity all their points lacked).
-  for (const auto& f : files)
-    for (const auto& c : f.table.columns)
-      if (!out.table.find(c.name)) out.table.columns.push_back({c.name, c.unit, c.text, {}, {}});
+  // Columns: the union, a column missing so far placed after the one before it in its file: a shard
+  // lacks what all its points lacked (a dry shard of a mixed sweep the mesh-level values, a static
+  // one the dynamic quantities), and the merged table keeps the unsharded table's order.
+  auto& columns = out.table.columns;
+  for (std::size_t f = 0; f < files.size(); ++f) {
+    auto at = columns.begin();
+    for (const auto& c : files[f].table.columns) {
+      auto same = std::find_if(columns.begin(), columns.end(), [&](const io::Column& x) { return x.name == c.name; });
+      if (same == columns.end()) same = columns.insert(at, {c.name, c.unit, c.text, {}, {}});
+      else if (same->text != c.text || same->unit != c.unit)
+        throw std::invalid_argument(fmt::format("{}: column {} is {} here and {} in another shard", o.merge[f], c.name,
+                                                c.text ? "text" : "numeric [" + c.unit + "]",
+                                                same->text ? "text" : "numeric [" + same->unit + "]"));
+      at = same + 1;
+    }
+  }
   for (const auto& [point, at] : order) {
     const auto& src = files[at.first].table;
     for (auto& c : out.table.columns) {
@@ -215,6 +236,7 @@ void run(const Options& o) {
   f.attributes = {{"version", GEARTRIB_VERSION},
                   {"case_file", case_file.string()},
                   {"sets", plan.describe()},
+                  {"axes", axis_columns(plan)},
                   {"points_total", std::to_string(plan.size())},
                   {"shard", fmt::format("{}/{}", shard.index, shard.count)},
                   {"shard_count", std::to_string(shard.count)},
@@ -249,8 +271,10 @@ void add_sweep_command(CLI::App& app) {
           "Setting one roughness form of a flank (ra, rq, ...) replaces the flank's other form.\n"
           "Output (HDF5 /points with units, /sweep, /scene; --csv): one row per point with the swept values,\n"
           "status and message (a point whose geometry or solve fails is reported there; the sweep goes on),\n"
-          "contact ratio, plasticity index, and each quantity of `geartrib run` as _min, _mean, _max along\n"
-          "A -> E. scripts/plot_design_sweep.py draws one quantity against one or two swept keys.\n"
+          "contact ratio, plasticity index, a lubricated run's mesh-level values (mesh_power_loss_W,\n"
+          "tooth_friction_efficiency, gear_loss_factor_path, bulk_temperature_K, min_iso_lambda_gf, ...; one\n"
+          "column each, NaN for a dry point), and each quantity of `geartrib run` as _min, _mean, _max along\n"
+          "A -> E. scripts/plot_design_sweep.py plots quantities over the axes (/sweep attribute axes).\n"
           "Larger than one machine: run `--shard i/n` (0 <= i < n; points with index % n == i) as n jobs of a\n"
           "scheduler array or MPI launcher, each with its own -o, then `geartrib sweep --merge shard*.h5 -o all.h5`.");
   cmd->add_option("case", o->case_file, "Case file (default: gears/m6z30.toml)");

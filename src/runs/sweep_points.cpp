@@ -23,6 +23,7 @@ SweepPoint run_sweep_point(const CaseLoader& load, const std::vector<io::CaseCha
     p.regime = r.regime;
     p.verdict = r.verdict;
     p.flag_counts = r.flag_counts;
+    if (r.lubrication_summary) p.summary = contact::summary_values(*r.lubrication_summary);
     for (const auto* group : r.groups())
       for (const auto& q : *group) {
         if (q.name == "s_m" || q.name == "roll_angle_rad") continue;                  // the path itself
@@ -37,6 +38,37 @@ SweepPoint run_sweep_point(const CaseLoader& load, const std::vector<io::CaseCha
   p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return p;
 }
+
+namespace {
+
+// The items of a per-point list (validity flags, mesh-level values, quantities), one per name in
+// order of first appearance over the points (a swept key may add some: mesh.dynamics, a lubricant,
+// a scuffing temperature); each the first point's of that name (it gives the unit).
+template <class Item>
+std::vector<const Item*> first_appearance(const std::vector<SweepPoint>& points, std::vector<Item> SweepPoint::*list) {
+  std::vector<const Item*> items;
+  for (const auto& p : points) {
+    const std::vector<Item>& own = p.*list;
+    for (std::size_t k = 0; k < own.size(); ++k) {
+      if (k < items.size() && items[k]->name == own[k].name) continue;  // where the points before had it
+      if (std::none_of(items.begin(), items.end(), [&](const Item* i) { return i->name == own[k].name; }))
+        items.push_back(&own[k]);
+    }
+  }
+  return items;
+}
+
+// A point's item of that name. Points list their items in one order as a rule: the table's k-th
+// name is looked for at k first (a search only when a point's list differs), so the table costs
+// points x items.
+template <class Item>
+const Item* item_named(const std::vector<Item>& own, std::size_t k, const std::string& name) {
+  if (k < own.size() && own[k].name == name) return &own[k];
+  const auto it = std::find_if(own.begin(), own.end(), [&](const Item& i) { return i.name == name; });
+  return it != own.end() ? &*it : nullptr;
+}
+
+}  // namespace
 
 io::ColumnTable sweep_table(const io::SweepPlan& plan, const std::vector<SweepPoint>& points) {
   io::ColumnTable t;
@@ -68,7 +100,7 @@ io::ColumnTable sweep_table(const io::SweepPlan& plan, const std::vector<SweepPo
     psi.numbers.push_back(p.ok ? p.plasticity_index : std::nan(""));
   }
   for (auto* c : {&status, &message, &seconds, &ratio, &psi}) t.columns.push_back(std::move(*c));
-  // The validity verdict and, per flag, at how many positions it is set.
+  // The validity verdict.
   io::Column regime{"regime", "", true, {}, {}}, verdict{"validity", "", true, {}, {}};
   for (const auto& p : points) {
     regime.texts.push_back(p.ok ? p.regime : "");
@@ -76,41 +108,33 @@ io::ColumnTable sweep_table(const io::SweepPlan& plan, const std::vector<SweepPo
   }
   t.columns.push_back(std::move(regime));
   t.columns.push_back(std::move(verdict));
-  std::vector<std::string> flags;
-  for (const auto& p : points)
-    for (const auto& f : p.flag_counts)
-      if (std::find(flags.begin(), flags.end(), f.name) == flags.end()) flags.push_back(f.name);
-  for (const auto& name : flags) {
-    io::Column col{"positions_" + name, "1", false, {}, {}};
+  // Per point lists by name, one column per name (NaN where a point lacks it): positions per
+  // validity flag, the lubricated runs' mesh-level values, the quantities' _min, _mean, _max.
+  const auto flags = first_appearance(points, &SweepPoint::flag_counts);
+  for (std::size_t k = 0; k < flags.size(); ++k) {
+    io::Column col{"positions_" + flags[k]->name, "1", false, {}, {}};
     for (const auto& p : points) {
-      const auto f =
-          std::find_if(p.flag_counts.begin(), p.flag_counts.end(), [&](const auto& x) { return x.name == name; });
-      col.numbers.push_back(p.ok && f != p.flag_counts.end() ? f->positions : std::nan(""));
+      const auto* f = p.ok ? item_named(p.flag_counts, k, flags[k]->name) : nullptr;
+      col.numbers.push_back(f ? f->positions : std::nan(""));
     }
     t.columns.push_back(std::move(col));
   }
-  // Quantities in order of first appearance (a swept key may add one, e.g. mesh.dynamics).
-  std::vector<std::pair<std::string, std::string>> names;
-  for (const auto& p : points)
-    for (std::size_t k = 0; k < p.quantities.size(); ++k) {
-      const QuantitySummary& q = p.quantities[k];
-      if (k < names.size() && names[k].first == q.name) continue;  // where the points before had it
-      if (std::none_of(names.begin(), names.end(), [&](const auto& n) { return n.first == q.name; }))
-        names.emplace_back(q.name, q.unit);
+  const auto values = first_appearance(points, &SweepPoint::summary);
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    io::Column col{values[k]->name, values[k]->unit, false, {}, {}};
+    for (const auto& p : points) {
+      const auto* v = item_named(p.summary, k, values[k]->name);
+      col.numbers.push_back(v ? v->value : std::nan(""));
     }
-  // Points list their quantities in one order as a rule: the k-th name is looked for at k first
-  // (a search only when a point's list differs), so the table costs points x quantities.
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    const auto& [name, unit] = names[k];
+    t.columns.push_back(std::move(col));
+  }
+  const auto quantities = first_appearance(points, &SweepPoint::quantities);
+  for (std::size_t k = 0; k < quantities.size(); ++k) {
+    const std::string &name = quantities[k]->name, &unit = quantities[k]->unit;
     io::Column lo{name + "_min", unit, false, {}, {}}, mean{name + "_mean", unit, false, {}, {}},
         hi{name + "_max", unit, false, {}, {}};
     for (const auto& p : points) {
-      const QuantitySummary* q = k < p.quantities.size() && p.quantities[k].name == name ? &p.quantities[k] : nullptr;
-      if (!q) {
-        const auto it = std::find_if(p.quantities.begin(), p.quantities.end(),
-                                     [&key = name](const QuantitySummary& s) { return s.name == key; });
-        q = it != p.quantities.end() ? &*it : nullptr;
-      }
+      const auto* q = item_named(p.quantities, k, name);
       lo.numbers.push_back(q ? q->min : std::nan(""));
       mean.numbers.push_back(q ? q->mean : std::nan(""));
       hi.numbers.push_back(q ? q->max : std::nan(""));

@@ -21,7 +21,8 @@ struct QuantitySummary {
   double min = 0.0, mean = 0.0, max = 0.0;
 };
 
-// One point's run: its status and message, the run's verdict and every quantity's summary.
+// One point's run: its status and message, the run's verdict, its mesh-level values and every
+// quantity's summary.
 struct SweepPoint {
   std::size_t index = 0;
   bool ok = false;
@@ -32,6 +33,7 @@ struct SweepPoint {
   std::string regime;                                              // the run's validity verdict, in one word
   std::string verdict;                                             // and in full
   std::vector<contact::MeshContactResult::FlagCount> flag_counts;  // positions per validity flag
+  std::vector<contact::SummaryValue> summary;  // a lubricated run's mesh-level values (summary_values); dry: none
   std::vector<QuantitySummary> quantities;
 };
 
@@ -43,7 +45,9 @@ SweepPoint run_sweep_point(const CaseLoader& load, const std::vector<io::CaseCha
 
 // The table: point index, the swept values (numeric with their SI unit when every value of the
 // axis is a quantity of one unit, else text), status, message, seconds, contact ratio, plasticity
-// index, regime and verdict, positions per validity flag, then each quantity's _min, _mean, _max.
+// index, regime and verdict, positions per validity flag, the lubricated runs' mesh-level values
+// (one column each, by their summary_values names), then each quantity's _min, _mean, _max. A
+// point without a flag, value or quantity that others have (a failed or dry one) has NaN there.
 io::ColumnTable sweep_table(const io::SweepPlan& plan, const std::vector<SweepPoint>& points);
 
 }  // namespace geartrib::runs
