@@ -75,7 +75,8 @@ def main(argv):
     by = {(r["traction"], r["speed"]): float(r["film_traction_coefficient_max"]) for r in traction}
     rows.append({"key": "traction", "quantity": "thermal below isothermal at every speed [bool]",
                  "model": all(by[("thermal-eyring", v)] <= by[("isothermal-eyring", v)] for _, v in by),
-                 "reference": True})
+                 "reference": True, "tolerance": "=", "verdict": "agrees",
+                 "reason": "the film's shear heating lowers its viscosity (Johnson & Greenwood 1980)"})
     films = [float(r["film_m_min"]) for r in models if r["inlet_heating"] == "gupta"]
     rows.append({"key": "formulas (gupta)", "quantity": "film min spread max/min [1]",
                  "model": max(films) / min(films), "reference": None})
