@@ -290,6 +290,48 @@ check holes-deterministic 2 "case.toml:[0-9]+: key 'pinion.flank.topography.file
 # The lightest load: elastic, a finite answer (the capped bracket cannot resolve it; the elastic solve can).
 check det-light-load 0 "wrote" -- "$bin" run gears/m6z30-deterministic.toml --set torque=1e-6Nm --positions 11 -o "$tmp/det-light.h5" -q || { echo "FAIL det-bad.h5 written"; fail=1; }
 
+# FZG load stages (issue 29): a case names the load stage and the test instead of a torque; the
+# torque comes from gears/fzg/load-stages.csv and `geartrib case` says so. Bad input: exit 2 naming
+# file, line, key, value and rule; nothing written.
+check fzg-stage-torque 0 "^operating.pinion_torque +265 N m +FZG load stage 10 of GF-C/8.3/90, 0.35 m arm \(gears/fzg/load-stages.csv\)" -- \
+  "$bin" case gears/fzg-c.toml
+check fzg-stage-origin 0 "^operating.fzg_load_stage +10 +gears/fzg-c.toml:52" -- "$bin" case gears/fzg-c.toml
+check fzg-set-stage 0 "^operating.pinion_torque +215.513 N m +FZG load stage 9 of GF-C/8.3/90" -- \
+  "$bin" case gears/fzg-c.toml --set fzg_load_stage=9
+check fzg-set-test 0 "^operating.pinion_torque +372.6 N m +FZG load stage 10 of PT-C, 0.5 m arm" -- \
+  "$bin" case gears/fzg-c.toml --set fzg_test=PT-C
+check fzg-set-torque 0 "^operating.pinion_torque +300 N m +--set" -- "$bin" case gears/fzg-c.toml --set torque=300Nm
+check fzg-a-stage 0 "^operating.pinion_torque +534.5 N m +FZG load stage 12 of A/8.3/90, 0.5 m arm" -- "$bin" case gears/fzg-a.toml
+check fzg-validation-stage 0 "^operating.pinion_torque +372.6 N m +FZG load stage 10 of PT-C" -- \
+  "$bin" case validation/fzg-c-lubricated/fzg-c-lubricated.toml
+bad_fzg() {  # bad_fzg NAME SED_EXPR PATTERN: gears/fzg-c.toml edited in a scratch copy and run
+  rm -rf "$tmp/f" && mkdir -p "$tmp/f/gears" && cp -r materials lubricants "$tmp/f/" && cp gears/fzg-c.toml "$tmp/f/gears/"
+  sed -i "$2" "$tmp/f/gears/fzg-c.toml"
+  check "$1" 2 "$3" -- "$bin" run "$tmp/f/gears/fzg-c.toml" -o "$tmp/f/out.h5" -q
+  [[ ! -e "$tmp/f/out.h5" ]] && echo "ok   $1-nothing-written" || { echo "FAIL $1: out.h5 written"; fail=1; }
+}
+bad_fzg fzg-stage-15 's/^fzg_load_stage = 10 /fzg_load_stage = 15 /' \
+  "fzg-c.toml:52: key 'operating.fzg_load_stage' = 15: must lie in \\[1, 14\\]"
+bad_fzg fzg-stage-0 's/^fzg_load_stage = 10 /fzg_load_stage = 0 /' \
+  "fzg-c.toml:52: key 'operating.fzg_load_stage' = 0: must be positive \\(range \\[1, 14\\]\\)"
+bad_fzg fzg-stage-fraction 's/^fzg_load_stage = 10 /fzg_load_stage = 9.5 /' \
+  "fzg-c.toml:52: key 'operating.fzg_load_stage' = 9.5: expected an integer"
+bad_fzg fzg-torque-and-stage 's/^fzg_load_stage = 10 /pinion_torque = "265 N m"\nfzg_load_stage = 10 /' \
+  "fzg-c.toml:52: key 'operating.pinion_torque' = \"265 N m\": give the torque or the FZG load stage, not both \\(operating.fzg_load_stage = 10 at .*fzg-c.toml:53\\)"
+bad_fzg fzg-stage-without-test '/^fzg_test/d' \
+  "fzg-c.toml:52: key 'operating.fzg_load_stage' = 10: needs operating.fzg_test, the test whose lever arm sets the stage's torque"
+bad_fzg fzg-test-without-stage 's/^fzg_load_stage = 10 /pinion_torque = "265 N m"/' \
+  "fzg-c.toml:53: key 'operating.fzg_test' = \"GF-C/8.3/90\": names the test of operating.fzg_load_stage, which is not given"
+bad_fzg fzg-unknown-test 's#^fzg_test = "GF-C/8.3/90"#fzg_test = "GT-C/8.3/90"#' \
+  "fzg-c.toml:53: key 'operating.fzg_test' = \"GT-C/8.3/90\": unknown FZG test 'GT-C/8.3/90' \\(known: A/8.3/90, PT-C, GF-C/8.3/90\\)"
+bad_fzg fzg-unconfirmed-stage 's/^fzg_load_stage = 10 /fzg_load_stage = 13 /' \
+  "fzg-c.toml:52: key 'operating.fzg_load_stage' = 13: the 0.35 m arm's torque at load stage 13 \\(438.8533 N m\\) is unconfirmed in gears/fzg/load-stages.csv"
+check fzg-set-stage-15 2 "fzg-c.toml \(--set operating.fzg_load_stage=15\): key 'operating.fzg_load_stage' = 15: must lie in \[1, 14\]" -- \
+  "$bin" run gears/fzg-c.toml --set fzg_load_stage=15 -o "$tmp/fzg-bad.h5" -q
+check fzg-sweep-stage-15 2 "'fzg_load_stage=9,15': value '15' for operating.fzg_load_stage: must lie in \[1, 14\]" -- \
+  "$bin" sweep gears/fzg-c.toml --set fzg_load_stage=9,15 -o "$tmp/fzg-bad.h5" -q
+[[ ! -e "$tmp/fzg-bad.h5" ]] && echo "ok   fzg-nothing-written" || { echo "FAIL fzg-bad.h5 written"; fail=1; }
+
 # Output files: written whole, atomically; nothing written on error.
 check output-file 0 "" -- "$bin" asperity --csv -o "$tmp/out.csv" --delta-star 1,2
 grep -q "^$header\$" "$tmp/out.csv" && echo "ok   output-content" || { echo "FAIL output-content"; fail=1; }

@@ -142,6 +142,26 @@ check bad-point-reported 0 "1 failed" -- "$bin" sweep --set x1=0,1.5 --set posit
 grep -q "tip interference" "$tmp/x.csv" && echo "ok   bad-point-message" || { echo "FAIL bad-point-message"; fail=1; }
 check zip 0 "2 points" -- "$bin" sweep --zip --set z1=29,31 --set z2=31,29 --set positions=21 -o "$tmp/z.h5"
 
+# A sweep over FZG load stages (issue 29): each point runs its stage's torque from
+# gears/fzg/load-stages.csv (the micropitting test's 0.35 m arm). The largest line load along the
+# path is the single-pair zone's full load T1/(r_b1 b), r_b1 = m z1 cos(alpha)/2: it must equal the
+# table's torque over r_b1 b to the CSV's 10 significant digits (relative 1e-9; a torque from the
+# neighbouring stage is off by 15 % or more).
+check fzg-stages 0 "4 points, 0 failed" -- "$bin" sweep gears/fzg-c.toml --set fzg_load_stage=5,7,9,10 --set positions=21 \
+  -o "$tmp/fzg.h5" --csv "$tmp/fzg.csv"
+/usr/bin/python3 - "$tmp/fzg.csv" <<'PY' || fail=1
+import csv, math, sys
+rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+table = {5: 69.98, 7: 132.455, 9: 215.513, 10: 265.0}  # gears/fzg/load-stages.csv, 0.35 m arm [N m]
+r_b1, b = 4.5e-3 * 16 / 2 * math.cos(math.radians(20)), 14e-3
+assert [int(r["fzg_load_stage"]) for r in rows] == list(table), [r["fzg_load_stage"] for r in rows]
+for r in rows:
+    want = table[int(r["fzg_load_stage"])] / (r_b1 * b)
+    got = float(r["line_load_N_per_m_max"])
+    assert r["status"] == "ok" and abs(got / want - 1) < 1e-9, (r["fzg_load_stage"], got, want)
+print("ok   fzg-stages-torques")
+PY
+
 # Bad sweep input: exit 2, nothing written.
 check no-set 2 "at least one --set" -- "$bin" sweep -o "$tmp/bad.h5"
 check no-equals 2 "expected key=value" -- "$bin" sweep --set module -o "$tmp/bad.h5"

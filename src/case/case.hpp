@@ -74,7 +74,9 @@ struct GearSpec {
 };
 
 struct OperatingPoint {
-  double pinion_torque = 0.0;     // [N m]
+  double pinion_torque = 0.0;     // [N m]; given, or the FZG table's at fzg_load_stage
+  int fzg_load_stage = 0;         // FZG load stage 1..14 naming the torque (io/fzg_load_stages.hpp); 0: none
+  std::string fzg_test;           // the FZG test whose lever arm the stage hangs on; empty: none
   double pinion_speed = 0.0;      // [rad/s]
   double oil_temperature = 0.0;   // theta_oil, the inlet (sump or spray) oil [K]; lubricated runs only
   double bulk_temperature = 0.0;  // theta_M of the flanks [K]; 0: the ISO/TS 6336-20 estimate

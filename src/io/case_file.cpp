@@ -3,6 +3,7 @@
 #include "asperity/critical.hpp"
 #include "asperity/model.hpp"
 #include "gear/spur_pair.hpp"
+#include "io/fzg_load_stages.hpp"
 #include "io/text_lines.hpp"
 #include "io/toml_reader.hpp"
 #include "io/topography_files.hpp"
@@ -232,13 +233,19 @@ std::string choices_text(const std::vector<std::string>& choices) {
   return s;
 }
 
+// The torque's two forms: a torque, or an FZG load stage with its test (read_fzg_load_stage).
+constexpr std::string_view kTorqueKey = "operating.pinion_torque";
+constexpr std::string_view kFzgStageKey = "operating.fzg_load_stage";
+constexpr std::string_view kFzgTestKey = "operating.fzg_test";
+
 // One declared key into the case: its kind, choices and range checked, its value and origin
 // recorded. An absent key keeps the case's default, or fails when a part asked for needs it.
 void read_parameter(TomlReader& r, const Parameter& p, int gear, Case& c, unsigned parts) {
   const std::string key = p.key_for(gear);
   const bool flank_row = key.find(".flank.") != std::string::npos;  // forms and topography: read_flank's rules
   if (!r.has(key)) {
-    if (p.required_by & parts) r.fail(key, "missing required key (" + p.meaning + ")");
+    const bool fzg_torque = key == kTorqueKey && r.has(kFzgStageKey);  // the load stage gives it
+    if ((p.required_by & parts) && !fzg_torque) r.fail(key, "missing required key (" + p.meaning + ")");
     if (!flank_row && p.defaulted()) c.parameters.push_back({key, p.format(p.get(c, gear)), "default"});
     return;
   }
@@ -472,6 +479,13 @@ void apply_change(TomlReader& r, const std::string& key, const std::string& valu
   } else if (fixed_lubricant_key(key)) {
     r.erase("lubricant.file");
   }
+  // The torque's two forms replace each other: a torque, or an FZG load stage with its test.
+  if (key == kTorqueKey) {
+    r.erase(kFzgStageKey);
+    r.erase(kFzgTestKey);
+  } else if (key == kFzgStageKey || key == kFzgTestKey) {
+    r.erase(kTorqueKey);
+  }
   // pinion.flank.rq = ... replaces the flank's other roughness forms.
   for (const char* gear : {"pinion.flank.", "wheel.flank."}) {
     const std::string flank(gear);
@@ -511,6 +525,38 @@ void check_change(TomlReader& r, const std::string& key) {
       return;
   }
   if (const std::string rule = value_rule(r, *p, key, v); !rule.empty()) r.fail(key, rule);
+}
+
+// An FZG load stage and its test in place of the torque: the torque from the compiled load-stage
+// table (io/fzg_load_stages.hpp), recorded where the torque's row stands with the table as its
+// origin. Both forms given, or one of the pair without the other, is refused naming the keys.
+void read_fzg_load_stage(TomlReader& r, Case& c) {
+  const bool stage = r.has(kFzgStageKey), test = r.has(kFzgTestKey);
+  if (!stage && !test) return;
+  if (!stage)
+    r.fail(kFzgTestKey,
+           "names the test of operating.fzg_load_stage, which is not given: give the stage or remove "
+           "the test");
+  if (!test)
+    r.fail(kFzgStageKey, "needs operating.fzg_test, the test whose lever arm sets the stage's torque (known: " +
+                             choices_text(fzg_test_names()) + ")");
+  if (r.has(kTorqueKey))
+    r.fail(kTorqueKey,
+           fmt::format("give the torque or the FZG load stage, not both (operating.fzg_load_stage = {} at {})",
+                       c.operating.fzg_load_stage, r.where(kFzgStageKey)));
+  FzgTorque t;
+  try {
+    t = fzg_pinion_torque(c.operating.fzg_test, c.operating.fzg_load_stage);
+  } catch (const std::invalid_argument& e) {
+    r.fail(kFzgStageKey, e.what());
+  }
+  c.operating.pinion_torque = t.torque;
+  const Parameter& row = *find_parameter(kTorqueKey).parameter;
+  ParameterValue v;
+  v.number = t.torque;
+  const auto at = std::find_if(c.parameters.begin(), c.parameters.end(),
+                               [](const ResolvedParameter& p) { return p.key == kFzgStageKey; });
+  c.parameters.insert(at, {std::string(kTorqueKey), row.format(v), t.origin});
 }
 
 // Extrapolating Walther's law this far beyond a lubricant's data range is refused; within it, warned.
@@ -611,6 +657,7 @@ Case load_case_from(TomlReader& r, const std::vector<CaseChange>& changes, unsig
   }
 
   // Rules between keys.
+  read_fzg_load_stage(r, c);
   const auto& gp = c.gear_pair;
   if (!(gp.dedendum_coefficient > gp.addendum_coefficient))
     r.fail("gear_pair.dedendum_coefficient", "must exceed the addendum coefficient (tip clearance)");

@@ -5,6 +5,7 @@
 #include "contact/deterministic_contact.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/rough_line_contact.hpp"
+#include "io/fzg_load_stages.hpp"
 #include "lubrication/ehl_film.hpp"
 #include "lubrication/film_closure.hpp"
 #include "lubrication/flank_temperature.hpp"
@@ -134,6 +135,14 @@ std::vector<std::string> model_names() {
   std::vector<std::string> out;
   for (auto n : asperity::asperity_model_names()) out.emplace_back(n);
   return out;
+}
+
+// The FZG tests and their lever arms, as operating.fzg_test's meaning.
+std::string fzg_tests_text() {
+  std::string s = "The FZG test of operating.fzg_load_stage, which names the lever arm the stage's weights hang on:";
+  for (const FzgTest& t : fzg_tests())
+    s += fmt::format("{} {}: {}, {:g} m arm", s.back() == ':' ? "" : ";", t.name, t.what, t.lever_arm);
+  return s;
 }
 
 std::vector<Parameter> build_table() {
@@ -403,7 +412,21 @@ std::vector<Parameter> build_table() {
       .plausible(1e-6, 1e7)
       .required(kGeometryPart)
       .alias({"torque"})
-      .doc("Pinion torque T1");
+      .doc("Pinion torque T1; or give operating.fzg_load_stage with operating.fzg_test instead");
+  add(integer(
+          "operating.fzg_load_stage", [](auto& c, int) -> auto& { return c.operating.fzg_load_stage; }))
+      .range(kFzgMinLoadStage, kFzgMaxLoadStage)
+      .no_default()
+      .alias({"fzg_load_stage"})
+      .doc(
+          "FZG load stage: sets the pinion torque from the FZG rig's load-stage table of operating.fzg_test's lever "
+          "arm (gears/fzg/load-stages.csv); instead of operating.pinion_torque");
+  add(text(
+          "operating.fzg_test", K::choice, [](auto& c, int) -> auto& { return c.operating.fzg_test; }))
+      .choices(fzg_test_names(), "FZG test")
+      .no_default()
+      .alias({"fzg_test"})
+      .doc(fzg_tests_text());
   add(quantity(
           "operating.pinion_speed", D::angular_speed, [](auto& c, int) -> auto& { return c.operating.pinion_speed; }))
       .range(1e-6, 1e6)

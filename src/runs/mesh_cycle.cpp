@@ -72,11 +72,17 @@ std::pair<std::string, int> location_of(const Case& c, const std::string& key) {
       continue;
     roughness += fmt::format("{}{} = {} ({})", roughness.empty() ? "" : ", ", p.key, p.value, p.origin);
   }
-  const std::string key = "operating.pinion_torque";
+  // The torque as the case gave it: itself, or an FZG load stage (whose row names the table's torque).
+  const ResolvedParameter* torque = recorded(c, "operating.pinion_torque");
+  const bool stage = recorded(c, "operating.fzg_load_stage") != nullptr;
+  const std::string key = stage ? "operating.fzg_load_stage" : "operating.pinion_torque";
   const auto [file, line] = location_of(c, key);
-  const ResolvedParameter* torque = recorded(c, key);
-  throw io::InputError(file, line, key, torque ? torque->value : "",
-                       what + ": lower the torque, or check the flanks' roughness" +
+  const ResolvedParameter* given = recorded(c, key);
+  throw io::InputError(file, line, key, given ? given->value : "",
+                       what +
+                           (stage && torque ? ": lower the load stage (its torque " + torque->value + ")"
+                                            : std::string(": lower the torque")) +
+                           ", or check the flanks' roughness" +
                            (roughness.empty() ? std::string() : " (" + roughness + ")"));
 }
 
