@@ -60,7 +60,7 @@ POINT_QUANTITIES = [
     ("flash_temperature_K", "flash temperature, local mu (independent: integrated)", INDEPENDENT),
 ]
 SPEEDS = ["500rpm", "1000rpm", "2175rpm", "3000rpm", "4350rpm"]
-TORQUES = ["94.1N m", "183.4N m", "302N m", "372.6N m", "534.5N m"]   # FZG load stages 5, 7, 9, 10, 12
+STAGES = ["5", "7", "9", "10", "12"]   # FZG load stages (the case's PT-C: 0.5 m arm)
 RAS = ["0.1um", "0.2um", "0.3um", "0.4um", "0.5um"]
 
 
@@ -170,16 +170,16 @@ def main(argv):
 
         print("3. trends (geartrib sweep)")
         sp = sweep(binary, tmp, "speed", "speed=" + ",".join(SPEEDS))
-        tq = sweep(binary, tmp, "torque", "torque=" + ",".join(TORQUES))
-        tq_fine = sweep(binary, tmp, "torque-ra02", "torque=" + ",".join(TORQUES), "ra=0.2um")
+        tq = sweep(binary, tmp, "torque", "fzg_load_stage=" + ",".join(STAGES))
+        tq_fine = sweep(binary, tmp, "torque-ra02", "fzg_load_stage=" + ",".join(STAGES), "ra=0.2um")
         ra = sweep(binary, tmp, "ra", "ra=" + ",".join(RAS))
         series = {
             "speed -> film_m_min": (SPEEDS, [float(r["film_m_min"]) for r in sp]),
             "ra -> asperity_load_share_max": (RAS, [float(r["asperity_load_share_max"]) for r in ra]),
-            "torque (Ra 0.2 um) -> asperity_load_share_max": (TORQUES, [float(r["asperity_load_share_max"])
-                                                                       for r in tq_fine]),
-            "torque (case, Ra 0.5 um) -> asperity_load_share_max": (TORQUES, [float(r["asperity_load_share_max"])
-                                                                             for r in tq]),
+            "torque (Ra 0.2 um) -> asperity_load_share_max": (STAGES, [float(r["asperity_load_share_max"])
+                                                                      for r in tq_fine]),
+            "torque (case, Ra 0.5 um) -> asperity_load_share_max": (STAGES, [float(r["asperity_load_share_max"])
+                                                                            for r in tq]),
         }
         trends = {}
         for what, (axis, values) in series.items():

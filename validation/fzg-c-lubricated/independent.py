@@ -91,6 +91,21 @@ def load_toml(path):
         return tomllib.load(f)
 
 
+# --- the FZG load stage ---------------------------------------------------------------------------
+FZG_TABLE = os.path.join(os.path.dirname(os.path.dirname(HERE)), "gears", "fzg", "load-stages.csv")
+FZG_ARM = {"A/8.3/90": "0.5m", "PT-C": "0.5m", "GF-C/8.3/90": "0.35m"}  # the tests' lever arms (gears/fzg/README.md)
+
+
+def fzg_torque(stage, test):
+    """The pinion torque [N m] of an FZG load stage, read from the shipped table (gears/fzg)."""
+    import csv
+    with open(FZG_TABLE) as f:
+        for row in csv.DictReader(line for line in f if not line.startswith("#")):
+            if int(row["load_stage"]) == int(stage):
+                return float(row[f"pinion_torque_arm_{FZG_ARM[test]}[N m]"])
+    raise ValueError(f"no FZG load stage {stage} in {FZG_TABLE}")
+
+
 # --- the oil ------------------------------------------------------------------------------------
 class Oil:
     def __init__(self, path):
@@ -177,7 +192,8 @@ class Gears:
         s_a = self.t1t2 - math.sqrt(self.ra2 ** 2 - self.rb2 ** 2)
         self.s = {"A": s_a, "B": s_e - self.pb, "C": self.rb1 * math.tan(self.alpha_w), "D": s_a + self.pb, "E": s_e}
         op = c["operating"]
-        self.torque = si(op["pinion_torque"])
+        self.torque = si(op["pinion_torque"]) if "pinion_torque" in op else fzg_torque(op["fzg_load_stage"],
+                                                                                      op["fzg_test"])
         self.w1 = si(op["pinion_speed"])
         self.w2 = self.w1 * self.z1 / self.z2
         self.t_oil = si(op["oil_temperature"])
