@@ -96,6 +96,7 @@ struct FlankSynthesis {
   double profile_rq = 0.0;           // tooth 0's [m]
   int iterations = 0;                // IAAFT: the most any tooth took
   double spectrum_misfit = 0.0;      // IAAFT: the largest
+  double curvature_ratio = 1.0;      // IAAFT: m4 over the spectrum's, the farthest from 1
   bool converged = true;             // IAAFT: every tooth's
 };
 

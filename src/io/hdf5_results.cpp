@@ -101,6 +101,7 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
       if (f.method == "iaaft") {
         number_attribute(g, "iaaft_iterations", f.iterations);
         number_attribute(g, "iaaft_spectrum_misfit", f.spectrum_misfit);
+        number_attribute(g, "iaaft_curvature_ratio", f.curvature_ratio);
         number_attribute(g, "iaaft_converged", f.converged ? 1.0 : 0.0);
       }
     }

@@ -182,6 +182,8 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
         }
         record.iterations = std::max(record.iterations, s.iterations);
         record.spectrum_misfit = std::max(record.spectrum_misfit, s.spectrum_misfit);
+        if (std::abs(s.curvature_ratio - 1.0) > std::abs(record.curvature_ratio - 1.0))
+          record.curvature_ratio = s.curvature_ratio;
         record.converged = record.converged && s.converged;
         tracks.push_back({std::move(s.profile), start});
       }
@@ -265,8 +267,9 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
     if (!f.converged)
       r.warnings.push_back(fmt::format(
           "the {} flank's IAAFT synthesis stopped after {} iterations with its Fourier amplitudes {:.2g}% rms from "
-          "the spectrum's (the patch's height distribution exact, the spectrum within that)",
-          f.gear, f.iterations, 100.0 * f.spectrum_misfit));
+          "the spectrum's and its curvature moment m4 {:+.1f}% (the patch's height distribution exact; the rank "
+          "step's roughness at the sampling scale raises m4): consider synthesis = \"psd\"",
+          f.gear, f.iterations, 100.0 * f.spectrum_misfit, 100.0 * (f.curvature_ratio - 1.0)));
     if (f.rolled_off_fraction > kRolledOffWarning)
       r.warnings.push_back(fmt::format(
           "{:.0f}% of the {} patch's height variance ({}) lies at wavelengths near or beyond its length, which the "

@@ -231,26 +231,28 @@ SynthesisedProfile synthesise_profile(const ProfileSpectrum& s, const SynthesisO
               [&](std::size_t a, std::size_t b) { return x[a] < x[b] || (x[a] == x[b] && a < b); });
     for (std::size_t i = 0; i < m; ++i) y[order[i]] = target[i];
   };
-  // Each pass: the misfit of y's amplitudes; done below kIaaftMisfit or at max_iterations, else the
-  // amplitudes restored (y's phases kept; a zero coefficient takes phase 0) and y rank-ordered anew; a
-  // fixed point (the ranks unchanged) leaves y as it was.
-  out.converged = false;
+  // Each pass: y's misfits; done when both are within bounds or at max_iterations, else the amplitudes
+  // restored (y's phases kept; a zero coefficient takes phase 0) and y rank-ordered anew; a fixed point
+  // (the ranks unchanged) leaves y as it was, and stops.
   rank_order();
   for (;;) {
     std::copy(y.begin(), y.end(), real.get());
     fftw_execute(forward.get());
-    double misfit = 0.0, norm = 0.0;  // |Y_j|/m against a_j: the unnormalised forward transform is m C_j
+    // |Y_j|/m against a_j (the unnormalised forward transform is m C_j); the curvature moment
+    // sum (2 pi f_j)^4 C_j^2 against sum (2 pi f_j)^4 a_j^2 (the factor of the Nyquist bin alike on both).
+    double misfit = 0.0, norm = 0.0, curvature = 0.0, curvature_norm = 0.0;
     for (std::size_t j = 1; j < bins; ++j) {
       const double r = std::hypot(spectrum[j][0], spectrum[j][1]) / static_cast<double>(m);
+      const double w = std::pow(2.0 * kPi * static_cast<double>(j) * df, 4);
       misfit += (r - amplitude[j]) * (r - amplitude[j]);
       norm += amplitude[j] * amplitude[j];
+      curvature += w * r * r;
+      curvature_norm += w * amplitude[j] * amplitude[j];
     }
     out.spectrum_misfit = norm > 0.0 ? std::sqrt(misfit / norm) : 0.0;
-    if (out.spectrum_misfit <= kIaaftMisfit) {
-      out.converged = true;
-      break;
-    }
-    if (out.iterations >= o.max_iterations) break;
+    out.curvature_ratio = curvature_norm > 0.0 ? curvature / curvature_norm : 1.0;
+    out.converged = out.spectrum_misfit <= kIaaftMisfit && std::abs(out.curvature_ratio - 1.0) <= kIaaftCurvature;
+    if (out.converged || out.iterations >= o.max_iterations) break;
     for (std::size_t j = 0; j < bins; ++j) {
       const double r = std::hypot(spectrum[j][0], spectrum[j][1]);
       const double a = j == 0 ? 0.0 : amplitude[j];
@@ -265,10 +267,7 @@ SynthesisedProfile synthesise_profile(const ProfileSpectrum& s, const SynthesisO
     ++out.iterations;
     previous = order;
     rank_order();
-    if (order == previous) {
-      out.converged = true;
-      break;
-    }
+    if (order == previous) break;  // a fixed point: y and its misfits as they were
   }
   x = y;
   return out;
