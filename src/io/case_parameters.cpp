@@ -341,12 +341,14 @@ std::vector<Parameter> build_table() {
           [](const std::string& t) { return surface::synthesis_method(t); },
           [](surface::SynthesisMethod m) { return std::string(surface::synthesis_method_name(m)); }))
       .doc(
-          "Deterministic: none (the line at profile_at, which must cover the flank) or a flank-long profile "
-          "synthesised from the surface's profile spectrum along profile_axis (all its lines; wavelengths longer "
-          "than the surface none): random phases (psd), or with its height distribution kept (iaaft)");
+          "Deterministic: none (the line at profile_at, which must cover the flank), or a flank-long profile "
+          "synthesised from the surface's profile spectrum along profile_axis (all its lines; nothing at wavelengths "
+          "longer than the surface): random phases (psd), or also its height distribution kept (iaaft)");
   add(integer("{gear}.flank.topography.synthesis_seed", topo_ref([](auto& t) -> auto& { return t.synthesis_seed; })))
       .range(0, 4294967295.0)
-      .doc("Synthesis: random seed of the phases (tooth t of the hunting order: seed + t)");
+      .doc(
+          "Synthesis: random seed of the phases (tooth t of the hunting order: seed + t); give the two flanks "
+          "different seeds");
   add(quantity("{gear}.flank.topography.synthesis_length", D::length,
                topo_ref([](auto& t) -> auto& { return t.synthesis_length; })))
       .range(0.0, 1.0)
