@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <numbers>
 #include <numeric>
 #include <random>
@@ -67,10 +66,10 @@ double ProfileSpectrum::rolled_off_fraction() const {
 }
 
 double ProfileSpectrum::at(double f) const {
+  if (psd.size() < 2) return 0.0;
   const double df = frequency_step();
-  const std::size_t top = psd.size() - 1;
-  if (psd.size() < 2 || !(f >= df) || f > highest_frequency()) return 0.0;
-  const auto k = std::min(static_cast<std::size_t>(f / df), top - 1);  // f in [f_k, f_{k+1}], k >= 1
+  if (!(f >= df) || f > highest_frequency()) return 0.0;
+  const auto k = std::min(static_cast<std::size_t>(f / df), psd.size() - 2);  // f in [f_k, f_{k+1}], k >= 1
   const double fk = static_cast<double>(k) * df, fk1 = static_cast<double>(k + 1) * df;
   const double gk = psd[k], gk1 = psd[k + 1];
   if (gk > 0.0 && gk1 > 0.0) return gk * std::pow(gk1 / gk, std::log(f / fk) / std::log(fk1 / fk));

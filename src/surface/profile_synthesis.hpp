@@ -62,7 +62,7 @@ const char* synthesis_method_name(SynthesisMethod m);
 // max_iterations spectrum restorations, or at a fixed point (the ranks unchanged by a pass; Schreiber &
 // Schmitz). Patches with power down to their sampling scale converge in a few to tens of passes (Rsk
 // 1.6: 11 passes); on the shipped synthetic patches, bare below 7.5 um wavelengths along x, the first
-// rank step nearly doubles m4: the pinion's converges after 111 passes, the wheel's stalls at +8%.
+// rank step nearly doubles m4: the pinion's converges after 110 passes, the wheel's stalls at +8%.
 inline constexpr double kIaaftMisfit = 5e-3;
 inline constexpr double kIaaftCurvature = 0.05;
 inline constexpr int kIaaftIterations = 200;
