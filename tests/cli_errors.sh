@@ -172,7 +172,7 @@ check dry-no-lubricant 0 "wrote" -- "$bin" run gears/m6z30-dry.toml -o "$tmp/dry
 # elements finer than a profile's sampling: exit 2 naming the key and file; nothing written.
 check det-no-profile 2 "m6z30-dry.toml \(--set contact.fidelity=deterministic\): key 'pinion.flank': the deterministic fidelity rolls each flank's profile" -- \
   "$bin" run gears/m6z30-dry.toml --set contact.fidelity=deterministic -o "$tmp/det-bad.h5" -q
-check det-short-profile 2 "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.file' = surfaces/pinion-flank.h5: its profile along x is 0.09575 mm long; the deterministic contact reads 11.3 mm.*synthesise one from its spectrum \(synthesis = \"psd\" or \"iaaft\" in \[pinion.flank.topography\]\)" -- \
+check det-short-profile 2 "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.file' = surfaces/pinion-flank.h5: its profile along x is 0.09575 mm long; the deterministic contact reads 11.46 mm.*synthesise one from its spectrum \(synthesis = \"psd\" or \"iaaft\" in \[pinion.flank.topography\]\)" -- \
   "$bin" run gears/m6z30-measured.toml --fidelity deterministic --set pinion.flank.topography.synthesis=none -o "$tmp/det-bad.h5" -q
 check det-sampling 2 "key 'contact.element_size' = 0.1 um: finer than the 0.125 um spacing of pinion.flank.profile.spacing" -- \
   "$bin" run gears/m6z30-deterministic.toml --set contact.element_size=0.1um -o "$tmp/det-bad.h5" -q
@@ -255,7 +255,7 @@ bad_measured synth-length-range 's/^# synthesis_length = "12 mm" .*/synthesis_le
 bad_measured synth-length-negative 's/^# synthesis_length = "12 mm" .*/synthesis_length = "-5 mm"/' \
   "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.synthesis_length' = \"-5 mm\": must not be negative"
 bad_measured synth-length-short 's/^# synthesis_length = "12 mm" .*/synthesis_length = "5 mm"/' \
-  "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.synthesis_length' = 5 mm: the synthesised profile, centred on the pinion's active flank, must cover the 11.3 mm the deterministic contact reads"
+  "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.synthesis_length' = 5 mm: the synthesised profile, centred on the pinion's active flank, must cover the 11.46 mm the deterministic contact reads"
 bad_measured synth-method 's/^synthesis = "psd" .*/synthesis = "fft"/' \
   "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.synthesis' = \"fft\": unknown value 'fft' \(known: none, psd, iaaft\)"
 # The same seed on both flanks: warned (the same phases), not refused.
