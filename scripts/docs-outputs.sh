@@ -88,6 +88,13 @@ ex run-deterministic run gears/m6z30-deterministic.toml --set running_in.meshes=
 sh_ex run-deterministic "/usr/bin/python3 scripts/plot_deterministic.py runin.h5 -o runin"
 cp runin-running-in.png "$fig/deterministic-running-in.png"
 
+fresh run-measured-patch
+ex run-measured-patch run gears/m6z30-measured.toml --fidelity deterministic -o measured-det.h5
+# The table of quantities (as in run-deterministic) left out of this page's excerpt.
+sed -i '/^quantity  /,/^statistical_flag_deep_separation/c\(the table of quantities along the path, as above, left out here)' "$out/run-measured-patch.txt"
+blank run-measured-patch
+sh_ex run-measured-patch "/usr/bin/python3 -c \"import h5py; a = h5py.File('measured-det.h5', 'r')['synthesis/pinion'].attrs; [print(k, '=', a[k].decode() if isinstance(a[k], bytes) else a[k]) for k in sorted(a)]\""
+
 fresh sweep
 # columns FILE COLUMN...: selected columns of a sweep's CSV, numbers to 4 digits.
 columns() {

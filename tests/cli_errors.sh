@@ -239,8 +239,8 @@ check dry-no-lubricant 0 "wrote" -- "$bin" run gears/m6z30-dry.toml -o "$tmp/dry
 # elements finer than a profile's sampling: exit 2 naming the key and file; nothing written.
 check det-no-profile 2 "m6z30-dry.toml \(--set contact.fidelity=deterministic\): key 'pinion.flank': the deterministic fidelity rolls each flank's profile" -- \
   "$bin" run gears/m6z30-dry.toml --set contact.fidelity=deterministic -o "$tmp/det-bad.h5" -q
-check det-short-profile 2 "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.file' = surfaces/pinion-flank.h5: its profile along x is 0.09575 mm long; the deterministic contact reads 11.3 mm" -- \
-  "$bin" run gears/m6z30-measured.toml --fidelity deterministic -o "$tmp/det-bad.h5" -q
+check det-short-profile 2 "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.file' = surfaces/pinion-flank.h5: its profile along x is 0.09575 mm long; the deterministic contact reads 11.46 mm.*synthesise one from its spectrum \(synthesis = \"psd\" or \"iaaft\" in \[pinion.flank.topography\]\)" -- \
+  "$bin" run gears/m6z30-measured.toml --fidelity deterministic --set pinion.flank.topography.synthesis=none -o "$tmp/det-bad.h5" -q
 check det-sampling 2 "key 'contact.element_size' = 0.1 um: finer than the 0.125 um spacing of pinion.flank.profile.spacing" -- \
   "$bin" run gears/m6z30-deterministic.toml --set contact.element_size=0.1um -o "$tmp/det-bad.h5" -q
 check det-smooth-statistical 2 "key 'pinion.flank.profile.kind'.*only contact.fidelity = \"deterministic\" takes it" -- \
@@ -287,6 +287,60 @@ check holes-statistical 0 "wrote" -- "$bin" run "$tmp/holes/case.toml" --positio
 check holes-deterministic 2 "case.toml:[0-9]+: key 'pinion.flank.topography.file' = \"patch.csv\": .*patch.csv: the line the deterministic fidelity rolls along x: row 128 \\(y = 6.4e-05 m\\) has 1 missing point\\(s\\).*pinion.flank.topography.fill = true fills missing points" -- \
   "$bin" run "$tmp/holes/case.toml" --fidelity deterministic --positions 5 -o "$tmp/holes/d.h5" -q
 [[ ! -e "$tmp/holes/d.h5" ]] && echo "ok   holes-nothing-written" || { echo "FAIL holes d.h5 written"; fail=1; }
+# A patch shorter than the flank (issue 29): the shipped measured case synthesises flank-long profiles
+# from its 96 um patches and runs deterministically, recording what each flank came from; the synthesis
+# keys out of range or too short a length: exit 2 naming file, line, key, value and rule, nothing written.
+check det-synthesised 0 "pinion flank synthesised \(psd, seed 1\) from surfaces/pinion-flank.h5: 384 lines of 96 um" -- \
+  "$bin" run gears/m6z30-measured.toml --fidelity deterministic --positions 21 -o "$tmp/synth.h5"
+# IAAFT on this patch (its spectrum bare below 7.5 um wavelengths) stalls with m4 raised: warned.
+check det-synthesised-iaaft 0 "warning: the pinion flank's IAAFT synthesis stopped after 200 iterations.*curvature moment m4 \+[0-9.]+%" -- "$bin" run gears/m6z30-measured.toml \
+  --fidelity deterministic --positions 21 --set pinion.flank.topography.synthesis=iaaft \
+  --set pinion.flank.topography.synthesis_length=12mm -o "$tmp/synth-iaaft.h5"
+/usr/bin/python3 - "$tmp/synth.h5" "$tmp/synth-iaaft.h5" <<'PY' && echo "ok   det-synthesised-recorded" || { echo "FAIL det-synthesised-recorded"; fail=1; }
+import sys, h5py
+g = h5py.File(sys.argv[1], "r")["synthesis"]
+p, w = g["pinion"].attrs, g["wheel"].attrs
+assert p["patch"] == b"surfaces/pinion-flank.h5" and w["patch"] == b"surfaces/wheel-flank.h5", dict(p)
+assert p["method"] == b"psd" and p["seed"] == 1 and w["seed"] == 1001 and p["teeth"] == 1, dict(p)
+assert p["patch_lines"] == 384 and 0 < p["profile_rq_m"] < p["patch_rq_m"] and "iaaft_converged" not in p, dict(p)
+p = h5py.File(sys.argv[2], "r")["synthesis/pinion"].attrs
+assert p["method"] == b"iaaft" and p["iaaft_converged"] == 0 and p["iaaft_iterations"] == 200, dict(p)
+assert p["iaaft_curvature_ratio"] > 1.05 and 12e-3 <= p["profile_length_m"] < 12.1e-3, dict(p)
+PY
+# The hunting order: a profile per tooth (seed + tooth), 30 a flank; no shared seeds (1 and 1001), no warning.
+check det-synthesised-hunting 0 "pinion flank synthesised \(psd, seed 1 \+ tooth\)" -- "$bin" run gears/m6z30-measured.toml \
+  --fidelity deterministic --set running_in.teeth=hunting --set running_in.meshes=1 --positions 60 \
+  --set contact.element_size=2um -o "$tmp/synth-hunting.h5"
+"$bin" case gears/m6z30-measured.toml --set contact.fidelity=deterministic --set running_in.teeth=hunting \
+  --set running_in.meshes=1 2>&1 | grep -q "share values with" && { echo "FAIL det-synthesised-hunting: seeds warned"; fail=1; }
+/usr/bin/python3 - "$tmp/synth-hunting.h5" <<'PY' && echo "ok   det-synthesised-hunting-recorded" || { echo "FAIL det-synthesised-hunting-recorded"; fail=1; }
+import sys, h5py
+g = h5py.File(sys.argv[1], "r")["synthesis"]
+assert g["pinion"].attrs["teeth"] == 30 and g["wheel"].attrs["teeth"] == 30 and g["wheel"].attrs["seed"] == 1001
+PY
+bad_measured() {  # bad_measured NAME SED_EXPR PATTERN: the measured case changed, run deterministically
+  rm -rf "$tmp/s" && mkdir -p "$tmp/s/gears" && cp -r gears/surfaces "$tmp/s/gears/" && cp -r materials "$tmp/s/"
+  sed "$2" gears/m6z30-measured.toml > "$tmp/s/gears/m6z30-measured.toml"
+  check "$1" 2 "$3" -- "$bin" run "$tmp/s/gears/m6z30-measured.toml" --fidelity deterministic --positions 21 -o "$tmp/s/out.h5" -q
+  [[ ! -e "$tmp/s/out.h5" ]] && echo "ok   $1-nothing-written" || { echo "FAIL $1: out.h5 written"; fail=1; }
+}
+bad_measured synth-seed-negative 's/^synthesis_seed = 1 .*/synthesis_seed = -1/' \
+  "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.synthesis_seed' = -1: must not be negative \(range \[0, 4294967295\]\)"
+bad_measured synth-seed-large 's/^synthesis_seed = 1001 .*/synthesis_seed = 4294967296/' \
+  "m6z30-measured.toml:[0-9]+: key 'wheel.flank.topography.synthesis_seed' = 4294967296: must lie in \[0, 4294967295\]"
+bad_measured synth-seed-fraction 's/^synthesis_seed = 1 .*/synthesis_seed = 1.5/' \
+  "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.synthesis_seed' = 1.5: expected an integer"
+bad_measured synth-length-range 's/^# synthesis_length = "12 mm" .*/synthesis_length = "2 m"/' \
+  "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.synthesis_length' = \"2 m\": must lie in \[0 m, 1 m\]"
+bad_measured synth-length-negative 's/^# synthesis_length = "12 mm" .*/synthesis_length = "-5 mm"/' \
+  "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.synthesis_length' = \"-5 mm\": must not be negative"
+bad_measured synth-length-short 's/^# synthesis_length = "12 mm" .*/synthesis_length = "5 mm"/' \
+  "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.synthesis_length' = 5 mm: the synthesised profile, centred on the pinion's active flank, must cover the 11.46 mm the deterministic contact reads"
+bad_measured synth-method 's/^synthesis = "psd" .*/synthesis = "fft"/' \
+  "m6z30-measured.toml:[0-9]+: key 'pinion.flank.topography.synthesis' = \"fft\": unknown value 'fft' \(known: none, psd, iaaft\)"
+# The same seed on both flanks: warned (the same phases), not refused.
+check synth-same-seed 0 "warning: key 'wheel.flank.topography.synthesis_seed' = 1: the wheel's synthesis seeds \(1\) share values with the pinion's \(1\)" -- \
+  "$bin" case gears/m6z30-measured.toml --set contact.fidelity=deterministic --set wheel.flank.topography.synthesis_seed=1
 # The lightest load: elastic, a finite answer (the capped bracket cannot resolve it; the elastic solve can).
 check det-light-load 0 "wrote" -- "$bin" run gears/m6z30-deterministic.toml --set torque=1e-6Nm --positions 11 -o "$tmp/det-light.h5" -q || { echo "FAIL det-bad.h5 written"; fail=1; }
 

@@ -236,6 +236,44 @@ TEST_F(BadInput, MeasuredFlanksGiveTheirSummitStatistics) {
   EXPECT_EQ(c.wheel.flank.topography->file, "wheel.csv");
 }
 
+TEST(CaseFile, MeasuredPatchSynthesisKeys) {
+  // The shipped measured case synthesises both flanks (psd, seeds 1 and 1001, the default length):
+  // the loader keeps each patch's profile spectrum along x, that of the cleaned surface (every line).
+  const auto path = test::source_dir() / "gears/m6z30-measured.toml";
+  const Case c = io::load_case(path);
+  ASSERT_TRUE(c.pinion.flank.topography.has_value());
+  const TopographySpec& t = *c.pinion.flank.topography;
+  EXPECT_EQ(t.synthesis, surface::SynthesisMethod::psd);
+  EXPECT_EQ(t.synthesis_seed, 1u);
+  EXPECT_EQ(c.wheel.flank.topography->synthesis_seed, 1001u);
+  EXPECT_EQ(t.synthesis_length, 0.0);
+  EXPECT_TRUE(t.profile_along_x);
+  ASSERT_TRUE(c.pinion.flank.patch_spectrum.has_value());
+  surface::HeightGrid g = io::read_topography(test::source_dir() / "gears/surfaces/pinion-flank.h5");
+  surface::clean_surface(g, t.clean);
+  const surface::ProfileSpectrum want = surface::profile_spectrum(g, true);
+  const surface::ProfileSpectrum& got = *c.pinion.flank.patch_spectrum;
+  EXPECT_EQ(got.lines, 384u);
+  EXPECT_EQ(got.points, 384u);
+  EXPECT_EQ(got.spacing, 0.25e-6);
+  EXPECT_EQ(got.psd, want.psd);
+  EXPECT_EQ(got.heights, want.heights);
+  // Changed on the command line; none keeps no spectrum (a case without the keys loads as before).
+  const Case d = io::load_case(path, {{"pinion.flank.topography.synthesis", "iaaft"},
+                                      {"pinion.flank.topography.synthesis_length", "12 mm"},
+                                      {"wheel.flank.topography.synthesis", "none"}});
+  EXPECT_EQ(d.pinion.flank.topography->synthesis, surface::SynthesisMethod::iaaft);
+  EXPECT_DOUBLE_EQ(d.pinion.flank.topography->synthesis_length, 12e-3);
+  EXPECT_FALSE(d.wheel.flank.patch_spectrum.has_value());
+  // The same seed on both flanks is warned about at the wheel's key (the same phases), not refused.
+  const Case e =
+      io::load_case(path, {{"contact.fidelity", "deterministic"}, {"wheel.flank.topography.synthesis_seed", "1"}});
+  bool warned = false;
+  for (const auto& w : e.warnings)
+    warned = warned || w.find("wheel.flank.topography.synthesis_seed") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
 TEST_F(BadInput, MeasuredFlankErrorsNameTheFile) {
   const auto toml = dir_ / "gears/m6z30.toml";
   replace_line(toml, "ra = \"0.8 um\"", "topography = { file = \"missing.xyz\" }");

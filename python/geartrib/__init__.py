@@ -322,8 +322,10 @@ def run(case=None, *, positions: int | None = None, as_dict: bool = False):
     ``running_in_*`` over ``mesh`` (0: the new flanks, NaN in the contact columns), the flanks'
     profiles ``running_in_{pinion,wheel}_profile_{initial,final}_m`` over
     ``running_in_{pinion,wheel}_arc_m`` (along the active flank from its root end) and attrs
-    ``running_in.*`` (teeth, meshes, shakedown_mesh, tolerance_m, profile spacings). As a dict the
-    same names hold the same arrays (``attrs["running_in"]`` a dict)."""
+    ``running_in.*`` (teeth, meshes, shakedown_mesh, tolerance_m, profile spacings). Flanks
+    synthesised from a measured patch are recorded as attrs ``synthesis.<gear>.*`` (the file's
+    ``/synthesis/<gear>``). As a dict the same names hold the same arrays (``attrs["running_in"]``,
+    ``attrs["synthesis"]`` dicts)."""
     case = _as_case(case)
     if positions is not None:
         case = case.set({"contact.positions": positions})

@@ -118,6 +118,31 @@ py::dict result_dict(const contact::MeshContactResult& r) {
     }
     d["running_in"] = q;
   }
+  if (!r.synthesis.empty()) {
+    // Flanks synthesised from a measured patch: the file's /synthesis/<gear> attributes as "<gear>.<name>".
+    py::dict q;
+    for (const auto& f : r.synthesis) {
+      const std::string g = f.gear + ".";
+      q[py::str(g + "patch")] = f.patch;
+      q[py::str(g + "method")] = f.method;
+      q[py::str(g + "seed")] = f.seed;
+      q[py::str(g + "teeth")] = f.teeth;
+      q[py::str(g + "patch_lines")] = f.patch_lines;
+      q[py::str(g + "patch_points")] = f.patch_points;
+      q[py::str(g + "patch_spacing_m")] = f.patch_spacing;
+      q[py::str(g + "patch_rq_m")] = f.patch_rq;
+      q[py::str(g + "rolled_off_fraction")] = f.rolled_off_fraction;
+      q[py::str(g + "profile_length_m")] = f.profile_length;
+      q[py::str(g + "profile_rq_m")] = f.profile_rq;
+      if (f.method == "iaaft") {
+        q[py::str(g + "iaaft_iterations")] = f.iterations;
+        q[py::str(g + "iaaft_spectrum_misfit")] = f.spectrum_misfit;
+        q[py::str(g + "iaaft_curvature_ratio")] = f.curvature_ratio;
+        q[py::str(g + "iaaft_converged")] = f.converged;
+      }
+    }
+    d["synthesis"] = q;
+  }
   d["regime"] = r.regime;
   d["verdict"] = r.verdict;
   d["warnings"] = r.warnings;

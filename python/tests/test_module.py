@@ -175,6 +175,25 @@ def test_deterministic_run_as_xarray():
     assert ds.attrs["running_in.teeth"] == "pair" and ds.attrs["running_in.meshes"] == ds.mesh.size - 1
 
 
+def test_synthesised_flanks_recorded_as_the_command_records_them(tool, tmp_path):
+    """The shipped measured case, deterministic: each flank synthesised from its patch, the record in
+    the attrs equal to the command's /synthesis/<gear> attributes."""
+    h5py = pytest.importorskip("h5py")
+    path = tmp_path / "m.h5"
+    tool("run", "gears/m6z30-measured.toml", "--fidelity", "deterministic", "--positions", "5", "-q", "-o", path)
+    r = gt.run(gt.load_case("gears/m6z30-measured.toml").set({"contact.fidelity": "deterministic"}), positions=5,
+               as_dict=True)
+    s = r["attrs"]["synthesis"]
+    with h5py.File(path, "r") as f:
+        for gear in ("pinion", "wheel"):
+            attrs = f["synthesis"][gear].attrs
+            assert sorted(f"{gear}.{k}" for k in attrs) == sorted(k for k in s if k.startswith(gear + "."))
+            for k, v in attrs.items():
+                assert s[f"{gear}.{k}"] == (v.decode() if isinstance(v, bytes) else v), k
+    assert s["pinion.method"] == "psd" and s["pinion.seed"] == 1 and s["wheel.seed"] == 1001
+    assert "synthesis" not in gt.run(gt.load_case(DETERMINISTIC), positions=5, as_dict=True)["attrs"]
+
+
 def test_deterministic_run_equals_the_command(tool, tmp_path, deterministic):
     """The command's HDF5 /statistical, /contact/pressure and /running_in (float64) equal the
     module's arrays exactly (NaN where the command has NaN)."""

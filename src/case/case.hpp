@@ -8,9 +8,11 @@
 #include "material/material.hpp"
 #include "surface/flank_profile.hpp"
 #include "surface/height_grid.hpp"
+#include "surface/profile_synthesis.hpp"
 #include "surface/rough_surface.hpp"
 #include "surface/surface_statistics.hpp"
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -49,6 +51,12 @@ struct TopographySpec {
   // other axis, taken along the involute from root to tip.
   bool profile_along_x = true;
   double profile_at = 0.5;
+  // Or a flank-long profile synthesised from the surface's profile spectrum along that axis (every
+  // line; surface/profile_synthesis.hpp): psd or iaaft, the phases' seed (tooth t of the hunting
+  // order: seed + t), the length centred on the active flank (0: a generated profile's stretch).
+  surface::SynthesisMethod synthesis = surface::SynthesisMethod::none;
+  std::uint64_t synthesis_seed = 1;
+  double synthesis_length = 0.0;  // [m]
 };
 
 // The rough flank of one gear: its roughness in one of the forms of surface::FlankRoughness
@@ -60,7 +68,8 @@ struct FlankSpec {
   // of the cleaned surface the roughness above was taken from.
   std::optional<TopographySpec> topography;
   std::optional<surface::SurfaceStatistics> measured;
-  std::optional<surface::FlankProfile> measured_profile;  // the topography's line for the deterministic fidelity
+  std::optional<surface::FlankProfile> measured_profile;   // the topography's line for the deterministic fidelity
+  std::optional<surface::ProfileSpectrum> patch_spectrum;  // its profile spectrum, when a synthesis is asked for
   // A generated profile along the involute ([*.flank.profile]): the deterministic fidelity's flank,
   // and (its statistics) the roughness of the others.
   std::optional<surface::GeneratedProfileSpec> profile;

@@ -107,6 +107,26 @@ struct RunningInResult {
   std::array<std::vector<double>, 2> initial, final;
 };
 
+// A deterministic run's flank synthesised from a measured patch ([*.flank.topography] synthesis):
+// what it came from and how (surface/profile_synthesis.hpp).
+struct FlankSynthesis {
+  std::string gear;    // pinion | wheel
+  std::string patch;   // the topography file, as the case names it
+  std::string method;  // psd | iaaft
+  double seed = 0;     // tooth 0's; tooth t: seed + t
+  int teeth = 0;       // profiles synthesised (1, or the teeth of the hunting order)
+  double patch_lines = 0, patch_points = 0;
+  double patch_spacing = 0.0;        // [m]
+  double patch_rq = 0.0;             // the patch's lines' Rq [m]
+  double rolled_off_fraction = 0.0;  // of the patch's variance, at wavelengths beyond the synthesis's
+  double profile_length = 0.0;       // [m]
+  double profile_rq = 0.0;           // tooth 0's [m]
+  int iterations = 0;                // IAAFT: the most any tooth took
+  double spectrum_misfit = 0.0;      // IAAFT: the largest
+  double curvature_ratio = 1.0;      // IAAFT: m4 over the spectrum's, the farthest from 1
+  bool converged = true;             // IAAFT: every tooth's
+};
+
 struct MeshContactResult {
   std::vector<Series> mesh;         // kinematics and loading: s_m, load_share, hertz_p0_Pa, ...
   std::vector<Series> contact;      // rough contact: real_area_ratio, plastic_area_fraction, ...
@@ -118,8 +138,9 @@ struct MeshContactResult {
   std::vector<Series> statistical;
   std::vector<PressureProfile> pressure_profiles;
   std::optional<RunningInResult> running_in;
-  std::string regime;   // "elastic", "elastic-plastic" or "fully plastic"
-  std::string verdict;  // one paragraph: the regime and every validity rule broken, and where
+  std::vector<FlankSynthesis> synthesis;  // flanks synthesised from a measured patch
+  std::string regime;                     // "elastic", "elastic-plastic" or "fully plastic"
+  std::string verdict;                    // one paragraph: the regime and every validity rule broken, and where
   struct FlagCount {
     std::string name;
     int positions = 0;

@@ -374,6 +374,13 @@ void read_flank(TomlReader& r, Case& c, int gear) {
                                                    "profile_axis and " + t + "profile_at choose the line)"));
       }
     }
+    if (spec.synthesis != surface::SynthesisMethod::none) {
+      try {  // the spectrum a flank-long profile is synthesised from (every line along the involute)
+        g.flank.patch_spectrum = surface::profile_spectrum(grid, spec.profile_along_x);
+      } catch (const std::invalid_argument& e) {
+        r.fail(t + "synthesis", path.string() + ": " + e.what());
+      }
+    }
     if (trace) {
       // A profile trace (a stylus's line along the involute): its spectral moments give the
       // roughness (McCool's summits), as for a generated profile.
@@ -445,6 +452,30 @@ void read_flank(TomlReader& r, Case& c, int gear) {
     need("summit_sigma");
     rough.form = Form::summits;
   }
+}
+
+// Two flanks synthesised on the same seed take the same phases: a deterministic run's pinion and
+// wheel teeth (seed + tooth, every tooth of the hunting order) would be correlated. Warned.
+void warn_shared_synthesis_seeds(const TomlReader& r, Case& c) {
+  const auto& t1 = c.pinion.flank.topography;
+  const auto& t2 = c.wheel.flank.topography;
+  using surface::SynthesisMethod;
+  if (!c.contact.deterministic() || !t1 || !t2 || t1->synthesis == SynthesisMethod::none ||
+      t2->synthesis == SynthesisMethod::none)
+    return;
+  const bool hunting = c.running_in.teeth == "hunting" && c.running_in.meshes > 0;
+  const auto n1 = static_cast<std::uint64_t>(hunting ? c.gear_pair.teeth[0] : 1);
+  const auto n2 = static_cast<std::uint64_t>(hunting ? c.gear_pair.teeth[1] : 1);
+  const std::uint64_t s1 = t1->synthesis_seed, s2 = t2->synthesis_seed;
+  if (!(s1 < s2 + n2 && s2 < s1 + n1)) return;
+  const auto range = [](std::uint64_t s, std::uint64_t n) {
+    return n == 1 ? std::to_string(s) : fmt::format("{} to {}", s, s + n - 1);
+  };
+  c.warnings.push_back(r.warning("wheel.flank.topography.synthesis_seed",
+                                 fmt::format("the wheel's synthesis seeds ({}) share values with the pinion's ({}): "
+                                             "teeth on the same seed take the same phases, correlated flanks; give "
+                                             "seeds at least {} apart",
+                                             range(s2, n2), range(s1, n1), std::max(n1, n2))));
 }
 
 // The roughness forms of a flank and their keys (read_flank takes exactly one form).
@@ -696,6 +727,7 @@ Case load_case_from(TomlReader& r, const std::vector<CaseChange>& changes, unsig
     read_flank(r, c, 1);
     if (c.pinion.flank.roughness.form != c.wheel.flank.roughness.form)
       r.fail("wheel.flank", "give both flanks' roughness in the same form as the pinion's");
+    warn_shared_synthesis_seeds(r, c);
     // One radius per run: the flanks' radii consistent with the equivalent surface (spectral: McCool's).
     // (A smooth generated profile has none: the deterministic run alone takes it.)
     if (c.pinion.flank.roughness.form != surface::FlankRoughness::Form::spectral ||

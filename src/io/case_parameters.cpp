@@ -356,6 +356,26 @@ std::vector<Parameter> build_table() {
   add(number("{gear}.flank.topography.profile_at", topo_ref([](auto& t) -> auto& { return t.profile_at; })))
       .range(0.0, 1.0)
       .doc("Deterministic: where across the other axis the profile is taken (fraction of its length)");
+  add(mapped_choice(
+          "{gear}.flank.topography.synthesis", {"none", "psd", "iaaft"},
+          topo_ref([](auto& t) -> auto& { return t.synthesis; }),
+          [](const std::string& t) { return surface::synthesis_method(t); },
+          [](surface::SynthesisMethod m) { return std::string(surface::synthesis_method_name(m)); }))
+      .doc(
+          "Deterministic: none (the line at profile_at, which must cover the flank), or a flank-long profile "
+          "synthesised from the surface's profile spectrum along profile_axis (all its lines; nothing at wavelengths "
+          "longer than the surface): random phases (psd), or also its height distribution kept (iaaft)");
+  add(integer("{gear}.flank.topography.synthesis_seed", topo_ref([](auto& t) -> auto& { return t.synthesis_seed; })))
+      .range(0, 4294967295.0)
+      .doc(
+          "Synthesis: random seed of the phases (tooth t of the hunting order: seed + t); give the two flanks "
+          "different seeds");
+  add(quantity("{gear}.flank.topography.synthesis_length", D::length,
+               topo_ref([](auto& t) -> auto& { return t.synthesis_length; })))
+      .range(0.0, 1.0)
+      .doc(
+          "Synthesis: the profile's length, centred on the active flank; 0: a module below the base circle to a "
+          "module beyond the tip (as a generated profile)");
   // A generated profile along the involute (a roughness form; the deterministic fidelity's flank).
   auto prof = [gear](auto& c, int g) -> auto& { return gear(c, g).flank.profile; };
   auto prof_spec = [prof](Case& c, int g) -> surface::GeneratedProfileSpec& {
@@ -905,6 +925,7 @@ std::string Parameter::range_text() const {
   const bool lo = std::isfinite(min), hi = std::isfinite(max);
   if (!lo && !hi) return "";
   auto shown = [&](double v) {
+    if (kind == ParameterKind::integer) return fmt::format("{:.0f}", v);  // every digit (a seed's 4294967295)
     return kind == ParameterKind::quantity ? fmt::format("{:g} {}", v, si_symbol(dimension)) : number_text(v);
   };
   if (lo && !hi && min == 0.0) return min_open ? "> 0" : ">= 0";

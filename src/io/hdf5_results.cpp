@@ -78,6 +78,34 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
       number_attribute(group, std::string(gear[g]) + "_profile_spacing_m", ri.spacing[g]);
     }
   }
+  if (!r.synthesis.empty()) {
+    // Deterministic: flanks synthesised from a measured patch, and how (attributes only).
+    Handle group(H5Gcreate2(file, "/synthesis", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /synthesis");
+    string_attribute(group, "meaning",
+                     "flank profiles synthesised from a measured patch's profile spectrum (random phases; iaaft: its "
+                     "height distribution kept); tooth t's seed is seed + t");
+    for (const auto& f : r.synthesis) {
+      Handle g(H5Gcreate2(group, f.gear.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+               "group /synthesis/" + f.gear);
+      string_attribute(g, "patch", f.patch);
+      string_attribute(g, "method", f.method);
+      number_attribute(g, "seed", f.seed);
+      number_attribute(g, "teeth", f.teeth);
+      number_attribute(g, "patch_lines", f.patch_lines);
+      number_attribute(g, "patch_points", f.patch_points);
+      number_attribute(g, "patch_spacing_m", f.patch_spacing);
+      number_attribute(g, "patch_rq_m", f.patch_rq);
+      number_attribute(g, "rolled_off_fraction", f.rolled_off_fraction);
+      number_attribute(g, "profile_length_m", f.profile_length);
+      number_attribute(g, "profile_rq_m", f.profile_rq);
+      if (f.method == "iaaft") {
+        number_attribute(g, "iaaft_iterations", f.iterations);
+        number_attribute(g, "iaaft_spectrum_misfit", f.spectrum_misfit);
+        number_attribute(g, "iaaft_curvature_ratio", f.curvature_ratio);
+        number_attribute(g, "iaaft_converged", f.converged ? 1.0 : 0.0);
+      }
+    }
+  }
   if (r.lubrication_summary) {
     const auto& l = *r.lubrication_summary;
     Handle lub(H5Gcreate2(file, "/lubrication", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /lubrication");

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -86,14 +87,19 @@ std::pair<std::string, int> location_of(const Case& c, const std::string& key) {
                            (roughness.empty() ? std::string() : " (" + roughness + ")"));
 }
 
+// A synthesised flank that leaves out more than this share of its patch's variance is warned about.
+constexpr double kRolledOffWarning = 0.5;
+
 std::string um(double metres) { return fmt::format("{:.4g} um", metres * 1e6); }
 std::string mm(double metres) { return fmt::format("{:.4g} mm", metres * 1e3); }
 
 // The deterministic fidelity's flanks: each gear's measured profile (its topography's line along
-// the involute) or generated one, checked against the stretch of flank the run reads and the
-// element size. Hunting order: a generated profile per tooth (seed + tooth); a measured one is
-// every tooth's.
-contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& span, const int teeth[2]) {
+// the involute), one synthesised from the topography's spectrum, or a generated one, checked against
+// the stretch of flank the run reads and the element size. Hunting order: a generated or synthesised
+// profile per tooth (seed + tooth); a measured one is every tooth's. `synthesis`: what each
+// synthesised flank came from.
+contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& span, const int teeth[2],
+                                      std::vector<contact::FlankSynthesis>& synthesis) {
   contact::RollingFlanks out;
   // Running-in carries each flank point's deformation from position to position: every point must
   // pass through the strip at two positions or more (a step of at most the strip's half-length).
@@ -126,7 +132,69 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
                                          um(spacing), where, gear, um(spacing)));
       }
     };
-    if (flank.measured_profile) {
+    // The generated stretch (a module below the base circle to a module beyond the tip) must hold the
+    // strip's reach.
+    auto check_generated_stretch = [&](const std::string& what) {
+      if (span.first[g] < span.generated_first[g] || span.last[g] > span.generated_last[g]) {
+        const auto [where, line] = location_of(c, "contact.strip_halfwidths");
+        throw io::InputError(where, line, "contact.strip_halfwidths", fmt::format("{:g}", c.contact.strip_halfwidths),
+                             fmt::format("the strip reaches {} beyond the {}'s active flank, past the {}'s end a "
+                                         "module beyond its tip: narrow the strip",
+                                         mm(span.strip_half_length), gear, what));
+      }
+    };
+    const TopographySpec* topo = flank.topography ? &*flank.topography : nullptr;
+    if (topo && topo->synthesis != surface::SynthesisMethod::none) {
+      // A flank-long profile synthesised from the patch's spectrum: over the generated stretch, or
+      // the given length centred on the active part.
+      if (!flank.patch_spectrum) throw std::logic_error(gear + ": a synthesis asked for without the patch's spectrum");
+      const surface::ProfileSpectrum& patch = *flank.patch_spectrum;
+      const std::string t = gear + ".flank.topography.";
+      check_spacing(patch.spacing, "the profile synthesised from " + topo->file);
+      const bool given = topo->synthesis_length > 0.0;
+      const double length = given ? topo->synthesis_length : span.generated_last[g] - span.generated_first[g];
+      if (!given) check_generated_stretch("synthesised profile");
+      contact::FlankSynthesis record;
+      record.gear = gear, record.patch = topo->file, record.method = surface::synthesis_method_name(topo->synthesis);
+      record.seed = static_cast<double>(topo->synthesis_seed), record.teeth = teeth[g];
+      record.patch_lines = static_cast<double>(patch.lines), record.patch_points = static_cast<double>(patch.points);
+      record.patch_spacing = patch.spacing, record.patch_rq = patch.rq();
+      record.rolled_off_fraction = patch.rolled_off_fraction();
+      for (int tooth = 0; tooth < teeth[g]; ++tooth) {
+        surface::SynthesisOptions options;
+        options.method = topo->synthesis;
+        options.seed = topo->synthesis_seed + static_cast<std::uint64_t>(tooth);
+        surface::SynthesisedProfile s;
+        try {
+          s = surface::synthesise_profile(patch, options, length);
+        } catch (const std::invalid_argument& e) {
+          const std::string key = t + (given ? "synthesis_length" : "synthesis");
+          const auto [where, line] = location_of(c, key);
+          const ResolvedParameter* value = recorded(c, key);
+          throw io::InputError(where, line, key, value ? value->value : "", e.what());
+        }
+        const double start = given ? span.centred_start(g, s.profile.length()) : span.generated_first[g];
+        if (given && (start > span.first[g] || start + s.profile.length() < span.last[g])) {
+          const auto [where, line] = location_of(c, t + "synthesis_length");
+          throw io::InputError(where, line, t + "synthesis_length", mm(topo->synthesis_length),
+                               fmt::format("the synthesised profile, centred on the {}'s active flank, must cover the "
+                                           "{} the deterministic contact reads ({}); give at least that, or 0 (a "
+                                           "module below the base circle to a module beyond the tip)",
+                                           gear, mm(needed), why_needed));
+        }
+        if (tooth == 0) {
+          record.profile_length = s.profile.length();
+          record.profile_rq = surface::profile_statistics(s.profile.z, s.profile.spacing).rq;
+        }
+        record.iterations = std::max(record.iterations, s.iterations);
+        record.spectrum_misfit = std::max(record.spectrum_misfit, s.spectrum_misfit);
+        if (std::abs(s.curvature_ratio - 1.0) > std::abs(record.curvature_ratio - 1.0))
+          record.curvature_ratio = s.curvature_ratio;
+        record.converged = record.converged && s.converged;
+        tracks.push_back({std::move(s.profile), start});
+      }
+      synthesis.push_back(std::move(record));
+    } else if (flank.measured_profile) {
       const surface::FlankProfile& p = *flank.measured_profile;
       const std::string key = gear + ".flank.topography.file";
       const std::string file = flank.topography ? flank.topography->file : std::string();
@@ -135,10 +203,11 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
         const auto [where, line] = location_of(c, key);
         throw io::InputError(where, line, key, file,
                              fmt::format("its profile along {} is {} long; the deterministic contact reads {} of it "
-                                         "({}): give a trace of the whole flank (profile_axis, resample) or a "
-                                         "generated [{}.flank.profile]",
+                                         "({}): give a trace of the whole flank (profile_axis, resample), "
+                                         "synthesise one from its spectrum (synthesis = \"psd\" or \"iaaft\" in "
+                                         "[{}.flank.topography]) or give a generated [{}.flank.profile]",
                                          flank.topography && !flank.topography->profile_along_x ? "y" : "x",
-                                         mm(p.length()), mm(needed), why_needed, gear));
+                                         mm(p.length()), mm(needed), why_needed, gear, gear));
       }
       // The trace centred on the active part (a knob that widens the strip does not move it).
       const double start = span.centred_start(g, p.length());
@@ -156,13 +225,7 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
       check_spacing(flank.profile->spacing, gear + ".flank.profile.spacing");
       // Generated over a fixed stretch of the involute (a module either side of base circle to
       // tip): the same flank whatever the strip, elements or load.
-      if (span.first[g] < span.generated_first[g] || span.last[g] > span.generated_last[g]) {
-        const auto [where, line] = location_of(c, "contact.strip_halfwidths");
-        throw io::InputError(where, line, "contact.strip_halfwidths", fmt::format("{:g}", c.contact.strip_halfwidths),
-                             fmt::format("the strip reaches {} beyond the {}'s active flank, past the generated "
-                                         "profile's end a module beyond its tip: narrow the strip",
-                                         mm(span.strip_half_length), gear));
-      }
+      check_generated_stretch("generated profile");
       for (int t = 0; t < teeth[g]; ++t) {
         surface::GeneratedProfileSpec spec = *flank.profile;
         spec.seed += static_cast<std::uint64_t>(t);
@@ -193,10 +256,12 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
   const std::unique_ptr<OdeIntegrator> integrator =
       c.dynamics.engine != "none" ? solvers::make_integrator(c.dynamics.engine) : nullptr;
   contact::MeshContactResult r;
+  std::vector<contact::FlankSynthesis> synthesis;
   try {
-    r = contact::run_mesh_contact(
-        c, mesh, c.contact.coupled() ? &kinsol : nullptr, progress, 0, integrator.get(),
-        [&c](const contact::FlankSpan& span, const int teeth[2]) { return rolling_flanks(c, span, teeth); });
+    r = contact::run_mesh_contact(c, mesh, c.contact.coupled() ? &kinsol : nullptr, progress, 0, integrator.get(),
+                                  [&c, &synthesis](const contact::FlankSpan& span, const int teeth[2]) {
+                                    return rolling_flanks(c, span, teeth, synthesis);
+                                  });
   } catch (const contact::RoughSurfaceOverload& e) {
     throw_overload(c, e.what());  // at the torque, naming the roughness and where each came from
   } catch (const std::invalid_argument& e) {
@@ -204,6 +269,20 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
     // message without a place.
     throw io::InputError(case_file_of(c), 0, "", "", e.what());
   }
+  for (const auto& f : synthesis) {
+    if (!f.converged)
+      r.warnings.push_back(fmt::format(
+          "the {} flank's IAAFT synthesis stopped after {} iterations with its Fourier amplitudes {:.2g}% rms from "
+          "the spectrum's and its curvature moment m4 {:+.1f}% (the patch's height distribution exact; the rank "
+          "step's roughness at the sampling scale raises m4): consider synthesis = \"psd\"",
+          f.gear, f.iterations, 100.0 * f.spectrum_misfit, 100.0 * (f.curvature_ratio - 1.0)));
+    if (f.rolled_off_fraction > kRolledOffWarning)
+      r.warnings.push_back(fmt::format(
+          "{:.0f}% of the {} patch's height variance ({}) lies at wavelengths near or beyond its length, which the "
+          "synthesis leaves out: the synthesised flank's Rq is {} against the patch's {}; measure a longer patch",
+          100.0 * f.rolled_off_fraction, f.gear, f.patch, um(f.profile_rq), um(f.patch_rq)));
+  }
+  r.synthesis = std::move(synthesis);
   for (const auto* group : {&r.mesh, &r.contact})
     for (const auto& q : *group)
       for (double v : q.values)

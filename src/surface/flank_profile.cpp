@@ -15,43 +15,6 @@ namespace geartrib::surface {
 
 namespace {
 
-struct FftwFree {
-  void operator()(void* p) const { fftw_free(p); }
-};
-
-// An FFTW plan made and destroyed under the planner lock (core/fftw_planner.hpp).
-class Plan {
- public:
-  template <class Make>
-  explicit Plan(Make make) {
-    {
-      const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-      p_ = make();
-    }
-    if (!p_) throw std::runtime_error("FFTW could not make a plan");
-  }
-  ~Plan() {
-    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    fftw_destroy_plan(p_);
-  }
-  Plan(const Plan&) = delete;
-  Plan& operator=(const Plan&) = delete;
-  fftw_plan get() const { return p_; }
-
- private:
-  fftw_plan p_ = nullptr;
-};
-
-// The smallest m' >= m with no prime factor above 7 (a fast FFTW size).
-std::size_t fast_fft_size(std::size_t m) {
-  for (;; ++m) {
-    std::size_t r = m;
-    for (std::size_t p : {2, 3, 5, 7})
-      while (r % p == 0) r /= p;
-    if (r == 1) return m;
-  }
-}
-
 // Removes the mean and scales to root-mean-square `rq`; false when the profile is flat.
 bool scale_to_rq(std::vector<double>& z, double rq) {
   double mean = 0.0, var = 0.0;
@@ -71,12 +34,11 @@ bool scale_to_rq(std::vector<double>& z, double rq) {
 std::vector<double> gaussian_profile(std::mt19937_64& rng, std::size_t n, double spacing, double lambda, double rq) {
   const auto half = static_cast<std::size_t>(std::ceil(2.0 * lambda / spacing));  // 4 sigma [spacings]
   const std::size_t noise = n + 2 * half, f = fast_fft_size(noise), nh = f / 2 + 1;
-  std::unique_ptr<double[], FftwFree> real(fftw_alloc_real(f));
-  std::unique_ptr<fftw_complex[], FftwFree> noise_hat(fftw_alloc_complex(nh)), kernel_hat(fftw_alloc_complex(nh));
-  if (!real || !noise_hat || !kernel_hat) throw std::bad_alloc();
+  const auto real = fftw_real_array(f);
+  const auto noise_hat = fftw_complex_array(nh), kernel_hat = fftw_complex_array(nh);
   const int fi = static_cast<int>(f);
-  const Plan forward([&] { return fftw_plan_dft_r2c_1d(fi, real.get(), noise_hat.get(), FFTW_ESTIMATE); });
-  const Plan backward([&] { return fftw_plan_dft_c2r_1d(fi, noise_hat.get(), real.get(), FFTW_ESTIMATE); });
+  const FftwPlan forward([&] { return fftw_plan_dft_r2c_1d(fi, real.get(), noise_hat.get(), FFTW_ESTIMATE); });
+  const FftwPlan backward([&] { return fftw_plan_dft_c2r_1d(fi, noise_hat.get(), real.get(), FFTW_ESTIMATE); });
   std::normal_distribution<double> normal(0.0, 1.0);
   for (std::size_t k = 0; k < f; ++k) real[k] = k < noise ? normal(rng) : 0.0;
   fftw_execute(forward.get());
