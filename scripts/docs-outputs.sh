@@ -29,7 +29,7 @@ mkdir -p "$out" "$fig" "$root/docs/reference"
 # a user types them from the source tree and their files do not land in it.
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-for d in gears materials lubricants validation scripts; do ln -s "$root/$d" "$work/$d"; done
+for d in gears materials lubricants validation scripts examples; do ln -s "$root/$d" "$work/$d"; done
 cd "$work"
 
 times="$work/.times.tsv"   # page, command, seconds
@@ -76,6 +76,12 @@ cp plots/overview.png "$fig/run-overview.png"
 cp plots/lubrication.png "$fig/run-lubrication.png"
 blank run
 ex run run gears/m6z30-dry.toml -o m6z30-dry.h5
+
+fresh own-pair
+ex own-pair run examples/fzg-c-from-blank.toml -o fzg-c.h5 --csv fzg-c.csv
+blank own-pair
+sh_ex own-pair "/usr/bin/python3 scripts/plot_mesh.py fzg-c.h5 plots-fzg-c/"
+cp plots-fzg-c/lubrication.png "$fig/own-pair-lubrication.png"
 
 fresh run-deterministic
 ex run-deterministic run gears/m6z30-deterministic.toml -o det.h5
