@@ -61,9 +61,10 @@ def tidy_axis(ax, values):
 
 
 def mark_points(ax, points):
-    for name, s, d in points:
+    """points: (name, s mm) or (name, s mm, pinion diameter mm) per point."""
+    for name, s, *diameter in points:
         ax.axvline(s, color="0.6", linestyle="--", linewidth=0.8)
-        label = f"{name}\nd1 {d:.1f}" if d else name
+        label = f"{name}\nd1 {diameter[0]:.1f}" if diameter and diameter[0] else name
         ax.annotate(label, (s, 0.03), xycoords=("data", "axes fraction"), ha="left", va="bottom", fontsize=7,
                     xytext=(2, 0), textcoords="offset points")
 
