@@ -76,6 +76,10 @@ head -1 "$tmp/m6z30.csv" | grep -q "^s_m,roll_angle_rad" && ok csv-header || bad
   && [[ $(ls "$tmp/plots"/*.png | wc -l) -ge 20 ]] && ok plots || bad plots
 "$bin" surface clean gears/surfaces/wheel-flank.h5 -o "$tmp/wheel.h5" --form 1 2>/dev/null \
   && "$py" scripts/plot_surface.py "$tmp/wheel.h5" "$tmp/wheel.png" && [[ -s "$tmp/wheel.png" ]] && ok surface-plot || bad surface-plot
+# The deterministic plots (they draw the path's points with plot_mesh's marker).
+"$bin" run gears/m6z30-deterministic.toml --positions 11 -q -o "$tmp/det.h5" >/dev/null 2>&1 \
+  && "$py" scripts/plot_deterministic.py "$tmp/det.h5" -o "$tmp/det" >/dev/null && [[ -s "$tmp/det-path.png" ]] \
+  && ok deterministic-plots || bad deterministic-plots
 "$py" - "$tmp/wheel.h5" <<'PY' && ok surface-hdf5-attributes || bad surface-hdf5-attributes
 import sys, h5py
 f = h5py.File(sys.argv[1], "r")
