@@ -187,9 +187,6 @@ TEST(Friction, EyringCappedByTheLimitingShearStress) {
     EXPECT_DOUBLE_EQ(hard.shear_stress, 0.075 * 1e9);
     EXPECT_TRUE(hard.limited);
   }
-  // The mixed coefficient weights boundary and film by their shares.
-  const MixedFriction f = mixed_friction({0.3, 0.7, 1e-7}, 0.1, 0.04);
-  EXPECT_NEAR(f.coefficient, 0.3 * 0.1 + 0.7 * 0.04, 1e-15);
 }
 
 // The thermal Eyring law against a numerical solution of the energy equation it stands for (a
@@ -234,19 +231,25 @@ TEST(Friction, ThermalEyringSolvesTheFilmsEnergyEquation) {
   const double eta_s = 0.05, tau0 = 5e6, beta = 0.03, k = 0.13, h = 1e-7;
   for (double v : {0.5, 4.0, 12.0}) {
     const FilmShear t = thermal_eyring_shear_stress(eta_s, tau0, beta, k, v, h);
-    // The shooting solution's speed at the closed form's stress: RK4 with 4000 steps is accurate
-    // to ~1e-10 of the speed; 1e-6 allows for the bisection of the slope.
-    EXPECT_NEAR(sliding_speed_by_shooting(t.shear_stress, eta_s, tau0, beta, k, h) / v, 1.0, 1e-6) << v;
+    // The shooting solution's speed at the closed form's stress: RK4 with 4000 steps (truncation
+    // ~(1/4000)^4 of the solution's scale) and a 200-step bisection of the slope; observed below
+    // 1e-12, 1e-10 leaves room for another libm.
+    EXPECT_NEAR(sliding_speed_by_shooting(t.shear_stress, eta_s, tau0, beta, k, h) / v, 1.0, 1e-10) << v;
     EXPECT_LT(t.shear_stress, eyring_shear_stress(eta_s, tau0, v, h)) << v;  // heating lowers the traction
     EXPECT_GT(t.midfilm_rise, 0.0);
   }
-  // Isothermal limits: no temperature sensitivity, or a conductor that takes all the heat.
-  EXPECT_NEAR(thermal_eyring_shear_stress(eta_s, tau0, 1e-30, k, 4.0, h).shear_stress /
-                  eyring_shear_stress(eta_s, tau0, 4.0, h),
-              1.0, 1e-12);
-  EXPECT_NEAR(thermal_eyring_shear_stress(eta_s, tau0, beta, 1e30, 4.0, h).shear_stress /
-                  eyring_shear_stress(eta_s, tau0, 4.0, h),
-              1.0, 1e-12);
+  // Toward the isothermal limit (through the solver, not its shortcut below a heating of 1e-12):
+  // with beta/k_f scaled by 1e-3 the heating y = X tanh X = beta h v tau/(8 k_f) is 2.3e-5, and to
+  // first order tau falls by tau0 S (2/3) y/sqrt(1 + S^2) with S = eta v/(h tau0) = 0.4: 1.4e-5 of
+  // tau, inside the tolerance scale/10 (1e-4; at scale 1e-5: 1.4e-7 inside 1e-6).
+  for (double scale : {1e-3, 1e-5}) {
+    const double iso = eyring_shear_stress(eta_s, tau0, 4.0, h);
+    const double cooled = thermal_eyring_shear_stress(eta_s, tau0, beta * scale, k, 4.0, h).shear_stress;
+    const double conducted = thermal_eyring_shear_stress(eta_s, tau0, beta, k / scale, 4.0, h).shear_stress;
+    EXPECT_LT(cooled, iso) << scale;
+    EXPECT_NEAR(cooled / iso, 1.0, 10.0 * scale * 1e-2) << scale;
+    EXPECT_NEAR(conducted / cooled, 1.0, 1e-9) << scale;  // only beta/k_f enters: the same heating
+  }
   // The thermal maximum: the traction rises with the sliding speed, peaks, and falls
   // (Johnson & Greenwood 1980: at X tanh X = 1).
   double peak = 0.0, last = 0.0;
@@ -310,7 +313,6 @@ TEST(FlashTemperature, BlokAgainstJaegersMovingSourceIntegrated) {
   const double phi = b1 * std::sqrt(v1) / (b1 * std::sqrt(v1) + b2 * std::sqrt(v2));
   const double t1 = phi * q0 * std::sqrt(b) * peak_integral / (b1 * std::sqrt(std::numbers::pi * v1));
   const double t2 = (1.0 - phi) * q0 * std::sqrt(b) * peak_integral / (b2 * std::sqrt(std::numbers::pi * v2));
-  EXPECT_NEAR(t1 / t2, 1.0, 1e-12);
   EXPECT_NEAR(blok_flash_temperature(mu, w, b, v1, v2, b1, b2) / t1, 1.0, 2e-3);  // 1.11 vs 1.1115, as above
   EXPECT_EQ(blok_flash_temperature(0.05, 1.5e5, 2e-4, 3.0, 3.0, b1, b1), 0.0);    // pure rolling
   EXPECT_NEAR(blok_flash_temperature(0.1, 1.5e5, 2e-4, 2.0, 5.0, b1, b1) /

@@ -32,7 +32,7 @@ double bearing_area_weight(AsperityPressureModel m, double plastic) {
     case AsperityPressureModel::automatic:
       break;
   }
-  return std::clamp((plastic - kPlasticBlendStart) / (kFullyPlasticFraction - kPlasticBlendStart), 0.0, 1.0);
+  return std::clamp((plastic - kPlasticBlendStart) / (kFullyPlasticAreaFraction - kPlasticBlendStart), 0.0, 1.0);
 }
 
 double smallest_plastic_fraction(const GreenwoodWilliamson& gw, const std::vector<double>& pressures) {
@@ -79,11 +79,13 @@ double AsperityPressure::separation(double p) const {
     if (p >= saturation_pressure_) return saturation_height_;
     return lubrication::bearing_area_height(heights_, p / hardness_ + onset_bearing_);
   }
-  // A blend: each part alone at its share of p lies at or below the root (the other part only adds
-  // pressure), so the larger of the two heights brackets it from below.
-  double lo = gw_.separation_for_pressure(p / (1.0 - bearing_weight_)) + summit_offset_;
+  // A blend: either part alone carrying all of p lies at or below the root (the other part only adds
+  // pressure), so it brackets the root from below. The bearing area's is closed-form; the asperity
+  // model's (p/(1 - w) can lie far beyond GW's table: a quadrature bisection) only where the bearing
+  // area cannot carry p.
   const double a = p / (bearing_weight_ * hardness_) + onset_bearing_;
-  if (a < 1.0) lo = std::max(lo, lubrication::bearing_area_height(heights_, a));
+  const double lo = a < 1.0 ? lubrication::bearing_area_height(heights_, a)
+                            : gw_.separation_for_pressure(p / (1.0 - bearing_weight_)) + summit_offset_;
   const double hi = onset_;
   const auto f = [&](double h) { return pressure(h) - p; };
   if (f(lo) <= 0.0) return lo;

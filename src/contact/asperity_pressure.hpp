@@ -7,6 +7,7 @@
 #pragma once
 
 #include "contact/greenwood_williamson.hpp"
+#include "contact/validity.hpp"
 #include "lubrication/film_closure.hpp"
 
 #include <string>
@@ -23,7 +24,7 @@ enum class AsperityPressureModel { automatic, asperity_model, bearing_area };
 AsperityPressureModel asperity_pressure_model_from_name(const std::string& name);  // throws std::invalid_argument
 std::vector<std::string> asperity_pressure_model_names();
 double bearing_area_weight(AsperityPressureModel m, double plastic_area_fraction);
-inline constexpr double kPlasticBlendStart = 0.9, kFullyPlasticFraction = 0.99;
+inline constexpr double kPlasticBlendStart = 0.9;  // the blend's start; its end: kFullyPlasticAreaFraction
 // The asperity model's smallest plastic area fraction over the nominal pressures p0 (each the
 // whole load at the strip's centre), at the lightest of them: what `auto` weighs by.
 double smallest_plastic_fraction(const GreenwoodWilliamson& gw, const std::vector<double>& pressures);

@@ -197,7 +197,13 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
         hb[i] = l.hertz_half_width;
       }
       for (auto& [name, point] : named) {
-        point.line_load = dyn.pair_force(cycle, point.s) / width;
+        // B and D on the single pair's side: a hair inside [B, D], where the pair at E has left (at B)
+        // or the pair at A not yet arrived (at D); the force is continuous there.
+        const double inside = 1e-9 * path.length;
+        const double at = name == std::string("B")   ? point.s + inside
+                          : name == std::string("D") ? point.s - inside
+                                                     : point.s;
+        point.line_load = dyn.pair_force(cycle, at) / width;
         const gear::PairLoad l = mesh.analysis().pair_load(point.s, point.line_load);
         point.hertz_p0 = l.hertz_peak;
         point.half_width = l.hertz_half_width;

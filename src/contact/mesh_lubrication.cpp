@@ -116,12 +116,7 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
 
   const std::size_t n = p.s.size();
   positions_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const PathPoint q = p.point(i);
-    positions_[i].iso_flash = iso_flash(q);
-    positions_[i].blok_iso_flash = lub::blok_flash_temperature(iso_mu_, q.line_load, q.half_width, q.v1, q.v2,
-                                                               thermal_coefficient_[0], thermal_coefficient_[1]);
-  }
+  for (std::size_t i = 0; i < n; ++i) iso_temperatures(p.point(i), positions_[i]);
   // ISO/TS 6336-20 eq. 22: theta_M = theta_oil + 0.47 X_S X_mp theta_fl,m; the flash temperature is
   // linear in mu_m, so another law's estimate scales the method's by its coefficient.
   bulk_estimated_ = !(c.operating.bulk_temperature > 0.0);
@@ -137,14 +132,20 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
   const AsperityPressureModel model = asperity_pressure_model_from_name(c.lubrication.asperity_pressure);
   plastic_fraction_ = model == AsperityPressureModel::automatic ? smallest_plastic_fraction(gw, p.hertz_p0) : 0.0;
   const double weight = bearing_area_weight(model, plastic_fraction_);
-  asperity_.emplace(gw, lub::CompositeHeights{roughness_.rq, c.roughness.distribution}, gw.pair().hardness, weight);
-  double guess = std::numeric_limits<double>::quiet_NaN();  // ln(film share) at the last position
-  for (std::size_t i = 0; i < n; ++i) {
-    Position q = film(p.point(i), guess);
-    q.iso_flash = positions_[i].iso_flash;
-    q.blok_iso_flash = positions_[i].blok_iso_flash;
-    positions_[i] = q;
-  }
+  // The closure's heights are the summit model's surface (its composite sigma): the gap the film
+  // fills and the asperities' pressure then describe one surface. (lambda and the ISO formulas take
+  // the flanks' own Rq and Ra; for flanks given by Ra or Rq the two are the same.)
+  asperity_.emplace(gw, lub::CompositeHeights{gw.surface().surface_sigma, c.roughness.distribution}, gw.pair().hardness,
+                    weight);
+  ShareGuesses guesses;  // ln(film share) at the last position, per film gap
+  guesses.fill(std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t i = 0; i < n; ++i) film(p.point(i), guesses, positions_[i]);
+}
+
+void MeshLubrication::iso_temperatures(const PathPoint& p, Position& q) const {
+  q.iso_flash = iso_flash(p);
+  q.blok_iso_flash = lub::blok_flash_temperature(iso_mu_, p.line_load, p.half_width, p.v1, p.v2,
+                                                 thermal_coefficient_[0], thermal_coefficient_[1]);
 }
 
 double MeshLubrication::iso_flash(const PathPoint& p) const {
@@ -160,8 +161,7 @@ double MeshLubrication::iso_flash(const PathPoint& p) const {
                                     pitch_.pitch_line_speed, iso_geometry_.center_distance);
 }
 
-Position MeshLubrication::film(const PathPoint& p, double& guess) const {
-  Position q;
+void MeshLubrication::film(const PathPoint& p, ShareGuesses& guesses, Position& q) const {
   const auto& oil = oil_at_bulk_;
   const lub::FilmLaw& law = lub::film_law(formula_);
   const double u = 0.5 * (p.v1 + p.v2);
@@ -180,32 +180,34 @@ Position MeshLubrication::film(const PathPoint& p, double& guess) const {
   if (!(p.line_load > 0.0)) {
     q.separation = ap.onset();
     q.mean_gap = lub::film_gap(film_gap_, heights, q.separation, q.separation);
-    return q;
+    return;
   }
   // The asperities carrying `share` of the Hertz peak at the strip's centre sit at h(share p0); the
   // film fills the closure's gap there (lubrication/film_closure.hpp).
   const double h_dry = ap.separation(p0);
   q.bearing_saturated = ap.saturated(p0) ? 1.0 : 0.0;
   const double exponent = law.speed_exponent - law.material_exponent;
-  auto share_for = [&](lub::FilmGap gap, double start) {
-    return lub::share_load(
+  // Each datum's share, from its own solution at the last position (the path moves smoothly).
+  auto share_for = [&](lub::FilmGap gap) {
+    double& guess = guesses[static_cast<std::size_t>(gap)];
+    const lub::LoadShare s = lub::share_load(
         q.film, exponent, [&](double share) { return lub::film_gap(gap, heights, ap.separation(share * p0), h_dry); },
-        start);
+        guess);
+    if (s.film_share > 0.0) guess = std::log(s.film_share);
+    return s;
   };
-  const lub::LoadShare s = share_for(film_gap_, guess);
-  if (s.film_share > 0.0) guess = std::log(s.film_share);
+  const lub::LoadShare s = share_for(film_gap_);
   q.asperity_share = s.asperity_share;
   q.mean_gap = s.film_thickness;
   q.separation = ap.separation(s.asperity_share * p0);
   double lo = s.asperity_share, hi = s.asperity_share;
   for (lub::FilmGap other : {lub::FilmGap::mean_gap, lub::FilmGap::mean_plane, lub::FilmGap::dry_offset}) {
     if (other == film_gap_) continue;
-    const double a = share_for(other, std::numeric_limits<double>::quiet_NaN()).asperity_share;
+    const double a = share_for(other).asperity_share;
     lo = std::min(lo, a);
     hi = std::max(hi, a);
   }
   q.share_spread = hi - lo;
-  return q;
 }
 
 void MeshLubrication::rest(const PathPoint& p, Position& q) const {
@@ -387,11 +389,11 @@ void MeshLubrication::finish(MeshContactResult& r) {
   }
   // The named points, each evaluated where it stands (B and D with the single pair's load).
   for (const auto& [name, point] : p.named) {
-    double guess = std::numeric_limits<double>::quiet_NaN();
-    Position q = film(point, guess);
-    q.iso_flash = iso_flash(point);
-    q.blok_iso_flash = lub::blok_flash_temperature(iso_mu_, point.line_load, point.half_width, point.v1, point.v2,
-                                                   thermal_coefficient_[0], thermal_coefficient_[1]);
+    ShareGuesses guesses;
+    guesses.fill(std::numeric_limits<double>::quiet_NaN());
+    Position q;
+    iso_temperatures(point, q);
+    film(point, guesses, q);
     rest(point, q);
     LubricationSummary::NamedPoint np;
     np.name = name;
@@ -414,6 +416,10 @@ void MeshLubrication::finish(MeshContactResult& r) {
   }
   r.lubrication_summary = sum;
 
+  // The summit model's sigma against the flanks' Rq: a measured surface can disagree.
+  const double sigma_ratio = r.surface.surface_sigma / roughness_.rq;
+  const bool surfaces_disagree = roughness_.from_heights && (sigma_ratio > kRoughnessDisagreementFactor ||
+                                                             sigma_ratio < 1.0 / kRoughnessDisagreementFactor);
   // What produced the numbers and where they rest on a choice: said in the verdict.
   {
     const double w = sum.bearing_area_weight;
@@ -455,12 +461,11 @@ void MeshLubrication::finish(MeshContactResult& r) {
         " and the asperities' boundary coefficient {:g} (friction.mu); the model's gear-mean {:.4f} "
         "against ISO/TS 6336-21/-22's {:.4f}.",
         c.friction_coefficient, sum.mesh_mean_friction, iso_mu_);
-    if (const double ratio = r.surface.surface_sigma / roughness_.rq;
-        roughness_.from_heights && (ratio > kRoughnessDisagreementFactor || ratio < 1.0 / kRoughnessDisagreementFactor))
+    if (surfaces_disagree)
       text += fmt::format(
           " The asperity model's surface is not the measured one: its composite sigma is {:.3g} times the flanks' Rq "
-          "(lambda and the ISO formulas take the Rq).",
-          ratio);
+          "(lambda and the ISO formulas take the Rq; the sharing, the summit model).",
+          sigma_ratio);
     r.verdict += text;
   }
 
@@ -499,13 +504,12 @@ void MeshLubrication::finish(MeshContactResult& r) {
     r.warnings.push_back(
         "the flanks are given by summit statistics alone: lambda and the ISO formulas take the summit model's "
         "composite sigma, not a measured Rq and Ra");
-  else if (const double ratio = r.surface.surface_sigma / roughness_.rq;
-           ratio > kRoughnessDisagreementFactor || ratio < 1.0 / kRoughnessDisagreementFactor)
+  else if (surfaces_disagree)
     r.warnings.push_back(fmt::format(
         "the summit model's composite sigma {:.4g} um differs from the flanks' Rq {:.4g} um ({}) by a factor {:.3g}: "
         "the Greenwood-Williamson parameters describe another surface than the one measured; lambda and the ISO "
-        "formulas take the flanks' Rq and Ra, the asperity contact the summit model",
-        r.surface.surface_sigma * 1e6, roughness_.rq * 1e6, roughness_.source, ratio));
+        "formulas take the flanks' Rq and Ra, the asperity contact and the sharing the summit model",
+        r.surface.surface_sigma * 1e6, roughness_.rq * 1e6, roughness_.source, sigma_ratio));
   if (largest(positions_, &Position::bearing_saturated) > 0.0)
     r.warnings.push_back(
         "the Hertz pressure reaches the hardness at some positions (flag_bearing_area_saturated): the bearing-area "

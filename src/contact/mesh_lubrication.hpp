@@ -17,6 +17,7 @@
 #include "lubrication/lubricant.hpp"
 #include "lubrication/mixed_lubrication.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -77,9 +78,12 @@ class MeshLubrication {
   };
 
  private:
-  Position film(const PathPoint& p, double& guess) const;
+  // ln(film share) of the last solution per film gap (lubrication::FilmGap), the next one's start.
+  using ShareGuesses = std::array<double, 3>;
+  void film(const PathPoint& p, ShareGuesses& guesses, Position& q) const;
   void rest(const PathPoint& p, Position& q) const;
   double iso_flash(const PathPoint& p) const;
+  void iso_temperatures(const PathPoint& p, Position& q) const;  // the ISO method's and Blok's with mu_mC
 
   const Case& case_;
   const gear::GearMesh& mesh_;

@@ -61,7 +61,9 @@ ValidityVerdict validity_verdict(const std::vector<PositionValidity>& pos, doubl
     if (i < mean_pressure.size()) pm_lo = std::min(pm_lo, mean_pressure[i]), pm_hi = std::max(pm_hi, mean_pressure[i]);
   }
   if (!plastic.empty())
-    v.regime = pf_lo > 0.99 ? "fully plastic" : (pf_hi < 0.01 && yielded < 0.01) ? "elastic" : "elastic-plastic";
+    v.regime = pf_lo > kFullyPlasticAreaFraction  ? "fully plastic"
+               : (pf_hi < 0.01 && yielded < 0.01) ? "elastic"
+                                                  : "elastic-plastic";
   else v.regime = psi < 0.6 ? "elastic" : psi > 1.0 ? "fully plastic" : "elastic-plastic";
   const auto& model = gw.model();
   const double hardness = gw.pair().hardness;

@@ -12,6 +12,10 @@
 
 namespace geartrib::contact {
 
+// The regime verdict calls the flanks fully plastic where the plastic share of the real area
+// exceeds this at every position (the lubricated sharing's bearing-area switch uses it too).
+inline constexpr double kFullyPlasticAreaFraction = 0.99;
+
 // The rules, declared once (threshold and reason).
 struct ValidityRules {
   // Separation below -1 summit sigma: more than 84% of the summits touch, so GW's sparse

@@ -101,7 +101,8 @@ double iso_geometry_factor(const IsoFlashGeometry& g, double gamma) {
 
 double iso_thermo_elastic_factor(double e_r, double b1, double b2) {
   // X_M = E_r^0.25/B_M in the standard's units: E_r in N/mm^2, B_M in N/(mm^0.5 m^0.5 s^0.5 K),
-  // x 1000 for its mixed metre-millimetre units. SI B_M [W s^0.5/(m^2 K)] = 1000^0.5 x ISO's.
+  // x 1000 for its mixed metre-millimetre units. SI B_M [W s^0.5/(m^2 K) = N/(m s^0.5 K)] is
+  // 1000^0.5 x that (steel: 13 795 SI, i.e. 13.8 N/(mm s^0.5 K), is 436 in those units: X_M = 50).
   const double b_iso = 0.5 * (b1 + b2) / std::sqrt(1000.0);
   return std::pow(e_r * 1e-6, 0.25) / b_iso * 1000.0;
 }
@@ -110,15 +111,13 @@ double iso_approach_factor(const IsoFlashGeometry& g, double gamma, double c_eff
   if (!(gamma < 0.0)) return 1.0;  // the recess and the pitch point (pinion driving)
   const double span = g.gamma_e - g.gamma_a;
   if (!(span > 0.0)) return 1.0;
-  const double x = std::max(0.0, 1.0 + (c_eff - c_a) * 1e6 / 50.0 * std::pow(-gamma / span, 3.0));
-  return std::max(1.0, x);
+  return std::max(1.0, 1.0 + (c_eff - c_a) * 1e6 / 50.0 * std::pow(-gamma / span, 3.0));
 }
 
 double iso_flash_temperature(double mu_m, double x_m, double x_j, double x_g, double x_gamma, double w_bt, double v_t,
                              double a) {
   if (!(w_bt > 0.0) || !(a > 0.0) || mu_m == 0.0 || x_g == 0.0) return 0.0;
-  const double v = std::min(v_t, kIsoMaxSpeed);
-  return mu_m * x_m * x_j * x_g * std::pow(x_gamma * w_bt * 1e-3, 0.75) * std::sqrt(v) / std::pow(a * 1e3, 0.25);
+  return mu_m * x_m * x_j * x_g * std::pow(x_gamma * w_bt * 1e-3, 0.75) * std::sqrt(v_t) / std::pow(a * 1e3, 0.25);
 }
 
 double iso_bulk_temperature(double oil, double mean_flash) { return oil + 0.47 * 1.0 * 1.0 * mean_flash; }

@@ -131,20 +131,6 @@ TractionCurves::TractionCurves(std::vector<TractionCurve> curves) : curves_(std:
 }
 
 namespace {
-// Linear interpolation in an ascending table, clamped at its ends; `outside` set when clamped.
-double table_value(const std::vector<double>& x, const std::vector<double>& y, double at, bool& outside) {
-  if (at <= x.front()) {
-    outside = outside || at < x.front();
-    return y.front();
-  }
-  if (at >= x.back()) {
-    outside = outside || at > x.back();
-    return y.back();
-  }
-  const auto k = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), at) - x.begin());
-  const double t = (at - x[k - 1]) / (x[k] - x[k - 1]);
-  return y[k - 1] + t * (y[k] - y[k - 1]);
-}
 // The bracketing pair (i, i + 1) of an ascending axis and the weight of i + 1, clamped.
 struct Bracket {
   std::size_t lo, hi;
@@ -161,6 +147,11 @@ Bracket bracket(const std::vector<double>& axis, double at, bool& outside) {
   }
   const auto k = static_cast<std::size_t>(std::upper_bound(axis.begin(), axis.end(), at) - axis.begin());
   return {k - 1, k, (at - axis[k - 1]) / (axis[k] - axis[k - 1])};
+}
+// Linear interpolation in an ascending table, clamped at its ends; `outside` set when clamped.
+double table_value(const std::vector<double>& x, const std::vector<double>& y, double at, bool& outside) {
+  const Bracket b = bracket(x, at, outside);
+  return (1.0 - b.t) * y[b.lo] + b.t * y[b.hi];
 }
 }  // namespace
 
@@ -207,7 +198,7 @@ void Lubricant::validate() const {
   if (!(min_temperature > 0.0 && max_temperature > min_temperature))
     fail("max_temperature", "must exceed min_temperature (both in K, positive)");
   if (!(iso_lubricant_factor >= 0.0 && iso_lubricant_factor <= 2.0))
-    fail("iso_lubricant_factor", "must lie in (0, 2] (ISO/TS 6336-20 tabulates 0.6 to 1.5)");
+    fail("iso_lubricant_factor", "must lie in [0, 2] (0: the base stock's tabulated value; the table: 0.6 to 1.5)");
   if (!(lubricant_factor() > 0.0))
     fail("iso_lubricant_factor",
          fmt::format("ISO/TS 6336-20 tabulates no lubricant factor X_L for base oil '{}': give iso_lubricant_factor "

@@ -63,6 +63,8 @@ double log_sinh(double t) {
 double log_cosh(double x) { return x + std::log1p(std::exp(-2.0 * x)) - std::numbers::ln2; }
 // asinh(e^L) for any L (the Eyring argument can exceed the double range: eta at 1 GPa by Barus).
 double asinh_exp(double l) { return l > 20.0 ? l + std::numbers::ln2 : std::asinh(std::exp(l)); }
+// Isothermal Eyring from ln_drive = ln(eta |v_s|/h): tau0 asinh(eta |v_s|/(h tau0)).
+double eyring_log(double ln_drive, double tau0) { return tau0 * asinh_exp(ln_drive - std::log(tau0)); }
 }  // namespace
 
 FilmTraction film_traction_from_name(const std::string& name) {
@@ -73,7 +75,7 @@ std::vector<std::string> film_traction_names() { return choice_names<FilmTractio
 
 double eyring_shear_stress(double eta, double tau0, double vs, double h) {
   if (!(h > 0.0) || vs == 0.0 || !(eta > 0.0)) return 0.0;
-  return tau0 * asinh_exp(std::log(eta) + std::log(std::abs(vs)) - std::log(h * tau0));
+  return eyring_log(std::log(eta) + std::log(std::abs(vs)) - std::log(h), tau0);
 }
 
 namespace {
@@ -84,7 +86,7 @@ namespace {
 FilmShear thermal_eyring_log(double ln_drive, double tau0, double beta, double k_f, double vs, double h) {
   FilmShear out;
   const double v = std::abs(vs);
-  const double tau_iso = tau0 * asinh_exp(ln_drive - std::log(tau0));
+  const double tau_iso = eyring_log(ln_drive, tau0);
   const double c = beta * h * v / (8.0 * k_f);
   const double y_max = c * tau_iso;  // X tanh X at the isothermal stress: the heating's largest measure
   // Below 1e-12 the correction 1 - g(X) ~ (2/3) X^2 ~ y is below the double's resolution of tau.
@@ -128,7 +130,7 @@ FilmShear film_shear_stress(FilmTraction model, const OilState& oil, double p, d
   const double tau0 = oil.eyring_stress;
   if (model == FilmTraction::thermal_eyring)
     out = thermal_eyring_log(ln_drive, tau0, oil.temperature_viscosity, oil.thermal_conductivity, vs, h);
-  else out.shear_stress = tau0 * asinh_exp(ln_drive - std::log(tau0));
+  else out.shear_stress = eyring_log(ln_drive, tau0);
   const double limit = oil.limiting_shear_coefficient * p;
   if (out.shear_stress > limit) {
     out.shear_stress = limit;

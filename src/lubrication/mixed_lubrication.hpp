@@ -23,7 +23,7 @@ namespace geartrib::lubrication {
 struct LoadShare {
   double asperity_share = 0.0;  // 1/gamma2
   double film_share = 1.0;      // 1/gamma1
-  double film_thickness = 0.0;  // h [m], the separation of the mean planes
+  double film_thickness = 0.0;  // h [m]: the film's gap, as the caller's closure defines it
 };
 // h_smooth: the smooth film at the whole load [m]; film_exponent: u - g of the formula (> 0).
 // h_smooth = 0 (no entrainment or viscosity), or a film share below kNegligibleFilmShare, gives

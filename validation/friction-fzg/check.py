@@ -80,12 +80,14 @@ def main(argv):
                  "model": mineral, "reference": 0.045, "tolerance": "30%", "verdict": "departs",
                  "regression": "rel 1e-6",
                  "reason": "DGMK (Doleschel et al.): mineral oil about 0.045 on the FZG rig (conditions not stated: 30 %); "
-                           "the model is higher: the asperities carry most of the load at lambda 0.3-0.5 with the "
+                           "the model is higher: the asperities carry most of the load at lambda 0.15-0.24 with the "
                            "assumed boundary coefficient 0.1 (README)"})
     ratio = oils["ESTR (ester VG 320)"]["mesh_mean_friction"] / oils["MINR (mineral VG 320)"]["mesh_mean_friction"]
     rows.append({"key": "ESTR / MINR", "quantity": "gear-mean friction ratio ester/mineral [1]", "model": ratio,
-                 "reference": 0.8, "tolerance": "0.2", "verdict": "agrees", "regression": "rel 1e-6",
-                 "reason": "DGMK (Doleschel et al.): esters at 0.6-1.0 of mineral on the FZG rig"})
+                 "reference": None, "regression": "rel 1e-6",
+                 "reason": "DGMK (Doleschel et al.) measures esters at 0.6-1.0 of mineral on the FZG rig; not asserted: "
+                           "with the same boundary coefficient for every oil the model's ratio is nearly the ratio of "
+                           "the asperity shares and says little about the oil (README)"})
     rows.append({"key": "PAOR / MINR", "quantity": "gear-mean friction ratio PAO/mineral [1]",
                  "model": oils["PAOR (PAO VG 320)"]["mesh_mean_friction"] /
                  oils["MINR (mineral VG 320)"]["mesh_mean_friction"], "reference": None, "regression": "rel 1e-6",
