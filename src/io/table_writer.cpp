@@ -210,7 +210,7 @@ std::string random_suffix() {
 // Empty with `error` set when the folder cannot take it.
 std::filesystem::path create_temporary(const std::filesystem::path& folder, const std::string& prefix, int& error) {
   for (int attempt = 0; attempt < 100; ++attempt) {
-    const std::filesystem::path candidate = folder / (prefix + random_suffix());
+    std::filesystem::path candidate = folder / (prefix + random_suffix());
     const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {
       ::close(fd);
