@@ -37,6 +37,9 @@ void flush_stdout();
 // checked: a std::runtime_error naming the file and the system's reason (EFBIG, ENOSPC, EIO).
 void write_bytes(const std::filesystem::path& file, std::string_view bytes);
 
+// How long a FIFO target's reader is waited for at the commit (then the commit fails: exit 1).
+inline constexpr std::chrono::milliseconds kFifoReaderWait{10000};
+
 // A command's outputs, all or none.
 //
 // reserve(target) checks the target and creates its temporary before any work, so that a target
@@ -52,16 +55,13 @@ void write_bytes(const std::filesystem::path& file, std::string_view bytes);
 //     hang). A stream cannot be taken back: it may hold part of the output when the write fails;
 //   - a folder, a block device or a socket is refused; so is a missing or read-only folder.
 // add() writes a target's content at once (`write` gets the temporary's path); add_stdout() keeps
-// text for standard output. commit() syncs every temporary to disk (a deferred write error shows
+// text for standard output. commit() syncs every file's temporary to disk (a deferred write error shows
 // here), writes the streams (standard output first), then renames the temporaries onto their
 // targets. Until then no target changes: an exception, the set's destruction or SIGINT, SIGTERM,
 // SIGHUP, SIGQUIT, SIGPIPE or SIGXFSZ (the process ends as the signal would have it; a signal the
 // process ignores stays ignored) removes the temporaries.
 // The same target written twice is an InputError. (SIGKILL cannot be caught: it may leave a
 // temporary, never a half-written target; a later run does not trip over it.)
-// How long a FIFO target's reader is waited for at the commit (then the commit fails: exit 1).
-inline constexpr std::chrono::milliseconds kFifoReaderWait{10000};
-
 class OutputSet {
  public:
   explicit OutputSet(std::chrono::milliseconds fifo_reader_wait = kFifoReaderWait)
