@@ -52,7 +52,8 @@ def main(argv):
                  f"references drawn at {floor:g})", fontsize=9)
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=7, ncol=2)
-    fig.savefig(argv[2], bbox_inches="tight")
+    # PNG whatever the name: geartrib passes its temporary (.NAME.tmp.XXXXXXXXXX), renamed when complete.
+    fig.savefig(argv[2], bbox_inches="tight", format="png")
     return 0
 
 

@@ -1,6 +1,7 @@
 """The Python module against the command line (same functions: equal to the last digit the
 command writes), its exceptions, and the physics it exposes against exact values."""
 
+import concurrent.futures
 import csv
 import io
 import math
@@ -357,6 +358,19 @@ def test_x3p_from_python_reads_back_bit_for_bit(tool, tmp_path):
     assert back.tobytes() == z.tobytes()  # NaN included: the same bits
     with pytest.raises(gt.InputError, match="nope.x3p"):
         gt.read_surface(tmp_path / "nope.x3p")
+
+
+def test_threads_writing_one_path_all_succeed(tmp_path):
+    """Temporaries are unique per attempt (issue 30, finding 9: named by the PID, 23 of 32 threads
+    writing one path failed with "File exists"): every write succeeds, one whole file stays and no
+    temporary."""
+    path = tmp_path / "same.x3p"
+    z = np.random.default_rng(0).normal(0, 3e-7, (256, 256))
+    with concurrent.futures.ThreadPoolExecutor(8) as pool:
+        list(pool.map(lambda _: gt.write_surface(path, z, 5e-7), range(32)))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["same.x3p"]
+    back, _, _ = gt.read_surface(path)
+    assert back.tobytes() == z.tobytes()
 
 
 def test_boundary_elements_reach_hertz():

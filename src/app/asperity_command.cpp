@@ -147,7 +147,8 @@ void print_constants(const asperity::AsperityModel& m) {
              r.fitted_delta_star_max, r.contact_radius_over_radius_max, r.past_range);
 }
 
-void run_compare(const Options& o, const asperity::AsperityModel& m, const asperity::ContactPair& p) {
+void run_compare(const Options& o, const asperity::AsperityModel& m, const asperity::ContactPair& p,
+                 io::OutputSet& outputs) {
   const io::ReferenceTable ref =
       io::read_reference_table(o.compare, [](const std::string& q) { return asperity_column(q).dimension; });
   if (ref.input_name != "delta_star")
@@ -176,7 +177,7 @@ void run_compare(const Options& o, const asperity::AsperityModel& m, const asper
     }
     t.rows.push_back(std::move(row));
   }
-  emit_table(t, o.table);
+  emit_table(t, o.table, outputs);
 }
 
 void run(const Options& o) {
@@ -194,7 +195,9 @@ void run(const Options& o) {
 
   if (o.list_constants) return print_constants(*model);
   if (o.summary) return print_summary(c, *model, mu);
-  if (!o.compare.empty()) return run_compare(o, *model, pair);
+  io::OutputSet outputs;  // the table's files, checked before any work
+  reserve_table(o.table, outputs);
+  if (!o.compare.empty()) return run_compare(o, *model, pair, outputs);
 
   std::vector<double> levels = o.delta_star;
   if (!o.range.empty()) levels = parse_range(o.range);
@@ -234,7 +237,7 @@ void run(const Options& o) {
       t.rows.push_back(std::move(row));
     }
   }
-  emit_table(t, o.table);
+  emit_table(t, o.table, outputs);
 }
 
 // The registry's model names, for the help text.

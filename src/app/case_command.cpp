@@ -23,13 +23,17 @@ struct Options {
   std::string output;
 };
 
-void write(const std::string& text, const std::string& output) {
-  if (output.empty()) std::cout << text;
-  else io::write_file_atomically(output, text);
+// The listing or the schema to -o FILE (reserved first) or standard output.
+void write(const std::string& text, const std::string& output, io::OutputSet& outputs) {
+  if (output.empty()) outputs.add_stdout(text);
+  else outputs.add_text(output, text);
+  outputs.commit();
 }
 
 void run(const Options& o) {
-  if (o.schema) return write(o.markdown ? io::case_schema_markdown() : io::case_schema_csv(), o.output);
+  io::OutputSet outputs;
+  if (!o.output.empty()) outputs.reserve(o.output);
+  if (o.schema) return write(o.markdown ? io::case_schema_markdown() : io::case_schema_csv(), o.output, outputs);
   // Only the geometry is required here: the listing says what the other parts would need.
   const Case c = load_case_reporting(o.case_options, io::kGeometryPart);
   std::size_t width = 0;
@@ -43,7 +47,7 @@ void run(const Options& o) {
                      [&](const ResolvedParameter& r) { return r.key == key; }))
       text += fmt::format("{:<{}}  {:<24}  {}\n", key, width, "(not given)", "needed by the commands that use it");
   }
-  write(text, o.output);
+  write(text, o.output, outputs);
 }
 
 }  // namespace

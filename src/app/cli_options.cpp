@@ -45,12 +45,17 @@ void add_threads_option(CLI::App* cmd, int& threads) {
   cmd->add_option("--threads", threads, "N: worker threads (default: all cores)")->check(CLI::Range(1, 1024));
 }
 
-void emit_table(const io::Table& t, const TableOptions& o) {
-  io::OutputSet outputs;  // --csv FILE and -o FILE: both or neither
+void reserve_table(const TableOptions& o, io::OutputSet& outputs) {
+  if (!o.output.empty()) outputs.reserve(o.output);
+  if (o.csv.to_file()) outputs.reserve(o.csv.file);
+}
+
+void emit_table(const io::Table& t, const TableOptions& o, io::OutputSet& outputs) {
+  const std::string text = o.csv.in_place() ? io::format_csv(t) : io::format_text(t);
   if (o.csv.to_file()) outputs.add_text(o.csv.file, io::format_csv(t));
-  if (!o.output.empty()) outputs.add_text(o.output, o.csv.in_place() ? io::format_csv(t) : io::format_text(t));
+  if (o.output.empty()) outputs.add_stdout(text);
+  else outputs.add_text(o.output, text);
   outputs.commit();
-  if (o.output.empty()) io::output_table(t, o.csv.in_place(), "");
 }
 
 double quantity_option(const std::string& option, const std::string& text, io::Dimension d) {

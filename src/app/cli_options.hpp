@@ -49,9 +49,13 @@ void add_csv_option(CLI::App* cmd, CsvOption& csv, const std::string& what);
 void add_quiet_flag(CLI::App* cmd, bool& quiet);
 void add_threads_option(CLI::App* cmd, int& threads);
 
-// Writes the table as the options ask: aligned text to -o or stdout, CSV instead when --csv
-// is given without a file, and CSV to the file --csv names besides.
-void emit_table(const io::Table& t, const TableOptions& o);
+// The table's files (-o FILE, --csv FILE) reserved before any work: a target that cannot be
+// written is refused (exit 2) before anything is computed.
+void reserve_table(const TableOptions& o, io::OutputSet& outputs);
+// Writes the table as the options ask, all or none through `outputs` (committed here): aligned
+// text to -o or stdout, CSV instead when --csv is given without a file, and CSV to the file --csv
+// names besides.
+void emit_table(const io::Table& t, const TableOptions& o, io::OutputSet& outputs);
 
 // A command-line quantity with a unit ("0.5 um", "1000 rpm"), SI; the error names the option.
 double quantity_option(const std::string& option, const std::string& text, io::Dimension d);

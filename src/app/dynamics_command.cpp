@@ -50,6 +50,8 @@ void run(const Options& o) {
   if (!o.integrator.empty()) co.changes.push_back("mesh.dynamics=" + o.integrator);
   if (!o.rtol.empty()) co.changes.push_back("dynamics.relative_tolerance=" + o.rtol);
   const Case c = load_case_reporting(co, io::kGeometryPart);
+  io::OutputSet outputs;  // the table's files, checked before any work
+  reserve_table(o.table, outputs);
   const gear::GearMesh mesh(c);
   // The dynamics rest on the mesh stiffness: warned when it leaves ISO's band.
   if (const std::string w = gear::iso_stiffness_warning(mesh, mesh.iso_comparison(c.mesh.positions)); !w.empty())
@@ -112,7 +114,7 @@ void run(const Options& o) {
         w / kRpm, s.mesh_frequency, s.dynamic_factor, s.dynamic_factor_quasi_static, s.contact_lost ? "lost" : "kept",
         s.periodic ? "periodic" : "NOT periodic", s.cycles, s.steps);
   }
-  emit_table(t, o.table);
+  emit_table(t, o.table, outputs);
 }
 
 }  // namespace

@@ -59,6 +59,9 @@ struct SingleOptions {
 
 void single_asperity(const SingleOptions& o) {
   const Case c = load_case_reporting(o.case_options, io::kGeometryPart | io::kRoughnessPart);
+  io::OutputSet outputs;  // -o and --details: both or neither, checked before ccx runs
+  if (!o.output.empty()) outputs.reserve(o.output);
+  if (!o.details.empty()) outputs.reserve(o.details);
   const asperity::ContactPair pair = asperity::contact_pair(c);
   const asperity::Critical crit =
       asperity::hertz_critical(pair, asperity::ceb_pressure_factor(pair.poisson_ratio) * pair.hardness);
@@ -165,11 +168,10 @@ void single_asperity(const SingleOptions& o) {
   for (const auto& l : mesh_lines) text += l + "\n";
   for (const auto& l : convergence_lines) text += l + "\n";
   text += fmt::format("# ccx time: {:.1f} s\n", seconds);
-  io::OutputSet outputs;  // -o and --details: both or neither
   if (!o.output.empty()) outputs.add_text(o.output, text + io::format_csv(t));
+  else outputs.add_stdout(text + io::format_csv(t));
   if (!o.details.empty()) outputs.add_text(o.details, text + io::format_csv(details));
   outputs.commit();
-  if (o.output.empty()) std::cout << text + io::format_csv(t);
   folder.done();
 }
 
@@ -190,6 +192,8 @@ struct CylinderOptions {
 
 void three_cylinders(const CylinderOptions& o) {
   const Case c = load_case_reporting(o.case_options, io::kGeometryPart | io::kCylinderPart);
+  io::OutputSet outputs;  // -o, checked before ccx runs
+  if (!o.output.empty()) outputs.reserve(o.output);
   const double delta_pc = o.delta_pc.empty() ? asperity::seed_critical_interference(asperity::cylinder_asperity(c))
                                              : quantity_option("--delta-pc", o.delta_pc, io::Dimension::length);
   const Material& m = c.pinion.material.hardness <= c.wheel.material.hardness ? c.pinion.material : c.wheel.material;
@@ -250,8 +254,9 @@ void three_cylinders(const CylinderOptions& o) {
           s.asperity_height, s.depth, o.material, m.youngs_modulus * 1e-9, m.poisson_ratio, m.yield_strength * 1e-6,
           delta_pc, deck.elements, deck.tip_element * 1e-3, seconds) +
       io::format_csv(t);
-  if (o.output.empty()) std::cout << text;
-  else io::write_file_atomically(o.output, text);
+  if (o.output.empty()) outputs.add_stdout(text);
+  else outputs.add_text(o.output, text);
+  outputs.commit();
   folder.done();
 }
 

@@ -50,6 +50,9 @@ void run(const Options& o) {
   if (o.model.empty() || o.data.empty())
     throw std::invalid_argument("fit needs --model NAME and at least one --data FILE (or --list MODEL)");
   const Case c = load_case_reporting(o.case_options, io::kGeometryPart | io::kRoughnessPart);
+  io::OutputSet outputs;  // --report, -o and --emit-cpp: all or none, checked before the fit
+  for (const std::string* file : {&o.report, &o.output, &o.emit_cpp})
+    if (!file->empty()) outputs.reserve(*file);
   const auto model = asperity::make_case_model(c, o.model);
   std::vector<fit::FitData> data;
   for (const auto& f : o.data) data.push_back(io::read_fit_data(f));
@@ -88,7 +91,6 @@ void run(const Options& o) {
     for (const auto& f : o.free) provenance += " " + f;
   }
   const std::string report = io::format_fit_report(r);
-  io::OutputSet outputs;  // --report, -o and --emit-cpp: all or none
   if (!o.report.empty()) outputs.add_text(o.report, report);
   if (!o.output.empty()) outputs.add_text(o.output, io::format_fit_toml(r, provenance));
   if (!o.emit_cpp.empty()) outputs.add_text(o.emit_cpp, io::format_fit_cpp(r, provenance));

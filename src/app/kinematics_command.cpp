@@ -28,7 +28,7 @@ struct Options {
   bool summary = false;
 };
 
-void run_summary(const Options& o, const Case& c, const gear::GearMesh& mesh) {
+void run_summary(const Options& o, const Case& c, const gear::GearMesh& mesh, io::OutputSet& outputs) {
   const auto& pair = mesh.pair();
   const auto& p = pair.path();
   const gear::IsoStiffnessComparison comparison = mesh.iso_comparison(c.mesh.positions);
@@ -71,7 +71,7 @@ void run_summary(const Options& o, const Case& c, const gear::GearMesh& mesh) {
   t.add_row("iso_c_prime_N_per_m_um", {iso.single * to_n_per_m_um});
   t.add_row("iso_c_gamma_alpha_N_per_m_um", {iso.mesh * to_n_per_m_um});
   t.add_row("mean_mesh_stiffness_over_iso_c_gamma_alpha", {comparison.ratio});
-  emit_table(t, o.table);
+  emit_table(t, o.table, outputs);
 }
 
 void run(const Options& o) {
@@ -79,11 +79,13 @@ void run(const Options& o) {
   CaseOptions co = o.case_options;
   if (!o.load_sharing.empty()) co.changes.push_back("mesh.load_sharing=" + o.load_sharing);
   const Case c = load_case_reporting(co, io::kGeometryPart);
+  io::OutputSet outputs;  // the table's files, checked before any work
+  reserve_table(o.table, outputs);
   const gear::GearMesh mesh(c);
-  if (o.summary) return run_summary(o, c, mesh);
+  if (o.summary) return run_summary(o, c, mesh, outputs);
 
-  emit_table(o.positions ? runs::kinematics_table(mesh, *o.positions) : runs::kinematics_table(mesh, o.points),
-             o.table);
+  emit_table(o.positions ? runs::kinematics_table(mesh, *o.positions) : runs::kinematics_table(mesh, o.points), o.table,
+             outputs);
 }
 
 }  // namespace

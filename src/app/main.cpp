@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "io/input_error.hpp"
+#include "io/table_writer.hpp"
 
 #include <dlfcn.h>
 
@@ -103,9 +104,14 @@ int main(int argc, char** argv) try {
   }
   try {
     app.parse(argc, argv);
+    // What the command wrote to standard output, all of it: a full disk or a closed pipe is a
+    // failure (exit 1), not a table silently cut short.
+    geartrib::io::flush_stdout();
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    if (code != 0) return 2;
+    geartrib::io::flush_stdout();  // --help: its text, all of it (a failure: exit 1, the outer handler)
+    return 0;
   } catch (const geartrib::io::InputError& e) {
     std::cerr << "geartrib: error: " << e.what() << '\n';
     return 2;

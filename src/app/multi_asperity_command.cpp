@@ -94,6 +94,8 @@ contact::MultiAsperitySpec make_spec(const Options& o, const Case& c, double del
 
 void run(const Options& o) {
   const Case c = load_case_reporting(o.case_options, io::kGeometryPart | io::kCylinderPart);
+  io::OutputSet outputs;  // the tables' files, checked before any solve
+  reserve_table(o.table, outputs);
   const double delta_pc = o.delta_pc.empty() ? asperity::seed_critical_interference(asperity::cylinder_asperity(c))
                                              : length_option("--delta-pc", o.delta_pc);
   if (!o.sweep.empty()) {
@@ -121,7 +123,7 @@ void run(const Options& o) {
                         r.inflection_von_mises, r.asperities[r.asperities.size() / 2].load, r.line_load,
                         static_cast<double>(r.iterations)});
     }
-    emit_table(t, o.table);
+    emit_table(t, o.table, outputs);
     return;
   }
   const contact::MultiAsperitySpec spec = make_spec(o, c, delta_pc);
@@ -165,9 +167,10 @@ void run(const Options& o) {
     return (as_csv ? io::format_csv(t) : io::format_text(t)) + "\n" +
            (as_csv ? io::format_csv(totals) : io::format_text(totals));
   };
-  if (o.table.csv.to_file()) io::write_file_atomically(o.table.csv.file, both(true));
-  if (o.table.output.empty()) std::cout << both(csv);
-  else io::write_file_atomically(o.table.output, both(csv));
+  if (o.table.csv.to_file()) outputs.add_text(o.table.csv.file, both(true));
+  if (o.table.output.empty()) outputs.add_stdout(both(csv));
+  else outputs.add_text(o.table.output, both(csv));
+  outputs.commit();
 }
 
 }  // namespace

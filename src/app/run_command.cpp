@@ -148,12 +148,10 @@ void run(const Options& o) {
       t.rows.push_back(std::move(row));
     }
     if (o.csv.to_file()) outputs.add_text(o.csv.file, io::format_csv(t));
+    if (o.csv.in_place()) outputs.add_stdout(io::format_csv(t));  // standard output holds the table only
   }
   outputs.commit();
-  if (o.csv.in_place()) {
-    io::output_table(t, true, "");
-    return;  // standard output holds the table only
-  }
+  if (o.csv.in_place()) return;
   for (const auto& w : r.warnings) std::cerr << "warning: " << w << '\n';
   if (!r.verdict.empty()) fmt::print("Validity: {}\n", r.verdict);
   if (!o.quiet) {

@@ -36,6 +36,12 @@ double spacing_option(const std::string& option, const std::string& text) {
   return bounded_length(option, text, surface::kMinSpacing, surface::kMaxSpacing, true);
 }
 
+// The surface file -o names, checked before any work: its format (by extension) and its target.
+void reserve_surface(const std::string& file, io::OutputSet& outputs) {
+  io::topography_format(file);
+  outputs.reserve(file);
+}
+
 }  // namespace
 
 void add_surface_input_options(CLI::App* cmd, SurfaceInputOptions& o) {
@@ -67,6 +73,8 @@ struct GenerateOptions {
 };
 
 void generate(const GenerateOptions& o) {
+  io::OutputSet outputs;
+  reserve_surface(o.output, outputs);
   surface::HeightGrid g;
   auto check_size = [](int nx, int ny) {
     if (static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) > surface::kMaxGridPoints)
@@ -99,7 +107,8 @@ void generate(const GenerateOptions& o) {
     s.seed = o.seed;
     g = surface::hobbed_surface(s);
   }
-  io::write_topography(o.output, g, quantity_option("--out-unit", "1 " + o.unit, io::Dimension::length));
+  io::add_topography(outputs, o.output, g, quantity_option("--out-unit", "1 " + o.unit, io::Dimension::length));
+  outputs.commit();
 }
 
 struct StatsOptions {
@@ -115,6 +124,9 @@ struct EquivalentOptions {
 };
 
 void equivalent(const EquivalentOptions& o) {
+  io::OutputSet outputs;  // the surface and the statistics' files, all or none
+  reserve_surface(o.output, outputs);
+  reserve_table(o.table, outputs);
   const io::LoadedSurface u = load_surface_reporting(o.upper, o.input), d = load_surface_reporting(o.lower, o.input);
   surface::HeightGrid e;
   try {
@@ -127,8 +139,8 @@ void equivalent(const EquivalentOptions& o) {
   }
   // The statistics before the surface is written: a surface they refuse leaves no file behind.
   const auto stats = about_surface(o.upper + " + " + o.lower, [&] { return surface::surface_statistics(e); });
-  io::write_topography(o.output, e, quantity_option("--out-unit", "1 " + o.unit, io::Dimension::length));
-  emit_table(runs::surface_statistics_table(stats, nullptr), o.table);
+  io::add_topography(outputs, o.output, e, quantity_option("--out-unit", "1 " + o.unit, io::Dimension::length));
+  emit_table(runs::surface_statistics_table(stats, nullptr), o.table, outputs);
 }
 
 struct AsperityOptions {
@@ -140,6 +152,8 @@ struct AsperityOptions {
 };
 
 void asperities(const AsperityOptions& o) {
+  io::OutputSet outputs;
+  reserve_table(o.table, outputs);
   const io::LoadedSurface in = load_surface_reporting(o.file, o.input);
   const surface::SurfaceStatistics s = about_surface(o.file, [&] { return surface::surface_statistics(in.grid); });
   io::Table t;
@@ -170,7 +184,7 @@ void asperities(const AsperityOptions& o) {
         r.mean_tip_radius * 1e6, r.sd_tip_radius * 1e6, r.mean_spacing * 1e6, r.sd_spacing * 1e6, r.mean_height * 1e6,
         r.sd_height * 1e6);
   }
-  emit_table(t, o.table);
+  emit_table(t, o.table, outputs);
 }
 
 }  // namespace
@@ -245,10 +259,12 @@ void add_surface_command(CLI::App& app) {
   add_surface_input_options(st, s->input);
   add_table_options(st, s->table);
   st->callback([s] {
+    io::OutputSet outputs;
+    reserve_table(s->table, outputs);
     const io::LoadedSurface in = load_surface_reporting(s->file, s->input);
     emit_table(runs::surface_statistics_table(
                    about_surface(s->file, [&] { return surface::surface_statistics(in.grid); }), &in.cleanup),
-               s->table);
+               s->table, outputs);
   });
 
   auto cl = std::make_shared<EquivalentOptions>();  // upper: the input; unit: of the output
@@ -259,8 +275,12 @@ void add_surface_command(CLI::App& app) {
   clean->add_option("--out-unit", cl->unit, "Length unit of ASCII output (default um)");
   add_surface_input_options(clean, cl->input);
   clean->callback([cl] {
+    io::OutputSet outputs;
+    reserve_surface(cl->output, outputs);
     const io::LoadedSurface in = load_surface_reporting(cl->upper, cl->input);
-    io::write_topography(cl->output, in.grid, quantity_option("--out-unit", "1 " + cl->unit, io::Dimension::length));
+    io::add_topography(outputs, cl->output, in.grid,
+                       quantity_option("--out-unit", "1 " + cl->unit, io::Dimension::length));
+    outputs.commit();
   });
 
   auto e = std::make_shared<EquivalentOptions>();

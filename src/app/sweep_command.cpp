@@ -69,8 +69,8 @@ void reserve_outputs(const Options& o, io::OutputSet& outputs) {
 void write_outputs(const io::ColumnTableFile& f, const Options& o, io::OutputSet& outputs) {
   outputs.add(output_path(o), [&](const std::filesystem::path& tmp) { io::write_column_table_hdf5(tmp, f); });
   if (o.csv.to_file()) outputs.add_text(o.csv.file, io::format_csv(f.table));
+  if (o.csv.in_place()) outputs.add_stdout(io::format_csv(f.table));
   outputs.commit();
-  if (o.csv.in_place()) std::cout << io::format_csv(f.table);
 }
 
 // The process's peak resident memory so far [MB]: VmHWM of /proc/self/status (this program's

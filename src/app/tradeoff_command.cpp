@@ -195,9 +195,22 @@ Row compare(const std::string& knob, const std::string& setting, const Timed& t,
   return r;
 }
 
+// With -o FILE.png: the Pareto plot, and the table as CSV beside it unless --csv names a file.
+bool png_output(const Options& o) {
+  const std::string& output = o.table.output;
+  return output.size() > 4 && output.substr(output.size() - 4) == ".png";
+}
+std::filesystem::path csv_beside_plot(const Options& o) {
+  return o.table.csv.to_file() ? std::filesystem::path(o.table.csv.file)
+                               : std::filesystem::path(o.table.output.substr(0, o.table.output.size() - 4) + ".csv");
+}
+
 void run(const Options& o) {
   const std::filesystem::path case_file = case_path(o.case_options);
   const Case base = load_case_reporting(o.case_options);
+  io::OutputSet outputs;  // -o, --csv FILE and a plot's CSV: all or none, checked before the runs
+  reserve_table(o.table, outputs);
+  if (png_output(o)) outputs.reserve(csv_beside_plot(o));
   const std::vector<io::CaseChange> given = case_changes(o.case_options);
   std::vector<Knob> knobs = knobs_of(base);
   if (!o.knobs.empty()) {
@@ -255,13 +268,14 @@ void run(const Options& o) {
                                                 : (r.recommended ? "recommended" : ""));
   }
   const std::string& output = o.table.output;
-  const bool png = output.size() > 4 && output.substr(output.size() - 4) == ".png";
+  const bool png = png_output(o);
   const CsvOption& csv_option = o.table.csv;
-  io::OutputSet outputs;  // --csv FILE and -o FILE: both or neither
-  if (csv_option.to_file()) outputs.add_text(csv_option.file, io::format_csv(t));
+  const std::filesystem::path csv = png ? csv_beside_plot(o) : std::filesystem::path(csv_option.file);
+  std::filesystem::path csv_written;  // its temporary, complete: what the plot reads
+  if (csv_option.to_file() || png) csv_written = outputs.add_text(csv, io::format_csv(t));
   if (csv_option.in_place() && !png) {
     const std::string text = io::format_csv(t);
-    if (output.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
+    if (output.empty()) outputs.add_stdout(text);
     else outputs.add_text(output, text);
   } else {
     std::string text = fmt::format("{:<15} {:<16} {:>10} {:>16} {:>22} {:>17}  {}\n", "knob", "setting", "time_s",
@@ -275,27 +289,28 @@ void run(const Options& o) {
     for (const Row& r : rows)
       if (r.recommended && r.knob != "combined") advice += fmt::format(" {} = {};", r.knob, r.setting);
     text += advice + "\n";
-    if (png || output.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
+    if (png || output.empty()) outputs.add_stdout(text);
     else outputs.add_text(output, text);
   }
-  outputs.commit();
   if (png) {
-    // The Pareto plot by scripts/plot_tradeoff.py from the CSV table (matplotlib).
-    const std::filesystem::path csv = csv_option.to_file()
-                                          ? std::filesystem::path(csv_option.file)
-                                          : std::filesystem::path(output.substr(0, output.size() - 4) + ".csv");
-    if (!csv_option.to_file()) io::write_file_atomically(csv, io::format_csv(t));
-    const std::filesystem::path script = std::filesystem::path(GEARTRIB_SOURCE_DIR) / "scripts/plot_tradeoff.py";
-    // Debian's interpreter, where python3-matplotlib installs (a PATH python3 may lack it).
-    const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    const std::string command = python + " " + fem::shell_quoted(script.string()) + " " +
-                                fem::shell_quoted(csv.string()) + " " + fem::shell_quoted(output) +
-                                fmt::format(" {:g}", o.tolerance);
-    if (std::system(command.c_str()) != 0)
-      throw std::runtime_error("plotting failed (" + command + "); the table is in " + csv.string() +
-                               " (needs python3 with matplotlib: apt-get install python3-matplotlib)");
-    fmt::print("wrote {} and {}\n", csv.string(), output);
+    // The Pareto plot by scripts/plot_tradeoff.py from the CSV table (matplotlib), into the plot's
+    // temporary: committed with the table, or neither.
+    outputs.add(output, [&](const std::filesystem::path& plot) {
+      const std::filesystem::path script = std::filesystem::path(GEARTRIB_SOURCE_DIR) / "scripts/plot_tradeoff.py";
+      // Debian's interpreter, where python3-matplotlib installs (a PATH python3 may lack it).
+      const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+      const std::string command = python + " " + fem::shell_quoted(script.string()) + " " +
+                                  fem::shell_quoted(csv_written.string()) + " " + fem::shell_quoted(plot.string()) +
+                                  fmt::format(" {:g}", o.tolerance);
+      if (std::system(command.c_str()) != 0)
+        throw std::runtime_error(
+            "plotting failed (" + command +
+            "; needs python3 with matplotlib: apt-get install python3-matplotlib); nothing written "
+            "(-o FILE.csv writes the table alone)");
+    });
   }
+  outputs.commit();
+  if (png) fmt::print("wrote {} and {}\n", csv.string(), output);
 }
 
 }  // namespace

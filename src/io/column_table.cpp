@@ -86,7 +86,7 @@ void write_column_table_hdf5(const std::filesystem::path& path, const ColumnTabl
     for (std::size_t r = 0; r < rows; ++r) values[r * cols + k] = numeric[k]->numbers[r];
   {
     using hdf5::Handle;
-    Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, "file " + path.string());
+    hdf5::NewFile file(path);
     {
       Handle points(H5Gcreate2(file, "/points", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /points");
       for (const auto& c : f.table.columns)
@@ -100,6 +100,7 @@ void write_column_table_hdf5(const std::filesystem::path& path, const ColumnTabl
       for (const auto& [k, v] : f.attributes) hdf5::string_attribute(sweep, k, v);
     }
     hdf5::string_dataset(file, "/scene", f.scene);
+    file.close();
   }
 }
 

@@ -1,5 +1,7 @@
 #include "io/hdf5_handles.hpp"
 
+#include "io/table_writer.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,6 +11,32 @@ namespace geartrib::io::hdf5 {
 
 Handle::Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
   if (id < 0) throw std::runtime_error("HDF5: cannot create " + what);
+}
+
+NewFile::NewFile(std::filesystem::path path) : path_(std::move(path)) {
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "file access list");
+  // Grown 1 MiB at a time (glibc's realloc moves large blocks by remapping pages, not copying).
+  check(H5Pset_fapl_core(access, std::size_t{1} << 20, false), "H5Pset_fapl_core");
+  id_ = H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access);
+  if (id_ < 0) throw std::runtime_error("HDF5: cannot create " + path_.string());
+}
+
+NewFile::~NewFile() {
+  if (id_ >= 0) H5Fclose(id_);  // in memory: nothing to write, nothing to fail
+}
+
+void NewFile::close() {
+  const hid_t id = id_;
+  const auto fail = [&](const std::string& why) { throw std::runtime_error("HDF5: " + path_.string() + ": " + why); };
+  if (H5Fget_obj_count(id, H5F_OBJ_ALL) != 1) fail("objects still open at its close");  // the file itself only
+  if (H5Fflush(id, H5F_SCOPE_LOCAL) < 0) fail("cannot flush the file's image");
+  const ssize_t size = H5Fget_file_image(id, nullptr, 0);
+  if (size < 0) fail("cannot size the file's image");
+  std::string image(static_cast<std::size_t>(size), '\0');
+  if (size > 0 && H5Fget_file_image(id, image.data(), image.size()) != size) fail("cannot copy the file's image");
+  id_ = -1;
+  if (H5Fclose(id) < 0) fail("cannot close the file");
+  write_bytes(path_, image);
 }
 
 void check(herr_t status, const std::string& what) {

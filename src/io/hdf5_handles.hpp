@@ -3,13 +3,15 @@
 
 #include <hdf5.h>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
 namespace geartrib::io::hdf5 {
 
 // Owns an HDF5 identifier and closes it with the matching function; throws std::runtime_error
-// naming `what` when the identifier is invalid.
+// naming `what` when the identifier is invalid. The close's status is not checked: a file written
+// through NewFile does no I/O on closing its objects (reading, a close has nothing to lose).
 class Handle {
  public:
   Handle(hid_t id, herr_t (*close)(hid_t), const std::string& what);
@@ -21,6 +23,27 @@ class Handle {
  private:
   hid_t id_;
   herr_t (*close_)(hid_t);
+};
+
+// A new HDF5 file built in memory (HDF5's core driver without a backing store) and written to
+// `path` by close() alone, each write checked (io::write_bytes). HDF5 itself never writes it: HDF5
+// 1.10 cannot close a file whose flush failed (a full disk, a file-size limit) and keeps it open,
+// and its shutdown at exit then crashes (SIGSEGV). Without close() (an exception), nothing is
+// written. Costs a copy of the file in memory while close() writes it.
+class NewFile {
+ public:
+  explicit NewFile(std::filesystem::path path);  // throws std::runtime_error
+  NewFile(const NewFile&) = delete;
+  NewFile& operator=(const NewFile&) = delete;
+  ~NewFile();
+  operator hid_t() const { return id_; }
+  // Every object of the file closed first; throws std::runtime_error naming the file and the
+  // reason (HDF5's, or the system's: EFBIG, ENOSPC, EIO).
+  void close();
+
+ private:
+  hid_t id_ = -1;
+  std::filesystem::path path_;
 };
 
 void check(herr_t status, const std::string& what);  // throws std::runtime_error when status < 0

@@ -18,7 +18,7 @@ using hdf5::string_attribute;
 
 void write_file(const std::string& path, const contact::MeshContactResult& r, const std::string& case_file,
                 const Case& c) {
-  Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, "file " + path);
+  hdf5::NewFile file(path);
   {
     Handle mesh(H5Gcreate2(file, "/mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /mesh");
     for (const auto& s : r.mesh) hdf5::number_dataset(mesh, s.name, s.values, s.unit);
@@ -167,6 +167,7 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
     hdf5::strings_dataset(meta, "stage_names", names);
     hdf5::strings_dataset(meta, "warnings", r.warnings);
   }
+  file.close();
 }
 
 }  // namespace

@@ -5,17 +5,22 @@
 #include <fmt/format.h>
 
 #include <fcntl.h>
+#include <sys/random.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
+#include <iostream>
 #include <mutex>
+#include <random>
 #include <stdexcept>
+#include <thread>
 
 namespace geartrib::io {
 
@@ -57,10 +62,65 @@ std::string format_text(const Table& t) {
   return out;
 }
 
-void output_table(const Table& t, bool csv, const std::string& path) {
-  const std::string text = csv ? format_csv(t) : format_text(t);
-  if (path.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
-  else write_file_atomically(path, text);
+void flush_stdout() {
+  // std::cout writes through stdio's buffer (synchronised with it, the default): one flush of stdio
+  // flushes both, and its errno is the reason.
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int error = errno;
+  std::cout.flush();
+  if (!flushed || std::ferror(stdout) || !std::cout)
+    throw std::runtime_error(fmt::format("cannot write standard output: {}",
+                                         !flushed && error != 0 ? std::strerror(error) : "a write to it failed"));
+}
+
+namespace {
+
+// `text` to standard output, flushed and checked.
+void write_stdout(std::string_view text) {
+  errno = 0;
+  if (!text.empty() && std::fwrite(text.data(), 1, text.size(), stdout) != text.size()) {
+    const int error = errno;  // a full buffer's flush failed on the way
+    throw std::runtime_error(
+        fmt::format("cannot write standard output: {}", error != 0 ? std::strerror(error) : "a write to it failed"));
+  }
+  flush_stdout();
+}
+
+}  // namespace
+
+namespace {
+
+// Every byte of [data, data + size) to `fd`, resuming after a signal or a short write; false with
+// errno set on an error.
+bool write_all(int fd, const char* data, std::size_t size) {
+  while (size > 0) {
+    const ssize_t n = ::write(fd, data, size);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    data += n;
+    size -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+[[noreturn]] void fail_write(const std::filesystem::path& file, int error) {
+  throw std::runtime_error(fmt::format("cannot write {}: {}", file.string(), std::strerror(error)));
+}
+
+}  // namespace
+
+void write_bytes(const std::filesystem::path& file, std::string_view bytes) {
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) fail_write(file, errno);
+  if (!write_all(fd, bytes.data(), bytes.size())) {
+    const int error = errno;
+    ::close(fd);
+    fail_write(file, error);
+  }
+  if (::close(fd) != 0) fail_write(file, errno);
 }
 
 namespace {
@@ -75,7 +135,8 @@ struct SignalSlot {
   char path[kSlotPathBytes] = {};
 };
 SignalSlot signal_slots[kSignalSlots];
-constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+// SIGPIPE (a reader gone) and SIGXFSZ (the file-size limit) end the process too, by default.
+constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGXFSZ};
 
 void remove_temporaries_and_reraise(int signal_number) {
   for (auto& slot : signal_slots)
@@ -87,6 +148,8 @@ void remove_temporaries_and_reraise(int signal_number) {
   ::raise(signal_number);
 }
 
+// The one place the cleanup handler is installed (once per process, at the first reservation);
+// a signal the process ignores stays ignored (SIGHUP under nohup).
 void install_cleanup_handler() {
   static std::once_flag once;
   std::call_once(once, [] {
@@ -122,6 +185,161 @@ void release_slot(int slot) {
   signal_slots[slot].claimed.store(false);
 }
 
+// Ten random characters of [0-9a-z] (about 52 bits) from the kernel's generator.
+std::string random_suffix() {
+  constexpr char kDigits[] = "0123456789abcdefghijklmnopqrstuvwxyz";
+  unsigned char bytes[10];
+  std::size_t got = 0;
+  while (got < sizeof bytes) {
+    const ssize_t n = ::getrandom(bytes + got, sizeof bytes - got, 0);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  if (got < sizeof bytes) {  // no getrandom (an old kernel): the C++ library's source
+    std::random_device device;
+    for (auto& b : bytes) b = static_cast<unsigned char>(device());
+  }
+  std::string s;
+  for (unsigned char b : bytes) s += kDigits[b % 36];
+  return s;
+}
+
+// A new empty file `folder/<prefix><random>`, created exclusively with the mode any new file gets
+// (0666 less the umask); a name already taken (a stale temporary, another writer's) is passed over.
+// Empty with `error` set when the folder cannot take it.
+std::filesystem::path create_temporary(const std::filesystem::path& folder, const std::string& prefix, int& error) {
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    std::filesystem::path candidate = folder / (prefix + random_suffix());
+    const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) {
+      ::close(fd);
+      return candidate;
+    }
+    error = errno;
+    if (error != EEXIST) return {};
+  }
+  return {};
+}
+
+// Where a target's content goes, decided by what the target is (see OutputSet in the header).
+struct Destination {
+  std::filesystem::path path;    // the file to replace or the stream to write
+  std::filesystem::path folder;  // where the temporary goes
+  bool stream = false;
+};
+
+[[noreturn]] void refuse_target(const std::filesystem::path& target, const std::string& rule) {
+  throw InputError(target.string(), 0, "", "", rule);
+}
+
+Destination destination_of(const std::filesystem::path& target) {
+  const auto parent = [](const std::filesystem::path& p) {
+    return p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
+  };
+  struct stat link {};
+  if (::lstat(target.c_str(), &link) != 0) {
+    if (errno == ENOENT) return {target, parent(target), false};  // new: a missing folder shows at its temporary
+    refuse_target(target, fmt::format("cannot be written: {}", std::strerror(errno)));
+  }
+  struct stat st = link;
+  if (S_ISLNK(link.st_mode) && ::stat(target.c_str(), &st) != 0) {
+    const int error = errno;
+    std::error_code ec;
+    const auto to = std::filesystem::read_symlink(target, ec);
+    if (error == ENOENT)
+      refuse_target(target, fmt::format("a symbolic link to {}, which does not exist: give the file to write itself",
+                                        to.string()));
+    refuse_target(target, fmt::format("cannot be written: {}", std::strerror(error)));
+  }
+  if (S_ISREG(st.st_mode)) {
+    if (!S_ISLNK(link.st_mode)) return {target, parent(target), false};
+    std::error_code ec;
+    const auto file = std::filesystem::canonical(target, ec);  // the link's file, replaced; the link stays
+    if (ec)
+      refuse_target(target, fmt::format("cannot be written: the symbolic link cannot be followed: {}", ec.message()));
+    return {file, parent(file), false};
+  }
+  if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) {
+    if (::faccessat(AT_FDCWD, target.c_str(), W_OK, AT_EACCESS) != 0)
+      refuse_target(target, fmt::format("cannot be written: {}", std::strerror(errno)));
+    std::error_code ec;
+    const auto folder = std::filesystem::temp_directory_path(ec);
+    if (ec) refuse_target(target, fmt::format("a stream needs a temporary folder: {}", ec.message()));
+    return {target, folder, true};
+  }
+  if (S_ISDIR(st.st_mode)) refuse_target(target, "is a folder: an output is a file (name one inside the folder)");
+  if (S_ISBLK(st.st_mode))
+    refuse_target(target, "is a block device: a result is never written onto a disk (name a file)");
+  refuse_target(target, "is a socket or another special file: a result goes to a file, a character device or a FIFO");
+}
+
+// The stream opened for writing without blocking on it (a FIFO without a reader is ENXIO, retried
+// for `wait`: a FIFO nobody reads never hangs the command), then switched to blocking writes. -1
+// with errno set on failure.
+int open_stream(const std::filesystem::path& to, std::chrono::milliseconds wait) {
+  const auto deadline = std::chrono::steady_clock::now() + wait;
+  for (;;) {
+    const int fd = ::open(to.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
+    if (fd >= 0) {
+      const int flags = ::fcntl(fd, F_GETFL);
+      if (flags >= 0 && ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) == 0) return fd;
+      const int error = errno;
+      ::close(fd);
+      errno = error;
+      return -1;
+    }
+    if (errno == EINTR) continue;
+    if (errno != ENXIO || std::chrono::steady_clock::now() >= deadline) return -1;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+}
+
+// The complete temporary `from` to the stream `to` (a character device or a FIFO).
+void copy_to_stream(const std::filesystem::path& from, const std::filesystem::path& to,
+                    std::chrono::milliseconds wait) {
+  const int in = ::open(from.c_str(), O_RDONLY | O_CLOEXEC);
+  if (in < 0) fail_write(from, errno);
+  const int out = open_stream(to, wait);
+  if (out < 0) {
+    const int error = errno;
+    ::close(in);
+    if (error == ENXIO)
+      throw std::runtime_error(fmt::format("cannot write {}: no reader opened the FIFO within {:g} s", to.string(),
+                                           static_cast<double>(wait.count()) / 1e3));
+    fail_write(to, error);
+  }
+  struct stat st {};
+  int error = 0;
+  if (::fstat(out, &st) != 0) error = errno;
+  else if (!S_ISCHR(st.st_mode) && !S_ISFIFO(st.st_mode)) error = EEXIST;  // replaced since it was reserved
+  std::vector<char> buffer(std::size_t{1} << 20);
+  while (error == 0) {
+    const ssize_t n = ::read(in, buffer.data(), buffer.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) error = errno;
+    if (n <= 0) break;
+    if (!write_all(out, buffer.data(), static_cast<std::size_t>(n))) error = errno;
+  }
+  ::close(in);
+  if (::close(out) != 0 && error == 0) error = errno;
+  if (error != 0) fail_write(to, error);
+}
+
+// The temporary's data on the disk: a write error the kernel deferred (NFS, a quota) shows here.
+void sync_to_disk(const std::filesystem::path& file) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) fail_write(file, errno);
+  int error = 0;
+  while (::fsync(fd) != 0) {
+    if (errno == EINTR) continue;
+    if (errno != EINVAL && errno != EROFS) error = errno;  // a file system that cannot sync has nothing deferred
+    break;
+  }
+  ::close(fd);
+  if (error != 0) fail_write(file, error);
+}
+
 }  // namespace
 
 OutputSet::~OutputSet() { discard(); }
@@ -129,34 +347,38 @@ OutputSet::~OutputSet() { discard(); }
 void OutputSet::discard() {
   for (const auto& p : pending_) {
     std::error_code ignored;
-    std::filesystem::remove(p.temporary, ignored);
+    if (!p.temporary.empty()) std::filesystem::remove(p.temporary, ignored);
     release_slot(p.slot);
   }
   pending_.clear();
+  stdout_.clear();
 }
 
 void OutputSet::reserve(const std::filesystem::path& target) {
   for (const auto& p : pending_)
     if (p.target == target) return;
   install_cleanup_handler();
-  const auto dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
-  const auto temporary = dir / fmt::format(".{}.tmp.{}", target.filename().string(), ::getpid());
-  const int slot = claim_slot(temporary);
-  // Created exclusively here, so that a missing or read-only folder is named before any work.
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-  if (fd < 0) {
-    const int error = errno;
-    release_slot(slot);
+  Destination d;
+  try {
+    d = destination_of(target);
+  } catch (...) {
+    discard();
+    throw;
+  }
+  const std::string name = d.path.filename().string();
+  int error = 0;
+  const auto temporary =
+      create_temporary(d.folder, d.stream ? ".geartrib-" + name + ".tmp." : "." + name + ".tmp.", error);
+  if (temporary.empty()) {
     discard();
     throw InputError(target.string(), 0, "", "",
-                     fmt::format("cannot be written: {} (folder {})", std::strerror(error), dir.string()));
+                     fmt::format("cannot be written: {} (folder {})", std::strerror(error), d.folder.string()));
   }
-  ::close(fd);
-  pending_.push_back({temporary, target, slot, false});
+  pending_.push_back({temporary, target, d.path, d.stream, claim_slot(temporary), false});
 }
 
-void OutputSet::add(const std::filesystem::path& target,
-                    const std::function<void(const std::filesystem::path&)>& write) {
+std::filesystem::path OutputSet::add(const std::filesystem::path& target,
+                                     const std::function<void(const std::filesystem::path&)>& write) {
   reserve(target);
   auto at = std::find_if(pending_.begin(), pending_.end(), [&](const Pending& p) { return p.target == target; });
   if (at->written) {
@@ -166,21 +388,25 @@ void OutputSet::add(const std::filesystem::path& target,
   at->written = true;
   try {
     write(at->temporary);
+  } catch (const InputError&) {
+    discard();
+    throw;
+  } catch (const std::runtime_error& e) {  // a write error: named with the target it was for
+    const std::string what = fmt::format("{}: not written: {}", target.string(), e.what());
+    discard();
+    throw std::runtime_error(what);
   } catch (...) {
     discard();
     throw;
   }
+  return at->temporary;
 }
 
-void OutputSet::add_text(const std::filesystem::path& target, const std::string& content) {
-  add(target, [&](const std::filesystem::path& tmp) {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-    out << content;
-    out.flush();
-    if (!out) throw std::runtime_error(fmt::format("error while writing {} (disk full?)", tmp.string()));
-  });
+std::filesystem::path OutputSet::add_text(const std::filesystem::path& target, const std::string& content) {
+  return add(target, [&](const std::filesystem::path& tmp) { write_bytes(tmp, content); });
 }
+
+void OutputSet::add_stdout(std::string text) { stdout_.push_back(std::move(text)); }
 
 void OutputSet::commit() {
   // A reserved target never written is a programming error: nothing is renamed.
@@ -189,19 +415,24 @@ void OutputSet::commit() {
       discard();
       throw std::logic_error("OutputSet: " + p.target.string() + " reserved but not written");
     }
-  for (std::size_t k = 0; k < pending_.size(); ++k) {
-    std::error_code ec;
-    std::filesystem::rename(pending_[k].temporary, pending_[k].target, ec);
-    if (ec) {
-      const std::string what = fmt::format("cannot rename {} to {}: {}", pending_[k].temporary.string(),
-                                           pending_[k].target.string(), ec.message());
-      pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(k));
-      discard();
-      throw std::runtime_error(what);
+  try {
+    for (const auto& p : pending_)
+      if (!p.stream) sync_to_disk(p.temporary);
+    for (const auto& text : stdout_) write_stdout(text);
+    for (const auto& p : pending_)
+      if (p.stream) copy_to_stream(p.temporary, p.destination, fifo_reader_wait_);
+    for (auto& p : pending_) {
+      if (p.stream) continue;
+      if (::rename(p.temporary.c_str(), p.destination.c_str()) != 0)
+        throw std::runtime_error(fmt::format("cannot rename {} to {}: {}", p.temporary.string(), p.destination.string(),
+                                             std::strerror(errno)));
+      p.temporary.clear();  // in place: nothing left to remove (a rename cannot be taken back)
     }
-    release_slot(pending_[k].slot);
+  } catch (...) {
+    discard();
+    throw;
   }
-  pending_.clear();
+  discard();  // the streams' temporaries, the signal slots
 }
 
 void write_atomically(const std::filesystem::path& path,

@@ -1,9 +1,11 @@
 // Tables for people (aligned columns) or programs (CSV), and files written atomically.
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace geartrib::io {
@@ -25,35 +27,67 @@ struct Table {
 std::string format_csv(const Table& t);
 std::string format_text(const Table& t);
 
-// The table as CSV or text, to stdout when `path` is empty, else to `path` atomically.
-void output_table(const Table& t, bool csv, const std::string& path);
+// Standard output flushed (what stdio and std::cout hold) and checked: a write that failed (a full
+// disk, a closed pipe with SIGPIPE ignored) is a std::runtime_error (exit 1), never a table
+// silently cut short. src/app/main.cpp calls it after every command; OutputSet::add_stdout's text
+// is written and checked at the commit.
+void flush_stdout();
 
-// A command's output files, all or none. add() writes a target's content at once to a temporary
-// beside it (`.NAME.tmp.PID`; `write` gets the temporary's path); commit() renames every temporary
-// onto its target. Until then no target changes: an exception, the set's destruction or SIGINT,
-// SIGTERM, SIGHUP or SIGQUIT (the process ends as the signal would have it) removes the
-// temporaries. reserve() creates a target's temporary ahead (a command reserves its outputs
-// before computing): a folder that is missing or not writable is an InputError naming the target;
-// the same target written twice is an InputError too. (SIGKILL cannot be caught: it may leave a
-// temporary, never a half-written target.)
+// Writes `bytes` to `file` (created, or emptied first), each write checked, the file closed and
+// checked: a std::runtime_error naming the file and the system's reason (EFBIG, ENOSPC, EIO).
+void write_bytes(const std::filesystem::path& file, std::string_view bytes);
+
+// How long a FIFO target's reader is waited for at the commit (then the commit fails: exit 1).
+inline constexpr std::chrono::milliseconds kFifoReaderWait{10000};
+
+// A command's outputs, all or none.
+//
+// reserve(target) checks the target and creates its temporary before any work, so that a target
+// that cannot be written is refused (io::InputError, exit 2) before anything is computed:
+//   - a new name or a regular file: the temporary is `.NAME.tmp.XXXXXXXXXX` beside it (a random
+//     suffix, created exclusively: a temporary left by a killed run never blocks a later one, and
+//     threads or processes writing one path do not collide), renamed onto it by commit();
+//   - a symbolic link is followed: the file it names is replaced (the link stays); a link to
+//     nothing is refused;
+//   - a character device or a FIFO (/dev/null, /dev/stdout on a pipe, a named pipe) is written
+//     as a stream at commit, from a complete temporary in the temporary folder ($TMPDIR): never
+//     replaced by a file. A FIFO's reader is waited for kFifoReaderWait at most (then exit 1, no
+//     hang). A stream cannot be taken back: it may hold part of the output when the write fails;
+//   - a folder, a block device or a socket is refused; so is a missing or read-only folder.
+// add() writes a target's content at once (`write` gets the temporary's path); add_stdout() keeps
+// text for standard output. commit() syncs every file's temporary to disk (a deferred write error shows
+// here), writes the streams (standard output first), then renames the temporaries onto their
+// targets. Until then no target changes: an exception, the set's destruction or SIGINT, SIGTERM,
+// SIGHUP, SIGQUIT, SIGPIPE or SIGXFSZ (the process ends as the signal would have it; a signal the
+// process ignores stays ignored) removes the temporaries.
+// The same target written twice is an InputError. (SIGKILL cannot be caught: it may leave a
+// temporary, never a half-written target; a later run does not trip over it.)
 class OutputSet {
  public:
-  OutputSet() = default;
+  explicit OutputSet(std::chrono::milliseconds fifo_reader_wait = kFifoReaderWait)
+      : fifo_reader_wait_(fifo_reader_wait) {}
   OutputSet(const OutputSet&) = delete;
   OutputSet& operator=(const OutputSet&) = delete;
   ~OutputSet();
   void reserve(const std::filesystem::path& target);
-  void add(const std::filesystem::path& target, const std::function<void(const std::filesystem::path&)>& write);
-  void add_text(const std::filesystem::path& target, const std::string& content);
+  // Returns the temporary, complete (what commit() puts in place), for a later writer that reads it.
+  std::filesystem::path add(const std::filesystem::path& target,
+                            const std::function<void(const std::filesystem::path&)>& write);
+  std::filesystem::path add_text(const std::filesystem::path& target, const std::string& content);
+  void add_stdout(std::string text);
   void commit();
 
  private:
   struct Pending {
     std::filesystem::path temporary, target;
-    int slot;  // in the signal handler's list, -1 when it had no room
+    std::filesystem::path destination;  // what commit() renames onto or streams to
+    bool stream;                        // a character device or FIFO: written, not replaced
+    int slot;                           // in the signal handler's list, -1 when it had no room
     bool written;
   };
   std::vector<Pending> pending_;
+  std::vector<std::string> stdout_;
+  std::chrono::milliseconds fifo_reader_wait_;
   void discard();
 };
 

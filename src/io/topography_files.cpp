@@ -508,27 +508,38 @@ LoadedSurface load_surface(const std::filesystem::path& file, const TopographyRe
 }
 
 void write_topography(const std::filesystem::path& file, const surface::HeightGrid& g, double unit) {
+  OutputSet set;
+  add_topography(set, file, g, unit);
+  set.commit();
+}
+
+void add_topography(OutputSet& outputs, const std::filesystem::path& file, const surface::HeightGrid& g, double unit) {
   g.validate();
   const TopographyFormat format = topography_format(file);
   if (format == TopographyFormat::x3p) {
-    write_x3p(file, g);  // atomically, in metres
+    outputs.add(file, [&](const std::filesystem::path& tmp) { write_x3p_archive(tmp, g); });  // in metres
     return;
   }
   if (format == TopographyFormat::hdf5) {
-    write_atomically(file, [&](const std::filesystem::path& tmp) {
+    outputs.add(file, [&](const std::filesystem::path& tmp) {
       start_hdf5();
-      hdf5::Handle f(H5Fcreate(tmp.string().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, tmp.string());
+      hdf5::NewFile f(tmp);
       hdf5::string_attribute(f, "geartrib_version", GEARTRIB_VERSION);
       hdf5::string_attribute(f, "content", "surface heights z[j][i] at x = i dx, y = j dy; NaN: missing point");
-      hsize_t dims[2] = {static_cast<hsize_t>(g.ny), static_cast<hsize_t>(g.nx)};
-      hdf5::Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose, "dataspace");
-      hdf5::Handle d(H5Dcreate2(f, "/z", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
-                     "dataset /z");
-      const std::vector<double> z = surface::heights_or_nan(g);
-      hdf5::check(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, z.data()), "write /z");
-      hdf5::string_attribute(d, "units", "m");  // of z and of the spacings dx, dy
-      hdf5::number_attribute(d, "dx", g.dx);
-      hdf5::number_attribute(d, "dy", g.dy);
+      {
+        hsize_t dims[2] = {static_cast<hsize_t>(g.ny), static_cast<hsize_t>(g.nx)};
+        hdf5::Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose, "dataspace");
+        hdf5::Handle d(H5Dcreate2(f, "/z", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
+                       "dataset /z");
+        {
+          const std::vector<double> z = surface::heights_or_nan(g);  // freed before the file's image is copied
+          hdf5::check(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, z.data()), "write /z");
+        }
+        hdf5::string_attribute(d, "units", "m");  // of z and of the spacings dx, dy
+        hdf5::number_attribute(d, "dx", g.dx);
+        hdf5::number_attribute(d, "dy", g.dy);
+      }
+      f.close();
     });
     return;
   }
@@ -556,7 +567,7 @@ void write_topography(const std::filesystem::path& file, const surface::HeightGr
       out += '\n';
     }
   }
-  write_file_atomically(file, out);
+  outputs.add_text(file, out);
 }
 
 }  // namespace geartrib::io

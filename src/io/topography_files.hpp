@@ -12,6 +12,7 @@
 // and the field.
 #pragma once
 
+#include "io/table_writer.hpp"
 #include "surface/height_grid.hpp"
 
 #include <cstdint>
@@ -73,5 +74,8 @@ void check_valid_points(const surface::HeightGrid& g, const std::string& file, i
 // um, nm (the file states it by symbol; std::invalid_argument otherwise). An X3P and an HDF5 file
 // hold metres whatever `unit` says.
 void write_topography(const std::filesystem::path& file, const surface::HeightGrid& g, double unit = 1e-6);
+// The same into a command's output set (all outputs or none; committed by the caller).
+void add_topography(OutputSet& outputs, const std::filesystem::path& file, const surface::HeightGrid& g,
+                    double unit = 1e-6);
 
 }  // namespace geartrib::io

@@ -10,6 +10,9 @@
 #include <pugixml.hpp>
 
 #include <dlfcn.h>
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <bit>
 #include <cctype>
@@ -22,6 +25,7 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace geartrib::io {
@@ -152,9 +156,11 @@ struct Libzip {
   decltype(&::zip_fread) fread = nullptr;
   decltype(&::zip_name_locate) name_locate = nullptr;
   decltype(&::zip_open) open = nullptr;
+  decltype(&::zip_open_from_source) open_from_source = nullptr;
   decltype(&::zip_set_file_compression) set_file_compression = nullptr;
   decltype(&::zip_source_buffer) source_buffer = nullptr;
   decltype(&::zip_source_free) source_free = nullptr;
+  decltype(&::zip_source_function_create) source_function_create = nullptr;
   decltype(&::zip_stat_index) stat_index = nullptr;
   decltype(&::zip_stat_init) stat_init = nullptr;
   decltype(&::zip_strerror) strerror = nullptr;
@@ -189,9 +195,11 @@ const Libzip& libzip_loaded() {
     resolve(z.fread, "zip_fread");
     resolve(z.name_locate, "zip_name_locate");
     resolve(z.open, "zip_open");
+    resolve(z.open_from_source, "zip_open_from_source");
     resolve(z.set_file_compression, "zip_set_file_compression");
     resolve(z.source_buffer, "zip_source_buffer");
     resolve(z.source_free, "zip_source_free");
+    resolve(z.source_function_create, "zip_source_function_create");
     resolve(z.stat_index, "zip_stat_index");
     resolve(z.stat_init, "zip_stat_init");
     resolve(z.strerror, "zip_strerror");
@@ -565,6 +573,84 @@ class X3pReader {
 
 // ---- writing ----
 
+// The archive's bytes go through this libzip source into geartrib's own temporary (an
+// io::OutputSet's, which a signal removes): zip_close() on a file opened by name would write a
+// mkstemp file of its own beside it (NAME.XXXXXX), which a signal would leave behind. A new
+// archive only: it reads nothing back (STAT says there is no archive yet).
+class ZipSink {
+ public:
+  explicit ZipSink(std::filesystem::path path) : path_(std::move(path)) {}
+  ZipSink(const ZipSink&) = delete;
+  ZipSink& operator=(const ZipSink&) = delete;
+  ~ZipSink() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  static zip_int64_t callback(void* state, void* data, zip_uint64_t length, zip_source_cmd_t command) {
+    return static_cast<ZipSink*>(state)->on(data, length, command);
+  }
+
+ private:
+  std::filesystem::path path_;
+  int fd_ = -1;
+  int zip_error_ = ZIP_ER_OK, system_error_ = 0;
+
+  zip_int64_t fail(int zip_error, int system_error) {
+    zip_error_ = zip_error;
+    system_error_ = system_error;
+    return -1;
+  }
+  zip_int64_t on(void* data, zip_uint64_t length, zip_source_cmd_t command) {
+    switch (command) {
+      case ZIP_SOURCE_SUPPORTS:
+        return ZIP_SOURCE_SUPPORTS_WRITABLE;
+      case ZIP_SOURCE_STAT:
+        return fail(ZIP_ER_READ, ENOENT);  // no archive yet: libzip starts a new one
+      case ZIP_SOURCE_ERROR: {
+        if (length < 2 * sizeof(int)) return -1;
+        const int codes[2] = {zip_error_, system_error_};
+        std::memcpy(data, codes, sizeof codes);
+        return sizeof codes;
+      }
+      case ZIP_SOURCE_BEGIN_WRITE:
+        fd_ = ::open(path_.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+        return fd_ < 0 ? fail(ZIP_ER_OPEN, errno) : 0;
+      case ZIP_SOURCE_WRITE: {
+        const auto* p = static_cast<const char*>(data);
+        zip_uint64_t left = length;
+        while (left > 0) {
+          const ssize_t n = ::write(fd_, p, left);
+          if (n < 0 && errno == EINTR) continue;
+          if (n < 0) return fail(ZIP_ER_WRITE, errno);
+          p += n;
+          left -= static_cast<zip_uint64_t>(n);
+        }
+        return static_cast<zip_int64_t>(length);
+      }
+      case ZIP_SOURCE_SEEK_WRITE: {
+        if (length < sizeof(zip_source_args_seek_t)) return fail(ZIP_ER_INVAL, 0);
+        const auto* seek = static_cast<const zip_source_args_seek_t*>(data);
+        return ::lseek(fd_, seek->offset, seek->whence) < 0 ? fail(ZIP_ER_SEEK, errno) : 0;
+      }
+      case ZIP_SOURCE_TELL_WRITE: {
+        const off_t at = ::lseek(fd_, 0, SEEK_CUR);
+        return at < 0 ? fail(ZIP_ER_TELL, errno) : static_cast<zip_int64_t>(at);
+      }
+      case ZIP_SOURCE_COMMIT_WRITE: {
+        const int fd = std::exchange(fd_, -1);
+        return ::close(fd) != 0 ? fail(ZIP_ER_WRITE, errno) : 0;
+      }
+      case ZIP_SOURCE_ROLLBACK_WRITE:  // the OutputSet removes the temporary
+        if (fd_ >= 0) ::close(std::exchange(fd_, -1));
+        return 0;
+      case ZIP_SOURCE_REMOVE:  // an archive of no entries: the temporary stays empty
+      case ZIP_SOURCE_FREE:
+        return 0;
+      default:  // OPEN, READ, SEEK, TELL, CLOSE: never asked of a new archive
+        return fail(ZIP_ER_OPNOTSUPP, 0);
+    }
+  }
+};
+
 std::string main_xml(const surface::HeightGrid& g, const std::string& data_md5) {
   char date[32] = "1970-01-01T00:00:00Z";
   const std::time_t now = std::time(nullptr);
@@ -621,6 +707,10 @@ std::string main_xml(const surface::HeightGrid& g, const std::string& data_md5) 
 surface::HeightGrid read_x3p(const std::filesystem::path& file) { return X3pReader(file).read(); }
 
 void write_x3p(const std::filesystem::path& file, const surface::HeightGrid& g) {
+  write_atomically(file, [&](const std::filesystem::path& tmp) { write_x3p_archive(tmp, g); });
+}
+
+void write_x3p_archive(const std::filesystem::path& file, const surface::HeightGrid& g) {
   g.validate();
   std::string data(g.size() * 8, '\0');
   auto* p = reinterpret_cast<unsigned char*>(data.data());
@@ -629,32 +719,39 @@ void write_x3p(const std::filesystem::path& file, const surface::HeightGrid& g) 
   const std::string xml = main_xml(g, md5_hex(data));
   const std::string sums = md5_hex(xml) + " *main.xml\n";
   const Libzip& lz = libzip(file.string(), "write");  // before anything is written
-  write_atomically(file, [&](const std::filesystem::path& tmp) {
-    int error = 0;
-    ZipArchive z(lz.open(tmp.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error));
-    if (!z) throw std::runtime_error(fmt::format("cannot create {}: {}", tmp.string(), zip_error_text(lz, error)));
-    auto add = [&](const char* name, const std::string& bytes, bool deflate) {
-      zip_source_t* s = lz.source_buffer(z.get(), bytes.data(), bytes.size(), 0);
-      if (!s) throw std::runtime_error(fmt::format("cannot write {}: {}", tmp.string(), lz.strerror(z.get())));
-      const zip_int64_t index = lz.file_add(z.get(), name, s, ZIP_FL_ENC_UTF_8);
-      if (index < 0) {
-        lz.source_free(s);
-        throw std::runtime_error(fmt::format("cannot write {}: {}", tmp.string(), lz.strerror(z.get())));
-      }
-      if (lz.set_file_compression(z.get(), static_cast<zip_uint64_t>(index), deflate ? ZIP_CM_DEFLATE : ZIP_CM_STORE,
-                                  0) != 0)
-        throw std::runtime_error(fmt::format("cannot write {}: {}", tmp.string(), lz.strerror(z.get())));
-    };
-    add("main.xml", xml, true);
-    add("bindata/data.bin", data, false);  // heights hardly compress: stored, fast to write and read
-    add("md5checksum.hex", sums, true);
-    zip_t* archive = z.release();
-    if (lz.close(archive) != 0) {
-      const std::string why = lz.strerror(archive);
-      lz.discard(archive);
-      throw std::runtime_error(fmt::format("cannot write {}: {}", tmp.string(), why));
+  ZipSink sink(file);
+  zip_error_t error;
+  lz.error_init_with_code(&error, ZIP_ER_OK);
+  zip_source_t* source = lz.source_function_create(&ZipSink::callback, &sink, &error);
+  ZipArchive z(source ? lz.open_from_source(source, ZIP_CREATE | ZIP_TRUNCATE, &error) : nullptr);
+  if (!z) {
+    const std::string why = lz.error_strerror(&error);
+    if (source) lz.source_free(source);  // not taken by the archive
+    lz.error_fini(&error);
+    throw std::runtime_error(fmt::format("cannot create {}: {}", file.string(), why));
+  }
+  lz.error_fini(&error);
+  auto add = [&](const char* name, const std::string& bytes, bool deflate) {
+    zip_source_t* s = lz.source_buffer(z.get(), bytes.data(), bytes.size(), 0);
+    if (!s) throw std::runtime_error(fmt::format("cannot write {}: {}", file.string(), lz.strerror(z.get())));
+    const zip_int64_t index = lz.file_add(z.get(), name, s, ZIP_FL_ENC_UTF_8);
+    if (index < 0) {
+      lz.source_free(s);
+      throw std::runtime_error(fmt::format("cannot write {}: {}", file.string(), lz.strerror(z.get())));
     }
-  });
+    if (lz.set_file_compression(z.get(), static_cast<zip_uint64_t>(index), deflate ? ZIP_CM_DEFLATE : ZIP_CM_STORE,
+                                0) != 0)
+      throw std::runtime_error(fmt::format("cannot write {}: {}", file.string(), lz.strerror(z.get())));
+  };
+  add("main.xml", xml, true);
+  add("bindata/data.bin", data, false);  // heights hardly compress: stored, fast to write and read
+  add("md5checksum.hex", sums, true);
+  zip_t* archive = z.release();
+  if (lz.close(archive) != 0) {
+    const std::string why = lz.strerror(archive);
+    lz.discard(archive);
+    throw std::runtime_error(fmt::format("cannot write {}: {}", file.string(), why));
+  }
 }
 
 }  // namespace geartrib::io

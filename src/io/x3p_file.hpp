@@ -46,6 +46,10 @@ surface::HeightGrid read_x3p(const std::filesystem::path& file);
 // Throws std::invalid_argument for an invalid grid (HeightGrid::validate), std::runtime_error when
 // the file cannot be written (nothing is left at `file` then).
 void write_x3p(const std::filesystem::path& file, const surface::HeightGrid& g);
+// The archive written to `file` as it is (an io::OutputSet's temporary; write_x3p's own writer):
+// libzip writes into `file` alone, through a source of geartrib's, never into a temporary of its
+// own beside it (which a signal would leave behind).
+void write_x3p_archive(const std::filesystem::path& file, const surface::HeightGrid& g);
 
 // MD5 (RFC 1321), for the checksums X3P carries; not for security.
 class Md5 {
