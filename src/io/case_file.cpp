@@ -2,6 +2,7 @@
 
 #include "asperity/critical.hpp"
 #include "asperity/model.hpp"
+#include "core/keyed_error.hpp"
 #include "gear/spur_pair.hpp"
 #include "io/fzg_load_stages.hpp"
 #include "io/text_lines.hpp"
@@ -423,11 +424,18 @@ void read_flank(TomlReader& r, Case& c, int gear) {
           throw std::invalid_argument(
               "a smooth profile has no roughness for the statistical model: only contact.fidelity = "
               "\"deterministic\" takes it");
+        if (c.lubrication.lubricated)
+          throw std::invalid_argument(
+              "a lubricated deterministic run takes the film's share of the load from the flanks' statistics, "
+              "which a smooth profile has none of: give the flank a rough profile (ground or hobbed), or run the "
+              "case dry (lubricant = none)");
         rough.m0 = rough.m2 = rough.m4 = 0.0;  // no statistics: the deterministic run skips the statistical model
         return;
       }
       const surface::FlankProfile sample = surface::generate_profile(spec, kReferenceProfilePoints * spec.spacing);
       rough = surface::spectral_roughness(surface::profile_statistics(sample.z, sample.spacing));
+    } catch (const core::KeyedError& e) {
+      r.fail(f + "profile." + e.key(), e.what());  // the field the rule is about (rq, correlation_length, ...)
     } catch (const std::invalid_argument& e) {
       r.fail(f + "profile.kind", e.what());
     }
