@@ -147,28 +147,36 @@ double largest_flank_step(const contact::FlankSpan& span, long n) {
   return step;
 }
 
-// The fewest positions above the case's that running-in takes, or most + 1 when none up to `most`
-// does: the largest flank step within the strip's half-length, which is strip_halfwidths times the
-// largest Hertz half-width at those positions. That half-width depends on where the positions
-// fall on the load (a coarse sampling can miss the single pair's zone), so each number is checked
-// at its own: the first within reach of even the path's largest half-width (sampled finely) is
-// where the search starts.
+// Positions running-in takes, above the case's, or most + 1 when none up to `most` does: the
+// largest flank step within the strip's half-length, which is strip_halfwidths times the largest
+// Hertz half-width at those positions. That half-width depends on where the positions fall on the
+// load (a coarse sampling can miss the single pair's zone), so each number is checked at its own,
+// from the first within reach of even the path's largest half-width (sampled finely): the fewest
+// that hold. A search past kMaxCandidates numbers (a load peak the positions keep missing) ends
+// at the fewest that hold whatever they sample: every number samples A and E (n = 2), so the half-
+// width there bounds the strip from below.
 long running_in_positions(const Case& c, const contact::FlankSpan& span, PathHalfWidths& half_widths, long most) {
+  constexpr long kMaxCandidates = 1000;
   const double k = c.contact.strip_halfwidths;
-  const double widest =
-      k * std::max(half_widths.largest(std::max<long>(span.positions, 4097)), span.strip_half_length / k);
-  long n = span.positions + 1;
-  while (n <= most && largest_flank_step(span, n) > widest) n = std::min(most + 1, std::max(n + 1, n + n / 20));
-  while (n > span.positions + 1 && largest_flank_step(span, n - 1) <= widest) --n;  // back from the 5% strides
-  for (; n <= most; ++n)
+  auto fewest_within = [&](double strip, long from) {  // step(n) falls with n
+    long n = from;
+    while (n <= most && largest_flank_step(span, n) > strip) n = std::min(most + 1, std::max(n + 1, n + n / 20));
+    while (n > from && largest_flank_step(span, n - 1) <= strip) --n;  // back from the 5% strides
+    return n;
+  };
+  long n =
+      fewest_within(k * std::max(half_widths.largest(std::max<long>(span.positions, 4097)), span.strip_half_length / k),
+                    span.positions + 1);
+  for (const long last = n + kMaxCandidates; n <= most && n < last; ++n)
     if (largest_flank_step(span, n) <= k * half_widths.largest(n)) return n;
-  return most + 1;
+  return n > most ? most + 1 : fewest_within(k * half_widths.largest(2), n);
 }
 
-// The deterministic fidelity's flanks:// The deterministic fidelity's flanks: each gear's measured profile (its
-// topography's line along the involute), one synthesised from the topography's spectrum, or a generated one, checked
-// against the stretch of flank the run reads and the element size. Hunting order: a generated or synthesised profile
-// per tooth (seed + tooth); a measured one is every tooth's. `synthesis`: what each synthesised flank came from.
+// The deterministic fidelity's flanks: each gear's measured profile (its topography's line along
+// the involute), one synthesised from the topography's spectrum, or a generated one, checked against
+// the stretch of flank the run reads and the element size. Hunting order: a generated or synthesised
+// profile per tooth (seed + tooth); a measured one is every tooth's. `synthesis`: what each
+// synthesised flank came from; `half_widths`: the path's, for the advice on positions.
 contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& span, const int teeth[2],
                                       std::vector<contact::FlankSynthesis>& synthesis, PathHalfWidths& half_widths) {
   contact::RollingFlanks out;
@@ -179,18 +187,20 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
     const auto [file, line] = location_of(c, "contact.positions");
     const long most = static_cast<long>(io::find_parameter("contact.positions").parameter->max);
     const long needed = running_in_positions(c, span, half_widths, most);
-    throw io::InputError(file, line, "contact.positions", std::to_string(span.positions),
-                         fmt::format("running-in needs every flank point in the strip at two positions or more: the "
-                                     "contact point moves up to {} along a flank between positions, more than the "
-                                     "strip's half-length {}; {}",
-                                     mm(step), mm(span.strip_half_length),
-                                     needed <= most ? fmt::format("use {} positions (the fewest above {} that do: "
-                                                                  "the strip follows the largest Hertz half-width at "
-                                                                  "the positions)",
-                                                                  needed, span.positions)
-                                                    : fmt::format("more than the key's {} positions would be needed: "
-                                                                  "widen the strip (contact.strip_halfwidths)",
-                                                                  most)));
+    throw io::InputError(
+        file, line, "contact.positions", std::to_string(span.positions),
+        fmt::format("running-in needs every flank point in the strip at two positions or more: the "
+                    "contact point moves up to {} along a flank between positions, more than the "
+                    "strip's half-length {}; {}",
+                    mm(step), mm(span.strip_half_length),
+                    needed <= most ? fmt::format("use {} positions (checked at the Hertz "
+                                                 "half-widths they sample: the strip follows the "
+                                                 "largest, so another number may fall short)",
+                                                 needed)
+                                   : fmt::format("no number of positions within the key's range (up to {}) "
+                                                 "does: run without running-in (running_in.meshes = "
+                                                 "0)",
+                                                 most)));
   }
   for (int g = 0; g < 2; ++g) {
     const std::string gear = g == 0 ? "pinion" : "wheel";

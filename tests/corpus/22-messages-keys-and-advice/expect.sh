@@ -21,7 +21,7 @@ check profile-correlation-line 2 "det.toml:$line: key 'pinion.flank.profile.corr
 # half-width at the positions, so the next number may not), and it runs.
 big=(--set teeth=1000 --set "pinion.bore_diameter=0 m" --set "wheel.bore_diameter=0 m" --set running_in.meshes=1)
 for n in 3 41 42; do
-  check "positions-$n-advice" 2 "m6z30-deterministic.toml \(--set contact.positions=$n\): key 'contact.positions' = $n: running-in needs every flank point in the strip at two positions or more: .*; use [0-9]+ positions \(the fewest above $n that do" -- run "$det" "${big[@]}" --set contact.positions=$n
+  check "positions-$n-advice" 2 "m6z30-deterministic.toml \(--set contact.positions=$n\): key 'contact.positions' = $n: running-in needs every flank point in the strip at two positions or more: .*; use [0-9]+ positions \(checked at the Hertz half-widths they sample" -- run "$det" "${big[@]}" --set contact.positions=$n
 done
 advice=$(run "$det" "${big[@]}" --set contact.positions=3 2>&1 | grep -oE "use [0-9]+ positions" | grep -oE "[0-9]+")
 check positions-advice-followed 0 "" -- run "$det" "${big[@]}" --set "contact.positions=${advice:-0}"
