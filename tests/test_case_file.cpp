@@ -109,6 +109,22 @@ TEST_F(BadInput, NegativeModulusNamesFileLineKeyValueRule) {
   EXPECT_EQ(e.rule(), "must be positive");
 }
 
+// Control characters are escapes in the message (a NUL ended it wherever what() is read as a C
+// string), the parts keep their text; a rule keeps its line breaks.
+TEST(InputErrorMessage, ControlCharactersEscaped) {
+  const io::InputError e("a\x01.toml", 3, "k\x1b", std::string("1\0 Nm", 5), "rule\nnext\x7f");
+  EXPECT_STREQ(e.what(), "a\\x01.toml:3: key 'k\\x1b' = 1\\x00 Nm: rule\nnext\\x7f");
+  EXPECT_EQ(e.value(), std::string("1\0 Nm", 5));
+  // A --set value with one is refused whole, before any unit is read from it.
+  try {
+    io::load_case(test::source_dir() / "gears/m6z30.toml", {{"torque", std::string("1000\0 Nm", 8)}});
+    ADD_FAILURE() << "accepted";
+  } catch (const io::InputError& err) {
+    EXPECT_EQ(err.rule(), "a --set key or value may not hold control characters (shown as \\xNN)");
+    EXPECT_NE(std::string(err.what()).find("(--set operating.pinion_torque=1000\\x00 Nm)"), std::string::npos);
+  }
+}
+
 TEST_F(BadInput, PoissonRatioOutOfRange) {
   edit("materials/steel-45.toml", "poisson_ratio = 0.3", "poisson_ratio = 0.5");
   const auto e = load_error();

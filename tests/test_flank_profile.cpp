@@ -1,6 +1,7 @@
 // Flank profiles: generated smooth, ground and hobbed profiles have the statistics they are made
 // with (exact where the construction is exact, within sampling error where it is random); profiles
 // come out of a grid's rows and columns; the statistics of a hand-worked profile; bad input refused.
+#include "core/keyed_error.hpp"
 #include "surface/flank_profile.hpp"
 
 #include <gtest/gtest.h>
@@ -219,7 +220,8 @@ TEST(FlankProfile, BadSpecsRefused) {
     try {
       s.validate();
       ADD_FAILURE() << field << ": accepted";
-    } catch (const std::invalid_argument& e) {
+    } catch (const geartrib::core::KeyedError& e) {  // the field as its key: the case reader names its key
+      EXPECT_EQ(e.key(), field) << e.what();
       EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << field << ": " << e.what();
     }
     EXPECT_THROW(generate_profile(s, 100e-6), std::invalid_argument) << field;

@@ -4,6 +4,7 @@
 #include "contact/mesh_contact.hpp"
 #include "io/column_table.hpp"
 #include "io/input_error.hpp"
+#include "io/sweep_merge.hpp"
 #include "io/sweep_plan.hpp"
 #include "test_support.hpp"
 
@@ -11,6 +12,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
 
 using namespace geartrib;
@@ -63,8 +65,44 @@ TEST(SweepPlan, ShardsPartitionThePoints) {
     }
     for (int o : owners) EXPECT_EQ(o, 1) << n;
   }
-  for (const char* bad : {"2/2", "1", "a/3", "0/0", "-1/2", "1/2x"})
+  for (const char* bad : {"2/2", "1", "a/3", "0/0", "-1/2", "1/2x", "+1/2", " 1/2", "1/ 2", "4000000000000/3",
+                          "0/99999999999999999999999"})
     EXPECT_THROW(io::parse_shard(bad), std::invalid_argument) << bad;
+  EXPECT_EQ(io::whole_number("100000"), 100000u);
+  for (const char* bad : {"", "+4", "-0", "4 ", "1e3", "0x10", "99999999999999999999999"})
+    EXPECT_FALSE(io::whole_number(bad)) << bad;
+}
+
+// Two axes reaching one key are refused naming both: an alias and a dotted key it stands for, or
+// an axis replacing another's key (another form of the same value); keys apart sweep together.
+TEST(SweepPlan, OverlappingKeysRefused) {
+  auto message = [](std::vector<std::string> axes) {
+    io::SweepPlan p;
+    for (const auto& a : axes) p.axes.push_back(io::parse_sweep_axis(a));
+    try {
+      p.validate();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message({"teeth=30,31", "pinion.teeth=25"}),
+            "--set teeth (pinion.teeth, wheel.teeth) and --set pinion.teeth set the same key pinion.teeth: a key given "
+            "twice (a point would run with the later value while the table records both); give it once");
+  EXPECT_NE(message({"z2=40", "teeth=30,31"}).find("set the same key wheel.teeth"), std::string::npos);
+  EXPECT_NE(message({"torque=1000Nm", "fzg_load_stage=4,5", "fzg_test=PT-C"})
+                .find("--set fzg_load_stage (operating.fzg_load_stage) replaces operating.pinion_torque"),
+            std::string::npos);
+  EXPECT_NE(message({"pinion.flank.ra=0.4um", "rq=0.2um,0.4um"}).find("replaces pinion.flank.ra"), std::string::npos);
+  EXPECT_NE(message({"pinion.flank.m0=1e-12", "summit_radius=20um"}).find("replaces pinion.flank.summit_radius"),
+            std::string::npos);
+  EXPECT_NE(message({"lubricant=none,../lubricants/mineral-vg220.toml", "viscosity=0.1Pa s"})
+                .find("--set viscosity (lubricant.dynamic_viscosity) replaces lubricant.file"),
+            std::string::npos);
+  EXPECT_EQ(message({"fzg_load_stage=4,5", "fzg_test=PT-C"}), "accepted");
+  EXPECT_EQ(message({"pinion.flank.rq=0.2um,0.4um", "wheel.flank.rq=0.3um", "summit_radius=20um"}), "accepted");
+  EXPECT_EQ(message({"pinion.flank.topography.file=a.h5,b.h5", "pinion.flank.topography.outliers=3"}), "accepted");
+  EXPECT_EQ(message({"module=4mm,5mm", "gear_pair.module_unused_sibling=1"}), "accepted");  // a prefix, not a table
 }
 
 TEST(SweepPlan, SiValuesOfSweptText) {
@@ -162,4 +200,63 @@ TEST(SweepFile, UnstorableNamesRefused) {
   EXPECT_THROW(t.validate(), std::logic_error);
   t.columns[0].name = "values";  // the block's own name
   EXPECT_THROW(t.validate(), std::logic_error);
+}
+
+// Merging shards: the table the unsharded sweep writes; every number a shard states checked
+// against the rule, the error naming the file, the attribute or column and the value.
+TEST(SweepFile, MergeJoinsShardsAndChecksTheirStatements) {
+  const auto dir = std::filesystem::temp_directory_path() / "geartrib_sweep_merge_test";
+  std::filesystem::create_directories(dir);
+  auto shard = [&](std::size_t index, std::map<std::string, std::string> attributes, bool lubricated) {
+    io::ColumnTableFile f;
+    io::Column point{"point", "1", false, {}, {}}, status{"status", "", true, {}, {}},
+        message{"message", "", true, {}, {}}, loss{"mesh_power_loss_W", "W", false, {}, {}};
+    for (std::size_t i = index; i < 5; i += 2) {
+      point.numbers.push_back(static_cast<double>(i));
+      status.texts.emplace_back("ok");
+      message.texts.emplace_back("");
+      loss.numbers.push_back(10.0 * static_cast<double>(i));
+    }
+    f.table.columns = {point, status, message};
+    if (lubricated) f.table.columns.push_back(loss);
+    f.attributes = {
+        {"points_total", "5"}, {"shard", std::to_string(index) + "/2"}, {"shard_count", "2"}, {"signature", "abc"}};
+    for (const auto& [k, v] : attributes) f.attributes[k] = v;
+    f.scene = "scene";
+    const auto path = dir / ("s" + std::to_string(index) + "-" + std::to_string(attributes.size()) + ".h5");
+    io::write_column_table_hdf5(path, f);
+    return path;
+  };
+  const auto s0 = shard(0, {}, true), s1 = shard(1, {}, false);
+  const io::ColumnTableFile merged = io::merge_sweep_shards({s1, s0});
+  ASSERT_EQ(merged.table.rows(), 5u);
+  EXPECT_EQ(merged.table.find("point")->numbers, (std::vector<double>{0, 1, 2, 3, 4}));
+  // The lubricated shard's column in its place, NaN at the dry shard's points.
+  const auto& loss = merged.table.find("mesh_power_loss_W")->numbers;
+  EXPECT_EQ(loss[0], 0.0);
+  EXPECT_TRUE(std::isnan(loss[1]));
+  EXPECT_EQ(loss[4], 40.0);
+  EXPECT_EQ(merged.attributes.at("shard"), "0/1");
+
+  auto refusal = [&](const std::filesystem::path& bad, const std::filesystem::path& other) {
+    try {
+      io::merge_sweep_shards({other, bad});
+    } catch (const io::InputError& e) {
+      EXPECT_EQ(e.file(), bad.string());
+      return e.key() + " = " + e.value() + ": " + e.rule();
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal(shard(1, {{"shard", "4000000000000/2"}}, false), s0),
+            "/sweep attribute shard = \"4000000000000/2\": must be i/n with 0 <= i < n and n the shard_count (2)");
+  EXPECT_EQ(refusal(shard(0, {{"shard_count", "0"}}, false), s1),
+            "/sweep attribute shard_count = \"0\": must be a whole number of shards from 1 to 100000 (the largest "
+            "sweep)");
+  EXPECT_EQ(refusal(shard(0, {{"points_total", "99999999999"}}, false), s1),
+            "/sweep attribute points_total = \"99999999999\": must be a whole number of points from 1 to 100000 (the "
+            "largest sweep)");
+  // Shard 1 of a 4-point sweep owns the same points (1, 3) as of 5: the totals compared.
+  EXPECT_EQ(refusal(shard(1, {{"points_total", "4"}}, false), s0).substr(0, 60),
+            "/sweep attribute points_total = \"4\": from another sweep (cas");
+  std::filesystem::remove_all(dir);
 }

@@ -312,6 +312,16 @@ def test_unknown_key_is_refused():
         gt.load_case(**{"gear_pair.no_such_key": 1})
 
 
+def test_input_error_message_whole_with_a_nul_in_the_value():
+    # A NUL in a value ended the message (str(e) stopped at "--set operating.pinion_torque=1000"):
+    # control characters in a change are refused, shown as escapes; the parts keep the text.
+    with pytest.raises(gt.InputError) as e:
+        gt.load_case(torque="1000\x00 Nm")
+    assert str(e.value).endswith("(--set operating.pinion_torque=1000\\x00 Nm): key 'operating.pinion_torque' = "
+                                 "1000\\x00 Nm: a --set key or value may not hold control characters (shown as \\xNN)")
+    assert e.value.value == "1000\x00 Nm" and e.value.key == "operating.pinion_torque"
+
+
 # -- surfaces and boundary elements --------------------------------------------------------------
 
 def test_surface_statistics_equal_the_command(tool, tmp_path):

@@ -12,6 +12,7 @@
 #include "io/column_table.hpp"
 #include "io/hdf5_results.hpp"
 #include "io/input_error.hpp"
+#include "io/sweep_merge.hpp"
 #include "io/sweep_plan.hpp"
 #include "io/table_writer.hpp"
 
@@ -109,71 +110,8 @@ void print_summary(const io::ColumnTable& t, const std::string& output, const st
 void merge(const Options& o) {
   io::OutputSet outputs;
   reserve_outputs(o, outputs);
-  std::vector<io::ColumnTableFile> files;
-  for (const auto& m : o.merge) {
-    files.push_back(io::read_column_table_hdf5(m));
-    for (const char* key : {"points_total", "shard", "shard_count", "signature"})
-      if (!files.back().attributes.contains(key))
-        throw std::invalid_argument(m + ": not a geartrib sweep shard (no /sweep attribute " + key + ")");
-    if (!files.back().table.find("point"))
-      throw std::invalid_argument(m + ": not a geartrib sweep shard (no /points/point)");
-  }
-  const auto& first = files.front();
-  const std::size_t total = std::stoul(first.attributes.at("points_total"));
-  std::vector<bool> seen(total, false);
-  std::vector<bool> shard_seen(std::stoul(first.attributes.at("shard_count")), false);
-  io::ColumnTableFile out;
-  out.scene = first.scene;
-  out.attributes = first.attributes;
-  out.attributes["shard"] = "0/1";
-  out.attributes["shard_count"] = "1";
-  std::vector<std::pair<std::size_t, std::pair<std::size_t, std::size_t>>> order;  // point -> (file, row)
-  for (std::size_t f = 0; f < files.size(); ++f) {
-    const auto& a = files[f].attributes;
-    if (a.at("signature") != first.attributes.at("signature") ||
-        a.at("shard_count") != first.attributes.at("shard_count"))
-      throw std::invalid_argument(o.merge[f] + ": from another sweep (case, --set or --zip differ) than " +
-                                  o.merge.front());
-    const std::size_t shard = std::stoul(a.at("shard").substr(0, a.at("shard").find('/')));
-    if (shard_seen[shard]) throw std::invalid_argument(o.merge[f] + ": shard " + a.at("shard") + " given twice");
-    shard_seen[shard] = true;
-    const auto& idx = files[f].table.find("point")->numbers;
-    for (std::size_t r = 0; r < idx.size(); ++r) {
-      const auto i = static_cast<std::size_t>(idx[r]);
-      if (i >= total || seen[i])
-        throw std::invalid_argument(fmt::format("{}: point {} out of range or twice", o.merge[f], i));
-      seen[i] = true;
-      order.push_back({i, {f, r}});
-    }
-  }
-  for (std::size_t s = 0; s < shard_seen.size(); ++s)
-    if (!shard_seen[s])
-      throw std::invalid_argument(fmt::format("--merge: shard {}/{} is missing", s, shard_seen.size()));
-  std::sort(order.begin(), order.end());
-  // Columns: the union, a column missing so far placed after the one before it in its file: a shard
-  // lacks what all its points lacked (a dry shard of a mixed sweep the mesh-level values, a static
-  // one the dynamic quantities), and the merged table keeps the unsharded table's order.
-  auto& columns = out.table.columns;
-  for (std::size_t f = 0; f < files.size(); ++f) {
-    auto at = columns.begin();
-    for (const auto& c : files[f].table.columns) {
-      auto same = std::find_if(columns.begin(), columns.end(), [&](const io::Column& x) { return x.name == c.name; });
-      if (same == columns.end()) same = columns.insert(at, {c.name, c.unit, c.text, {}, {}});
-      else if (same->text != c.text || same->unit != c.unit)
-        throw std::invalid_argument(fmt::format("{}: column {} is {} here and {} in another shard", o.merge[f], c.name,
-                                                c.text ? "text" : "numeric [" + c.unit + "]",
-                                                same->text ? "text" : "numeric [" + same->unit + "]"));
-      at = same + 1;
-    }
-  }
-  for (const auto& [point, at] : order) {
-    const auto& src = files[at.first].table;
-    for (auto& c : out.table.columns) {
-      const io::Column* s = src.find(c.name);
-      if (c.text) c.texts.push_back(s ? s->texts[at.second] : "");
-      else c.numbers.push_back(s ? s->numbers[at.second] : std::nan(""));
-    }
-  }
+  std::vector<std::filesystem::path> shards(o.merge.begin(), o.merge.end());
+  const io::ColumnTableFile out = io::merge_sweep_shards(shards);
   write_outputs(out, o, outputs);
   if (!o.quiet) print_summary(out.table, output_path(o).string());
 }
@@ -256,7 +194,7 @@ void add_sweep_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   std::string aliases;
   for (const auto& a : io::case_aliases()) {
-    aliases += fmt::format("  {:<16}", a.name);
+    aliases += fmt::format("  {:<17} ", a.name);
     for (std::size_t i = 0; i < a.keys.size(); ++i) aliases += (i ? ", " : "") + std::string(a.keys[i]);
     aliases += "\n";
   }

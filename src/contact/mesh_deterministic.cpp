@@ -1,6 +1,7 @@
 #include "contact/mesh_deterministic.hpp"
 
 #include "contact/series_columns.hpp"
+#include "core/keyed_error.hpp"
 #include "core/stopwatch.hpp"
 #include "surface/rough_surface.hpp"
 
@@ -168,6 +169,53 @@ std::vector<double> active_part(const FlankTrack& t, const FlankSpan& span, int 
   return {t.profile.z.begin() + k0, t.profile.z.begin() + k1 + 1};
 }
 
+// The refusal of a strip the line load would yield all across, with the advice that holds: the
+// strip (in 0.1 half-widths) whose capacity 2 L H is 1.25 w_max, so that the load stays below 0.9 of
+// it, when such a strip is possible: within the key's range, its elements within the grid's bound,
+// and its reach (the grid's half-length and two elements either side of the contact) on the flanks
+// the run reads (a generated profile ends a module beyond the tip, a measured trace where it ends).
+// Otherwise no strip carries the load and the advice is the torque.
+core::KeyedError strip_overload(const ContactSettings& cs, const DeterministicOptions& o, const FlankSpan& span,
+                                const RollingFlanks& flanks, double w_max, double b_max, double capacity,
+                                const HalfPlaneGrid& grid) {
+  const std::string what = fmt::format(
+      "the line load {:.4g} N/m would yield the whole strip (+-{:.4g} mm at the hardness {:.4g} GPa "
+      "carries {:.4g} N/m)",
+      w_max, grid.size * grid.spacing * 0.5e3, o.pressure_cap * 1e-9, capacity);
+  const double needed = std::ceil(10.0 * 1.25 * w_max / (2.0 * o.pressure_cap * b_max)) / 10.0;
+  std::string why_not;
+  if (needed > DeterministicOptions::kMaxStripHalfwidths) {
+    why_not = fmt::format(
+        "no strip within the key's range ({:g}) carries it (the flanks would be plastic across "
+        "{:.3g} Hertz half-widths)",
+        DeterministicOptions::kMaxStripHalfwidths, needed);
+  } else {
+    DeterministicOptions wider = o;
+    wider.strip_halfwidths = needed;
+    try {
+      const HalfPlaneGrid g = strip_grid(needed * b_max, wider);
+      const double reach = 0.5 * g.size * g.spacing + 2.0 * cs.element_size;  // as the span's margin
+      for (int k = 0; k < 2 && why_not.empty(); ++k)
+        for (const FlankTrack& t : k == 0 ? flanks.pinion : flanks.wheel)
+          // (Its last interval left out: a generated profile's may pass the module beyond the tip,
+          // which is the limit.)
+          if (span.active_first[k] - reach < t.start || span.active_last[k] + reach > t.end() - t.profile.spacing) {
+            why_not = fmt::format(
+                "a strip of {:g} half-widths, which would carry it, reaches {:.4g} mm beyond the {}'s active flank, "
+                "past the profile the run reads (a generated one ends a module beyond the tip)",
+                needed, reach * 1e3, k == 0 ? "pinion" : "wheel");
+            break;
+          }
+    } catch (const std::invalid_argument& e) {
+      why_not = fmt::format("a strip of {:g} half-widths, which would carry it, is refused: {}", needed, e.what());
+    }
+  }
+  return core::KeyedError("contact.strip_halfwidths",
+                          why_not.empty()
+                              ? fmt::format("{}; raise it to at least {:g}, or lower the torque", what, needed)
+                              : fmt::format("{}; {}: lower the torque", what, why_not));
+}
+
 }  // namespace
 
 void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactResult& r, const FlankSource& source,
@@ -236,9 +284,10 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
   const bool statistics = rough(flanks.pinion.front()) && rough(flanks.wheel.front());
   std::vector<double> share(static_cast<std::size_t>(n), 1.0);
   if (c.lubrication.lubricated && !statistics)
-    throw std::invalid_argument(
-        "a lubricated deterministic run takes the film's share of the load from the flanks' statistics: give both "
-        "flanks a rough profile (or run the case dry)");
+    throw core::KeyedError(
+        rough(flanks.pinion.front()) ? "wheel.flank" : "pinion.flank",
+        "a lubricated deterministic run takes the film's share of the load from the flanks' statistics, and this "
+        "flank's profile is flat: give both flanks a rough profile (or run the case dry)");
   if (statistics) {
     MeshContactResult st = statistical_on_profiles(c, mesh, flanks, span, n, dynamics);
     for (const auto* group : {&st.contact, &st.validity})
@@ -274,18 +323,7 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
   // across the whole strip and would spread beyond it.
   const double capacity = grid.size * grid.spacing * o.pressure_cap;
   const double w_max = *std::max_element(load.begin(), load.end());
-  if (w_max > 0.9 * capacity) {
-    const double needed = std::ceil(10.0 * 1.25 * w_max / (2.0 * o.pressure_cap * b_max)) / 10.0;
-    throw std::invalid_argument(fmt::format(
-        "contact.strip_halfwidths = {:g}: the line load {:.4g} N/m would yield the whole strip (+-{:.4g} mm at the "
-        "hardness {:.4g} GPa carries {:.4g} N/m); {}",
-        cs.strip_halfwidths, w_max, grid.size * grid.spacing * 0.5e3, o.pressure_cap * 1e-9, capacity,
-        needed <= DeterministicOptions::kMaxStripHalfwidths
-            ? fmt::format("raise it to at least {:.3g}, or lower the torque", needed)
-            : fmt::format("no strip within the key's range ({:g}) carries it: lower the torque (the flanks would be "
-                          "plastic across {:.3g} Hertz half-widths)",
-                          DeterministicOptions::kMaxStripHalfwidths, needed)));
-  }
+  if (w_max > 0.9 * capacity) throw strip_overload(cs, o, span, flanks, w_max, b_max, capacity, grid);
   const int threads = cs.threads > 0 ? cs.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const double modulus = mesh.composite_modulus();
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "case/case.hpp"
+#include "core/keyed_error.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -11,13 +12,9 @@
 namespace geartrib::gear {
 
 // A geometry the pair cannot have. `key` names the case-file key to change.
-class GeometryError : public std::invalid_argument {
+class GeometryError : public core::KeyedError {
  public:
-  GeometryError(std::string key, const std::string& message) : std::invalid_argument(message), key_(std::move(key)) {}
-  const std::string& key() const { return key_; }
-
- private:
-  std::string key_;
+  using KeyedError::KeyedError;
 };
 
 // A finding that does not stop the computation (e.g. undercut), with the key it concerns.

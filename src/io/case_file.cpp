@@ -2,6 +2,7 @@
 
 #include "asperity/critical.hpp"
 #include "asperity/model.hpp"
+#include "core/keyed_error.hpp"
 #include "gear/spur_pair.hpp"
 #include "io/fzg_load_stages.hpp"
 #include "io/text_lines.hpp"
@@ -423,11 +424,18 @@ void read_flank(TomlReader& r, Case& c, int gear) {
           throw std::invalid_argument(
               "a smooth profile has no roughness for the statistical model: only contact.fidelity = "
               "\"deterministic\" takes it");
+        if (c.lubrication.lubricated)
+          throw std::invalid_argument(
+              "a lubricated deterministic run takes the film's share of the load from the flanks' statistics, "
+              "which a smooth profile has none of: give the flank a rough profile (ground or hobbed), or run the "
+              "case dry (lubricant = none)");
         rough.m0 = rough.m2 = rough.m4 = 0.0;  // no statistics: the deterministic run skips the statistical model
         return;
       }
       const surface::FlankProfile sample = surface::generate_profile(spec, kReferenceProfilePoints * spec.spacing);
       rough = surface::spectral_roughness(surface::profile_statistics(sample.z, sample.spacing));
+    } catch (const core::KeyedError& e) {
+      r.fail(f + "profile." + e.key(), e.what());  // the field the rule is about (rq, correlation_length, ...)
     } catch (const std::invalid_argument& e) {
       r.fail(f + "profile.kind", e.what());
     }
@@ -497,25 +505,22 @@ const std::vector<std::string>& fixed_lubricant_keys() {
   return keys;
 }
 
-void apply_change(TomlReader& r, const std::string& key, const std::string& value) {
+}  // namespace
+
+std::vector<std::string> keys_replaced_by(const std::string& key, const std::string& value) {
   // lubricant=none runs a lubricated case dry: the [lubricant] table goes (the [lubrication]
   // models and the oil temperature are then unused).
-  if (key == "lubricant.file" && value == "none") {
-    r.erase("lubricant");
-    return;
-  }
+  if (key == "lubricant.file" && value == "none") return {"lubricant"};
+  std::vector<std::string> out;
   // The lubricant's two forms replace each other: a file, or eta and alpha given in the case.
-  if (key == "lubricant.file") {
-    for (const std::string& k : fixed_lubricant_keys()) r.erase(k);
-  } else if (fixed_lubricant_key(key)) {
-    r.erase("lubricant.file");
-  }
+  if (key == "lubricant.file") out = fixed_lubricant_keys();
+  else if (fixed_lubricant_key(key)) out.emplace_back("lubricant.file");
   // The torque's two forms replace each other: a torque, or an FZG load stage with its test.
   if (key == kTorqueKey) {
-    r.erase(kFzgStageKey);
-    r.erase(kFzgTestKey);
+    out.emplace_back(kFzgStageKey);
+    out.emplace_back(kFzgTestKey);
   } else if (key == kFzgStageKey || key == kFzgTestKey) {
-    r.erase(kTorqueKey);
+    out.emplace_back(kTorqueKey);
   }
   // pinion.flank.rq = ... replaces the flank's other roughness forms.
   for (const char* gear : {"pinion.flank.", "wheel.flank."}) {
@@ -529,9 +534,17 @@ void apply_change(TomlReader& r, const std::string& key, const std::string& valu
     if (std::none_of(forms.begin(), forms.end(), in)) continue;  // e.g. summit_radius: not a roughness form
     for (const auto& form : forms)
       if (!in(form))
-        for (const auto& k : form) r.erase(flank + k);
-    if (leaf == "m0" || leaf == "m2" || leaf == "m4") r.erase(flank + "summit_radius");  // the moments give it
+        for (const auto& k : form) out.push_back(flank + k);
+    if (leaf == "m0" || leaf == "m2" || leaf == "m4") out.push_back(flank + "summit_radius");  // the moments give it
   }
+  return out;
+}
+
+namespace {
+
+void apply_change(TomlReader& r, const std::string& key, const std::string& value) {
+  for (const std::string& k : keys_replaced_by(key, value)) r.erase(k);
+  if (key == "lubricant.file" && value == "none") return;  // the [lubricant] table removed, nothing set
   r.set(key, value);
 }
 

@@ -20,6 +20,11 @@ struct CaseChange {
 };
 // "name=value" into a change; throws std::invalid_argument naming `text` when there is no '='.
 CaseChange parse_case_change(const std::string& text);
+// The dotted keys (or tables) a change of the dotted key `key` to `value` removes besides setting
+// `key`: the forms it replaces (a torque and an FZG load stage with its test; a flank's roughness
+// forms; the lubricant's file and its fixed values; lubricant.file = none the whole [lubricant]
+// table, setting nothing).
+std::vector<std::string> keys_replaced_by(const std::string& key, const std::string& value);
 
 // Throws InputError (file, line, key, value, rule) on any problem; an error about a changed key
 // names its --set. Setting one roughness form of a flank (ra, rq, summit_density, m0, topography)

@@ -108,6 +108,9 @@ ColumnTableFile read_column_table_hdf5(const std::filesystem::path& path) {
   using hdf5::Handle;
   start_hdf5();
   ColumnTableFile f;
+  // A regular file (not a folder, device or pipe, which HDF5 would read without end).
+  if (const std::string why = data_file_problem(path, kNoSizeLimit); !why.empty())
+    throw InputError(path.string(), 0, "", "", why);
   try {
     std::error_code ec;
     const auto bytes = std::filesystem::file_size(path, ec);
@@ -128,7 +131,10 @@ ColumnTableFile read_column_table_hdf5(const std::filesystem::path& path) {
     if (numeric.size() != cols || unit.size() != cols)
       throw std::runtime_error(fmt::format("/points/values has {} columns, its attributes name {} and {} units", cols,
                                            numeric.size(), unit.size()));
+    std::set<std::string> listed;
     for (const auto& name : split_csv(order)) {
+      // Each column once (a name listed again would copy its values again, without bound).
+      if (!listed.insert(name).second) throw std::runtime_error("column " + name + " listed twice in /points columns");
       Column c;
       c.name = name;
       const auto at = std::find(numeric.begin(), numeric.end(), name);
@@ -141,6 +147,16 @@ ColumnTableFile read_column_table_hdf5(const std::filesystem::path& path) {
         if (name == "values" || !hdf5::is_string_dataset(points, name))
           throw std::runtime_error("column " + name + " is neither in /points/values nor a text dataset");
         c.text = true;
+        // The table's rows (the block's) before reading: each cell of a text column is stored in
+        // the file, so a column of more rows than the file has bytes is refused unread.
+        Handle set(H5Dopen2(points, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
+        Handle space(H5Dget_space(set), H5Sclose, "dataspace of " + name);
+        hsize_t n = 0;
+        if (H5Sget_simple_extent_ndims(space) != 1 || H5Sget_simple_extent_dims(space, &n, nullptr) != 1)
+          throw std::runtime_error("text column " + name + " is not a 1-D dataset");
+        if ((cols > 0 && n != rows) || (!ec && n > bytes))
+          throw std::runtime_error(
+              fmt::format("text column {} declares {} strings, the table has {} rows", name, n, rows));
         c.texts = hdf5::read_strings(points, name);
       }
       f.table.columns.push_back(std::move(c));

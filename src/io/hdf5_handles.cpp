@@ -89,7 +89,13 @@ bool read_string_attribute(hid_t obj, const std::string& name, std::string& valu
   const H5S_class_t shape = H5Sget_simple_extent_type(space);
   if (!(shape == H5S_SCALAR || (shape == H5S_SIMPLE && H5Sget_simple_extent_npoints(space) == 1)))
     throw std::runtime_error("attribute " + name + " is not one string");
+  // Its declared size (up to 4 GB in the type) checked before allocating: the value is stored
+  // in the file, so it cannot be larger than the file.
   const std::size_t size = H5Tget_size(type);
+  hsize_t file_bytes = 0;
+  Handle file(H5Iget_file_id(obj), H5Fclose, "file of attribute " + name);
+  if (H5Fget_filesize(file, &file_bytes) < 0 || size > file_bytes)
+    throw std::runtime_error("attribute " + name + " declares more bytes than its file holds");
   std::string buffer(size, '\0');
   if (H5Aread(a, type, buffer.data()) < 0) return false;
   value = buffer.substr(0, buffer.find('\0'));

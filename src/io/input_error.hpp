@@ -1,5 +1,7 @@
 // Errors in input files: every message names the file, line, key, value and the rule broken.
-// The command line exits with status 2 on this error, after writing nothing.
+// The command line exits with status 2 on this error, after writing nothing. In the message
+// (what()) control characters are escapes ("\x00"; a rule keeps its line breaks and tabs); the
+// parts keep their text as given.
 #pragma once
 
 #include <stdexcept>

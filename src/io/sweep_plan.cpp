@@ -42,6 +42,62 @@ void check_axis_values(const SweepAxis& axis, const std::string& text) {
   }
 }
 
+// Whether two dotted keys name the same value: equal, or one a table holding the other.
+bool overlap(const std::string& a, const std::string& b) {
+  const std::string& shorter = a.size() <= b.size() ? a : b;
+  const std::string& longer = a.size() <= b.size() ? b : a;
+  return longer.compare(0, shorter.size(), shorter) == 0 &&
+         (longer.size() == shorter.size() || longer[shorter.size()] == '.');
+}
+
+// The same key reached by two axes (an alias and a dotted key it stands for: `teeth` and
+// `pinion.teeth`), or one axis replacing what another sets (`torque` and `fzg_load_stage`, `rq`
+// and `pinion.flank.ra`): the point would run with whichever is applied last while the table
+// records both axes' values. Refused, naming both.
+void check_overlaps(const std::vector<SweepAxis>& axes) {
+  struct Reach {
+    std::vector<std::string> sets, replaces;
+  };
+  std::vector<Reach> reach;
+  for (const auto& a : axes) {
+    Reach r;
+    r.sets = resolve_case_key(a.key);
+    for (const auto& k : r.sets)
+      for (const auto& v : a.values)
+        for (auto& gone : keys_replaced_by(k, v)) r.replaces.push_back(std::move(gone));
+    reach.push_back(std::move(r));
+  }
+  auto named = [](const SweepAxis& a) {
+    const std::vector<std::string> keys = resolve_case_key(a.key);
+    std::string s = "--set " + a.key;
+    if (keys.size() != 1 || keys.front() != a.key) {
+      s += " (";
+      for (std::size_t i = 0; i < keys.size(); ++i) s += (i ? ", " : "") + keys[i];
+      s += ")";
+    }
+    return s;
+  };
+  for (std::size_t i = 0; i < axes.size(); ++i)
+    for (std::size_t j = i + 1; j < axes.size(); ++j)
+      for (int pass = 0; pass < 2; ++pass) {
+        const std::size_t a = pass == 0 ? i : j, b = pass == 0 ? j : i;
+        for (const auto& key : reach[a].sets) {
+          for (const auto& other : reach[b].sets)
+            if (overlap(key, other))
+              throw std::invalid_argument(
+                  fmt::format("{} and {} set the same key {}: a key given twice (a point would run with the later "
+                              "value while the table records both); give it once",
+                              named(axes[i]), named(axes[j]), key));
+          for (const auto& gone : reach[b].replaces)
+            if (overlap(key, gone))
+              throw std::invalid_argument(
+                  fmt::format("{} and {} change the same key: {} replaces {} (another form of the same value, "
+                              "as a case file gives one); give one of them",
+                              named(axes[i]), named(axes[j]), named(axes[b]), key));
+        }
+      }
+}
+
 }  // namespace
 
 SweepAxis parse_sweep_axis(const std::string& text) {
@@ -93,8 +149,10 @@ void SweepPlan::validate() const {
     points = zip ? std::max(points, a.values.size()) : points * a.values.size();
   }
   std::set<std::string> keys;
-  for (const auto& a : axes) {
+  for (const auto& a : axes)
     if (!keys.insert(a.key).second) throw std::invalid_argument("--set " + a.key + " given twice");
+  check_overlaps(axes);
+  for (const auto& a : axes) {
     if (zip && a.values.size() != 1 && a.values.size() != size())
       throw std::invalid_argument(
           fmt::format("--zip: --set {} has {} values, another axis {}: zipped axes need equal lengths "
@@ -136,17 +194,25 @@ std::string SweepPlan::describe() const {
   return s + (zip ? " (zip)" : " (factorial)");
 }
 
-Shard parse_shard(const std::string& text) {
+std::optional<std::size_t> whole_number(std::string_view text) {
+  std::size_t v = 0;
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string_view::npos) return std::nullopt;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc{} || end != text.data() + text.size()) return std::nullopt;  // too large for std::size_t
+  return v;
+}
+
+std::optional<Shard> shard_from_text(std::string_view text) {
   const auto slash = text.find('/');
-  Shard s;
-  auto parse = [&](std::string_view t, std::size_t& v) {
-    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-    return ec == std::errc{} && end == t.data() + t.size() && !t.empty();
-  };
-  if (slash == std::string::npos || !parse(std::string_view(text).substr(0, slash), s.index) ||
-      !parse(std::string_view(text).substr(slash + 1), s.count) || s.count == 0 || s.index >= s.count)
-    throw std::invalid_argument("--shard '" + text + "': expected i/n with 0 <= i < n (e.g. 0/4 .. 3/4)");
-  return s;
+  if (slash == std::string_view::npos) return std::nullopt;
+  const auto index = whole_number(text.substr(0, slash)), count = whole_number(text.substr(slash + 1));
+  if (!index || !count || *index >= *count) return std::nullopt;
+  return Shard{*index, *count};
+}
+
+Shard parse_shard(const std::string& text) {
+  if (const auto s = shard_from_text(text)) return *s;
+  throw std::invalid_argument("--shard '" + text + "': expected i/n with 0 <= i < n (e.g. 0/4 .. 3/4)");
 }
 
 std::optional<SiValue> si_quantity(const std::string& text) {

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace geartrib::io {
@@ -47,7 +48,12 @@ struct Shard {
   std::size_t count = 1;
   bool owns(std::size_t point) const { return point % count == index; }
 };
-Shard parse_shard(const std::string& text);  // "i/n"; throws std::invalid_argument
+// "i/n" with 0 <= i < n, both whole numbers written in decimal digits alone; nullopt otherwise.
+std::optional<Shard> shard_from_text(std::string_view text);
+Shard parse_shard(const std::string& text);  // the same; throws std::invalid_argument naming --shard
+// A whole number written in decimal digits alone ("12"; not "", "+1", " 1", "1e3", "0x10") that
+// fits std::size_t; nullopt otherwise.
+std::optional<std::size_t> whole_number(std::string_view text);
 
 // The SI value of a swept value when it is a number or a quantity of the unit table ("4mm" ->
 // 0.004), with the SI unit; nullopt for text (model names, file names).

@@ -4,6 +4,7 @@
 
 #include "io/text_lines.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <sstream>
@@ -96,6 +97,12 @@ void TomlReader::set(std::string_view key, const std::string& value_text) {
   const std::string where = file_ + " (--set " + std::string(key) + "=" + value_text + ")";
   if (key.empty() || key.front() == '.' || key.back() == '.' || key.find("..") != std::string_view::npos)
     throw InputError(where, 0, std::string(key), value_text, "expected a dotted key such as gear_pair.module");
+  // No control characters (a tab aside), as in a TOML file's strings: a NUL would cut every message
+  // that quotes the value.
+  const auto control = [](char ch) { return (static_cast<unsigned char>(ch) < 0x20 && ch != '\t') || ch == 0x7f; };
+  if (std::any_of(key.begin(), key.end(), control) || std::any_of(value_text.begin(), value_text.end(), control))
+    throw InputError(where, 0, std::string(key), value_text,
+                     "a --set key or value may not hold control characters (shown as \\xNN)");
   // The value: a TOML value when it parses as one, else a bracketed list of bare words as an
   // array, else the text as a string ("4mm").
   const std::optional<toml::table> parsed = toml_value(value_text);

@@ -3,7 +3,10 @@
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
 #include "contact/mesh_deterministic.hpp"
+#include "core/keyed_error.hpp"
 #include "gear/gear_mesh.hpp"
+#include "gear/mesh_dynamics.hpp"
+#include "io/case_parameters.hpp"
 #include "io/input_error.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/kinsol_solver.hpp"
@@ -93,25 +96,111 @@ constexpr double kRolledOffWarning = 0.5;
 std::string um(double metres) { return fmt::format("{:.4g} um", metres * 1e6); }
 std::string mm(double metres) { return fmt::format("{:.4g} mm", metres * 1e3); }
 
+// The largest Hertz half-width of one pair over n evenly spaced positions A -> E, as the mesh cycle
+// computes them (contact/mesh_contact.cpp, stage 1): from the quasi-static share, or with dynamics
+// from the steady cycle's pair force (integrated once, when first asked for).
+class PathHalfWidths {
+ public:
+  PathHalfWidths(const Case& c, const gear::GearMesh& mesh, const OdeIntegrator* dynamics)
+      : c_(c), mesh_(mesh), dynamics_(dynamics) {}
+  double largest(long n) {
+    if (dynamics_ && !cycle_) {
+      dyn_ = std::make_unique<gear::MeshDynamics>(mesh_, gear::dynamics_settings(c_));
+      cycle_ = std::make_unique<gear::SteadyCycle>(dyn_->steady_cycle(*dynamics_, mesh_.pinion_speed()));
+    }
+    const auto& path = mesh_.pair().path();
+    const auto stiffness = mesh_.analysis().method() == gear::LoadSharing::stiffness
+                               ? gear::MeshAnalysis::PairStiffness::computed
+                               : gear::MeshAnalysis::PairStiffness::omitted;
+    double b = 0.0;
+    for (long i = 0; i < n; ++i) {
+      const double s = path.a + path.length * static_cast<double>(i) / static_cast<double>(n - 1);
+      const double half_width = cycle_
+                                    ? mesh_.analysis()
+                                          .pair_load(s, dyn_->pair_force(*cycle_, s) / mesh_.pair().spec().face_width)
+                                          .hertz_half_width
+                                    : mesh_.analysis().at(s, false, stiffness).pair_at(s).hertz_half_width;
+      b = std::max(b, half_width);
+    }
+    return b;
+  }
+
+ private:
+  const Case& c_;
+  const gear::GearMesh& mesh_;
+  const OdeIntegrator* dynamics_;
+  std::unique_ptr<gear::MeshDynamics> dyn_;
+  std::unique_ptr<gear::SteadyCycle> cycle_;
+};
+
+// The contact point's largest move along a flank between n evenly spaced positions. Along the
+// path each flank's radius of curvature rho is linear, and with it sqrt(sigma) = rho/sqrt(2 r_b):
+// from a = sqrt(sigma_near) to b = sqrt(sigma_far) the largest move is the last one,
+// b^2 - (b - (b - a)/(n - 1))^2 (what run_deterministic samples at the positions it runs).
+double largest_flank_step(const contact::FlankSpan& span, long n) {
+  double step = 0.0;
+  for (int g = 0; g < 2; ++g) {
+    const double a = std::sqrt(std::max(0.0, span.active_first[g])), b = std::sqrt(span.active_last[g]);
+    const double last = b - (b - a) / static_cast<double>(n - 1);
+    step = std::max(step, b * b - last * last);
+  }
+  return step;
+}
+
+// Positions running-in takes, above the case's, or most + 1 when none up to `most` does: the
+// largest flank step within the strip's half-length, which is strip_halfwidths times the largest
+// Hertz half-width at those positions. That half-width depends on where the positions fall on the
+// load (a coarse sampling can miss the single pair's zone), so each number is checked at its own,
+// from the first within reach of even the path's largest half-width (sampled finely): the fewest
+// that hold. A search past kMaxCandidates numbers (a load peak the positions keep missing) ends
+// at the fewest that hold whatever they sample: every number samples A and E (n = 2), so the half-
+// width there bounds the strip from below.
+long running_in_positions(const Case& c, const contact::FlankSpan& span, PathHalfWidths& half_widths, long most) {
+  constexpr long kMaxCandidates = 1000;
+  const double k = c.contact.strip_halfwidths;
+  auto fewest_within = [&](double strip, long from) {  // step(n) falls with n
+    long n = from;
+    while (n <= most && largest_flank_step(span, n) > strip) n = std::min(most + 1, std::max(n + 1, n + n / 20));
+    while (n > from && largest_flank_step(span, n - 1) <= strip) --n;  // back from the 5% strides
+    return n;
+  };
+  long n =
+      fewest_within(k * std::max(half_widths.largest(std::max<long>(span.positions, 4097)), span.strip_half_length / k),
+                    span.positions + 1);
+  for (const long last = n + kMaxCandidates; n <= most && n < last; ++n)
+    if (largest_flank_step(span, n) <= k * half_widths.largest(n)) return n;
+  return n > most ? most + 1 : fewest_within(k * half_widths.largest(2), n);
+}
+
 // The deterministic fidelity's flanks: each gear's measured profile (its topography's line along
 // the involute), one synthesised from the topography's spectrum, or a generated one, checked against
 // the stretch of flank the run reads and the element size. Hunting order: a generated or synthesised
 // profile per tooth (seed + tooth); a measured one is every tooth's. `synthesis`: what each
-// synthesised flank came from.
+// synthesised flank came from; `half_widths`: the path's, for the advice on positions.
 contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& span, const int teeth[2],
-                                      std::vector<contact::FlankSynthesis>& synthesis) {
+                                      std::vector<contact::FlankSynthesis>& synthesis, PathHalfWidths& half_widths) {
   contact::RollingFlanks out;
   // Running-in carries each flank point's deformation from position to position: every point must
   // pass through the strip at two positions or more (a step of at most the strip's half-length).
   const double step = std::max(span.max_step[0], span.max_step[1]);
   if (span.running_in && step > span.strip_half_length) {
     const auto [file, line] = location_of(c, "contact.positions");
-    const int needed = static_cast<int>(std::ceil((span.positions - 1) * step / span.strip_half_length)) + 1;
-    throw io::InputError(file, line, "contact.positions", std::to_string(span.positions),
-                         fmt::format("running-in needs every flank point in the strip at two positions or more: the "
-                                     "contact point moves up to {} along a flank between positions, more than the "
-                                     "strip's half-length {}; use at least {} positions",
-                                     mm(step), mm(span.strip_half_length), needed));
+    const long most = static_cast<long>(io::find_parameter("contact.positions").parameter->max);
+    const long needed = running_in_positions(c, span, half_widths, most);
+    throw io::InputError(
+        file, line, "contact.positions", std::to_string(span.positions),
+        fmt::format("running-in needs every flank point in the strip at two positions or more: the "
+                    "contact point moves up to {} along a flank between positions, more than the "
+                    "strip's half-length {}; {}",
+                    mm(step), mm(span.strip_half_length),
+                    needed <= most ? fmt::format("use {} positions (checked at the Hertz "
+                                                 "half-widths they sample: the strip follows the "
+                                                 "largest, so another number may fall short)",
+                                                 needed)
+                                   : fmt::format("no number of positions within the key's range (up to {}) "
+                                                 "does: run without running-in (running_in.meshes = "
+                                                 "0)",
+                                                 most)));
   }
   for (int g = 0; g < 2; ++g) {
     const std::string gear = g == 0 ? "pinion" : "wheel";
@@ -232,6 +321,11 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
         try {
           tracks.push_back({surface::generate_profile(spec, span.generated_last[g] - span.generated_first[g]),
                             span.generated_first[g]});
+        } catch (const core::KeyedError& e) {
+          const std::string key = gear + ".flank.profile." + e.key();
+          const auto [where, line] = location_of(c, key);
+          const ResolvedParameter* value = recorded(c, key);
+          throw io::InputError(where, line, key, value ? value->value : "", e.what());
         } catch (const std::invalid_argument& e) {
           const auto [where, line] = location_of(c, gear + ".flank.profile.kind");
           throw io::InputError(where, line, gear + ".flank.profile", "", e.what());
@@ -257,13 +351,19 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
       c.dynamics.engine != "none" ? solvers::make_integrator(c.dynamics.engine) : nullptr;
   contact::MeshContactResult r;
   std::vector<contact::FlankSynthesis> synthesis;
+  PathHalfWidths half_widths(c, mesh, integrator.get());
   try {
     r = contact::run_mesh_contact(c, mesh, c.contact.coupled() ? &kinsol : nullptr, progress, 0, integrator.get(),
-                                  [&c, &synthesis](const contact::FlankSpan& span, const int teeth[2]) {
-                                    return rolling_flanks(c, span, teeth, synthesis);
+                                  [&](const contact::FlankSpan& span, const int teeth[2]) {
+                                    return rolling_flanks(c, span, teeth, synthesis, half_widths);
                                   });
   } catch (const contact::RoughSurfaceOverload& e) {
     throw_overload(c, e.what());  // at the torque, naming the roughness and where each came from
+  } catch (const core::KeyedError& e) {
+    // A refusal the physics pins on one key: located where that key's value came from.
+    const auto [file, line] = location_of(c, e.key());
+    const ResolvedParameter* value = recorded(c, e.key());
+    throw io::InputError(file, line, e.key(), value ? value->value : "", e.what());
   } catch (const std::invalid_argument& e) {
     // The case's values are what the physics refused: name the case file rather than leave the
     // message without a place.

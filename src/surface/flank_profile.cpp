@@ -1,6 +1,7 @@
 #include "surface/flank_profile.hpp"
 
 #include "core/fftw_planner.hpp"
+#include "core/keyed_error.hpp"
 
 #include <fftw3.h>
 #include <fmt/format.h>
@@ -68,36 +69,41 @@ double FlankProfile::length() const { return z.size() < 2 ? 0.0 : spacing * stat
 
 void GeneratedProfileSpec::validate() const {
   if (kind != ProfileKind::smooth && kind != ProfileKind::ground && kind != ProfileKind::hobbed)
-    throw std::invalid_argument("kind must be smooth, ground or hobbed");
+    throw core::KeyedError("kind", "kind must be smooth, ground or hobbed");
   if (!(spacing >= kMinSpacing && spacing <= kMaxSpacing))
-    throw std::invalid_argument(
-        fmt::format("spacing must lie in {:g} m to {:g} m (got {:g} m)", kMinSpacing, kMaxSpacing, spacing));
+    throw core::KeyedError(
+        "spacing", fmt::format("spacing must lie in {:g} m to {:g} m (got {:g} m)", kMinSpacing, kMaxSpacing, spacing));
   if (kind == ProfileKind::smooth) return;
   if (kind == ProfileKind::ground && !(rq > 0.0 && rq <= kMaxHeight))
-    throw std::invalid_argument(
+    throw core::KeyedError(
+        "rq",
         fmt::format("rq must lie in (0, {:g}] m for a ground profile (got {:g} m; smooth for none)", kMaxHeight, rq));
   if (kind == ProfileKind::hobbed && !(rq >= 0.0 && rq <= kMaxHeight))
-    throw std::invalid_argument(
-        fmt::format("rq must lie in [0, {:g}] m for a hobbed profile (got {:g} m)", kMaxHeight, rq));
+    throw core::KeyedError("rq",
+                           fmt::format("rq must lie in [0, {:g}] m for a hobbed profile (got {:g} m)", kMaxHeight, rq));
   if (rq > 0.0) {
     if (!(correlation_length >= 2.0 * spacing))
-      throw std::invalid_argument(fmt::format("correlation_length must be at least 2 spacings ({:g} m; got {:g} m)",
-                                              2.0 * spacing, correlation_length));
+      throw core::KeyedError("correlation_length",
+                             fmt::format("correlation_length must be at least 2 spacings ({:g} m; got {:g} m)",
+                                         2.0 * spacing, correlation_length));
     // The kernel spans +-2 lambda: at most kMaxProfilePoints/2 points.
     if (!(correlation_length <= static_cast<double>(kMaxProfilePoints) / 8.0 * spacing))
-      throw std::invalid_argument(
+      throw core::KeyedError(
+          "correlation_length",
           fmt::format("correlation_length must be at most {} spacings ({:g} m; got {:g} m)", kMaxProfilePoints / 8,
                       static_cast<double>(kMaxProfilePoints) / 8.0 * spacing, correlation_length));
   }
   if (kind == ProfileKind::hobbed) {
     if (!(ridge_spacing >= 4.0 * spacing && ridge_spacing <= kMaxSpacing))
-      throw std::invalid_argument(fmt::format("ridge_spacing must lie in 4 spacings ({:g} m) to {:g} m (got {:g} m)",
-                                              4.0 * spacing, kMaxSpacing, ridge_spacing));
+      throw core::KeyedError("ridge_spacing",
+                             fmt::format("ridge_spacing must lie in 4 spacings ({:g} m) to {:g} m (got {:g} m)",
+                                         4.0 * spacing, kMaxSpacing, ridge_spacing));
     if (!(ridge_radius > 0.0 && std::isfinite(ridge_radius)))
-      throw std::invalid_argument(fmt::format("ridge_radius must be positive (got {:g} m)", ridge_radius));
+      throw core::KeyedError("ridge_radius", fmt::format("ridge_radius must be positive (got {:g} m)", ridge_radius));
     // As hobbed_surface: ridge depth plus six standard deviations of the noise within the height limit.
     if (!(ridge_spacing * ridge_spacing / (8.0 * ridge_radius) + 6.0 * rq <= kMaxHeight))
-      throw std::invalid_argument(
+      throw core::KeyedError(
+          "ridge_radius",
           fmt::format("ridge depth ridge_spacing^2/(8 ridge_radius) + 6 rq must be at most {:g} m (got {:g} m)",
                       kMaxHeight, ridge_spacing * ridge_spacing / (8.0 * ridge_radius) + 6.0 * rq));
   }

@@ -40,7 +40,8 @@ struct GeneratedProfileSpec {
   double ridge_spacing = 40e-6;       // [m] hobbed, >= 4 spacings
   double ridge_radius = 400e-6;       // [m] hobbed ridge tip radius
   std::uint64_t seed = 1;
-  // Throws std::invalid_argument naming the field and rule; checks the fields the kind uses.
+  // Throws core::KeyedError (a std::invalid_argument) whose key is the field (rq, correlation_length,
+  // ...) and whose message is the rule; checks the fields the kind uses.
   void validate() const;
 };
 
