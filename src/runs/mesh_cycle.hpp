@@ -12,7 +12,9 @@ namespace geartrib::runs {
 
 // KINSOL when coupled, the case's integrator when it asks for dynamics. Throws io::InputError
 // located at the case (an overload at the torque, naming the flanks' roughness; a value the
-// physics refused at the case file) and std::runtime_error on a non-finite output. Thread-safe.
+// physics refused at the case file) and std::runtime_error when any output (a series, a summary
+// value, a named point, a profile) is not finite, naming its dataset and position: nothing non-finite
+// is ever returned. Thread-safe.
 contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress = {});
 
 }  // namespace geartrib::runs
