@@ -127,10 +127,11 @@ TemperatureRange data_range(const Lubricant& l);
 TemperatureRange operating_range(const Lubricant& l);
 TemperatureRange law_range(const Lubricant& l);
 
-// A law evaluated outside its range: a run-time failure (the command line's exit 1), not bad input.
-class OutsideLawRange : public std::range_error {
+// A law evaluated outside its range: a run-time failure (the command line's exit 1, Python's
+// RuntimeError), not bad input.
+class OutsideLawRange : public std::runtime_error {
  public:
-  using std::range_error::range_error;
+  using std::runtime_error::runtime_error;
 };
 
 // The oil as a contact sees it at one temperature.

@@ -248,11 +248,9 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
   return out;
 }
 
-// The last check before a run's outputs are written or returned (the command, a sweep row, the
-// Python module): every number finite. A NaN or inf is a model that left its range where nothing
-// caught it: the run fails naming the dataset (as /group/name in the HDF5 file) and the position,
-// instead of writing it.
-void check_finite(const contact::MeshContactResult& r) {
+}  // namespace
+
+void check_finite_outputs(const contact::MeshContactResult& r) {
   const contact::Series* s = r.find("s_m");
   auto fail = [](const std::string& what, double v, const std::string& where) {
     throw std::runtime_error(fmt::format("{} is {}{}: a model left its range unnoticed; nothing is written", what, v,
@@ -326,8 +324,6 @@ void check_finite(const contact::MeshContactResult& r) {
       scalar("/synthesis/" + f.gear + " attribute " + name, v);
 }
 
-}  // namespace
-
 contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress) {
   const gear::GearMesh mesh(c);
   const solvers::KinsolSolver kinsol;
@@ -361,7 +357,7 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
           100.0 * f.rolled_off_fraction, f.gear, f.patch, um(f.profile_rq), um(f.patch_rq)));
   }
   r.synthesis = std::move(synthesis);
-  check_finite(r);
+  check_finite_outputs(r);
   // A run whose outputs rest on the mesh stiffness is warned, first, when it leaves ISO's band.
   const bool uses_stiffness = c.contact.mesh_stiffness || mesh.analysis().method() == gear::LoadSharing::stiffness ||
                               c.dynamics.engine != "none";
