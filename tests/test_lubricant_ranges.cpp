@@ -247,8 +247,9 @@ TEST(RunOutputs, NonFiniteOutputNamesItsDatasetAndPosition) {
     EXPECT_NE(refusal(r).find("/lubrication attribute mesh_power_loss_W is nan"), std::string::npos);
     r = good;
     r.lubrication_summary->points[2].iso_film = INFINITY;
-    EXPECT_NE(refusal(r).find("/lubrication/points/iso_film_hy_m is inf at point " + r.lubrication_summary->points[2].name),
-              std::string::npos);
+    EXPECT_NE(
+        refusal(r).find("/lubrication/points/iso_film_hy_m is inf at point " + r.lubrication_summary->points[2].name),
+        std::string::npos);
     r = good;
     r.path.contact_ratio = kNaN;
     EXPECT_NE(refusal(r).find("/mesh attribute contact_ratio"), std::string::npos);

@@ -41,9 +41,9 @@ double bounded_quantity(TomlReader& r, std::string_view key, Dimension d, double
 // The ranges of a material file's values (SI; docs/reference/units.md): beyond them no
 // engineering material lies and the contact arithmetic is not meant to go; inside the range but
 // outside the band of gear materials a value is warned about.
-constexpr double kMinModulus = 1e6, kMaxModulus = 1e13;                      // [Pa]
-constexpr double kPlausibleMinModulus = 5e8, kPlausibleMaxModulus = 1.2e12;  // polymers to diamond [Pa]
-constexpr double kMinDensity = 1.0, kMaxDensity = 1e5;                       // [kg/m^3]
+constexpr double kMinModulus = kMinYoungsModulus, kMaxModulus = kMaxYoungsModulus;  // [Pa]
+constexpr double kPlausibleMinModulus = 5e8, kPlausibleMaxModulus = 1.2e12;         // polymers to diamond [Pa]
+constexpr double kMinDensity = 1.0, kMaxDensity = 1e5;                              // [kg/m^3]
 constexpr double kPlausibleMinDensity = 500.0, kPlausibleMaxDensity = 25000.0;
 constexpr double kMaxConductivity = 1e4, kMaxSpecificHeat = 1e5;  // [W/(m K)], [J/(kg K)]
 
