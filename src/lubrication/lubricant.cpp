@@ -297,37 +297,46 @@ double density(const Lubricant& l, double t) {
   return l.density_15 * density_ratio(l, t);
 }
 
-double pressure_viscosity_coefficient(const Lubricant& l, double t) {
-  if (l.fixed()) return l.pressure_viscosity;
-  require_in_range(l, t, "the pressure-viscosity coefficient");
+namespace {
+// alpha(T) of the temperature-dependent form, unchecked (the callers check T; validate() checks 38 degC).
+double alpha_at(const Lubricant& l, const Walther& w, double t) {
   if (l.pressure_viscosity > 0.0)
     return l.pressure_viscosity * iso_alpha_temperature_factor(t) /
            iso_alpha_temperature_factor(l.pressure_viscosity_temperature);
   const double t38 = kZeroCelsius + 38.0;
-  const double eta38 = kinematic_viscosity(l, t38) * density(l, t38);  // [Pa s]
+  const double eta38 = walther_viscosity(w, t38) * l.density_15 * density_ratio(l, t38);  // [Pa s]
   return 2.657e-8 * std::pow(eta38, 0.1348) * iso_alpha_temperature_factor(t);
+}
+}  // namespace
+
+double pressure_viscosity_coefficient(const Lubricant& l, double t) {
+  if (l.fixed()) return l.pressure_viscosity;
+  require_in_range(l, t, "the pressure-viscosity coefficient");
+  return alpha_at(l, walther(l), t);
 }
 
 OilState oil_state(const Lubricant& l, double t) {
   OilState s;
   s.temperature = t;
-  s.pressure_viscosity = pressure_viscosity_coefficient(l, t);
   s.thermal_conductivity = l.thermal_conductivity;
   s.eyring_stress = l.eyring_stress;
   s.limiting_shear_coefficient = l.limiting_shear_coefficient;
   s.iso_lubricant_factor = l.lubricant_factor();
   if (l.fixed()) {
+    s.pressure_viscosity = l.pressure_viscosity;
     s.dynamic_viscosity = l.fixed_dynamic_viscosity;
     s.temperature_viscosity = l.fixed_temperature_viscosity;
     s.density = l.density_15;
     return s;
   }
-  s.density = density(l, t);
-  const double nu = kinematic_viscosity(l, t);
+  require_in_range(l, t, "the oil state");  // once for every law below
+  const Walther w = walther(l);
+  s.pressure_viscosity = alpha_at(l, w, t);
+  s.density = l.density_15 * density_ratio(l, t);
+  const double nu = walther_viscosity(w, t);
   s.dynamic_viscosity = nu * s.density;
   // beta = -d ln(nu)/dT - d ln(rho)/dT, Walther differentiated:
   // d nu/dT = -(nu + 0.7) ln10 10^Z B / T with Z = A - B log10 T (nu in cSt).
-  const Walther w = walther(l);
   const double nu_cst = nu / kCentistokes;
   const double dnu_dt =
       -(nu_cst + Lubricant::kWaltherOffset) * std::log(10.0) * std::pow(10.0, w.a - w.b * std::log10(t)) * w.b / t;
