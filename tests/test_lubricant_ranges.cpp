@@ -216,6 +216,37 @@ TEST(LubricantRanges, BulkTemperatureBeyondTheLawsFailsTheRun) {
   for (const auto& q : hot.quantities) EXPECT_TRUE(std::isfinite(q.min + q.mean + q.max)) << q.name;
 }
 
+// The extremes: the default case from 1e-3 to 1e5 N m, and every shipped oil at both ends of its
+// operating range (the oil's inlet temperature): each run returns finite outputs (run_mesh_cycle
+// checks every one) or, past the laws, fails with OutsideLawRange; never a NaN, never another error.
+TEST(LubricantRanges, ExtremeLoadsAndOilTemperaturesRunFiniteOrFailNamed) {
+  int failed = 0;
+  for (const char* torque : {"1e-3 N m", "1 N m", "1000 N m", "1e4 N m", "3e4 N m", "1e5 N m"}) {
+    try {
+      const auto r = runs::run_mesh_cycle(stock({{"torque", torque}, {"positions", "11"}}));
+      EXPECT_TRUE(r.lubrication_summary.has_value()) << torque;
+    } catch (const OutsideLawRange& e) {
+      ++failed;
+      EXPECT_NE(std::string(e.what()).find("bulk_temperature_K"), std::string::npos) << torque << ": " << e.what();
+    }
+  }
+  EXPECT_EQ(failed, 1);  // 1e5 N m only: its bulk estimate 522 degC is past 400 degC (3e4 N m: 188 degC)
+  for (const auto& entry : std::filesystem::directory_iterator(test::source_dir() / "lubricants")) {
+    if (entry.path().extension() != ".toml") continue;
+    const TemperatureRange operating = operating_range(io::load_lubricant(entry.path()));
+    for (double t : {operating.lo, operating.hi}) {
+      const std::string where = entry.path().filename().string() + " at " + std::to_string(t) + " K";
+      try {
+        runs::run_mesh_cycle(stock({{"lubricant.file", entry.path().string()},
+                                    {"oil_temperature", std::to_string(t) + " K"},
+                                    {"positions", "11"}}));
+      } catch (const std::exception& e) {
+        ADD_FAILURE() << where << ": " << e.what();
+      }
+    }
+  }
+}
+
 // The last check before any output: a NaN or inf anywhere is refused naming its dataset and position.
 TEST(RunOutputs, NonFiniteOutputNamesItsDatasetAndPosition) {
   const contact::MeshContactResult good = runs::run_mesh_cycle(stock({{"positions", "11"}}));
