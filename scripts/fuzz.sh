@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The libFuzzer harnesses of tests/fuzz, built with clang, AddressSanitizer and UBSan in
 # build-fuzz/, each seeded with the shipped files and run for a given time:
-#   bash scripts/fuzz.sh [SECONDS] [HARNESS...]     default: 1200 s each, all five (case material
-#                                                   topography fit_data sweep_merge), two at a time
+#   bash scripts/fuzz.sh [SECONDS] [HARNESS...]     default: 1200 s each, all six (case material
+#                                                   topography fit_data sweep_merge lubricant), two at a time
 # Findings (crash-*, timeout-*, oom-*, leak-*) land in build-fuzz/findings/<harness>/; each one,
 # minimised and understood, becomes a folder of tests/corpus/ with its expect.sh. Each run's last
 # lines (executions, coverage) are in build-fuzz/findings/<harness>.log.
@@ -10,7 +10,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root="$PWD"
 seconds="${1:-1200}"; shift || true
-harnesses=("$@"); [[ ${#harnesses[@]} -eq 0 ]] && harnesses=(case material topography fit_data sweep_merge)
+harnesses=("$@"); [[ ${#harnesses[@]} -eq 0 ]] && harnesses=(case material topography fit_data sweep_merge lubricant)
 command -v clang++ >/dev/null || { echo "fuzz: needs clang (apt-get install clang)" >&2; exit 2; }
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGEARTRIB_FUZZ=ON \
   -DGEARTRIB_BUILD_TESTS=OFF -DGEARTRIB_BUILD_EXAMPLES=OFF >/dev/null
@@ -18,9 +18,10 @@ cmake --build build-fuzz -j "$(nproc)" --target $(printf 'fuzz_%s ' "${harnesses
 
 # Seeds: the shipped files of each kind.
 seeds=build-fuzz/seeds
-rm -rf "$seeds"; mkdir -p "$seeds"/{case,material,topography,fit_data,sweep_merge}
+rm -rf "$seeds"; mkdir -p "$seeds"/{case,material,topography,fit_data,sweep_merge,lubricant}
 cp gears/*.toml "$seeds/case/"
 cp materials/*.toml "$seeds/material/"
+cp lubricants/*.toml tests/corpus/2[5-6]-*/*.toml "$seeds/lubricant/"
 k=0
 for f in gears/surfaces/* validation/*/*.xyz validation/*/*.csv tests/fuzz/*.x3p; do
   [[ -f "$f" ]] || continue

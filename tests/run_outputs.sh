@@ -53,8 +53,10 @@ for n in ["film_m", "lambda_smooth_film", "mean_gap_m", "lambda_mean_gap", "aspe
           "friction_coefficient", "pair_power_loss_W", "flash_temperature_K", "contact_temperature_K",
           "iso_flash_temperature_K", "iso_contact_temperature_K", "blok_flash_temperature_iso_mu_K", "iso_film_hy_m",
           "iso_lambda_gf", "wear_depth_pinion_m", "wear_depth_wheel_m", "mean_plane_separation_m", "ehl_regime",
-          "flag_low_peclet", "flag_share_depends_on_closure"]:
+          "flag_low_peclet", "flag_share_depends_on_closure", "flag_oil_extrapolated", "flag_oil_temperature_clamped"]:
     assert lub[n].shape == (201,) and np.all(np.isfinite(lub[n][()])) and "units" in lub[n].attrs, n
+# The default oil stays inside its data (0 to 120 degC) everywhere: nothing extrapolated or clamped.
+assert not lub["flag_oil_extrapolated"][()].any() and lub.attrs["positions_oil_temperature_clamped"] == 0
 a, fs = lub["asperity_load_share"][()], lub["film_load_share"][()]
 assert np.all((a >= 0) & (a <= 1)) and np.allclose(a + fs, 1.0, rtol=0, atol=1e-15)
 assert np.all(lub["film_m"][()] > 0) and np.all(lub["contact_temperature_K"][()] >= lub.attrs["bulk_temperature_K"])

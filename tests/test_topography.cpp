@@ -13,6 +13,7 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <numbers>
 #include <random>
 
@@ -410,6 +411,27 @@ std::filesystem::path write_h5(const std::string& name, int ny, int nx, const st
   return path;
 }
 
+// The same file with height k set to `bad` after writing (the writer refuses what the readers
+// refuse): k holds a sentinel whose 8 bytes are replaced in the file's contiguous /z.
+std::filesystem::path poke_h5(const std::string& name, int ny, int nx, std::vector<double> z, std::size_t k,
+                              double bad) {
+  constexpr double kSentinel = 1.2345678901234567e-4;
+  z[k] = kSentinel;
+  const auto path = write_h5(name, ny, nx, z);
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string from(reinterpret_cast<const char*>(&kSentinel), sizeof kSentinel);
+  const std::size_t at = bytes.find(from);
+  if (at == std::string::npos || bytes.find(from, at + 1) != std::string::npos)
+    throw std::logic_error("poke_h5: the sentinel is not in the file exactly once");
+  bytes.replace(at, sizeof bad, reinterpret_cast<const char*>(&bad), sizeof bad);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+  return path;
+}
+
 std::vector<double> rough(std::size_t n, double rq, unsigned seed = 1) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> normal(0.0, rq);
@@ -470,9 +492,8 @@ TEST(Topography, Hdf5HeightsMustBeFiniteNaNMarksMissing) {
   const HeightGrid g = io::read_topography(write_h5("nan.h5", 8, 8, z));
   EXPECT_EQ(g.missing(), 1u);  // the documented marker
   for (double bad : {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), 1.0000001}) {
-    z[10] = 0.0;
-    z[19] = bad;  // row 2, column 3
-    const std::string e = input_error([&] { io::read_topography(write_h5("inf.h5", 8, 8, z)); });
+    z[10] = 0.0;  // z[19]: row 2, column 3
+    const std::string e = input_error([&] { io::read_topography(poke_h5("inf.h5", 8, 8, z, 19, bad)); });
     EXPECT_TRUE(has(e, "inf.h5: key '/z[2][3]'")) << e;
     EXPECT_TRUE(has(e, "beyond +-1 m")) << e;
   }
@@ -687,4 +708,26 @@ TEST(Topography, GeneratorsRefuseWhatWouldGiveNaN) {
   HobbedSpec h;
   h.tip_radius = 1e-300;  // ridges of 1e288 m
   EXPECT_THROW(hobbed_surface(h), std::invalid_argument);
+}
+
+// The writer refuses what every reader refuses (issue 30, finding 13: gt.write_surface wrote files
+// gt.read_surface refused): heights beyond +-kMaxHeight, fewer than 9 valid points; nothing written.
+TEST(Topography, WriterRefusesWhatTheReadersRefuse) {
+  for (const char* ext : {".x3p", ".h5", ".csv", ".xyz"}) {
+    HeightGrid g = make_grid(4, 4, 0.5e-6, 0.5e-6);
+    g.z[5] = 1.5 * kMaxHeight;
+    const auto huge = temp(std::string("huge") + ext);
+    EXPECT_THROW(io::write_topography(huge, g), std::invalid_argument) << ext;
+    EXPECT_FALSE(std::filesystem::exists(huge)) << ext;
+    g.z[5] = -kMaxHeight;  // the edge: written and read back
+    for (std::size_t k = 9; k < g.size(); ++k) g.valid[k] = 0;
+    const auto edge = temp(std::string("edge") + ext);
+    io::write_topography(edge, g);
+    const HeightGrid back = io::read_topography(edge);
+    EXPECT_EQ(back.size() - back.missing(), 9u) << ext;
+    g.valid[8] = 0;  // 8 valid points
+    const auto sparse = temp(std::string("sparse") + ext);
+    EXPECT_THROW(io::write_topography(sparse, g), std::invalid_argument) << ext;
+    EXPECT_FALSE(std::filesystem::exists(sparse)) << ext;
+  }
 }

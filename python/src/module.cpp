@@ -13,11 +13,13 @@
 #include "contact/mesh_contact.hpp"
 #include "gear/gear_mesh.hpp"
 #include "io/case_file.hpp"
+#include "io/case_parameters.hpp"
 #include "io/column_table.hpp"
 #include "io/input_error.hpp"
 #include "io/sweep_plan.hpp"
 #include "io/text_lines.hpp"
 #include "io/topography_files.hpp"
+#include "material/material.hpp"
 #include "runs/asperity_columns.hpp"
 #include "runs/kinematics_table.hpp"
 #include "runs/mesh_cycle.hpp"
@@ -25,6 +27,8 @@
 #include "runs/sweep_points.hpp"
 #include "surface/height_grid.hpp"
 #include "surface/surface_statistics.hpp"
+
+#include <fmt/format.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -260,6 +264,30 @@ std::vector<double> to_vector(const py::array_t<double, py::array::c_style | py:
 
 using HeightArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
+// Arguments within the ranges of the file readers and the case schema: a finite value no file or
+// case could hold is refused (ValueError naming the argument, the value and the rule), never
+// carried into a NaN or inf.
+void require_in(const std::string& argument, double v, double lo, double hi, const char* unit,
+                const std::string& whose) {
+  if (!(v >= lo && v <= hi))
+    throw std::invalid_argument(
+        fmt::format("{} = {:g}{}: must lie in [{:g}, {:g}]{} ({})", argument, v, unit, lo, hi, unit, whose));
+}
+// Plane-strain moduli, composite E* = 1/((1 - nu1^2)/E1 + (1 - nu2^2)/E2) or single-body
+// E/(1 - nu^2), of materials within the material files' Young's moduli and 0 < nu < 0.5.
+constexpr double kMinPlaneStrainModulus = kMinYoungsModulus / 2.0;   // [Pa]
+constexpr double kMaxPlaneStrainModulus = kMaxYoungsModulus / 0.75;  // [Pa]
+const std::string kModulusRule =
+    "a plane-strain modulus of materials within the material files' Young's modulus "
+    "range [1e6, 1e13] Pa";
+// A returned number that is not finite is a model that left its range unnoticed: RuntimeError
+// naming the output and the element (the command line's check, runs::check_finite_outputs).
+void require_finite(const std::string& output, const std::vector<double>& values) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i]))
+      throw std::runtime_error(fmt::format("{}[{}] is {}: a model left its range unnoticed", output, i, values[i]));
+}
+
 // A height array z[y, x] [m] (NaN: missing) as a grid of spacing dx, dy [m] (dy = 0: dx), within
 // the grid limits (surface::make_grid checks the size before allocating).
 surface::HeightGrid grid_from(const HeightArray& z, double dx, double dy) {
@@ -270,9 +298,18 @@ surface::HeightGrid grid_from(const HeightArray& z, double dx, double dy) {
   surface::HeightGrid g =
       surface::make_grid(static_cast<int>(z.shape(1)), static_cast<int>(z.shape(0)), dx, dy > 0 ? dy : dx);
   const std::span<const double> heights(z.data(), g.size());
-  if (std::any_of(heights.begin(), heights.end(), [](double v) { return std::isinf(v); }))
-    throw std::invalid_argument("heights must be finite (NaN marks a missing point)");
+  for (std::size_t k = 0; k < heights.size(); ++k) {
+    if (std::isinf(heights[k])) throw std::invalid_argument("heights must be finite (NaN marks a missing point)");
+    if (!std::isnan(heights[k]) && !(std::abs(heights[k]) <= surface::kMaxHeight))
+      throw std::invalid_argument(
+          fmt::format("z[{}, {}] = {:g} m: heights must lie within +-{:g} m (the topography "
+                      "readers' limit)",
+                      k / g.nx, k % g.nx, heights[k], surface::kMaxHeight));
+  }
   surface::set_heights(g, heights);
+  if (g.size() - g.missing() < 9)  // as every topography reader (io::check_valid_points)
+    throw std::invalid_argument(
+        fmt::format("z has {} valid (not NaN) heights of {}; at least 9 are needed", g.size() - g.missing(), g.size()));
   return g;
 }
 
@@ -300,6 +337,16 @@ asperity::ContactPair pair_from(const py::dict& d) {
                      [&](const auto& f) { return py::str(item.first).cast<std::string>() == f.first; }))
       throw std::invalid_argument("pair: unknown key '" + py::str(item.first).cast<std::string>() + "'");
   p.validate();
+  // The ranges of the case schema's summit radius and of a material file's values.
+  const io::Parameter& summit = *io::find_parameter("pinion.flank.summit_radius").parameter;
+  require_in("pair['radius']", p.radius, summit.min, summit.max, " m", "the case's summit-radius range");
+  require_in("pair['youngs_modulus']", p.youngs_modulus, kMinYoungsModulus, kMaxYoungsModulus, " Pa",
+             "a material file's range");
+  require_in("pair['modulus']", p.modulus, kMinPlaneStrainModulus, kMaxPlaneStrainModulus, " Pa", kModulusRule);
+  require_in("pair['yield_strength']", p.yield_strength, 0.0, p.youngs_modulus, " Pa",
+             "a material file's rule: positive and below Young's modulus");
+  require_in("pair['hardness']", p.hardness, p.yield_strength, kMaxYoungsModulus, " Pa",
+             "a material file's rule: from the yield strength to 1e13 Pa");
   return p;
 }
 
@@ -438,6 +485,7 @@ PYBIND11_MODULE(_geartrib, m) {
         for (std::size_t k = 0; k < kColumns; ++k) {
           const auto& col = runs::kAsperityColumns[k];
           if (!stresses && (col.quantity == "max_von_mises" || col.quantity == "von_mises_depth")) continue;
+          require_finite(std::string(col.quantity), columns[k]);
           const std::string unit = col.suffix.empty() ? "1" : std::string(col.suffix.substr(1));
           out.append(py::make_tuple(std::string(col.quantity), unit, to_array(columns[k])));
         }
@@ -475,7 +523,10 @@ PYBIND11_MODULE(_geartrib, m) {
           t = runs::surface_statistics_table(surface::surface_statistics(g), &report);
         }
         py::dict d;
-        for (std::size_t i = 0; i < t.rows.size(); ++i) d[py::str(t.labels[i])] = t.rows[i].front();
+        for (std::size_t i = 0; i < t.rows.size(); ++i) {
+          require_finite(t.labels[i], {t.rows[i].front()});
+          d[py::str(t.labels[i])] = t.rows[i].front();
+        }
         return d;
       },
       py::arg("z"), py::arg("dx"), py::arg("dy"), py::arg("form_degree"), py::arg("cutoff"), py::arg("outliers"),
@@ -529,6 +580,21 @@ PYBIND11_MODULE(_geartrib, m) {
           throw std::invalid_argument("the line load must be finite and >= 0, the approach finite");
         contact::HalfPlaneGrid grid{0.0, dx, static_cast<int>(gap.size())};
         if (!(dx > 0.0 && std::isfinite(dx))) throw std::invalid_argument("dx must be positive and finite");
+        // The ranges of the files and cases the command line reads: heights within the topography
+        // readers' +-1 m (a gap between two such surfaces within 2 m), their spacing, a material's
+        // modulus; and the load or approach of a linear-elastic solve (strains far below one: a mean
+        // pressure up to the modulus, an approach up to the profile's length).
+        require_in("dx", dx, surface::kMinSpacing, surface::kMaxSpacing, " m", "the topography readers' spacing");
+        require_in("modulus", modulus, kMinPlaneStrainModulus, kMaxPlaneStrainModulus, " Pa", kModulusRule);
+        for (py::ssize_t i = 0; i < gap.size(); ++i)
+          require_in(fmt::format("gap[{}] (from the profile)", i), gap.data()[i], -2.0 * surface::kMaxHeight,
+                     2.0 * surface::kMaxHeight, " m", "heights within the topography readers' +-1 m");
+        const double length = dx * static_cast<double>(gap.size());
+        if (line_load)
+          require_in("line_load", *line_load, 0.0, modulus * length, " N/m",
+                     "a mean pressure over the profile up to the modulus: linear elasticity");
+        if (approach)
+          require_in("approach", *approach, -length, length, " m", "up to the profile's length: linear elasticity");
         contact::BemOptions o;
         o.pressure_cap = pressure_cap;
         o.periodic = periodic;
@@ -542,6 +608,10 @@ PYBIND11_MODULE(_geartrib, m) {
           const contact::HalfPlaneBem bem(grid, modulus, o);
           s = line_load ? bem.solve_load(g0, *line_load) : bem.solve_approach(g0, *approach);
         }
+        require_finite("pressure_Pa", s.pressure);
+        require_finite("displacement_m", s.displacement);
+        require_finite("gap_m", s.gap);
+        require_finite("approach_m, line_load_N_per_m", {s.approach, s.line_load});
         py::dict d;
         std::vector<double> x(g0.size());
         for (int i = 0; i < grid.size; ++i) x[static_cast<std::size_t>(i)] = grid.x(i);

@@ -475,6 +475,19 @@ def test_bad_arguments_raise_value_errors(tmp_path):
     assert not (tmp_path / "u.csv").exists()
     with pytest.raises(ValueError, match="dy must be positive"):
         gt.surface_statistics(np.zeros((4, 4)), 1e-6, -1e-6)
+    # Finite but beyond the ranges of the file readers and the case schema (issue 30, finding 13;
+    # every case: tests/corpus/27-python-extreme-arguments).
+    with pytest.raises(ValueError, match=r"line_load = 1e\+300 N/m: must lie in \[0, "):
+        gt.boundary_elements([0.0, 1e-7, 0.0], 1e-7, 1e11, line_load=1e300)
+    with pytest.raises(ValueError, match=r"z\[0, 0\] = 1e\+300 m: heights must lie within \+-1 m"):
+        gt.surface_statistics(np.ones((4, 4)) * 1e300, 1e-6)
+    with pytest.raises(ValueError, match=r"pair\['radius'\] = 1e-300 m: must lie in \[1e-09, 1\] m"):
+        gt.asperity([1.0], pair=dict(pair, radius=1e-300))
+    with pytest.raises(ValueError, match=r"heights must lie within \+-1 m"):
+        gt.write_surface(tmp_path / "huge.x3p", np.ones((8, 8)) * 1e300, 1e-6)
+    with pytest.raises(ValueError, match="at least 9 are needed"):
+        gt.write_surface(tmp_path / "empty.x3p", np.full((8, 8), np.nan), 1e-6)
+    assert not (tmp_path / "huge.x3p").exists() and not (tmp_path / "empty.x3p").exists()
 
 
 def test_dict_to_toml_round_trips():

@@ -66,6 +66,7 @@ std::vector<SummaryValue> summary_values(const LubricationSummary& l) {
       {"min_lambda_smooth_film", "1", l.min_lambda_film},
       {"max_asperity_share_closure_spread", "1", l.max_share_spread},
       {"positions_share_depends_on_closure", "1", static_cast<double>(l.closure_dependent_positions)},
+      {"positions_oil_temperature_clamped", "1", static_cast<double>(l.oil_clamped_positions)},
       {"iso_effective_tip_relief_m", "m", l.iso_effective_relief}};
   v.insert(v.end(), rest.begin(), rest.end());
   if (l.iso_scuffing_safety > 0.0) {

@@ -63,6 +63,7 @@ struct LubricationSummary {
   double min_iso_lambda = 0.0, min_lambda_film = 0.0;
   double max_share_spread = 0.0;        // the asperity share's largest range over the film gaps
   int closure_dependent_positions = 0;  // positions where that range exceeds 0.1
+  int oil_clamped_positions = 0;        // positions whose oil is taken at its law range's hot end
   double iso_effective_relief = 0.0;    // C_eff = F_t/(b cos alpha_t c_gamma), ISO/TR 13989-1 B.1 [m]
   double iso_scuffing_safety = 0.0;     // ISO/TS 6336-20 flash-temperature method; 0: no scuffing temperature
   double scuffing_safety = 0.0;         // the same with the model's local friction (Blok)

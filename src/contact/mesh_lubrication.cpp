@@ -73,7 +73,8 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
     thermal_coefficient_[g] = lub::thermal_contact_coefficient(m.thermal_conductivity, m.density, m.specific_heat);
   }
   roughness_ = composite_roughness(c, gw.surface());
-  oil_at_inlet_ = lub::oil_state(lubricant, c.operating.oil_temperature);
+  oil_range_ = lub::law_range(lubricant);
+  oil_at_inlet_ = lub::oil_state(lubricant, c.operating.oil_temperature);  // inside the range (io::load_case)
 
   // The pitch point as the ISO mean-friction formulas take it, and every gear-mean law there.
   const gear::SpurPair& pair = mesh.pair();
@@ -125,6 +126,17 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
                           ? lub::iso_bulk_temperature(c.operating.oil_temperature,
                                                       law_scale * path_mean(series(positions_, &Position::iso_flash)))
                           : c.operating.bulk_temperature;
+  // The film, its share and its traction all rest on the oil at the bulk temperature: an estimate
+  // beyond the lubricant's laws leaves them without a viscosity, and the run fails naming it (a
+  // given one is refused with the case). Per position, hotter surfaces are clamped (oil_at).
+  if (!lubricant.fixed() && !oil_range_.contains(bulk_temperature_))
+    throw lub::OutsideLawRange(fmt::format(
+        "the flanks' bulk temperature (/lubrication bulk_temperature_K), estimated by ISO/TS 6336-20 with the {} "
+        "friction law's flash temperature, is {:.1f} degC, beyond {:.1f} degC, the hottest at which {}'s laws hold "
+        "(its data reach {:.1f} degC): the film, the load sharing and the friction have no viscosity there",
+        c.lubrication.mean_friction, bulk_temperature_ - 273.15, oil_range_.hi - 273.15, lubricant.name,
+        lubricant.max_temperature - 273.15));
+  bulk_extrapolated_ = !lubricant.fixed() && !lub::data_range(lubricant).contains(bulk_temperature_);
   oil_at_bulk_ = lub::oil_state(lubricant, bulk_temperature_);
 
   // The asperities' pressure against the mean-plane separation, and the film and shares.
@@ -140,6 +152,18 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
   ShareGuesses guesses;  // ln(film share) at the last position, per film gap
   guesses.fill(std::numeric_limits<double>::quiet_NaN());
   for (std::size_t i = 0; i < n; ++i) film(p.point(i), guesses, positions_[i]);
+}
+
+lub::OilState MeshLubrication::oil_at(double t, bool& extrapolated, bool& clamped) const {
+  const auto& lubricant = case_.lubrication.lubricant;
+  if (lubricant.fixed()) return lub::oil_state(lubricant, t);
+  if (!lub::data_range(lubricant).contains(t)) extrapolated = true;
+  if (!oil_range_.contains(t)) {
+    clamped = true;
+    if (t > oil_range_.hi) t = oil_range_.hi;
+    if (t < oil_range_.lo) t = oil_range_.lo;  // (NaN stays NaN: oil_state refuses it)
+  }
+  return lub::oil_state(lubricant, t);
 }
 
 void MeshLubrication::iso_temperatures(const PathPoint& p, Position& q) const {
@@ -225,7 +249,7 @@ void MeshLubrication::rest(const PathPoint& p, Position& q) const {
   // The film's traction coefficient at a friction mu: the surfaces at the bulk temperature plus the
   // mean flash temperature over the band that mu makes (Eyring models); the curve at the bulk.
   double rise = 0.0;
-  bool curve_outside = false;
+  bool curve_outside = false, surface_extrapolated = false, surface_clamped = false;
   auto film_coefficient = [&](double mu) {
     if (!(film_share > 0.0) || !(p_f > 0.0) || vs == 0.0) return 0.0;
     if (traction_ == lub::FilmTraction::curve) {
@@ -234,7 +258,9 @@ void MeshLubrication::rest(const PathPoint& p, Position& q) const {
       curve_outside = t.outside;
       return t.coefficient;
     }
-    const lub::OilState surface = lub::oil_state(lubricant, bulk_temperature_ + lub::kBlokMeanOverPeak * blok(mu));
+    surface_extrapolated = surface_clamped = false;
+    const lub::OilState surface =
+        oil_at(bulk_temperature_ + lub::kBlokMeanOverPeak * blok(mu), surface_extrapolated, surface_clamped);
     const lub::FilmShear shear = lub::film_shear_stress(traction_, surface, p_f, vs, q.mean_gap);
     rise = shear.midfilm_rise;
     return shear.shear_stress / p_f;
@@ -254,7 +280,7 @@ void MeshLubrication::rest(const PathPoint& p, Position& q) const {
       mu = top;
     }
   }
-  const double film_coef = film_coefficient(mu);  // also sets rise and curve_outside at the answer
+  const double film_coef = film_coefficient(mu);  // also sets rise, curve_outside and surface_* at the answer
   q.friction = q.asperity_share * mu_b + film_share * film_coef;
   q.film_traction = film_coef;
   q.midfilm_rise = rise;
@@ -269,7 +295,10 @@ void MeshLubrication::rest(const PathPoint& p, Position& q) const {
   q.wear_pinion = p.v1 > 0.0 ? k_wear * asperity_load * std::abs(vs) / p.v1 : 0.0;
   q.wear_wheel = p.v2 > 0.0 ? k_wear * asperity_load * std::abs(vs) / p.v2 : 0.0;
   // ISO/TS 6336-22: the oil at theta_B = theta_M + theta_fl(mu_mC) (Blok's form with its mu).
-  const lub::OilState local = lub::oil_state(lubricant, bulk_temperature_ + q.blok_iso_flash);
+  bool contact_extrapolated = false, contact_clamped = false;
+  const lub::OilState local = oil_at(bulk_temperature_ + q.blok_iso_flash, contact_extrapolated, contact_clamped);
+  q.oil_extrapolated = bulk_extrapolated_ || surface_extrapolated || contact_extrapolated ? 1.0 : 0.0;
+  q.oil_clamped = surface_clamped || contact_clamped ? 1.0 : 0.0;
   q.iso_film = lub::iso_film_hy(p.radius, reduced_modulus_, p.hertz_p0, p.v1 + p.v2, oil_at_bulk_, local);
   q.iso_lambda = q.iso_film / roughness_.mean_ra;
   q.lambda_film = q.film / roughness_.rq;
@@ -284,6 +313,7 @@ void MeshLubrication::rest(const PathPoint& p, Position& q) const {
 }
 
 void MeshLubrication::finish(MeshContactResult& r) {
+  constexpr double kC = 273.15;  // [K] at 0 degC
   const Case& c = case_;
   const auto& p = path_;
   const std::size_t n = p.s.size();
@@ -317,6 +347,8 @@ void MeshLubrication::finish(MeshContactResult& r) {
        C{"wear_depth_pinion_m", "m", [](const Position& q) { return q.wear_pinion; }},
        C{"wear_depth_wheel_m", "m", [](const Position& q) { return q.wear_wheel; }},
        C{"flag_low_peclet", "1", [](const Position& q) { return q.low_peclet; }},
+       C{"flag_oil_extrapolated", "1", [](const Position& q) { return q.oil_extrapolated; }},
+       C{"flag_oil_temperature_clamped", "1", [](const Position& q) { return q.oil_clamped; }},
        C{"flag_share_depends_on_closure", "1",
          [](const Position& q) { return q.share_spread > kClosureSpreadFlag ? 1.0 : 0.0; }}});
   if (asperity_->bearing_weight() >= 1.0)
@@ -380,6 +412,8 @@ void MeshLubrication::finish(MeshContactResult& r) {
   sum.min_iso_lambda = smallest(positions_, &Position::iso_lambda);
   sum.min_lambda_film = smallest(positions_, &Position::lambda_film);
   sum.max_share_spread = largest(positions_, &Position::share_spread);
+  sum.oil_clamped_positions = static_cast<int>(
+      std::count_if(positions_.begin(), positions_.end(), [](const Position& q) { return q.oil_clamped > 0.0; }));
   sum.closure_dependent_positions = static_cast<int>(std::count_if(
       positions_.begin(), positions_.end(), [](const Position& q) { return q.share_spread > kClosureSpreadFlag; }));
   if (c.lubrication.scuffing_temperature > 0.0) {
@@ -461,6 +495,11 @@ void MeshLubrication::finish(MeshContactResult& r) {
         " and the asperities' boundary coefficient {:g} (friction.mu); the model's gear-mean {:.4f} "
         "against ISO/TS 6336-21/-22's {:.4f}.",
         c.friction_coefficient, sum.mesh_mean_friction, iso_mu_);
+    if (sum.oil_clamped_positions > 0)
+      text += fmt::format(
+          " At {} of {} positions the surfaces pass {:.1f} degC, the hottest at which the oil's laws hold: its "
+          "traction and h_Y there are upper bounds (flag_oil_temperature_clamped).",
+          sum.oil_clamped_positions, n, oil_range_.hi - kC);
     if (surfaces_disagree)
       text += fmt::format(
           " The asperity model's surface is not the measured one: its composite sigma is {:.3g} times the flanks' Rq "
@@ -471,20 +510,34 @@ void MeshLubrication::finish(MeshContactResult& r) {
 
   // Where the lubricated models leave their ranges: said, not silent.
   const auto& l = c.lubrication.lubricant;
-  constexpr double kC = 273.15;
   if (!l.fixed()) {
     if (bulk_temperature_ < l.min_temperature || bulk_temperature_ > l.max_temperature)
       r.warnings.push_back(
           fmt::format("bulk temperature {:.1f} degC{} lies outside {}'s data range [{:.0f}, {:.0f}] "
-                      "degC: the film's viscosity is extrapolated (Walther)",
+                      "degC: the film's viscosity is extrapolated (Walther; flag_oil_extrapolated everywhere)",
                       bulk_temperature_ - kC, bulk_estimated_ ? " (ISO estimate)" : "", l.name, l.min_temperature - kC,
                       l.max_temperature - kC));
     const double hottest = bulk_temperature_ + largest(positions_, &Position::blok_iso_flash);
+    const double hottest_surface = bulk_temperature_ + lub::kBlokMeanOverPeak * largest(positions_, &Position::flash);
+    if (sum.oil_clamped_positions > 0)
+      r.warnings.push_back(fmt::format(
+          "{} of {} positions (flag_oil_temperature_clamped) where the film's surfaces or ISO/TS 6336-22's contact "
+          "temperature (up to {:.1f} degC) pass {:.1f} degC, the hottest at which {}'s laws hold: the oil's viscosity "
+          "and alpha are taken at {:.1f} degC there, a thicker oil than it is: the film's traction and h_Y there are "
+          "upper bounds, not values",
+          sum.oil_clamped_positions, n, std::max(hottest, hottest_surface) - kC, oil_range_.hi - kC, l.name,
+          oil_range_.hi - kC));
     if (hottest > l.max_temperature)
       r.warnings.push_back(
           fmt::format("ISO/TS 6336-22 h_Y evaluates the oil at contact temperatures up to {:.1f} degC, "
-                      "beyond {}'s data ({:.0f} degC): its sliding parameter S_GF is extrapolated",
+                      "beyond {}'s data ({:.0f} degC): its sliding parameter S_GF is extrapolated "
+                      "(flag_oil_extrapolated)",
                       hottest - kC, l.name, l.max_temperature - kC));
+    if (hottest_surface > l.max_temperature)
+      r.warnings.push_back(
+          fmt::format("the film's traction takes the oil at the surfaces' temperature, up to {:.1f} degC, beyond "
+                      "{}'s data ({:.0f} degC): its viscosity there is extrapolated (flag_oil_extrapolated)",
+                      hottest_surface - kC, l.name, l.max_temperature - kC));
   }
   const auto low = std::count_if(positions_.begin(), positions_.end(), [](const Position& q) { return q.low_peclet; });
   if (low > 0)

@@ -75,6 +75,8 @@ class MeshLubrication {
            iso_contact_temperature = 0.0, power_loss = 0.0, wear_pinion = 0.0, wear_wheel = 0.0, iso_film = 0.0,
            iso_lambda = 0.0, lambda_film = 0.0, lambda_gap = 0.0, low_peclet = 0.0, curve_outside = 0.0,
            bearing_saturated = 0.0;
+    double oil_extrapolated = 0.0;  // 1: an oil (bulk, surfaces, ISO contact) beyond the lubricant's data range
+    double oil_clamped = 0.0;       // 1: the surfaces' or ISO contact's oil taken at the end of its law range
   };
 
  private:
@@ -83,6 +85,10 @@ class MeshLubrication {
   void film(const PathPoint& p, ShareGuesses& guesses, Position& q) const;
   void rest(const PathPoint& p, Position& q) const;
   double iso_flash(const PathPoint& p) const;
+  // The oil at a temperature a position reaches: beyond the lubricant's data range `extrapolated`
+  // set; beyond its law range taken at the range's end and `clamped` set. The fixed form's
+  // constants hold at any temperature.
+  lubrication::OilState oil_at(double temperature, bool& extrapolated, bool& clamped) const;
   void iso_temperatures(const PathPoint& p, Position& q) const;  // the ISO method's and Blok's with mu_mC
 
   const Case& case_;
@@ -102,7 +108,9 @@ class MeshLubrication {
   double iso_flash_mu_ = 0.0;  // ISO/TS 6336-20 mu_m (its flash-temperature method)
   double iso_x_m_ = 0.0, iso_effective_relief_ = 0.0;
   lubrication::IsoFlashGeometry iso_geometry_;
+  lubrication::TemperatureRange oil_range_;  // where the lubricant's laws hold
   double bulk_temperature_ = 0.0;
+  bool bulk_extrapolated_ = false;  // beyond the lubricant's data range
   bool bulk_estimated_ = false;
   CompositeRoughness roughness_;
   double plasticity_index_ = 0.0;

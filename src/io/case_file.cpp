@@ -42,9 +42,9 @@ double bounded_quantity(TomlReader& r, std::string_view key, Dimension d, double
 // The ranges of a material file's values (SI; docs/reference/units.md): beyond them no
 // engineering material lies and the contact arithmetic is not meant to go; inside the range but
 // outside the band of gear materials a value is warned about.
-constexpr double kMinModulus = 1e6, kMaxModulus = 1e13;                      // [Pa]
-constexpr double kPlausibleMinModulus = 5e8, kPlausibleMaxModulus = 1.2e12;  // polymers to diamond [Pa]
-constexpr double kMinDensity = 1.0, kMaxDensity = 1e5;                       // [kg/m^3]
+constexpr double kMinModulus = kMinYoungsModulus, kMaxModulus = kMaxYoungsModulus;  // [Pa]
+constexpr double kPlausibleMinModulus = 5e8, kPlausibleMaxModulus = 1.2e12;         // polymers to diamond [Pa]
+constexpr double kMinDensity = 1.0, kMaxDensity = 1e5;                              // [kg/m^3]
 constexpr double kPlausibleMinDensity = 500.0, kPlausibleMaxDensity = 25000.0;
 constexpr double kMaxConductivity = 1e4, kMaxSpecificHeat = 1e5;  // [W/(m K)], [J/(kg K)]
 
@@ -603,9 +603,6 @@ void read_fzg_load_stage(TomlReader& r, Case& c) {
   c.parameters.insert(at, {std::string(kTorqueKey), row.format(v), t.origin});
 }
 
-// Extrapolating Walther's law this far beyond a lubricant's data range is refused; within it, warned.
-constexpr double kColdExtrapolation = 40.0, kHotExtrapolation = 60.0;  // [K]
-
 // [lubricant] given: the oil from its file or the fixed form, its temperatures checked against the
 // data range, and the bodies' thermal data the flash temperature needs.
 void read_lubrication(TomlReader& r, Case& c) {
@@ -641,13 +638,16 @@ void read_lubrication(TomlReader& r, Case& c) {
     lc.lubricant.min_temperature = lc.lubricant.max_temperature = c.operating.oil_temperature;
   }
   const auto& l = lc.lubricant;
+  // Beyond the lubricant's operating range (its data range, the laws extrapolated at most 40 K below
+  // and 60 K above it) refused; outside the data range, warned.
   auto check_temperature = [&](const char* key, double t) {
     if (l.fixed()) return;
-    if (t < l.min_temperature - kColdExtrapolation || t > l.max_temperature + kHotExtrapolation)
-      r.fail(key, fmt::format("{:.1f} degC is beyond the lubricant's data range [{:.1f}, {:.1f}] degC by more than "
-                              "{:g} K below or {:g} K above: Walther's law is not extrapolated that far",
-                              t - 273.15, l.min_temperature - 273.15, l.max_temperature - 273.15, kColdExtrapolation,
-                              kHotExtrapolation));
+    if (const lubrication::TemperatureRange range = lubrication::operating_range(l); !range.contains(t))
+      r.fail(key, fmt::format("{:.1f} degC is beyond the lubricant's data range [{:.1f}, {:.1f}] degC and the range "
+                              "its laws are taken to for the oil, [{:.1f}, {:.1f}] degC (at most {:g} K below and {:g} "
+                              "K above the data)",
+                              t - 273.15, l.min_temperature - 273.15, l.max_temperature - 273.15, range.lo - 273.15,
+                              range.hi - 273.15, lubrication::kColdExtrapolation, lubrication::kHotExtrapolation));
     if (t < l.min_temperature || t > l.max_temperature)
       c.warnings.push_back(
           fmt::format("{}: warning: key '{}': {:.1f} degC lies outside {}'s data range [{:.1f}, "

@@ -27,10 +27,45 @@ Walther walther(const Lubricant& l) {
   const double b = (w40 - w100) / (std::log10(kT100) - std::log10(kT40));
   return {w40 + b * std::log10(kT40), b};
 }
+// The laws unchecked (validate() and law_range() evaluate them at the range's edges).
+double walther_viscosity(const Walther& w, double t) {
+  return (std::pow(10.0, std::pow(10.0, w.a - w.b * std::log10(t))) - Lubricant::kWaltherOffset) * kCentistokes;
+}
+// The temperature at which Walther's law gives nu [m^2/s] (B > 0).
+double walther_temperature(const Walther& w, double nu) { return std::pow(10.0, (w.a - walther_w(nu)) / w.b); }
+double density_ratio(const Lubricant& l, double t) { return 1.0 - l.density_temperature_coefficient * (t - kT15); }
 
 // ISO/TR 15144-1 temperature law of alpha, relative to 38 degC (311 K in the standard).
 double iso_alpha_temperature_factor(double t) { return 1.0 + 516.0 * (1.0 / t - 1.0 / 311.0); }
+
+// A law asked outside law_range(): refused, naming the law, the temperature and the range.
+void require_in_range(const Lubricant& l, double t, const char* law) {
+  if (l.fixed()) return;
+  const TemperatureRange r = law_range(l);
+  if (!r.contains(t))
+    throw OutsideLawRange(fmt::format("{} of {} asked at {:.6g} K, outside [{:.2f}, {:.2f}] K where its laws hold", law,
+                                      l.name, t, r.lo, r.hi));
+}
 }  // namespace
+
+TemperatureRange data_range(const Lubricant& l) { return {l.min_temperature, l.max_temperature}; }
+
+TemperatureRange law_range(const Lubricant& l) {
+  if (l.fixed()) return data_range(l);
+  TemperatureRange r{0.0, kMaxOilTemperature};
+  const Walther w = walther(l);
+  if (w.b > 0.0 && std::isfinite(w.a)) r.lo = walther_temperature(w, kWaltherMaxViscosity);  // nu40 > nu100
+  if (l.density_temperature_coefficient > 0.0)
+    r.hi = std::min(r.hi, kT15 + 0.5 / l.density_temperature_coefficient);  // the density at half its 15 degC value
+  return r;
+}
+
+TemperatureRange operating_range(const Lubricant& l) {
+  if (l.fixed()) return data_range(l);
+  const TemperatureRange law = law_range(l);
+  return {std::max(law.lo, l.min_temperature - kColdExtrapolation),
+          std::min(law.hi, l.max_temperature + kHotExtrapolation)};
+}
 
 namespace {
 constexpr NamedChoice<BaseOil> kBaseOils[] = {
@@ -204,47 +239,104 @@ void Lubricant::validate() const {
          fmt::format("ISO/TS 6336-20 tabulates no lubricant factor X_L for base oil '{}': give iso_lubricant_factor "
                      "with its source",
                      base_oil_name(base_oil)));
+  if (fixed()) return;
+  // The data range inside every law's range (law_range), and what is carried from a temperature
+  // (alpha's reference, the correlation's 38 degC) inside the operating range.
+  const Walther w = walther(*this);
+  auto viscosity_text = [](double nu) {
+    return std::isfinite(nu) ? fmt::format("{:.3g} mm^2/s", nu / kCentistokes) : std::string("beyond 1e308 m^2/s");
+  };
+  const double nu_cold = walther_viscosity(w, min_temperature), nu_hot = walther_viscosity(w, max_temperature);
+  if (!(nu_cold <= kWaltherMaxViscosity))
+    fail("min_temperature",
+         fmt::format("Walther's law through the 40 and 100 degC viscosities gives {} at {:.2f} K, beyond the 2e7 "
+                     "mm^2/s top of ASTM D341's range: raise min_temperature to at least {:.2f} K",
+                     viscosity_text(nu_cold), min_temperature, walther_temperature(w, kWaltherMaxViscosity)));
+  if (!(max_temperature <= kMaxOilTemperature))
+    fail(
+        "max_temperature",
+        fmt::format("beyond {:.2f} K (400 degC), the hottest at which an oil's laws are taken: no gear oil is a liquid "
+                    "with data past it, and ISO/TR 15144-1's pressure-viscosity factor 1 + 516 (1/T - 1/311 K) falls "
+                    "to 0.107 there and to 0 at {:.1f} K",
+                    kMaxOilTemperature, 1.0 / (1.0 / 311.0 - 1.0 / 516.0)));
+  if (!(nu_hot >= kWaltherMinViscosity))
+    fail("max_temperature",
+         fmt::format("Walther's law through the 40 and 100 degC viscosities gives {} at {:.2f} K, below the 2 mm^2/s "
+                     "where ASTM D341's nu + 0.7 form holds: lower max_temperature to at most {:.2f} K",
+                     viscosity_text(nu_hot), max_temperature, walther_temperature(w, kWaltherMinViscosity)));
+  // A liquid oil's density falls by well under half over its whole liquid range (c ~ 7e-4 1/K:
+  // about a quarter from 15 to 350 degC); the line beyond that is no oil's (and beta's density
+  // term c/(1 - c dT) grows without bound as it nears zero).
+  if (!(density_ratio(*this, max_temperature) >= 0.5))
+    fail("density_temperature_coefficient",
+         fmt::format("the density line falls to {:.3g} of its 15 degC value at max_temperature ({:.2f} K); it must "
+                     "stay above half of it over the data range",
+                     density_ratio(*this, max_temperature), max_temperature));
+  const TemperatureRange r = operating_range(*this);
+  if (pressure_viscosity > 0.0 && !r.contains(pressure_viscosity_temperature))
+    fail("pressure_viscosity_temperature",
+         fmt::format("{:.2f} K lies outside [{:.2f}, {:.2f}] K, this oil's data range with at most {:g} K below and "
+                     "{:g} K above it: the measured alpha is carried from there by ISO/TR 15144-1's temperature law",
+                     pressure_viscosity_temperature, r.lo, r.hi, kColdExtrapolation, kHotExtrapolation));
+  if (!(pressure_viscosity > 0.0) && !r.contains(kZeroCelsius + 38.0))
+    fail(
+        "pressure_viscosity_coefficient",
+        fmt::format("omitted, so ISO/TR 15144-1's correlation takes the viscosity at 38 degC, outside [{:.2f}, {:.2f}] "
+                    "K (this oil's data range with at most {:g} K below and {:g} K above it): give a measured "
+                    "pressure_viscosity_coefficient and its pressure_viscosity_temperature",
+                    r.lo, r.hi, kColdExtrapolation, kHotExtrapolation));
 }
 
 double kinematic_viscosity(const Lubricant& l, double t) {
-  const Walther w = walther(l);
-  return (std::pow(10.0, std::pow(10.0, w.a - w.b * std::log10(t))) - Lubricant::kWaltherOffset) * kCentistokes;
+  require_in_range(l, t, "Walther's viscosity");
+  return walther_viscosity(walther(l), t);
 }
 
 double density(const Lubricant& l, double t) {
-  return l.density_15 * (1.0 - l.density_temperature_coefficient * (t - kT15));
+  require_in_range(l, t, "the density line");
+  return l.density_15 * density_ratio(l, t);
 }
 
-double pressure_viscosity_coefficient(const Lubricant& l, double t) {
-  if (l.fixed()) return l.pressure_viscosity;
+namespace {
+// alpha(T) of the temperature-dependent form, unchecked (the callers check T; validate() checks 38 degC).
+double alpha_at(const Lubricant& l, const Walther& w, double t) {
   if (l.pressure_viscosity > 0.0)
     return l.pressure_viscosity * iso_alpha_temperature_factor(t) /
            iso_alpha_temperature_factor(l.pressure_viscosity_temperature);
   const double t38 = kZeroCelsius + 38.0;
-  const double eta38 = kinematic_viscosity(l, t38) * density(l, t38);  // [Pa s]
+  const double eta38 = walther_viscosity(w, t38) * l.density_15 * density_ratio(l, t38);  // [Pa s]
   return 2.657e-8 * std::pow(eta38, 0.1348) * iso_alpha_temperature_factor(t);
+}
+}  // namespace
+
+double pressure_viscosity_coefficient(const Lubricant& l, double t) {
+  if (l.fixed()) return l.pressure_viscosity;
+  require_in_range(l, t, "the pressure-viscosity coefficient");
+  return alpha_at(l, walther(l), t);
 }
 
 OilState oil_state(const Lubricant& l, double t) {
   OilState s;
   s.temperature = t;
-  s.pressure_viscosity = pressure_viscosity_coefficient(l, t);
   s.thermal_conductivity = l.thermal_conductivity;
   s.eyring_stress = l.eyring_stress;
   s.limiting_shear_coefficient = l.limiting_shear_coefficient;
   s.iso_lubricant_factor = l.lubricant_factor();
   if (l.fixed()) {
+    s.pressure_viscosity = l.pressure_viscosity;
     s.dynamic_viscosity = l.fixed_dynamic_viscosity;
     s.temperature_viscosity = l.fixed_temperature_viscosity;
     s.density = l.density_15;
     return s;
   }
-  s.density = density(l, t);
-  const double nu = kinematic_viscosity(l, t);
+  require_in_range(l, t, "the oil state");  // once for every law below
+  const Walther w = walther(l);
+  s.pressure_viscosity = alpha_at(l, w, t);
+  s.density = l.density_15 * density_ratio(l, t);
+  const double nu = walther_viscosity(w, t);
   s.dynamic_viscosity = nu * s.density;
   // beta = -d ln(nu)/dT - d ln(rho)/dT, Walther differentiated:
   // d nu/dT = -(nu + 0.7) ln10 10^Z B / T with Z = A - B log10 T (nu in cSt).
-  const Walther w = walther(l);
   const double nu_cst = nu / kCentistokes;
   const double dnu_dt =
       -(nu_cst + Lubricant::kWaltherOffset) * std::log(10.0) * std::pow(10.0, w.a - w.b * std::log10(t)) * w.b / t;

@@ -5,6 +5,7 @@
 // [lubricant] table by io::load_case.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -92,8 +93,45 @@ struct Lubricant {
   double lubricant_factor() const;
   // Throws std::invalid_argument naming the member and the rule (positive viscosities with
   // nu40 > nu100 >= 2 cSt, positive thermal data, 0 <= Lambda <= 1, min < max temperature, an
-  // X_L for an ester).
+  // X_L for an ester) and, for the temperature-dependent form, a data range that leaves a law's
+  // range (law_range below: Walther's viscosity beyond ASTM D341's 2 to 2e7 mm^2/s, a temperature
+  // beyond 400 degC, the density line below half its 15 degC value) or an alpha reference
+  // temperature (or the correlation's 38 degC) outside operating_range.
   void validate() const;
+};
+
+// Temperatures of a lubricant file's laws [K]. Three nested ranges:
+//  - the data range, min_temperature .. max_temperature: what the file's data cover;
+//  - operating_range: the data range widened by kColdExtrapolation below and kHotExtrapolation
+//    above (inside law_range): where the oil (inlet) and a given bulk temperature may lie
+//    (io::load_case refuses them beyond it and warns outside the data);
+//  - law_range: where every law is sound, finite and positive, viscosity, density and alpha
+//    falling with temperature: Walther's viscosity at most 2e7 mm^2/s (the top of ASTM D341's
+//    charts; colder, the double form overflows), at most 400 degC (kMaxOilTemperature), and the
+//    density line above half its 15 degC value. A run evaluates the oil anywhere in it (beyond the
+//    data: extrapolated, flagged) and clamps it at its ends (flagged), or fails when the bulk
+//    temperature leaves it (contact/mesh_lubrication.cpp).
+// The fixed form has no temperature laws: every range is its one temperature.
+struct TemperatureRange {
+  double lo = 0.0, hi = 0.0;  // [K]
+  bool contains(double t) const { return t >= lo && t <= hi; }
+};
+inline constexpr double kColdExtrapolation = 40.0, kHotExtrapolation = 60.0;  // beyond the data [K]
+inline constexpr double kWaltherMinViscosity = 2e-6;  // [m^2/s]: ASTM D341's nu + 0.7 form holds at and above 2 cSt
+inline constexpr double kWaltherMaxViscosity = 20.0;  // [m^2/s]: 2e7 cSt, the top of ASTM D341's charts
+// No gear oil is a liquid with data past 400 degC (mineral and synthetic base stocks crack, boil or
+// ignite below it); ISO/TR 15144-1's alpha factor 1 + 516 (1/T - 1/311 K) is 0.107 there and 0 at
+// 782.8 K.
+inline constexpr double kMaxOilTemperature = 673.15;  // [K]
+TemperatureRange data_range(const Lubricant& l);
+TemperatureRange operating_range(const Lubricant& l);
+TemperatureRange law_range(const Lubricant& l);
+
+// A law evaluated outside its range: a run-time failure (the command line's exit 1, Python's
+// RuntimeError), not bad input.
+class OutsideLawRange : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 // The oil as a contact sees it at one temperature.
@@ -109,6 +147,8 @@ struct OilState {
   double iso_lubricant_factor = 1.0;        // X_L
 };
 
+// The laws at a temperature inside law_range(l); outside it each throws OutsideLawRange naming
+// the law, the temperature and the range (a validated lubricant's laws are finite there).
 // nu(T) [m^2/s] by Walther (ASTM D341): log10 log10(nu_cSt + 0.7) = A - B log10(T/K). The
 // temperature-dependent form only (the fixed form has no density law: use oil_state).
 double kinematic_viscosity(const Lubricant& l, double temperature);

@@ -34,6 +34,10 @@ struct Material {
   double flow_stress(double plastic_strain) const;
 };
 
+// The Young's moduli a material may have (a material file's range, docs/reference/units.md):
+// beyond them no engineering material lies and the contact arithmetic is not meant to go.
+inline constexpr double kMinYoungsModulus = 1e6, kMaxYoungsModulus = 1e13;  // [Pa]
+
 // Tabor's hardness-yield ratio used by the seed (H = 2.8 sigma_s, section 2).
 inline constexpr double kTaborHardnessRatio = 2.8;
 // Tabor (The Hardness of Metals, 1951): a work-hardening metal's indentation hardness is about

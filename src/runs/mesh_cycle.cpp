@@ -344,6 +344,80 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
 
 }  // namespace
 
+void check_finite_outputs(const contact::MeshContactResult& r) {
+  const contact::Series* s = r.find("s_m");
+  auto fail = [](const std::string& what, double v, const std::string& where) {
+    throw std::runtime_error(fmt::format("{} is {}{}: a model left its range unnoticed; nothing is written", what, v,
+                                         where.empty() ? "" : " at " + where));
+  };
+  auto at_position = [&](std::size_t i, std::size_t n) {
+    return s && i < s->values.size()
+               ? fmt::format("position {} of {} (0 at A; s = {:.4f} mm)", i, n, s->values[i] * 1e3)
+               : fmt::format("entry {} of {}", i, n);
+  };
+  auto group = [&](const std::string& path, const std::vector<contact::Series>& series, bool positions) {
+    for (const auto& q : series)
+      for (std::size_t i = 0; i < q.values.size(); ++i)
+        if (!std::isfinite(q.values[i]))
+          fail(path + q.name, q.values[i],
+               positions ? at_position(i, q.values.size()) : fmt::format("entry {} of {}", i, q.values.size()));
+  };
+  auto scalar = [&](const std::string& what, double v) {
+    if (!std::isfinite(v)) fail(what, v, "");
+  };
+  group("/mesh/", r.mesh, true);
+  group("/contact/", r.contact, true);
+  group("/contact/validity/", r.validity, true);
+  group("/lubrication/", r.lubrication, true);
+  group("/statistical/", r.statistical, true);
+  for (const auto& [name, v] :
+       {std::pair{"s_A_m", r.path.a}, std::pair{"s_B_m", r.path.b}, std::pair{"s_C_m", r.path.c},
+        std::pair{"s_D_m", r.path.d}, std::pair{"s_E_m", r.path.e}, std::pair{"base_pitch_m", r.path.base_pitch},
+        std::pair{"contact_ratio", r.path.contact_ratio}})
+    scalar(std::string("/mesh attribute ") + name, v);
+  scalar("the plasticity index", r.plasticity_index);
+  for (const auto& [name, v] :
+       {std::pair{"summit density", r.surface.summit_density}, std::pair{"summit radius", r.surface.summit_radius},
+        std::pair{"summit sigma", r.surface.summit_sigma}, std::pair{"surface sigma", r.surface.surface_sigma}})
+    scalar(std::string("the equivalent surface's ") + name, v);
+  if (r.lubrication_summary) {
+    for (const auto& v : contact::summary_values(*r.lubrication_summary))
+      scalar("/lubrication attribute " + v.name, v.value);
+    const auto& points = r.lubrication_summary->points;
+    for (const auto& q : contact::named_point_series(*r.lubrication_summary))
+      for (std::size_t i = 0; i < q.values.size(); ++i)
+        if (!std::isfinite(q.values[i]))
+          fail("/lubrication/points/" + q.name, q.values[i], "point " + (i < points.size() ? points[i].name : ""));
+  }
+  for (const auto& p : r.pressure_profiles) {
+    group("/contact/pressure/", {contact::Series{"x_m", "m", p.x}}, false);
+    group("/contact/pressure/", {contact::Series{"position_" + std::to_string(p.position), "Pa", p.pressure}}, false);
+  }
+  if (r.running_in) {
+    // Row 0 of the history is the new flanks, before any mesh: its per-mesh values are NaN by
+    // design (docs/reference/hdf5-layout.md), the rows after it and the flanks' statistics numbers.
+    for (const auto& q : r.running_in->history) {
+      const bool per_mesh = q.name == "new_plastic_deformation_m" || q.name == "real_area_ratio_mean" ||
+                            q.name == "plastic_area_fraction_mean" || q.name == "max_pressure_Pa";
+      for (std::size_t i = 0; i < q.values.size(); ++i)
+        if (!std::isfinite(q.values[i]) && !(per_mesh && i == 0 && std::isnan(q.values[i])))
+          fail("/running_in/" + q.name, q.values[i], fmt::format("entry {} of {}", i, q.values.size()));
+    }
+    for (int g = 0; g < 2; ++g) {
+      const std::string gear = g == 0 ? "pinion" : "wheel";
+      group("/running_in/", {contact::Series{gear + "_profile_initial_m", "m", r.running_in->initial[g]}}, false);
+      group("/running_in/", {contact::Series{gear + "_profile_final_m", "m", r.running_in->final[g]}}, false);
+    }
+  }
+  for (const auto& f : r.synthesis)
+    for (const auto& [name, v] :
+         {std::pair{"patch_spacing_m", f.patch_spacing}, std::pair{"patch_rq_m", f.patch_rq},
+          std::pair{"rolled_off_fraction", f.rolled_off_fraction}, std::pair{"profile_length_m", f.profile_length},
+          std::pair{"profile_rq_m", f.profile_rq}, std::pair{"iaaft_spectrum_misfit", f.spectrum_misfit},
+          std::pair{"iaaft_curvature_ratio", f.curvature_ratio}})
+      scalar("/synthesis/" + f.gear + " attribute " + name, v);
+}
+
 contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress) {
   const gear::GearMesh mesh(c);
   const solvers::KinsolSolver kinsol;
@@ -383,10 +457,7 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
           100.0 * f.rolled_off_fraction, f.gear, f.patch, um(f.profile_rq), um(f.patch_rq)));
   }
   r.synthesis = std::move(synthesis);
-  for (const auto* group : {&r.mesh, &r.contact})
-    for (const auto& q : *group)
-      for (double v : q.values)
-        if (!std::isfinite(v)) throw std::runtime_error("non-finite value in " + q.name);
+  check_finite_outputs(r);
   // A run whose outputs rest on the mesh stiffness is warned, first, when it leaves ISO's band.
   const bool uses_stiffness = c.contact.mesh_stiffness || mesh.analysis().method() == gear::LoadSharing::stiffness ||
                               c.dynamics.engine != "none";

@@ -12,7 +12,15 @@ namespace geartrib::runs {
 
 // KINSOL when coupled, the case's integrator when it asks for dynamics. Throws io::InputError
 // located at the case (an overload at the torque, naming the flanks' roughness; a value the
-// physics refused at the case file) and std::runtime_error on a non-finite output. Thread-safe.
+// physics refused at the case file) and std::runtime_error when any output (a series, a summary
+// value, a named point, a profile) is not finite, naming its dataset and position: nothing non-finite
+// is ever returned. Thread-safe.
+// The last check before a run's outputs are written or returned (the command, a sweep row, the
+// Python module): every number finite. A NaN or inf is a model that left its range where nothing
+// caught it: throws std::runtime_error naming the dataset (as /group/name in the HDF5 file) and
+// the position. The running-in history's row 0 (the new flanks) holds NaN by design.
+void check_finite_outputs(const contact::MeshContactResult& r);
+
 contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress = {});
 
 }  // namespace geartrib::runs
