@@ -13,6 +13,7 @@
 #include "io/case_file.hpp"
 #include "io/column_table.hpp"
 #include "io/table_writer.hpp"
+#include "io/units.hpp"
 
 #include <fmt/format.h>
 
@@ -64,7 +65,23 @@ std::vector<Knob> knobs_of(const Case& c) {
   if (c.contact.deterministic()) {
     // The boundary elements' resolution and reach, and the positions (statistical knobs are moot).
     out.push_back(ladder("positions", "contact.positions"));
-    out.push_back(ladder("element_size", "contact.element_size"));
+    // Elements not finer than the flanks' profile spacing (the case's own rule): the ladder's settings
+    // that respect it, and the spacing itself as the finest (the reference) when it falls between them.
+    Knob elements = ladder("element_size", "contact.element_size");
+    if (const double finest = runs::finest_element_size(c); finest > 0.0) {
+      std::erase_if(elements.settings, [&](const Setting& s) {
+        return io::parse_quantity(s.label, io::Dimension::length) < finest * (1.0 - 1e-9);
+      });
+      const bool on_ladder =
+          !elements.settings.empty() &&
+          io::parse_quantity(elements.settings.back().label, io::Dimension::length) <= finest * (1.0 + 1e-9);
+      if (!on_ladder) {
+        // Written to 1e-6 um, rounded up: the setting is never finer than the spacing.
+        const std::string v = fmt::format("{:.12g} um", std::ceil(finest * 1e12 * (1.0 - 1e-12)) * 1e-6);
+        elements.settings.push_back({v, {{"contact.element_size", v}}});
+      }
+    }
+    out.push_back(elements);
     out.push_back(ladder("strip_halfwidths", "contact.strip_halfwidths"));
     return out;
   }
@@ -199,6 +216,18 @@ void run(const Options& o) {
   const std::filesystem::path case_file = case_path(o.case_options);
   const Case base = load_case_reporting(o.case_options);
   const std::vector<io::CaseChange> given = case_changes(o.case_options);
+  // The outputs reserved before the computation (their folders checked, nothing written till the end):
+  // -o (a .png: the table beside it as .csv, unless --csv names a file) and --csv FILE.
+  const std::string& output = o.table.output;
+  const bool png = output.size() > 4 && output.substr(output.size() - 4) == ".png";
+  const CsvOption& csv_option = o.table.csv;
+  const std::filesystem::path png_csv = csv_option.to_file()
+                                            ? std::filesystem::path(csv_option.file)
+                                            : std::filesystem::path(output.substr(0, output.size() - 4) + ".csv");
+  io::OutputSet outputs;  // --csv FILE, -o FILE and a plot's table: all or none
+  if (csv_option.to_file()) outputs.reserve(csv_option.file);
+  if (png && !csv_option.to_file()) outputs.reserve(png_csv);
+  if (!png && !output.empty()) outputs.reserve(output);
   std::vector<Knob> knobs = knobs_of(base);
   if (!o.knobs.empty()) {
     std::erase_if(knobs,
@@ -254,10 +283,6 @@ void run(const Options& o) {
     t.columns[6].texts.emplace_back(r.reference ? (r.recommended ? "reference, recommended" : "reference")
                                                 : (r.recommended ? "recommended" : ""));
   }
-  const std::string& output = o.table.output;
-  const bool png = output.size() > 4 && output.substr(output.size() - 4) == ".png";
-  const CsvOption& csv_option = o.table.csv;
-  io::OutputSet outputs;  // --csv FILE and -o FILE: both or neither
   if (csv_option.to_file()) outputs.add_text(csv_option.file, io::format_csv(t));
   if (csv_option.in_place() && !png) {
     const std::string text = io::format_csv(t);
@@ -278,13 +303,11 @@ void run(const Options& o) {
     if (png || output.empty()) std::fwrite(text.data(), 1, text.size(), stdout);
     else outputs.add_text(output, text);
   }
+  if (png && !csv_option.to_file()) outputs.add_text(png_csv, io::format_csv(t));
   outputs.commit();
   if (png) {
     // The Pareto plot by scripts/plot_tradeoff.py from the CSV table (matplotlib).
-    const std::filesystem::path csv = csv_option.to_file()
-                                          ? std::filesystem::path(csv_option.file)
-                                          : std::filesystem::path(output.substr(0, output.size() - 4) + ".csv");
-    if (!csv_option.to_file()) io::write_file_atomically(csv, io::format_csv(t));
+    const std::filesystem::path& csv = png_csv;
     const std::filesystem::path script = std::filesystem::path(GEARTRIB_SOURCE_DIR) / "scripts/plot_tradeoff.py";
     // Debian's interpreter, where python3-matplotlib installs (a PATH python3 may lack it).
     const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";

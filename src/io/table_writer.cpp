@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <mutex>
 #include <stdexcept>
 
@@ -87,19 +88,45 @@ void remove_temporaries_and_reraise(int signal_number) {
   ::raise(signal_number);
 }
 
-void install_cleanup_handler() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    for (int signal_number : kCleanupSignals) {
-      struct sigaction previous {};
-      ::sigaction(signal_number, nullptr, &previous);
-      if (previous.sa_handler == SIG_IGN) continue;  // e.g. SIGHUP under nohup: keep ignoring it
-      struct sigaction action {};
-      action.sa_handler = remove_temporaries_and_reraise;
-      ::sigemptyset(&action.sa_mask);
-      ::sigaction(signal_number, &action, nullptr);
-    }
-  });
+// The handler is the process's only while an output set holds temporaries, and only for the signals
+// whose disposition is the default (they would end the process anyway: the temporaries go first, then
+// the signal ends it as it would have). A host's own handler (Python's KeyboardInterrupt, a Jupyter
+// kernel's interrupt) or an ignored signal (SIGHUP under nohup) is left as it is, and each default is
+// restored when the last set is done: a library call leaves the host's signal handlers as it found them.
+std::mutex handler_mutex;
+int handler_users = 0;  // output sets holding temporaries
+bool handler_installed[std::size(kCleanupSignals)] = {};
+
+void acquire_cleanup_handler() {
+  const std::lock_guard lock(handler_mutex);
+  if (handler_users++ > 0) return;
+  for (std::size_t i = 0; i < std::size(kCleanupSignals); ++i) {
+    struct sigaction previous {};
+    ::sigaction(kCleanupSignals[i], nullptr, &previous);
+    handler_installed[i] = (previous.sa_flags & SA_SIGINFO) == 0 && previous.sa_handler == SIG_DFL;
+    if (!handler_installed[i]) continue;
+    struct sigaction action {};
+    action.sa_handler = remove_temporaries_and_reraise;
+    ::sigemptyset(&action.sa_mask);
+    ::sigaction(kCleanupSignals[i], &action, nullptr);
+  }
+}
+
+void release_cleanup_handler() {
+  const std::lock_guard lock(handler_mutex);
+  if (--handler_users > 0) return;
+  for (std::size_t i = 0; i < std::size(kCleanupSignals); ++i) {
+    if (!handler_installed[i]) continue;
+    handler_installed[i] = false;
+    struct sigaction current {};
+    ::sigaction(kCleanupSignals[i], nullptr, &current);
+    if ((current.sa_flags & SA_SIGINFO) != 0 || current.sa_handler != remove_temporaries_and_reraise)
+      continue;  // the host set its own meanwhile: keep it
+    struct sigaction restore {};
+    restore.sa_handler = SIG_DFL;
+    ::sigemptyset(&restore.sa_mask);
+    ::sigaction(kCleanupSignals[i], &restore, nullptr);
+  }
 }
 
 int claim_slot(const std::filesystem::path& temporary) {
@@ -132,13 +159,15 @@ void OutputSet::discard() {
     std::filesystem::remove(p.temporary, ignored);
     release_slot(p.slot);
   }
+  if (!pending_.empty()) release_cleanup_handler();  // a set holds the handler while it has temporaries
   pending_.clear();
 }
 
 void OutputSet::reserve(const std::filesystem::path& target) {
   for (const auto& p : pending_)
     if (p.target == target) return;
-  install_cleanup_handler();
+  const bool first = pending_.empty();
+  if (first) acquire_cleanup_handler();
   const auto dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
   const auto temporary = dir / fmt::format(".{}.tmp.{}", target.filename().string(), ::getpid());
   const int slot = claim_slot(temporary);
@@ -147,6 +176,7 @@ void OutputSet::reserve(const std::filesystem::path& target) {
   if (fd < 0) {
     const int error = errno;
     release_slot(slot);
+    if (first) release_cleanup_handler();  // discard() releases it only for a set with temporaries
     discard();
     throw InputError(target.string(), 0, "", "",
                      fmt::format("cannot be written: {} (folder {})", std::strerror(error), dir.string()));
@@ -201,6 +231,7 @@ void OutputSet::commit() {
     }
     release_slot(pending_[k].slot);
   }
+  if (!pending_.empty()) release_cleanup_handler();
   pending_.clear();
 }
 

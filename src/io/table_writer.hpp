@@ -32,9 +32,11 @@ void output_table(const Table& t, bool csv, const std::string& path);
 // beside it (`.NAME.tmp.PID`; `write` gets the temporary's path); commit() renames every temporary
 // onto its target. Until then no target changes: an exception, the set's destruction or SIGINT,
 // SIGTERM, SIGHUP or SIGQUIT (the process ends as the signal would have it) removes the
-// temporaries. reserve() creates a target's temporary ahead (a command reserves its outputs
-// before computing): a folder that is missing or not writable is an InputError naming the target;
-// the same target written twice is an InputError too. (SIGKILL cannot be caught: it may leave a
+// temporaries. The signals' handler is installed only while a set holds temporaries and only where
+// the disposition is the default: a host's own handlers (Python's KeyboardInterrupt) and ignored
+// signals are left alone, and the defaults come back when the last set is done. reserve() creates a target's temporary
+// ahead (a command reserves its outputs before computing): a folder that is missing or not writable is an InputError
+// naming the target; the same target written twice is an InputError too. (SIGKILL cannot be caught: it may leave a
 // temporary, never a half-written target.)
 class OutputSet {
  public:
