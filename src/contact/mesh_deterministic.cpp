@@ -175,8 +175,8 @@ double strip_solve_seconds(int elements) {
   // 1.18 s for 1280 elements of 0.5 um (docs/reference/timings.md, cycle_deterministic/element_nm:500),
   // 5.9 ms a position's solve with its subsurface stresses; growing as elements^1.61, the boundary
   // elements' measured scaling (docs/reference/benchmarks.md, hertz_line_contact: the iterations grow
-  // with the elements). Within a factor of 3 from 1280 to 51200 elements (2 to 20 half-widths, 0.5 to
-  // 0.125 um; over at 5120, where the iterations are fewer: docs/reference/performance.md#budgets).
+  // with the elements). Within a factor of 3 from 1280 to 228526 elements (2 to 20 half-widths, 0.5 um
+  // to 28 nm; over at 5120, where the iterations are fewer: docs/reference/performance.md#budgets).
   constexpr double kSeconds = 5.9e-3, kElements = 1280.0, kExponent = 1.61;
   return kSeconds * std::pow(std::max(elements, 1) / kElements, kExponent);
 }

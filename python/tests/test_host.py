@@ -1,7 +1,8 @@
-"""The module leaves the interpreter's signal handlers as it found them (issue 30, finding 10): an
-output it writes holds the temporaries' cleanup handler only while it writes and only where the
-disposition was the default, so Ctrl-C (and a Jupyter kernel's interrupt) still raise
-KeyboardInterrupt afterwards, and SIGTERM is the default again at the C level."""
+"""The module as a guest in the interpreter (issue 30). It leaves the interpreter's signal handlers
+as it found them (finding 10): an output it writes holds the temporaries' cleanup handler only while
+it writes and only where the disposition was the default, so Ctrl-C (and a Jupyter kernel's
+interrupt) still raise KeyboardInterrupt afterwards, and SIGTERM is the default again at the C level.
+And it takes its memory and time budget from os.environ at each call (finding 11)."""
 
 import ctypes
 import os
@@ -44,3 +45,15 @@ def test_ctrl_c_still_raises_keyboard_interrupt_after_a_write(tmp_path, name):
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
     assert interrupted()
     assert sorted(p.name for p in tmp_path.iterdir()) == [name]  # no temporary left
+
+
+def test_the_budget_comes_from_os_environ_at_each_call(monkeypatch):
+    case = gt.load_case("gears/m6z30-deterministic.toml", **{"running_in.meshes": 100000,
+                                                             "running_in.tolerance": "2e-15 m"})
+    with pytest.raises(gt.InputError) as refused:  # ~16 h of strip solves against the default 1 h
+        gt.run(case)
+    assert refused.value.key == "running_in.meshes" and "GEARTRIB_TIME_BUDGET" in str(refused.value)
+    monkeypatch.setenv("GEARTRIB_TIME_BUDGET", "soon")
+    with pytest.raises(gt.InputError) as malformed:
+        gt.run(gt.load_case("gears/m6z30-deterministic.toml", **{"contact.positions": 11}))
+    assert malformed.value.key == "GEARTRIB_TIME_BUDGET" and "expected a number and a unit" in str(malformed.value)
