@@ -256,3 +256,15 @@ TEST(Fit, FreeConstantWithoutDependenceIsRefused) {
   for (const auto& c : r.constants) EXPECT_FALSE(std::isnan(c.std_error)) << c.name;
   EXPECT_EQ(io::format_fit_toml(r, "test").find("nan"), std::string::npos);
 }
+
+TEST(Fit, MemoryEstimateCountsRowsAndObservations) {
+  // 40 rows of three observed columns; one missing observation; rows without any not counted.
+  auto truth = truth_model();
+  FitData d = synthetic(*truth, 0.0, nullptr);
+  d.columns[0].values[0] = std::numeric_limits<double>::quiet_NaN();
+  const double all = fit_memory_bytes({d}, {});
+  EXPECT_DOUBLE_EQ(all, 40 * kFitBytesPerRow + (3 * 40 - 1) * kFitBytesPerObservation);
+  EXPECT_DOUBLE_EQ(fit_memory_bytes({d, d}, {}), 2 * all);  // each file adds its own
+  // Only the observed columns: load_star alone, missing in row 0, leaves 39 rows of one.
+  EXPECT_DOUBLE_EQ(fit_memory_bytes({d}, {Observable::load_star}), 39 * (kFitBytesPerRow + kFitBytesPerObservation));
+}

@@ -318,3 +318,58 @@ TEST(OutputSet, AStandardOutputWriteErrorIsAnException) {
       },
       testing::ExitedWithCode(3), "");
 }
+
+namespace {
+// A signal's disposition as the process has it.
+struct sigaction disposition(int signal_number) {
+  struct sigaction a {};
+  ::sigaction(signal_number, nullptr, &a);
+  return a;
+}
+bool is_default(int signal_number) {
+  const struct sigaction a = disposition(signal_number);
+  return (a.sa_flags & SA_SIGINFO) == 0 && a.sa_handler == SIG_DFL;
+}
+void host_handler(int) {}
+}  // namespace
+
+// A library call (the Python module's write_surface) leaves the host's signal handlers as it found
+// them: the cleanup handler takes only default dispositions, only while a set holds temporaries;
+// a host's own handler (Python's SIGINT, raising KeyboardInterrupt) is never replaced.
+TEST(OutputSet, SignalHandlersOnlyWhileTemporariesAndNeverTheHosts) {
+  ScratchFolder dir("outputset_handlers");
+  struct sigaction host {};
+  host.sa_handler = host_handler;
+  ::sigemptyset(&host.sa_mask);
+  struct sigaction saved {};
+  ::sigaction(SIGINT, &host, &saved);
+  ASSERT_TRUE(is_default(SIGTERM));
+  {
+    io::OutputSet outer;
+    outer.reserve(dir.path / "a.csv");
+    EXPECT_FALSE(is_default(SIGTERM));                         // the temporaries' cleanup
+    EXPECT_EQ(disposition(SIGINT).sa_handler, &host_handler);  // the host's, untouched
+    {
+      io::OutputSet inner;  // a second set (another thread's): the handler stays until both are done
+      inner.add_text(dir.path / "b.csv", "b\n");
+      inner.commit();
+    }
+    EXPECT_FALSE(is_default(SIGTERM));
+    outer.add_text(dir.path / "a.csv", "a\n");
+    outer.commit();
+  }
+  EXPECT_TRUE(is_default(SIGTERM));  // restored after the last commit
+  EXPECT_EQ(disposition(SIGINT).sa_handler, &host_handler);
+  {
+    io::OutputSet failed;  // a missing folder: refused, and the handler not left behind
+    EXPECT_THROW(failed.reserve(dir.path / "missing" / "c.csv"), io::InputError);
+  }
+  EXPECT_TRUE(is_default(SIGTERM));
+  {
+    io::OutputSet discarded;  // destroyed without a commit
+    discarded.reserve(dir.path / "d.csv");
+  }
+  EXPECT_TRUE(is_default(SIGTERM));
+  ::sigaction(SIGINT, &saved, nullptr);
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"a.csv", "b.csv"}));
+}

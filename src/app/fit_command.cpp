@@ -6,6 +6,8 @@
 #include "asperity/case_setup.hpp"
 #include "fit/fit_files.hpp"
 #include "fit/model_fit.hpp"
+#include "io/input_error.hpp"
+#include "io/resource_budget.hpp"
 #include "io/table_writer.hpp"
 
 #include <fmt/format.h>
@@ -54,11 +56,25 @@ void run(const Options& o) {
   for (const std::string* file : {&o.report, &o.output, &o.emit_cpp})
     if (!file->empty()) outputs.reserve(*file);
   const auto model = asperity::make_case_model(c, o.model);
-  std::vector<fit::FitData> data;
-  for (const auto& f : o.data) data.push_back(io::read_fit_data(f));
   fit::FitOptions opt;
   opt.free = o.free;
   for (const auto& name : o.observe) opt.observe.push_back(fit::parse_observable(name));
+  // Each file is bounded (io::kMaxTableFileBytes), their number is not: the data's memory against the
+  // budget, file by file, before the next is read.
+  const io::ResourceBudget budget = io::resource_budget();
+  std::vector<fit::FitData> data;
+  for (const auto& f : o.data) {
+    data.push_back(io::read_fit_data(f));
+    const double bytes = fit::fit_memory_bytes(data, opt.observe);
+    if (bytes > budget.bytes)
+      throw io::InputError(
+          f, 0, "--data", "",
+          fmt::format("with this file the fit would hold about {} ({} data files so far; {:g} bytes a row and {:g} an "
+                      "observation, measured), more than the memory budget of {} ({}): fit fewer or shorter data "
+                      "files, or fewer columns (--observe), or raise the budget",
+                      io::format_bytes(bytes), data.size(), fit::kFitBytesPerRow, fit::kFitBytesPerObservation,
+                      io::format_bytes(budget.bytes), io::kMemoryBudgetVariable));
+  }
   opt.observe_weight = o.weights;
   if (!opt.observe_weight.empty() && opt.observe_weight.size() != opt.observe.size())
     throw std::invalid_argument("--weight needs one weight per --observe column");

@@ -13,6 +13,7 @@
 #include "io/case_file.hpp"
 #include "io/column_table.hpp"
 #include "io/table_writer.hpp"
+#include "io/units.hpp"
 
 #include <fmt/format.h>
 
@@ -64,7 +65,23 @@ std::vector<Knob> knobs_of(const Case& c) {
   if (c.contact.deterministic()) {
     // The boundary elements' resolution and reach, and the positions (statistical knobs are moot).
     out.push_back(ladder("positions", "contact.positions"));
-    out.push_back(ladder("element_size", "contact.element_size"));
+    // Elements not finer than the flanks' profile spacing (the case's own rule): the ladder's settings
+    // that respect it, and the spacing itself as the finest (the reference) when it falls between them.
+    Knob elements = ladder("element_size", "contact.element_size");
+    if (const double finest = runs::finest_element_size(c); finest > 0.0) {
+      std::erase_if(elements.settings, [&](const Setting& s) {
+        return io::parse_quantity(s.label, io::Dimension::length) < finest * (1.0 - 1e-9);
+      });
+      const bool on_ladder =
+          !elements.settings.empty() &&
+          io::parse_quantity(elements.settings.back().label, io::Dimension::length) <= finest * (1.0 + 1e-9);
+      if (!on_ladder) {
+        // Written to 1e-6 um, rounded up: the setting is never finer than the spacing.
+        const std::string v = fmt::format("{:.12g} um", std::ceil(finest * 1e12 * (1.0 - 1e-12)) * 1e-6);
+        elements.settings.push_back({v, {{"contact.element_size", v}}});
+      }
+    }
+    out.push_back(elements);
     out.push_back(ladder("strip_halfwidths", "contact.strip_halfwidths"));
     return out;
   }

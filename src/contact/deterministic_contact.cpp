@@ -247,7 +247,17 @@ MeshPass mesh_pass(const FlankTrack& pinion, const FlankTrack& wheel, const std:
       for (int i = next++; i < n && !failed; i = next++) {
         const auto ui = static_cast<std::size_t>(i);
         const bool keep_i = ui < keep.size() && keep[ui];
-        DeterministicStrip st = solver.solve(pinion, wheel, positions[ui], true);
+        DeterministicStrip st;
+        try {
+          st = solver.solve(pinion, wheel, positions[ui], true);
+        } catch (const std::runtime_error& e) {
+          // Where, and the key that changes what the solves must resolve: their tolerance is relative to
+          // the gap's relief across the strip (its parabola grows with the strip's length squared).
+          throw std::runtime_error(fmt::format(
+              "at position {} of {} (s = {:.6g} mm, line load {:.6g} N/m): {}; a shorter strip "
+              "(contact.strip_halfwidths) or coarser elements (contact.element_size) ask less of the solves",
+              i + 1, n, positions[ui].path * 1e3, positions[ui].line_load, e.what()));
+        }
         int jlo = g.size, jhi = -1;
         for (int j = 0; j < g.size; ++j)
           if (st.plastic[static_cast<std::size_t>(j)] > 0.0) jlo = std::min(jlo, j), jhi = j;
@@ -255,10 +265,8 @@ MeshPass mesh_pass(const FlankTrack& pinion, const FlankTrack& wheel, const std:
           if (share1 > 0.0) lay(pinion, positions[ui].sigma_pinion, -1, st.plastic, jlo, jhi, share1, d1);
           if (share2 > 0.0) lay(wheel, positions[ui].sigma_wheel, +1, st.plastic, jlo, jhi, share2, d2);
         }
-        if (!keep_i) {
-          st.pressure = {};
-          st.plastic = {};
-        }
+        st.plastic = {};  // laid on the flanks: no output keeps it
+        if (!keep_i) st.pressure = {};
         out.strips[ui] = std::move(st);
         const int finished = ++done;
         if (reports && progress) progress(finished, n);

@@ -59,6 +59,7 @@ struct StripPosition {
   double hertz_half_width = 0.0;  // b [m] (the nominal width 2b of the ratios)
   double sigma_pinion = 0.0;      // arc coordinate of the contact point on the pinion's flank [m]
   double sigma_wheel = 0.0;       // ... on the wheel's [m]
+  double path = 0.0;              // the position's coordinate s along the path of contact [m] (for messages)
 };
 
 // One position's answer, per unit face width.

@@ -153,7 +153,8 @@ BemSolution HalfPlaneBem::solve_load_capped(const std::vector<double>& gap0, dou
   double lo = g_min, hi = g_min + line_load / modulus_;
   int coarse_iterations = 0;
   const std::vector<double> first = start(gap0, hi, coarse_iterations);
-  BemSolution at_hi = solve(gap0, false, hi, first.empty() ? nullptr : &first);
+  BemSolution at_lo, at_hi = solve(gap0, false, hi, first.empty() ? nullptr : &first);
+  at_lo.approach = g_min;  // the flat just touching: no load
   int total = at_hi.iterations;
   for (int doubling = 0; at_hi.line_load < line_load; ++doubling) {
     if (doubling == 200)  // the approach doubles each time: 200 doublings span any finite load
@@ -161,29 +162,55 @@ BemSolution HalfPlaneBem::solve_load_capped(const std::vector<double>& gap0, dou
           fmt::format("boundary elements: no approach carries the line load {:.6g} N/m", line_load));
     lo = hi;
     hi = g_min + 2.0 * (hi - g_min);
-    at_hi = solve(gap0, false, hi, &at_hi.pressure);
+    at_lo = std::move(at_hi);
+    at_hi = solve(gap0, false, hi, &at_lo.pressure);
     total += at_hi.iterations;
   }
-  BemSolution best = at_hi;
-  double load_lo = 0.0, load_hi = at_hi.line_load;
-  for (int k = 0; k < 200 && std::abs(best.line_load - line_load) > 1e-12 * line_load; ++k) {
+  // How exact the load can be. A displacement-controlled solve ends with its complementarity error
+  // below the tolerance of the relief: it is the exact answer for gaps changed by at most
+  // e = tolerance x relief [m]. A gap change of at most e changes the load by at most s e, s the
+  // load's slope in the approach (the rigid flat punch's load per unit approach on the contact set,
+  // the most any change of at most e can make). So approaches closer than e are not resolved (a
+  // warm-started solve may not move at all: it is already within its tolerance there): the bracket
+  // ends at that width, and the load is then within s (hi - lo + 2 e) of the target. s: the secant
+  // over the last bracket at least 16 e wide (the two solves' noise, 2 s e, at most 1/8 of its rise).
+  const double resolution = options_.tolerance * relief(gap0, hi);
+  double slope = (at_hi.line_load - at_lo.line_load) / (hi - lo);
+  bool last_high = true;  // which end the last solve moved (it starts the next)
+  for (int k = 0; k < 200; ++k) {
+    if (std::min(std::abs(at_hi.line_load - line_load), std::abs(at_lo.line_load - line_load)) <= 1e-12 * line_load ||
+        hi - lo <= resolution)
+      break;
     // Regula falsi on the load, bisection when it stalls.
-    double mid = lo + (line_load - load_lo) / (load_hi - load_lo) * (hi - lo);
+    double mid = lo + (line_load - at_lo.line_load) / (at_hi.line_load - at_lo.line_load) * (hi - lo);
     if (!(mid > lo && mid < hi) || k % 3 == 2) mid = 0.5 * (lo + hi);
-    best = solve(gap0, false, mid, &best.pressure);
-    total += best.iterations;
-    if (best.line_load < line_load) lo = mid, load_lo = best.line_load;
-    else hi = mid, load_hi = best.line_load;
-    if (hi - lo <= 1e-15 * std::max(1.0, std::abs(hi))) break;
+    BemSolution s = solve(gap0, false, mid, last_high ? &at_hi.pressure : &at_lo.pressure);
+    total += s.iterations;
+    last_high = !(s.line_load < line_load);
+    if (last_high) hi = mid, at_hi = std::move(s);
+    else lo = mid, at_lo = std::move(s);
+    if (hi - lo >= 16.0 * resolution) slope = (at_hi.line_load - at_lo.line_load) / (hi - lo);
   }
-  // The load is as exact as the solves' complementarity allows (each bracketing solve is exact to
-  // its tolerance, and the bracket's end points carry that noise): 1e-9, or 100 tolerances.
-  if (std::abs(best.line_load - line_load) > std::max(1e-9, 100.0 * options_.tolerance) * line_load)
-    throw std::runtime_error(fmt::format("boundary elements: capped load control reached {:.10g} N/m for {:.10g} N/m",
-                                         best.line_load, line_load));
+  const bool low_closer =
+      at_lo.pressure.size() == gap0.size() && line_load - at_lo.line_load < at_hi.line_load - line_load;
+  BemSolution best = low_closer ? std::move(at_lo) : std::move(at_hi);
+  // Within the solves' resolution (twice the bound above: the secant is not the local slope), or
+  // within 1e-12 where the solves resolve more.
+  const double resolved = std::max(1e-12 * line_load, 2.0 * slope * (hi - lo + 2.0 * resolution));
+  if (!(std::abs(best.line_load - line_load) <= resolved))
+    throw std::runtime_error(
+        fmt::format("boundary elements: capped load control reached {:.10g} N/m for {:.10g} N/m, farther than the "
+                    "{:.3g} N/m the solves resolve (complementarity tolerance {:.3g} of a relief of {:.4g} m)",
+                    best.line_load, line_load, resolved, options_.tolerance, relief(gap0, hi)));
   best.iterations = total;
   best.coarse_iterations = coarse_iterations;
   return best;
+}
+
+double HalfPlaneBem::relief(const std::vector<double>& g0, double approach) const {
+  const auto [g_min, g_max] = std::minmax_element(g0.begin(), g0.end());
+  const double r = *g_max - *g_min;
+  return r > 0.0 ? r : std::max(std::abs(approach - *g_min), 1e-12);
 }
 
 BemSolution HalfPlaneBem::solve_approach(const std::vector<double>& gap0, double approach) const {
@@ -388,9 +415,7 @@ BemSolution HalfPlaneBem::solve_box(const std::vector<double>& g0, double approa
   const int n = grid_.size;
   if (static_cast<int>(g0.size()) != n) throw std::invalid_argument("gap has the wrong length");
   const double cap = options_.pressure_cap;
-  const double g_min = *std::min_element(g0.begin(), g0.end()), g_max = *std::max_element(g0.begin(), g0.end());
-  double scale = g_max - g_min;
-  if (!(scale > 0.0)) scale = std::max(std::abs(approach - g_min), 1e-12);
+  const double scale = relief(g0, approach);
   const std::size_t un = static_cast<std::size_t>(n);
   std::vector<double> p(un, 0.0), g(un), d(un, 0.0), kd(un), phi(un), beta(un), z(un), p_old;
   if (initial) p = *initial;

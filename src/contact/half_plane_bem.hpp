@@ -88,6 +88,9 @@ class HalfPlaneBem {
   // (adding their iterations to coarse_iterations), else from the rigid overlap.
   std::vector<double> start(const std::vector<double>& gap0, double approach, int& coarse_iterations) const;
   std::vector<double> overlap_start(const std::vector<double>& gap0, double approach) const;
+  // The gap's range, the length the displacement-controlled complementarity error is relative to
+  // (a flat gap: the approach's depth below it) [m].
+  double relief(const std::vector<double>& gap0, double approach) const;
   // Packs a solution, or throws when the complementarity error is above the tolerance.
   BemSolution finish(std::vector<double> p, std::vector<double> u, std::vector<double> g, double approach,
                      int iterations, double error) const;

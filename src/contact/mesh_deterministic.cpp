@@ -218,6 +218,37 @@ core::KeyedError strip_overload(const ContactSettings& cs, const DeterministicOp
 
 }  // namespace
 
+double strip_solve_seconds(int elements) {
+  // Measured on the shipped case (gears/m6z30-deterministic.toml, 201 positions, one thread):
+  // 1.18 s for 1280 elements of 0.5 um (docs/reference/timings.md, cycle_deterministic/element_nm:500),
+  // 5.9 ms a position's solve with its subsurface stresses; growing as elements^1.61, the boundary
+  // elements' measured scaling (docs/reference/benchmarks.md, hertz_line_contact: the iterations grow
+  // with the elements). Within a factor of 3 from 1280 to 228526 elements (2 to 20 half-widths, 0.5 um
+  // to 28 nm; over at 5120, where the iterations are fewer: docs/reference/performance.md#budgets).
+  constexpr double kSeconds = 5.9e-3, kElements = 1280.0, kExponent = 1.61;
+  return kSeconds * std::pow(std::max(elements, 1) / kElements, kExponent);
+}
+
+DeterministicCost deterministic_cost(const FlankSpan& span, const DeterministicWork& w) {
+  // Bytes, measured with /usr/bin/time's peak RSS on the shipped case (docs/reference/performance.md#budgets):
+  // a flank profile 8 a point (its heights); a kept pressure profile 24 an element (its pressure, the
+  // strip's x and the HDF5 file's writing: 201 against 1001 profiles of 5120 elements, 45 and 142 MB); a
+  // strip solver 240 an element (the boundary elements' work vectors, their coarser grids and transforms:
+  // 11.4 MB a thread at 51200 elements); a position's series and statistics 3.3 kB (201 against 20001
+  // positions: 15 and 78 MB).
+  constexpr double kPointBytes = 8.0, kProfileBytes = 24.0, kSolverBytes = 240.0, kPositionBytes = 3.3e3;
+  DeterministicCost c;
+  for (int g = 0; g < 2; ++g) c.flank_bytes += kPointBytes * w.flank_points[g] * w.teeth[g];
+  c.profile_bytes = kProfileBytes * static_cast<double>(w.kept_profiles) * span.elements;
+  c.solver_bytes = kSolverBytes * static_cast<double>(std::max(w.threads, 1)) * span.elements;
+  c.position_bytes = kPositionBytes * span.positions;
+  // Every planned mesh of every tooth pair the order passes (hunting: z1 pairs a revolution).
+  c.solves = static_cast<double>(span.positions) * std::max(w.meshes, 1) * std::max(w.teeth[0], 1);
+  c.solve_seconds = strip_solve_seconds(span.elements);
+  c.seconds = c.solves * c.solve_seconds / std::clamp(w.cores, 1, std::max(span.positions, 1));
+  return c;
+}
+
 void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactResult& r, const FlankSource& source,
                        const std::function<void(int, int)>& progress, const OdeIntegrator* dynamics) {
   const ContactSettings& cs = c.contact;
@@ -256,6 +287,7 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
   o.plastic_overlap = c.running_in.tolerance;
   // The flanks are read over the grid's whole reach (at least 8 elements) and two elements more.
   const HalfPlaneGrid grid = strip_grid(span.strip_half_length, o);
+  span.elements = grid.size;
   const double margin = 0.5 * grid.size * grid.spacing + 2.0 * cs.element_size;
   span.positions = n;
   span.running_in = c.running_in.meshes > 0;
@@ -305,7 +337,7 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
   std::vector<StripPosition> positions;
   for (int i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    positions.push_back({load[k] * share[k], r_eq[k], b_h[k], sigma[0][k], sigma[1][k]});
+    positions.push_back({load[k] * share[k], r_eq[k], b_h[k], sigma[0][k], sigma[1][k], s_m[k]});
   }
   std::vector<bool> keep(static_cast<std::size_t>(n), cs.pressure_profiles == PressureProfiles::all);
   const auto& path = r.path;
@@ -330,7 +362,13 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
   // The meshes: one (no running-in), or until shakedown.
   const int planned = std::max(1, c.running_in.meshes);
   const int per_round = hunting ? teeth[0] : 1;
-  const int total_solves = planned * per_round * n;
+  const long long all_solves = static_cast<long long>(planned) * per_round * n;
+  if (all_solves > std::numeric_limits<int>::max())
+    throw std::invalid_argument(
+        fmt::format("running-in of {} meshes x {} tooth pairs x {} positions: more strip solves "
+                    "than a run can count ({})",
+                    planned, per_round, n, std::numeric_limits<int>::max()));
+  const int total_solves = static_cast<int>(all_solves);
   int solved = 0;
   auto pass = [&](const FlankTrack& p, const FlankTrack& w, bool first) {
     MeshPass out = mesh_pass(p, w, positions, modulus, span.strip_half_length, o, first ? keep : std::vector<bool>{},
@@ -373,12 +411,15 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
         lower(w, passes.back().plastic_wheel);
       }
     }
-    if (round == 1) first = passes.front();
-    if (!ri) break;
-    std::vector<const MeshPass*> views;
+    if (ri) {
+      std::vector<const MeshPass*> views;
+      for (const auto& q : passes) views.push_back(&q);
+      rows.push_back(history_row(round, views, all, span));
+    }
     double new_plastic = 0.0;
-    for (const auto& q : passes) views.push_back(&q), new_plastic = std::max(new_plastic, q.max_new_plastic);
-    rows.push_back(history_row(round, views, all, span));
+    for (const auto& q : passes) new_plastic = std::max(new_plastic, q.max_new_plastic);
+    if (round == 1) first = std::move(passes.front());  // its pressure profiles moved, not copied
+    if (!ri) break;
     ri->meshes = round;
     if (new_plastic <= c.running_in.tolerance) {
       ri->shakedown_mesh = round;
@@ -395,7 +436,7 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
     for (int i = 0; i < n; ++i) {
       const auto k = static_cast<std::size_t>(i);
       if (first.strips[k].pressure.empty()) continue;
-      r.pressure_profiles.push_back({i, point_name[k], s_m[k], x, first.strips[k].pressure});
+      r.pressure_profiles.push_back({i, point_name[k], s_m[k], x, std::move(first.strips[k].pressure)});
     }
   }
   if (ri) {

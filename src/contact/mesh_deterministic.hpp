@@ -26,6 +26,7 @@ struct FlankSpan {
   int positions = 0;
   bool running_in = false;
   double element_size = 0.0;  // [m]
+  int elements = 0;           // the strip's boundary elements
   // Where a generated flank lies, whatever the strip, elements and load: from a module below the
   // base circle to a module beyond the tip (so that changing a knob does not change the flank).
   double generated_first[2] = {0.0, 0.0};
@@ -41,6 +42,27 @@ struct RollingFlanks {
   std::vector<FlankTrack> pinion, wheel;
 };
 using FlankSource = std::function<RollingFlanks(const FlankSpan& span, const int teeth[2])>;
+
+// What a deterministic run will take, estimated from its sizes alone (before any flank is made or
+// strip solved), from measured per-unit costs (docs/reference/performance.md#budgets).
+struct DeterministicWork {
+  double flank_points[2] = {0.0, 0.0};  // points of one flank profile of each gear
+  int teeth[2] = {1, 1};                // flank profiles held per gear (the hunting order: every tooth's)
+  int meshes = 1;                       // meshes planned (running-in may stop earlier, at shakedown)
+  int kept_profiles = 0;                // pressure profiles kept
+  int threads = 1;                      // solving threads (each with its own strip solver)
+  int cores = 1;                        // of them, running at once
+};
+struct DeterministicCost {
+  double flank_bytes = 0.0, profile_bytes = 0.0, solver_bytes = 0.0, position_bytes = 0.0;
+  double solves = 0.0;         // strip solves, every planned mesh
+  double solve_seconds = 0.0;  // one strip solve on one core [s]
+  double seconds = 0.0;        // the whole run's wall time [s]
+  double bytes() const { return flank_bytes + profile_bytes + solver_bytes + position_bytes; }
+};
+// One strip solve's time on one core [s] for `elements` boundary elements.
+double strip_solve_seconds(int elements);
+DeterministicCost deterministic_cost(const FlankSpan& span, const DeterministicWork& work);
 
 // Fills r's contact, validity, statistical, pressure-profile and running-in parts; r.mesh holds
 // the path's kinematics and loads (run_mesh_contact's stage 1). dynamics: the integrator of a case

@@ -69,6 +69,21 @@ const ObservedColumn* FitData::column(Observable o) const {
   return nullptr;
 }
 
+double fit_memory_bytes(const std::vector<FitData>& data, const std::vector<Observable>& observe) {
+  double bytes = 0.0;
+  for (const auto& d : data) {
+    std::vector<const ObservedColumn*> columns;
+    for (const auto& c : d.columns)
+      if (observe.empty() || std::find(observe.begin(), observe.end(), c.what) != observe.end()) columns.push_back(&c);
+    for (std::size_t r = 0; r < d.delta_star.size(); ++r) {
+      double terms = 0.0;
+      for (const ObservedColumn* c : columns) terms += std::isnan(c->values[r]) ? 0.0 : 1.0;
+      if (terms > 0.0) bytes += kFitBytesPerRow + kFitBytesPerObservation * terms;
+    }
+  }
+  return bytes;
+}
+
 Loss parse_loss(std::string_view name) {
   if (name == "squared" || name == "least-squares") return Loss::squared;
   if (name == "huber") return Loss::huber;

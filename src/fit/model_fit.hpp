@@ -67,6 +67,13 @@ struct FitResult {
 FitResult fit_model(const asperity::AsperityModel& model, const asperity::ContactPair& pair,
                     const std::vector<FitData>& data, const FitOptions& options);
 
+// The memory a fit of these data holds [bytes], estimated before it starts: 480 bytes a data row with
+// an observation and 370 an observation (Ceres' residual blocks and their automatic differentiation, the
+// residuals' report), measured with /usr/bin/time's peak RSS on 83119 and 332475 rows of one and of
+// three observed columns (docs/reference/performance.md#budgets). observe: the columns fitted (empty: all).
+inline constexpr double kFitBytesPerRow = 480.0, kFitBytesPerObservation = 370.0;
+double fit_memory_bytes(const std::vector<FitData>& data, const std::vector<Observable>& observe);
+
 // The model's dimensionless value of an observable at delta* (as the fit computes it: the law
 // itself, without the switch to the fully plastic limit past its range).
 double model_observable(const asperity::AsperityModel& model, const asperity::ContactPair& pair, double delta_star,

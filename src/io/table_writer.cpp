@@ -16,7 +16,9 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <mutex>
 #include <random>
 #include <stdexcept>
@@ -148,21 +150,45 @@ void remove_temporaries_and_reraise(int signal_number) {
   ::raise(signal_number);
 }
 
-// The one place the cleanup handler is installed (once per process, at the first reservation);
-// a signal the process ignores stays ignored (SIGHUP under nohup).
-void install_cleanup_handler() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    for (int signal_number : kCleanupSignals) {
-      struct sigaction previous {};
-      ::sigaction(signal_number, nullptr, &previous);
-      if (previous.sa_handler == SIG_IGN) continue;  // e.g. SIGHUP under nohup: keep ignoring it
-      struct sigaction action {};
-      action.sa_handler = remove_temporaries_and_reraise;
-      ::sigemptyset(&action.sa_mask);
-      ::sigaction(signal_number, &action, nullptr);
-    }
-  });
+// The handler is the process's only while an output set holds temporaries, and only for the signals
+// whose disposition is the default (they would end the process anyway: the temporaries go first, then
+// the signal ends it as it would have). A host's own handler (Python's KeyboardInterrupt, a Jupyter
+// kernel's interrupt) or an ignored signal (SIGHUP under nohup) is left as it is, and each default is
+// restored when the last set is done: a library call leaves the host's signal handlers as it found them.
+std::mutex handler_mutex;
+int handler_users = 0;  // output sets holding temporaries
+bool handler_installed[std::size(kCleanupSignals)] = {};
+
+void acquire_cleanup_handler() {
+  const std::lock_guard lock(handler_mutex);
+  if (handler_users++ > 0) return;
+  for (std::size_t i = 0; i < std::size(kCleanupSignals); ++i) {
+    struct sigaction previous {};
+    ::sigaction(kCleanupSignals[i], nullptr, &previous);
+    handler_installed[i] = (previous.sa_flags & SA_SIGINFO) == 0 && previous.sa_handler == SIG_DFL;
+    if (!handler_installed[i]) continue;
+    struct sigaction action {};
+    action.sa_handler = remove_temporaries_and_reraise;
+    ::sigemptyset(&action.sa_mask);
+    ::sigaction(kCleanupSignals[i], &action, nullptr);
+  }
+}
+
+void release_cleanup_handler() {
+  const std::lock_guard lock(handler_mutex);
+  if (--handler_users > 0) return;
+  for (std::size_t i = 0; i < std::size(kCleanupSignals); ++i) {
+    if (!handler_installed[i]) continue;
+    handler_installed[i] = false;
+    struct sigaction current {};
+    ::sigaction(kCleanupSignals[i], nullptr, &current);
+    if ((current.sa_flags & SA_SIGINFO) != 0 || current.sa_handler != remove_temporaries_and_reraise)
+      continue;  // the host set its own meanwhile: keep it
+    struct sigaction restore {};
+    restore.sa_handler = SIG_DFL;
+    ::sigemptyset(&restore.sa_mask);
+    ::sigaction(kCleanupSignals[i], &restore, nullptr);
+  }
 }
 
 int claim_slot(const std::filesystem::path& temporary) {
@@ -350,6 +376,7 @@ void OutputSet::discard() {
     if (!p.temporary.empty()) std::filesystem::remove(p.temporary, ignored);
     release_slot(p.slot);
   }
+  if (!pending_.empty()) release_cleanup_handler();  // a set holds the handler while it has temporaries
   pending_.clear();
   stdout_.clear();
 }
@@ -357,7 +384,7 @@ void OutputSet::discard() {
 void OutputSet::reserve(const std::filesystem::path& target) {
   for (const auto& p : pending_)
     if (p.target == target) return;
-  install_cleanup_handler();
+  const bool first = pending_.empty();  // the set takes the signals' handler with its first temporary
   Destination d;
   try {
     d = destination_of(target);
@@ -366,10 +393,12 @@ void OutputSet::reserve(const std::filesystem::path& target) {
     throw;
   }
   const std::string name = d.path.filename().string();
+  if (first) acquire_cleanup_handler();
   int error = 0;
   const auto temporary =
       create_temporary(d.folder, d.stream ? ".geartrib-" + name + ".tmp." : "." + name + ".tmp.", error);
   if (temporary.empty()) {
+    if (first) release_cleanup_handler();  // discard() releases it only for a set with temporaries
     discard();
     throw InputError(target.string(), 0, "", "",
                      fmt::format("cannot be written: {} (folder {})", std::strerror(error), d.folder.string()));

@@ -58,8 +58,10 @@ inline constexpr std::chrono::milliseconds kFifoReaderWait{10000};
 // text for standard output. commit() syncs every file's temporary to disk (a deferred write error shows
 // here), writes the streams (standard output first), then renames the temporaries onto their
 // targets. Until then no target changes: an exception, the set's destruction or SIGINT, SIGTERM,
-// SIGHUP, SIGQUIT, SIGPIPE or SIGXFSZ (the process ends as the signal would have it; a signal the
-// process ignores stays ignored) removes the temporaries.
+// SIGHUP, SIGQUIT, SIGPIPE or SIGXFSZ (the process ends as the signal would have it) removes the
+// temporaries. That handler is installed only while a set holds temporaries and only where the
+// disposition is the default: a host's own handler (Python's KeyboardInterrupt) and an ignored
+// signal (SIGHUP under nohup) are left alone, and the defaults come back when the last set is done.
 // The same target written twice is an InputError. (SIGKILL cannot be caught: it may leave a
 // temporary, never a half-written target; a later run does not trip over it.)
 class OutputSet {

@@ -8,6 +8,7 @@
 #include "gear/mesh_dynamics.hpp"
 #include "io/case_parameters.hpp"
 #include "io/input_error.hpp"
+#include "io/resource_budget.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/kinsol_solver.hpp"
 
@@ -18,6 +19,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 namespace geartrib::runs {
 
@@ -172,6 +174,16 @@ long running_in_positions(const Case& c, const contact::FlankSpan& span, PathHal
   return n > most ? most + 1 : fewest_within(k * half_widths.largest(2), n);
 }
 
+// The spacing of the profile a flank rolls, as rolling_flanks takes it (0: none).
+double profile_spacing(const FlankSpec& flank) {
+  const TopographySpec* topo = flank.topography ? &*flank.topography : nullptr;
+  if (topo && topo->synthesis != surface::SynthesisMethod::none)
+    return flank.patch_spectrum ? flank.patch_spectrum->spacing : 0.0;
+  if (flank.measured_profile) return flank.measured_profile->spacing;
+  if (flank.profile) return flank.profile->spacing;
+  return 0.0;
+}
+
 // The deterministic fidelity's flanks: each gear's measured profile (its topography's line along
 // the involute), one synthesised from the topography's spectrum, or a generated one, checked against
 // the stretch of flank the run reads and the element size. Hunting order: a generated or synthesised
@@ -239,7 +251,7 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
       if (!flank.patch_spectrum) throw std::logic_error(gear + ": a synthesis asked for without the patch's spectrum");
       const surface::ProfileSpectrum& patch = *flank.patch_spectrum;
       const std::string t = gear + ".flank.topography.";
-      check_spacing(patch.spacing, "the profile synthesised from " + topo->file);
+      check_spacing(profile_spacing(flank), "the profile synthesised from " + topo->file);
       const bool given = topo->synthesis_length > 0.0;
       const double length = given ? topo->synthesis_length : span.generated_last[g] - span.generated_first[g];
       if (!given) check_generated_stretch("synthesised profile");
@@ -287,7 +299,7 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
       const surface::FlankProfile& p = *flank.measured_profile;
       const std::string key = gear + ".flank.topography.file";
       const std::string file = flank.topography ? flank.topography->file : std::string();
-      check_spacing(p.spacing, "the profile of " + file);
+      check_spacing(profile_spacing(flank), "the profile of " + file);
       if (p.length() < needed) {
         const auto [where, line] = location_of(c, key);
         throw io::InputError(where, line, key, file,
@@ -311,7 +323,7 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
       }
       for (int t = 0; t < teeth[g]; ++t) tracks.push_back({p, start});
     } else if (flank.profile) {
-      check_spacing(flank.profile->spacing, gear + ".flank.profile.spacing");
+      check_spacing(profile_spacing(flank), gear + ".flank.profile.spacing");
       // Generated over a fixed stretch of the involute (a module either side of base circle to
       // tip): the same flank whatever the strip, elements or load.
       check_generated_stretch("generated profile");
@@ -340,6 +352,115 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
     }
   }
   return out;
+}
+
+// The points of one flank profile of gear g as rolling_flanks will make or take it.
+double flank_points(const Case& c, const contact::FlankSpan& span, int g) {
+  const FlankSpec& flank = (g == 0 ? c.pinion : c.wheel).flank;
+  const double generated = span.generated_last[g] - span.generated_first[g];
+  const TopographySpec* topo = flank.topography ? &*flank.topography : nullptr;
+  if (topo && topo->synthesis != surface::SynthesisMethod::none && flank.patch_spectrum)
+    return (topo->synthesis_length > 0.0 ? topo->synthesis_length : generated) / flank.patch_spectrum->spacing + 1.0;
+  if (flank.measured_profile) return static_cast<double>(flank.measured_profile->z.size());
+  if (flank.profile) return generated / flank.profile->spacing + 1.0;
+  return 0.0;
+}
+
+std::string value_of(const Case& c, const std::string& key, const std::string& otherwise) {
+  const ResolvedParameter* p = recorded(c, key);
+  return p ? p->value : otherwise;
+}
+
+// A deterministic run's memory and time from its sizes (contact::deterministic_cost) against the
+// budget (io::resource_budget), before any flank is made or strip solved: refused at the key that
+// sets the largest part, with the estimate and what fits.
+void check_budget(const Case& c, const contact::FlankSpan& span, const int teeth[2]) {
+  const ContactSettings& cs = c.contact;
+  contact::DeterministicWork w;
+  for (int g = 0; g < 2; ++g) w.flank_points[g] = flank_points(c, span, g), w.teeth[g] = teeth[g];
+  w.meshes = std::max(1, c.running_in.meshes);
+  w.kept_profiles = cs.pressure_profiles == PressureProfiles::all      ? span.positions
+                    : cs.pressure_profiles == PressureProfiles::points ? std::min(5, span.positions)
+                                                                       : 0;
+  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  w.threads = std::clamp(cs.threads > 0 ? cs.threads : hardware, 1, std::max(1, span.positions));
+  w.cores = std::min(w.threads, hardware);
+  const contact::DeterministicCost cost = contact::deterministic_cost(span, w);
+  const io::ResourceBudget budget = io::resource_budget();
+  auto refuse = [&](const std::string& key, const std::string& value, const std::string& rule) {
+    const auto [file, line] = location_of(c, key);
+    throw io::InputError(file, line, key, value, rule);
+  };
+  const bool hunting = teeth[0] > 1 || teeth[1] > 1;
+  if (cost.bytes() > budget.bytes) {
+    const std::string what = fmt::format(
+        "the run would hold about {} (flanks {}: {} profiles of {:.3g} and {} of {:.3g} points; pressure profiles "
+        "{}: {} of {} elements; strip solvers {} on {} threads; per-position results {}), more than the memory "
+        "budget of {} ({})",
+        io::format_bytes(cost.bytes()), io::format_bytes(cost.flank_bytes), teeth[0], w.flank_points[0], teeth[1],
+        w.flank_points[1], io::format_bytes(cost.profile_bytes), w.kept_profiles, span.elements,
+        io::format_bytes(cost.solver_bytes), w.threads, io::format_bytes(cost.position_bytes),
+        io::format_bytes(budget.bytes), io::kMemoryBudgetVariable);
+    const double largest = std::max({cost.flank_bytes, cost.profile_bytes, cost.solver_bytes, cost.position_bytes});
+    const std::string raise = ", or raise the budget";
+    if (largest == cost.profile_bytes)
+      refuse("contact.pressure_profiles", value_of(c, "contact.pressure_profiles", "all"),
+             what +
+                 ": keep the profiles at the named points (\"points\") or none, or fewer positions "
+                 "(contact.positions)" +
+                 raise);
+    if (largest == cost.solver_bytes)
+      refuse("contact.threads", std::to_string(w.threads),
+             what + ": fewer threads, or coarser elements (contact.element_size)" + raise);
+    if (largest == cost.flank_bytes && hunting)
+      refuse("running_in.teeth", value_of(c, "running_in.teeth", "hunting"),
+             what +
+                 ": the hunting order holds every tooth's flank; run the pair (running_in.teeth = \"pair\") or "
+                 "give the flanks a coarser profile spacing" +
+                 raise);
+    if (largest == cost.flank_bytes) {  // one pair's flanks: the longer profile's own key
+      const int g = w.flank_points[1] > w.flank_points[0] ? 1 : 0;
+      const std::string gear = g == 0 ? "pinion" : "wheel";
+      const std::string key = (g == 0 ? c.pinion : c.wheel).flank.profile ? gear + ".flank.profile.spacing"
+                                                                          : gear + ".flank.topography.file";
+      refuse(key, value_of(c, key, ""), what + ": a coarser or shorter flank profile" + raise);
+    }
+    refuse("contact.positions", std::to_string(span.positions), what + ": fewer positions" + raise);
+  }
+  if (cost.seconds > budget.seconds) {
+    const std::string what = fmt::format(
+        "the run would take about {} on {} cores ({:.4g} strip solves: {} positions{}{}, each about {} on one core "
+        "for {} elements, from measured costs: docs/reference/performance.md#budgets), more than the time budget "
+        "of {} ({})",
+        io::format_duration(cost.seconds), w.cores, cost.solves, span.positions,
+        w.meshes > 1 ? fmt::format(" x {} meshes at most", w.meshes) : std::string(),
+        hunting ? fmt::format(" x {} tooth pairs of the hunting order", teeth[0]) : std::string(),
+        io::format_duration(cost.solve_seconds), span.elements, io::format_duration(budget.seconds),
+        io::kTimeBudgetVariable);
+    const std::string raise = ", or raise the budget";
+    // The key with the largest share: the meshes, the hunting order's pairs, the elements (against the
+    // shipped case's 1280) or the positions (against its 201).
+    const double meshes = w.meshes, pairs = teeth[0],
+                 elements = cost.solve_seconds / contact::strip_solve_seconds(1280), positions = span.positions / 201.0;
+    const double largest = std::max({meshes, pairs, elements, positions});
+    const double over = cost.seconds / budget.seconds;  // how many times over
+    // How many of a count fit the budget (the time is in proportion to it), or that none does.
+    auto fits_in = [&](double count, double least, const char* what_fits) {
+      const double fits = std::floor(count / over);
+      return fits >= least ? fmt::format(": at most {:.0f} {} fit it", fits, what_fits)
+                           : fmt::format(": not even {:.0f} {} fit it", least, what_fits);
+    };
+    if (largest == meshes)
+      refuse("running_in.meshes", std::to_string(c.running_in.meshes),
+             what + fits_in(w.meshes, 1, "meshes") + " (a run stops earlier at shakedown)" + raise);
+    if (largest == pairs)
+      refuse("running_in.teeth", value_of(c, "running_in.teeth", "hunting"),
+             what + ": the hunting order solves every tooth pair; run the pair (running_in.teeth = \"pair\")" + raise);
+    if (largest == elements)
+      refuse("contact.element_size", value_of(c, "contact.element_size", ""),
+             what + ": coarser elements, or a shorter strip (contact.strip_halfwidths)" + raise);
+    refuse("contact.positions", std::to_string(span.positions), what + fits_in(span.positions, 2, "positions") + raise);
+  }
 }
 
 }  // namespace
@@ -418,6 +539,10 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
       scalar("/synthesis/" + f.gear + " attribute " + name, v);
 }
 
+double finest_element_size(const Case& c) {
+  return std::max(profile_spacing(c.pinion.flank), profile_spacing(c.wheel.flank));
+}
+
 contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress) {
   const gear::GearMesh mesh(c);
   const solvers::KinsolSolver kinsol;
@@ -429,6 +554,7 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
   try {
     r = contact::run_mesh_contact(c, mesh, c.contact.coupled() ? &kinsol : nullptr, progress, 0, integrator.get(),
                                   [&](const contact::FlankSpan& span, const int teeth[2]) {
+                                    check_budget(c, span, teeth);
                                     return rolling_flanks(c, span, teeth, synthesis, half_widths);
                                   });
   } catch (const contact::RoughSurfaceOverload& e) {

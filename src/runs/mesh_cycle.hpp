@@ -23,4 +23,9 @@ void check_finite_outputs(const contact::MeshContactResult& r);
 
 contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress = {});
 
+// The finest boundary elements a deterministic case's flanks allow [m]: the coarser of its two flank
+// profiles' spacings (generated, measured or synthesised: the elements average a profile, finer ones
+// would resolve only the interpolation between its points); 0 when neither flank has a profile.
+double finest_element_size(const Case& c);
+
 }  // namespace geartrib::runs
