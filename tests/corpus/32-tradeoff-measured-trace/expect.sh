@@ -19,5 +19,5 @@ check trace-0.3um-nothing-finer 1 "" -- grep -E "^element_size,0\.(25|125) um" "
 # tradeoff takes minutes: a 5 s limit fails it if the check comes after).
 check missing-folder-first 2 "missing/t.csv: cannot be written: No such file or directory" -- timeout 5 "$bin" tradeoff ../../../gears/m6z30-deterministic.toml -q -o "$tmp/missing/t.csv"
 check missing-csv-folder-first 2 "missing/t.csv: cannot be written" -- timeout 5 "$bin" tradeoff ../../../gears/m6z30-deterministic.toml -q --csv "$tmp/missing/t.csv"
-check missing-png-folder-first 2 "missing/t.csv: cannot be written" -- timeout 5 "$bin" tradeoff ../../../gears/m6z30-deterministic.toml -q -o "$tmp/missing/t.png"
+check missing-png-folder-first 2 "missing/t.png: cannot be written" -- timeout 5 "$bin" tradeoff ../../../gears/m6z30-deterministic.toml -q -o "$tmp/missing/t.png"
 check nothing-written 1 "" -- test -e "$tmp/missing"
