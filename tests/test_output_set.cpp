@@ -297,6 +297,82 @@ TEST(OutputSet, ASymbolicLinkIsFollowed) {
   EXPECT_FALSE(fs::exists(dir.path / "real" / "missing.csv"));
 }
 
+// One file under two names (a relative and a dotted path, a link and its file) is refused before
+// any work: written twice, one output would silently replace the other.
+TEST(OutputSet, OneFileUnderTwoNamesIsRefused) {
+  ScratchFolder dir("outputset_two_names");
+  {
+    io::OutputSet set;
+    set.reserve(dir.path / "out.csv");
+    EXPECT_THROW(set.reserve(dir.path / "." / "out.csv"), io::InputError);
+  }
+  std::ofstream(dir.path / "real.csv") << "old\n";
+  fs::create_symlink("real.csv", dir.path / "link.csv");
+  {
+    io::OutputSet set;
+    set.reserve(dir.path / "link.csv");
+    try {
+      set.reserve(dir.path / "real.csv");
+      FAIL() << "a link and its file are one output";
+    } catch (const io::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("is the same file as the output"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(content(dir.path / "real.csv"), "old\n");
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"link.csv", "real.csv"}));  // no temporary left
+  io::OutputSet streams;  // a character device is a stream two outputs may share
+  streams.reserve("/dev/null");
+  EXPECT_NO_THROW(streams.reserve("/dev/./null"));
+}
+
+// `-o /dev/stdout` (or /dev/fd/1) with standard output redirected to a file: appended to through
+// the descriptor, after what the file held, never a new file renamed over it (a job's log).
+TEST(OutputSet, StandardOutputAsATargetIsAppendedToNotReplaced) {
+  ScratchFolder dir("outputset_stdout_target");
+  const fs::path log = dir.path / "log.txt";
+  std::ofstream(log) << "before\n";
+  EXPECT_EXIT(
+      {
+        const int fd = ::open(log.c_str(), O_WRONLY | O_APPEND);
+        if (fd < 0 || ::dup2(fd, 1) < 0) std::_Exit(90);
+        try {
+          io::OutputSet set;
+          set.add_stdout("text\n");
+          set.add_text("/dev/stdout", "table\n");
+          set.commit();
+        } catch (...) {
+          std::_Exit(4);
+        }
+        std::_Exit(3);
+      },
+      testing::ExitedWithCode(3), "");
+  EXPECT_EQ(content(log), "before\ntext\ntable\n");
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"log.txt"}));
+}
+
+// A temporary's name already taken (a stale one, another writer's) is passed over; a folder whose
+// every name is taken is an error, not a loop. The names are random, so the suffix is injected.
+TEST(OutputSet, ATakenTemporaryNameIsPassedOver) {
+  ScratchFolder dir("outputset_taken");
+  std::ofstream(dir.path / ".a.csv.tmp.stale") << "stale\n";
+  int calls = 0, error = 0, slot = -1;
+  const auto got = io::detail::create_temporary(
+      dir.path, ".a.csv.tmp.", error, slot, [&] { return ++calls == 1 ? std::string("stale") : std::string("new"); });
+  EXPECT_EQ(got, dir.path / ".a.csv.tmp.new");
+  EXPECT_EQ(calls, 2);
+  EXPECT_EQ(content(dir.path / ".a.csv.tmp.stale"), "stale\n");  // the other's file untouched
+  fs::remove(got);
+  calls = 0;
+  const auto none = io::detail::create_temporary(dir.path, ".a.csv.tmp.", error, slot, [&] {
+    ++calls;
+    return std::string("stale");
+  });
+  EXPECT_TRUE(none.empty());
+  EXPECT_EQ(error, EEXIST);
+  EXPECT_EQ(calls, 100);  // the tries' bound
+  EXPECT_EQ(slot, -1);    // no slot held for a name never created
+}
+
 // Standard output, flushed and checked: a full device is an exception (exit 1), not a table cut
 // short with exit 0.
 TEST(OutputSet, AStandardOutputWriteErrorIsAnException) {

@@ -66,8 +66,9 @@ TEST(SweepPlan, ShardsPartitionThePoints) {
     for (int o : owners) EXPECT_EQ(o, 1) << n;
   }
   for (const char* bad : {"2/2", "1", "a/3", "0/0", "-1/2", "1/2x", "+1/2", " 1/2", "1/ 2", "4000000000000/3",
-                          "0/99999999999999999999999"})
+                          "0/99999999999999999999999", "0/100001"})  // n past kMaxSweepPoints: --merge would refuse it
     EXPECT_THROW(io::parse_shard(bad), std::invalid_argument) << bad;
+  EXPECT_EQ(io::parse_shard("99999/100000").count, 100000u);  // the largest sweep's last point alone
   EXPECT_EQ(io::whole_number("100000"), 100000u);
   for (const char* bad : {"", "+4", "-0", "4 ", "1e3", "0x10", "99999999999999999999999"})
     EXPECT_FALSE(io::whole_number(bad)) << bad;

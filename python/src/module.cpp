@@ -278,8 +278,8 @@ void require_in(const std::string& argument, double v, double lo, double hi, con
 constexpr double kMinPlaneStrainModulus = kMinYoungsModulus / 2.0;   // [Pa]
 constexpr double kMaxPlaneStrainModulus = kMaxYoungsModulus / 0.75;  // [Pa]
 const std::string kModulusRule =
-    "a plane-strain modulus of materials within the material files' Young's modulus "
-    "range [1e6, 1e13] Pa";
+    fmt::format("a plane-strain modulus of materials within the material files' Young's modulus range [{:g}, {:g}] Pa",
+                kMinYoungsModulus, kMaxYoungsModulus);
 // A returned number that is not finite is a model that left its range unnoticed: RuntimeError
 // naming the output and the element (the command line's check, runs::check_finite_outputs).
 void require_finite(const std::string& output, const std::vector<double>& values) {
@@ -298,18 +298,10 @@ surface::HeightGrid grid_from(const HeightArray& z, double dx, double dy) {
   surface::HeightGrid g =
       surface::make_grid(static_cast<int>(z.shape(1)), static_cast<int>(z.shape(0)), dx, dy > 0 ? dy : dx);
   const std::span<const double> heights(z.data(), g.size());
-  for (std::size_t k = 0; k < heights.size(); ++k) {
-    if (std::isinf(heights[k])) throw std::invalid_argument("heights must be finite (NaN marks a missing point)");
-    if (!std::isnan(heights[k]) && !(std::abs(heights[k]) <= surface::kMaxHeight))
-      throw std::invalid_argument(
-          fmt::format("z[{}, {}] = {:g} m: heights must lie within +-{:g} m (the topography "
-                      "readers' limit)",
-                      k / g.nx, k % g.nx, heights[k], surface::kMaxHeight));
-  }
+  for (double h : heights)
+    if (std::isinf(h)) throw std::invalid_argument("heights must be finite (NaN marks a missing point)");
   surface::set_heights(g, heights);
-  if (g.size() - g.missing() < 9)  // as every topography reader (io::check_valid_points)
-    throw std::invalid_argument(
-        fmt::format("z has {} valid (not NaN) heights of {}; at least 9 are needed", g.size() - g.missing(), g.size()));
+  if (const std::string rule = surface::height_rule(g); !rule.empty()) throw std::invalid_argument(rule);
   return g;
 }
 

@@ -147,6 +147,15 @@ void print_constants(const asperity::AsperityModel& m) {
              r.fitted_delta_star_max, r.contact_radius_over_radius_max, r.past_range);
 }
 
+// The model's difference from a reference value [%]: 100 (model - reference)/reference; where the
+// reference is 0, the symmetric 200 (model - reference)/(|model| + |reference|) (+-200 % for a
+// nonzero model, 0 for both 0), so that a zero in the table gives a number, never inf or NaN.
+double percent_difference(double model, double reference) {
+  if (reference != 0.0) return 100.0 * (model - reference) / reference;
+  const double scale = std::abs(model) + std::abs(reference);
+  return scale > 0.0 ? 200.0 * (model - reference) / scale : 0.0;
+}
+
 void run_compare(const Options& o, const asperity::AsperityModel& m, const asperity::ContactPair& p,
                  io::OutputSet& outputs) {
   const io::ReferenceTable ref =
@@ -173,7 +182,7 @@ void run_compare(const Options& o, const asperity::AsperityModel& m, const asper
       const double model_value = asperity_column(col.quantity).get(s);
       row.push_back(col.values[r] / factor);
       row.push_back(model_value / factor);
-      row.push_back(100.0 * (model_value - col.values[r]) / col.values[r]);
+      row.push_back(percent_difference(model_value, col.values[r]));
     }
     t.rows.push_back(std::move(row));
   }

@@ -194,14 +194,19 @@ BemSolution HalfPlaneBem::solve_load_capped(const std::vector<double>& gap0, dou
   const bool low_closer =
       at_lo.pressure.size() == gap0.size() && line_load - at_lo.line_load < at_hi.line_load - line_load;
   BemSolution best = low_closer ? std::move(at_lo) : std::move(at_hi);
-  // Within the solves' resolution (twice the bound above: the secant is not the local slope), or
-  // within 1e-12 where the solves resolve more.
-  const double resolved = std::max(1e-12 * line_load, 2.0 * slope * (hi - lo + 2.0 * resolution));
-  if (!(std::abs(best.line_load - line_load) <= resolved))
-    throw std::runtime_error(
-        fmt::format("boundary elements: capped load control reached {:.10g} N/m for {:.10g} N/m, farther than the "
-                    "{:.3g} N/m the solves resolve (complementarity tolerance {:.3g} of a relief of {:.4g} m)",
-                    best.line_load, line_load, resolved, options_.tolerance, relief(gap0, hi)));
+  // The bracket must have closed to the resolution (or the load met within 1e-12); the load is
+  // then within s (hi - lo + 2 e) <= 3 s e, accepted within twice that (the secant is not the
+  // local slope), or within 1e-12 where the solves resolve more. The bound is the resolution's,
+  // not the final bracket's: a bracket that never closed is a failure, never passed by its width.
+  const bool closed = hi - lo <= resolution || std::min(std::abs(at_hi.line_load - line_load),
+                                                        std::abs(at_lo.line_load - line_load)) <= 1e-12 * line_load;
+  const double resolved = std::max(1e-12 * line_load, 6.0 * slope * resolution);
+  if (!closed || !(std::abs(best.line_load - line_load) <= resolved))
+    throw std::runtime_error(fmt::format(
+        "boundary elements: capped load control reached {:.10g} N/m for {:.10g} N/m, farther than the {:.3g} N/m the "
+        "solves resolve (complementarity tolerance {:.3g} of a relief of {:.4g} m; the approach's bracket {:.3g} m "
+        "wide, the resolution {:.3g} m)",
+        best.line_load, line_load, resolved, options_.tolerance, relief(gap0, hi), hi - lo, resolution));
   best.iterations = total;
   best.coarse_iterations = coarse_iterations;
   return best;

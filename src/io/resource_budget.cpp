@@ -2,11 +2,11 @@
 
 #include "io/input_error.hpp"
 #include "io/text_lines.hpp"
+#include "io/units.hpp"
 
 #include <fmt/format.h>
 
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <string_view>
@@ -36,14 +36,13 @@ double parse(const std::string& text, const char* variable, const std::array<Uni
   std::string names;
   for (const auto& [name, factor] : units) names += (names.empty() ? "" : ", ") + std::string(name);
   const std::string t = trim(text);
-  double number = 0.0;
-  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), number);
+  const NumberAndUnit n = split_number(t);  // the case files' number grammar
   auto refuse = [&](const std::string& rule) { throw InputError("environment", 0, variable, text, rule); };
-  if (ec != std::errc{} || end == t.data()) refuse(fmt::format("expected a number and a unit ({})", names));
-  const std::string unit = trim(std::string(end, t.data() + t.size()));
+  if (n.status != NumberAndUnit::ok) refuse(fmt::format("expected a number and a unit ({})", names));
+  const std::string_view unit = n.unit;
   for (const auto& [name, factor] : units) {
     if (unit != name) continue;
-    const double value = number * factor;
+    const double value = n.value * factor;
     if (!(std::isfinite(value) && value >= lo && value <= hi)) refuse("must lie in " + range);
     return value;
   }

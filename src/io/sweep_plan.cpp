@@ -206,13 +206,14 @@ std::optional<Shard> shard_from_text(std::string_view text) {
   const auto slash = text.find('/');
   if (slash == std::string_view::npos) return std::nullopt;
   const auto index = whole_number(text.substr(0, slash)), count = whole_number(text.substr(slash + 1));
-  if (!index || !count || *index >= *count) return std::nullopt;
+  if (!index || !count || *index >= *count || *count > kMaxSweepPoints) return std::nullopt;  // --merge's rule too
   return Shard{*index, *count};
 }
 
 Shard parse_shard(const std::string& text) {
   if (const auto s = shard_from_text(text)) return *s;
-  throw std::invalid_argument("--shard '" + text + "': expected i/n with 0 <= i < n (e.g. 0/4 .. 3/4)");
+  throw std::invalid_argument("--shard '" + text + "': expected i/n with 0 <= i < n <= " +
+                              std::to_string(kMaxSweepPoints) + " (e.g. 0/4 .. 3/4)");
 }
 
 std::optional<SiValue> si_quantity(const std::string& text) {

@@ -91,10 +91,6 @@ void write_stdout(std::string_view text) {
 
 }  // namespace
 
-namespace {
-
-// Every byte of [data, data + size) to `fd`, resuming after a signal or a short write; false with
-// errno set on an error.
 bool write_all(int fd, const char* data, std::size_t size) {
   while (size > 0) {
     const ssize_t n = ::write(fd, data, size);
@@ -107,6 +103,8 @@ bool write_all(int fd, const char* data, std::size_t size) {
   }
   return true;
 }
+
+namespace {
 
 [[noreturn]] void fail_write(const std::filesystem::path& file, int error) {
   throw std::runtime_error(fmt::format("cannot write {}: {}", file.string(), std::strerror(error)));
@@ -231,29 +229,54 @@ std::string random_suffix() {
   return s;
 }
 
-// A new empty file `folder/<prefix><random>`, created exclusively with the mode any new file gets
-// (0666 less the umask); a name already taken (a stale temporary, another writer's) is passed over.
-// Empty with `error` set when the folder cannot take it.
-std::filesystem::path create_temporary(const std::filesystem::path& folder, const std::string& prefix, int& error) {
+}  // namespace
+
+namespace detail {
+
+// A new empty file `folder/<prefix><suffix()>`, created exclusively with the mode any new file
+// gets (0666 less the umask); a name already taken (a stale temporary, another writer's) is passed
+// over. The name is in the signal handler's list (`slot`) before the file exists, so that a signal
+// never leaves it. Empty with `error` set when the folder cannot take it.
+std::filesystem::path create_temporary(const std::filesystem::path& folder, const std::string& prefix, int& error,
+                                       int& slot, const std::function<std::string()>& suffix) {
   for (int attempt = 0; attempt < 100; ++attempt) {
-    std::filesystem::path candidate = folder / (prefix + random_suffix());
+    std::filesystem::path candidate = folder / (prefix + suffix());
+    slot = claim_slot(candidate);
     const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {
       ::close(fd);
       return candidate;
     }
     error = errno;
+    release_slot(slot);
+    slot = -1;
     if (error != EEXIST) return {};
   }
   return {};
 }
+
+}  // namespace detail
+
+namespace {
 
 // Where a target's content goes, decided by what the target is (see OutputSet in the header).
 struct Destination {
   std::filesystem::path path;    // the file to replace or the stream to write
   std::filesystem::path folder;  // where the temporary goes
   bool stream = false;
+  int descriptor = -1;  // 1 or 2: the target is the process's standard output or error (written through it)
 };
+
+// The descriptor (1, standard output; 2, standard error) whose file `st` is, or -1: `-o /dev/stdout`
+// with standard output redirected to a file is that file, which must be appended to through the
+// descriptor, never replaced (a log the job appends to) nor reopened at its start.
+int standard_descriptor_of(const struct stat& st) {
+  for (int fd : {1, 2}) {
+    struct stat s {};
+    if (::fstat(fd, &s) == 0 && s.st_dev == st.st_dev && s.st_ino == st.st_ino) return fd;
+  }
+  return -1;
+}
 
 [[noreturn]] void refuse_target(const std::filesystem::path& target, const std::string& rule) {
   throw InputError(target.string(), 0, "", "", rule);
@@ -277,6 +300,12 @@ Destination destination_of(const std::filesystem::path& target) {
       refuse_target(target, fmt::format("a symbolic link to {}, which does not exist: give the file to write itself",
                                         to.string()));
     refuse_target(target, fmt::format("cannot be written: {}", std::strerror(error)));
+  }
+  if (const int fd = standard_descriptor_of(st); fd >= 0) {
+    std::error_code ec;
+    const auto folder = std::filesystem::temp_directory_path(ec);
+    if (ec) refuse_target(target, fmt::format("a stream needs a temporary folder: {}", ec.message()));
+    return {target, folder, true, fd};
   }
   if (S_ISREG(st.st_mode)) {
     if (!S_ISLNK(link.st_mode)) return {target, parent(target), false};
@@ -322,11 +351,12 @@ int open_stream(const std::filesystem::path& to, std::chrono::milliseconds wait)
 }
 
 // The complete temporary `from` to the stream `to` (a character device or a FIFO).
-void copy_to_stream(const std::filesystem::path& from, const std::filesystem::path& to,
+// With `descriptor` 1 or 2, through that descriptor (standard output or error) instead.
+void copy_to_stream(const std::filesystem::path& from, const std::filesystem::path& to, int descriptor,
                     std::chrono::milliseconds wait) {
   const int in = ::open(from.c_str(), O_RDONLY | O_CLOEXEC);
   if (in < 0) fail_write(from, errno);
-  const int out = open_stream(to, wait);
+  const int out = descriptor >= 0 ? ::fcntl(descriptor, F_DUPFD_CLOEXEC, 3) : open_stream(to, wait);
   if (out < 0) {
     const int error = errno;
     ::close(in);
@@ -338,7 +368,7 @@ void copy_to_stream(const std::filesystem::path& from, const std::filesystem::pa
   struct stat st {};
   int error = 0;
   if (::fstat(out, &st) != 0) error = errno;
-  else if (!S_ISCHR(st.st_mode) && !S_ISFIFO(st.st_mode)) error = EEXIST;  // replaced since it was reserved
+  else if (descriptor < 0 && !S_ISCHR(st.st_mode) && !S_ISFIFO(st.st_mode)) error = EEXIST;  // replaced since reserved
   std::vector<char> buffer(std::size_t{1} << 20);
   while (error == 0) {
     const ssize_t n = ::read(in, buffer.data(), buffer.size());
@@ -350,6 +380,21 @@ void copy_to_stream(const std::filesystem::path& from, const std::filesystem::pa
   ::close(in);
   if (::close(out) != 0 && error == 0) error = errno;
   if (error != 0) fail_write(to, error);
+}
+
+// Whether two destinations are one file: the same standard descriptor, the same existing file
+// (device and inode), or the same path once made absolute and normal. Character devices are
+// streams that two outputs may share (/dev/null twice).
+bool same_file(const std::filesystem::path& a, int a_descriptor, const std::filesystem::path& b, int b_descriptor) {
+  if (a_descriptor >= 0 || b_descriptor >= 0) return a_descriptor == b_descriptor;
+  struct stat sa {
+  }, sb{};
+  if (::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0)
+    return !S_ISCHR(sa.st_mode) && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+  std::error_code ea, eb;
+  const auto ca = std::filesystem::weakly_canonical(std::filesystem::absolute(a), ea);
+  const auto cb = std::filesystem::weakly_canonical(std::filesystem::absolute(b), eb);
+  return !ea && !eb && ca == cb;
 }
 
 // The temporary's data on the disk: a write error the kernel deferred (NFS, a quota) shows here.
@@ -388,22 +433,28 @@ void OutputSet::reserve(const std::filesystem::path& target) {
   Destination d;
   try {
     d = destination_of(target);
+    // One file under two names (out.csv and ./out.csv, a link and its file): one would be lost.
+    for (const auto& p : pending_)
+      if (same_file(p.destination, p.descriptor, d.path, d.descriptor))
+        refuse_target(target,
+                      fmt::format("is the same file as the output {}: give each output once", p.target.string()));
+    pending_.reserve(pending_.size() + 1);  // the push below cannot throw once the temporary exists
   } catch (...) {
     discard();
     throw;
   }
   const std::string name = d.path.filename().string();
   if (first) acquire_cleanup_handler();
-  int error = 0;
-  const auto temporary =
-      create_temporary(d.folder, d.stream ? ".geartrib-" + name + ".tmp." : "." + name + ".tmp.", error);
+  int error = 0, slot = -1;
+  const auto temporary = detail::create_temporary(
+      d.folder, d.stream ? ".geartrib-" + name + ".tmp." : "." + name + ".tmp.", error, slot, random_suffix);
   if (temporary.empty()) {
     if (first) release_cleanup_handler();  // discard() releases it only for a set with temporaries
     discard();
     throw InputError(target.string(), 0, "", "",
                      fmt::format("cannot be written: {} (folder {})", std::strerror(error), d.folder.string()));
   }
-  pending_.push_back({temporary, target, d.path, d.stream, claim_slot(temporary), false});
+  pending_.push_back({temporary, target, d.path, d.stream, d.descriptor, slot, false});
 }
 
 std::filesystem::path OutputSet::add(const std::filesystem::path& target,
@@ -449,7 +500,7 @@ void OutputSet::commit() {
       if (!p.stream) sync_to_disk(p.temporary);
     for (const auto& text : stdout_) write_stdout(text);
     for (const auto& p : pending_)
-      if (p.stream) copy_to_stream(p.temporary, p.destination, fifo_reader_wait_);
+      if (p.stream) copy_to_stream(p.temporary, p.destination, p.descriptor, fifo_reader_wait_);
     for (auto& p : pending_) {
       if (p.stream) continue;
       if (::rename(p.temporary.c_str(), p.destination.c_str()) != 0)

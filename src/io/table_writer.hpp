@@ -2,6 +2,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -33,9 +34,21 @@ std::string format_text(const Table& t);
 // is written and checked at the commit.
 void flush_stdout();
 
+// Every byte of [data, data + size) to the descriptor `fd`, resuming after a signal or a short
+// write; false with errno set on an error.
+bool write_all(int fd, const char* data, std::size_t size);
+
 // Writes `bytes` to `file` (created, or emptied first), each write checked, the file closed and
 // checked: a std::runtime_error naming the file and the system's reason (EFBIG, ENOSPC, EIO).
 void write_bytes(const std::filesystem::path& file, std::string_view bytes);
+
+namespace detail {
+// OutputSet's temporary `folder/<prefix><suffix()>`, created exclusively (a taken name is passed
+// over, up to 100 tries) and put in the signal handler's list (`slot`, -1 when it had no room)
+// before it exists; empty with `error` set when the folder cannot take it. Exposed for its test.
+std::filesystem::path create_temporary(const std::filesystem::path& folder, const std::string& prefix, int& error,
+                                       int& slot, const std::function<std::string()>& suffix);
+}  // namespace detail
 
 // How long a FIFO target's reader is waited for at the commit (then the commit fails: exit 1).
 inline constexpr std::chrono::milliseconds kFifoReaderWait{10000};
@@ -51,8 +64,15 @@ inline constexpr std::chrono::milliseconds kFifoReaderWait{10000};
 //     nothing is refused;
 //   - a character device or a FIFO (/dev/null, /dev/stdout on a pipe, a named pipe) is written
 //     as a stream at commit, from a complete temporary in the temporary folder ($TMPDIR): never
-//     replaced by a file. A FIFO's reader is waited for kFifoReaderWait at most (then exit 1, no
-//     hang). A stream cannot be taken back: it may hold part of the output when the write fails;
+//     replaced by a file. A FIFO's reader is waited for kFifoReaderWait at most (then exit 1: a
+//     FIFO nobody opens does not hang the command; one whose reader stops reading blocks the
+//     write, as any pipe does). A stream cannot be taken back: it may hold part of the output when
+//     the write fails;
+//   - the file standard output or error is (/dev/stdout, /dev/fd/1, or the file either is
+//     redirected to) is written through that descriptor, appended after standard output's own
+//     text: a log the job appends to is never replaced;
+//   - one file under two names (out.csv and ./out.csv, a link and its file) is refused, as is the
+//     same target given twice;
 //   - a folder, a block device or a socket is refused; so is a missing or read-only folder.
 // add() writes a target's content at once (`write` gets the temporary's path); add_stdout() keeps
 // text for standard output. commit() syncs every file's temporary to disk (a deferred write error shows
@@ -62,7 +82,7 @@ inline constexpr std::chrono::milliseconds kFifoReaderWait{10000};
 // temporaries. That handler is installed only while a set holds temporaries and only where the
 // disposition is the default: a host's own handler (Python's KeyboardInterrupt) and an ignored
 // signal (SIGHUP under nohup) are left alone, and the defaults come back when the last set is done.
-// The same target written twice is an InputError. (SIGKILL cannot be caught: it may leave a
+// (SIGKILL cannot be caught: it may leave a
 // temporary, never a half-written target; a later run does not trip over it.)
 class OutputSet {
  public:
@@ -84,6 +104,7 @@ class OutputSet {
     std::filesystem::path temporary, target;
     std::filesystem::path destination;  // what commit() renames onto or streams to
     bool stream;                        // a character device or FIFO: written, not replaced
+    int descriptor;                     // 1 or 2: standard output or error, written through it
     int slot;                           // in the signal handler's list, -1 when it had no room
     bool written;
   };

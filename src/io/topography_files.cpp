@@ -142,10 +142,10 @@ void check_grid_height(const std::string& file, int line, const std::string& key
                      fmt::format("height {:g} m beyond +-{:g} m{}{}", z, kMaxHeight, hint.empty() ? "" : "; ", hint));
 }
 void check_valid_points(const surface::HeightGrid& g, const std::string& file, int line) {
-  if (g.size() - g.missing() < 9)
-    throw InputError(
-        file, line, "", "",
-        fmt::format("too few valid points ({} of {}; at least 9 are needed)", g.size() - g.missing(), g.size()));
+  if (g.size() - g.missing() < surface::kMinValidPoints)
+    throw InputError(file, line, "", "",
+                     fmt::format("too few valid points ({} of {}; at least {} are needed)", g.size() - g.missing(),
+                                 g.size(), surface::kMinValidPoints));
 }
 
 namespace {
@@ -515,16 +515,9 @@ void write_topography(const std::filesystem::path& file, const surface::HeightGr
 
 void add_topography(OutputSet& outputs, const std::filesystem::path& file, const surface::HeightGrid& g, double unit) {
   g.validate();
-  // Nothing the readers would refuse: heights within +-kMaxHeight, at least 9 valid points.
-  for (std::size_t k = 0; k < g.size(); ++k)
-    if (g.valid[k] && !(std::abs(g.z[k]) <= kMaxHeight))
-      throw std::invalid_argument(fmt::format(
-          "{}: height z[{}][{}] = {:g} m beyond +-{:g} m: no reader would take "
-          "the file back",
-          file.string(), k / static_cast<std::size_t>(g.nx), k % static_cast<std::size_t>(g.nx), g.z[k], kMaxHeight));
-  if (g.size() - g.missing() < 9)
-    throw std::invalid_argument(fmt::format("{}: {} valid points of {}; the readers need at least 9", file.string(),
-                                            g.size() - g.missing(), g.size()));
+  // Nothing the readers would refuse.
+  if (const std::string rule = surface::height_rule(g); !rule.empty())
+    throw std::invalid_argument(fmt::format("{}: {}: no reader would take the file back", file.string(), rule));
   const TopographyFormat format = topography_format(file);
   if (format == TopographyFormat::x3p) {
     outputs.add(file, [&](const std::filesystem::path& tmp) { write_x3p_archive(tmp, g); });  // in metres

@@ -88,15 +88,8 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-// The number at the start of `t` and the unit text after it. The number is read whole: an
-// exponent belongs to it ("5e-1 mm" is 0.5 mm) and is never taken for a unit, so a number that
-// ends in a broken exponent ("2e", "2e mm", "2e+") or runs on into digits, points or another
-// exponent ("1.5.3", "2e3e4") is malformed, not a number followed by a unit.
-struct NumberAndUnit {
-  enum Status { ok, malformed, out_of_range } status = malformed;
-  double value = 0.0;
-  std::string_view unit;
-};
+}  // namespace
+
 NumberAndUnit split_number(std::string_view t) {
   NumberAndUnit out;
   const char* const first = t.data();
@@ -111,8 +104,6 @@ NumberAndUnit split_number(std::string_view t) {
   out.unit = trim(std::string_view(end, static_cast<std::size_t>(last - end)));
   return out;
 }
-
-}  // namespace
 
 std::string_view dimension_name(Dimension d) {
   switch (d) {

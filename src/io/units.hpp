@@ -65,4 +65,15 @@ std::optional<AnyQuantity> parse_any_quantity(std::string_view text);
 // The SI unit of a dimension as written in output files ("m", "Pa", "rad/s", "1").
 std::string_view si_symbol(Dimension d);
 
+// The number at the start of `t` and the unit text after it. The number is read whole: an
+// exponent belongs to it ("5e-1 mm" is 0.5 mm) and is never taken for a unit, so a number that
+// ends in a broken exponent ("2e", "2e mm", "2e+") or runs on into digits, points or another
+// exponent ("1.5.3", "2e3e4") is malformed, not a number followed by a unit.
+struct NumberAndUnit {
+  enum Status { ok, malformed, out_of_range } status = malformed;
+  double value = 0.0;
+  std::string_view unit;
+};
+NumberAndUnit split_number(std::string_view t);  // t trimmed; the unit trimmed
+
 }  // namespace geartrib::io

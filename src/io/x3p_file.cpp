@@ -615,15 +615,7 @@ class ZipSink {
         fd_ = ::open(path_.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
         return fd_ < 0 ? fail(ZIP_ER_OPEN, errno) : 0;
       case ZIP_SOURCE_WRITE: {
-        const auto* p = static_cast<const char*>(data);
-        zip_uint64_t left = length;
-        while (left > 0) {
-          const ssize_t n = ::write(fd_, p, left);
-          if (n < 0 && errno == EINTR) continue;
-          if (n < 0) return fail(ZIP_ER_WRITE, errno);
-          p += n;
-          left -= static_cast<zip_uint64_t>(n);
-        }
+        if (!write_all(fd_, static_cast<const char*>(data), length)) return fail(ZIP_ER_WRITE, errno);
         return static_cast<zip_int64_t>(length);
       }
       case ZIP_SOURCE_SEEK_WRITE: {

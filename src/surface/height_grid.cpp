@@ -32,6 +32,17 @@ void set_heights(HeightGrid& g, std::span<const double> z) {
   }
 }
 
+std::string height_rule(const HeightGrid& g) {
+  for (std::size_t k = 0; k < g.size(); ++k)
+    if (g.valid[k] && !(std::abs(g.z[k]) <= kMaxHeight))
+      return fmt::format("z[{}, {}] = {:g} m: heights must lie within +-{:g} m (the topography readers' limit)",
+                         k / static_cast<std::size_t>(g.nx), k % static_cast<std::size_t>(g.nx), g.z[k], kMaxHeight);
+  if (g.size() - g.missing() < kMinValidPoints)
+    return fmt::format("z has {} valid (not NaN) heights of {}; at least {} are needed", g.size() - g.missing(),
+                       g.size(), kMinValidPoints);
+  return {};
+}
+
 std::vector<double> heights_or_nan(const HeightGrid& g) {
   std::vector<double> z(g.z);
   for (std::size_t k = 0; k < z.size(); ++k)

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace geartrib::surface {
@@ -17,6 +18,7 @@ inline constexpr double kMinSpacing = 1e-12;                         // [m], 1 p
 inline constexpr double kMaxSpacing = 1e3;                           // [m], 1 km
 inline constexpr double kMaxHeight = 1.0;                            // |z| [m]
 inline constexpr double kMaxCoordinate = 1e3;                        // |x|, |y| of a point cloud [m]
+inline constexpr std::size_t kMinValidPoints = 9;                    // valid points a surface needs
 
 struct HeightGrid {
   int nx = 0, ny = 0;
@@ -34,6 +36,11 @@ struct HeightGrid {
 
 // Throws std::invalid_argument beyond kMaxGridPoints (before allocating) or the spacing limits.
 HeightGrid make_grid(int nx, int ny, double dx, double dy);
+
+// The first rule of the topography files a grid's heights break, or empty: a valid height beyond
+// +-kMaxHeight ("z[row, column] = ..."), fewer than kMinValidPoints valid points. What every reader
+// refuses (io::check_grid_height, io::check_valid_points) and so what no writer may write.
+std::string height_rule(const HeightGrid& g);
 
 // Heights in the form files and arrays hold them, NaN marking a missing point: into a grid of
 // their size (z[j * nx + i]; std::invalid_argument for another size), and out of one.

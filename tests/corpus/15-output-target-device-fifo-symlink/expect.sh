@@ -34,6 +34,16 @@ ln -s /proc/self/fd/1 "$scratch/stdout"
 check stdout-link-pipe 0 "H +D +F" -- bash -c '"$0" run "$1" --positions 5 -q -o "$2" | od -c -N 4' "$bin" "$dry" "$scratch/stdout"
 check stdout-link-kept 0 "" -- test -L "$scratch/stdout"
 rm -f "$scratch/stdout"
+# Standard output redirected to a file (a job's log, appended to) and named as the target: the
+# output appended through the descriptor after what the log held, never a new file renamed over it.
+echo "before" > "$scratch/job.log"
+ln -s /proc/self/fd/1 "$scratch/stdout"
+check stdout-link-file 0 "" -- bash -c '"$0" kinematics --positions 3 --csv -o "$1" >> "$2"' "$bin" "$scratch/stdout" "$scratch/job.log"
+check stdout-link-file-appended 0 "^before,point,s_m," -- bash -c 'head -2 "$0" | tr "\n" ","' "$scratch/job.log"
+rm -f "$scratch/stdout" "$scratch/job.log"
+# One file under two names: refused before the run (one output would replace the other).
+check two-names 2 "out.csv: is the same file as the output .*out.csv" -- bash -c 'cd "$0" && "$1" run "$2" --positions 5 -q -o out.csv --csv ./out.csv' "$scratch" "$bin" "$dry"
+check two-names-nothing 1 "" -- test -e "$scratch/out.csv"
 # A symbolic link: the file it names gets the result, the link stays.
 mkdir "$scratch/real"; echo original > "$scratch/real/out.h5"; ln -s real/out.h5 "$scratch/link.h5"
 check symlink 0 "wrote .*link.h5" -- run -o "$scratch/link.h5"
