@@ -21,7 +21,7 @@ seeds=build-fuzz/seeds
 rm -rf "$seeds"; mkdir -p "$seeds"/{case,material,topography,fit_data,sweep_merge,lubricant}
 cp gears/*.toml "$seeds/case/"
 cp materials/*.toml "$seeds/material/"
-cp lubricants/*.toml tests/corpus/2[5-6]-*/*.toml "$seeds/lubricant/"
+cp lubricants/*.toml tests/corpus/2[5-9]-*/*.toml "$seeds/lubricant/"
 k=0
 for f in gears/surfaces/* validation/*/*.xyz validation/*/*.csv tests/fuzz/*.x3p; do
   [[ -f "$f" ]] || continue

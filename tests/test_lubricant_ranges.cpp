@@ -112,6 +112,19 @@ TEST(LubricantRanges, DataLeavingALawsRangeIsRefusedAtItsKey) {
   steep.min_temperature = cold_edge - 1e-3;
   EXPECT_EQ(refused_member(steep), "min_temperature");
 
+  // A viscosity nearly flat in temperature (fuzz_lubricant's finding: 311.6 mm^2/s at 40 degC,
+  // 311.15 at 100 degC): Walther alone would reach 2e7 mm^2/s only near 0 K, where alpha's factor
+  // 1 + 516 (1/T - 1/311) is infinite; the law range stops at -100 degC and every law is finite there.
+  Lubricant nearly_flat = shipped("pao-vg320-paor.toml");
+  nearly_flat.kinematic_viscosity_40 = 311.6e-6;
+  nearly_flat.kinematic_viscosity_100 = 311.15e-6;
+  EXPECT_EQ(refused_member(nearly_flat), "");
+  EXPECT_DOUBLE_EQ(law_range(nearly_flat).lo, kMinOilTemperature);
+  for (double t : {law_range(nearly_flat).lo, operating_range(nearly_flat).lo})
+    EXPECT_TRUE(std::isfinite(lubrication::pressure_viscosity_coefficient(nearly_flat, t)) &&
+                std::isfinite(lubrication::kinematic_viscosity(nearly_flat, t)))
+        << t;
+
   // Data past 400 degC (the reproducer's 1000 K).
   Lubricant hot = shipped("pao-vg320-paor.toml");
   hot.max_temperature = 1000.0;

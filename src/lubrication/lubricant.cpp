@@ -52,9 +52,10 @@ TemperatureRange data_range(const Lubricant& l) { return {l.min_temperature, l.m
 
 TemperatureRange law_range(const Lubricant& l) {
   if (l.fixed()) return data_range(l);
-  TemperatureRange r{0.0, kMaxOilTemperature};
+  TemperatureRange r{kMinOilTemperature, kMaxOilTemperature};
   const Walther w = walther(l);
-  if (w.b > 0.0 && std::isfinite(w.a)) r.lo = walther_temperature(w, kWaltherMaxViscosity);  // nu40 > nu100
+  if (w.b > 0.0 && std::isfinite(w.a))  // nu40 > nu100
+    r.lo = std::max(r.lo, walther_temperature(w, kWaltherMaxViscosity));
   if (l.density_temperature_coefficient > 0.0)
     r.hi = std::min(r.hi, kT15 + 0.5 / l.density_temperature_coefficient);  // the density at half its 15 degC value
   return r;

@@ -107,9 +107,9 @@ struct Lubricant {
 //    (io::load_case refuses them beyond it and warns outside the data);
 //  - law_range: where every law is sound, finite and positive, viscosity, density and alpha
 //    falling with temperature: Walther's viscosity at most 2e7 mm^2/s (the top of ASTM D341's
-//    charts; colder, the double form overflows), at most 400 degC (kMaxOilTemperature), and the
-//    density line above half its 15 degC value. A run evaluates the oil anywhere in it (beyond the
-//    data: extrapolated, flagged) and clamps it at its ends (flagged), or fails when the bulk
+//    charts; colder, the double form overflows), at least -100 degC (kMinOilTemperature), at most
+//    400 degC (kMaxOilTemperature), and the density line above half its 15 degC value. A run evaluates the oil anywhere
+//    in it (beyond the data: extrapolated, flagged) and clamps it at its ends (flagged), or fails when the bulk
 //    temperature leaves it (contact/mesh_lubrication.cpp).
 // The fixed form has no temperature laws: every range is its one temperature.
 struct TemperatureRange {
@@ -123,6 +123,10 @@ inline constexpr double kWaltherMaxViscosity = 20.0;  // [m^2/s]: 2e7 cSt, the t
 // ignite below it); ISO/TR 15144-1's alpha factor 1 + 516 (1/T - 1/311 K) is 0.107 there and 0 at
 // 782.8 K.
 inline constexpr double kMaxOilTemperature = 673.15;  // [K]
+// No gear oil flows at -100 degC (the pour points of mineral and PAO gear oils lie above -60 degC):
+// the floor of the law range where Walther's viscosity is nearly flat in temperature (a viscosity
+// index far past any oil's), which alone would reach 0 K, where alpha's factor is infinite.
+inline constexpr double kMinOilTemperature = 173.15;  // [K]
 TemperatureRange data_range(const Lubricant& l);
 TemperatureRange operating_range(const Lubricant& l);
 TemperatureRange law_range(const Lubricant& l);
