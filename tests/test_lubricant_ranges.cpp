@@ -152,6 +152,13 @@ TEST(LubricantRanges, DataLeavingALawsRangeIsRefusedAtItsKey) {
   EXPECT_EQ(refused_member(flat), "");
   // and the run's law range stops there: the density never falls below half.
   EXPECT_DOUBLE_EQ(law_range(flat).hi, kC + 15.0 + 0.5 / 1.9e-3);
+  // Not even by rounding (fuzz_lubricant's finding: c = 1.9999e-3 1/K put the density a hair below
+  // half at the range's end, 538.16 K).
+  for (double c : {1.9999e-3, 1.9e-3, 6.4e-4, 2.0e-3, 1.2345e-3}) {
+    flat.density_temperature_coefficient = c;
+    flat.max_temperature = kC + 100.0;
+    EXPECT_GE(lubrication::density(flat, law_range(flat).hi), 0.5 * flat.density_15) << c;
+  }
 
   // alpha measured at a temperature outside the operating range (the reproducer's 1000 K), and
   // the edges of that range.

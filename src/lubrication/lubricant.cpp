@@ -56,8 +56,13 @@ TemperatureRange law_range(const Lubricant& l) {
   const Walther w = walther(l);
   if (w.b > 0.0 && std::isfinite(w.a))  // nu40 > nu100
     r.lo = std::max(r.lo, walther_temperature(w, kWaltherMaxViscosity));
-  if (l.density_temperature_coefficient > 0.0)
-    r.hi = std::min(r.hi, kT15 + 0.5 / l.density_temperature_coefficient);  // the density at half its 15 degC value
+  if (l.density_temperature_coefficient > 0.0) {
+    double half = kT15 + 0.5 / l.density_temperature_coefficient;  // the density at half its 15 degC value
+    // Rounded, the line may be a hair below half there (fuzz_lubricant's finding): the last
+    // temperature at which it is not.
+    for (int k = 0; k < 8 && density_ratio(l, half) < 0.5; ++k) half = std::nextafter(half, 0.0);
+    r.hi = std::min(r.hi, half);
+  }
   return r;
 }
 
