@@ -94,12 +94,14 @@ TEST(LubricantRanges, LawsRefuseATemperatureOutsideTheirRange) {
 }
 
 TEST(LubricantRanges, DataLeavingALawsRangeIsRefusedAtItsKey) {
-  // Walther overflowing when cold (nu40 = 1 m^2/s, nu100 = 2 mm^2/s, data 100-140 K).
+  // Walther overflowing when cold (nu40 = 1 m^2/s, nu100 = 2 mm^2/s, data 180-220 K: above the
+  // -100 degC floor, so that Walther's own bound refuses it).
   Lubricant steep = shipped("mineral-vg220.toml");
   steep.kinematic_viscosity_40 = 1.0;
   steep.kinematic_viscosity_100 = 2e-6;
-  steep.min_temperature = 100.0;
-  steep.max_temperature = 140.0;
+  steep.min_temperature = 180.0;
+  steep.max_temperature = 220.0;
+  EXPECT_GT(law_range(steep).lo, 180.0);  // where Walther reaches 2e7 mm^2/s
   EXPECT_EQ(refused_member(steep), "min_temperature");
   // ... accepted from where it reaches 2e7 mm^2/s (the edge, to 1e-6 K of the closed-form inverse's rounding).
   steep.min_temperature = 260.0;
@@ -120,6 +122,12 @@ TEST(LubricantRanges, DataLeavingALawsRangeIsRefusedAtItsKey) {
   nearly_flat.kinematic_viscosity_100 = 311.15e-6;
   EXPECT_EQ(refused_member(nearly_flat), "");
   EXPECT_DOUBLE_EQ(law_range(nearly_flat).lo, kMinOilTemperature);
+  // and data colder than that floor are refused at their key (the third finding: data from 100 K),
+  // the floor itself accepted.
+  nearly_flat.min_temperature = 100.0;
+  EXPECT_EQ(refused_member(nearly_flat), "min_temperature");
+  nearly_flat.min_temperature = kMinOilTemperature;
+  EXPECT_EQ(refused_member(nearly_flat), "");
   for (double t : {law_range(nearly_flat).lo, operating_range(nearly_flat).lo})
     EXPECT_TRUE(std::isfinite(lubrication::pressure_viscosity_coefficient(nearly_flat, t)) &&
                 std::isfinite(lubrication::kinematic_viscosity(nearly_flat, t)))
