@@ -253,15 +253,15 @@ void Lubricant::validate() const {
     return std::isfinite(nu) ? fmt::format("{:.3g} mm^2/s", nu / kCentistokes) : std::string("beyond 1e308 m^2/s");
   };
   const double nu_cold = walther_viscosity(w, min_temperature), nu_hot = walther_viscosity(w, max_temperature);
-  if (!(min_temperature >= kMinOilTemperature))
-    fail("min_temperature", fmt::format("below {:.2f} K (-100 degC), the coldest at which an oil's laws are taken: no "
-                                        "gear oil flows there",
-                                        kMinOilTemperature));
   if (!(nu_cold <= kWaltherMaxViscosity))
     fail("min_temperature",
          fmt::format("Walther's law through the 40 and 100 degC viscosities gives {} at {:.2f} K, beyond the 2e7 "
                      "mm^2/s top of ASTM D341's range: raise min_temperature to at least {:.2f} K",
                      viscosity_text(nu_cold), min_temperature, walther_temperature(w, kWaltherMaxViscosity)));
+  if (!(min_temperature >= kMinOilTemperature))
+    fail("min_temperature", fmt::format("below {:.2f} K (-100 degC), the coldest at which an oil's laws are taken: no "
+                                        "gear oil flows there",
+                                        kMinOilTemperature));
   if (!(max_temperature <= kMaxOilTemperature))
     fail(
         "max_temperature",

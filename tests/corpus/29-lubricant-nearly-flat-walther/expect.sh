@@ -12,4 +12,8 @@ lub="$PWD/nearly-flat.toml"
 check cold-edge 0 "" -- g run "$case_file" -q --positions 11 --set "lubricant.file=$lub" --set "oil_temperature=-60 degC" --csv "$scratch/cold.csv" -o "$scratch/cold.h5"
 no_nan cold-edge-finite "$scratch/cold.csv"
 check colder 2 "oil_temperature" -- g run "$case_file" -q --positions 11 --set "lubricant.file=$lub" --set "oil_temperature=-61 degC" -o "$scratch/colder.h5"
+# Data colder than the floor (the third finding: a file with data from 100 K was taken, its data
+# range outside its law range): refused at the key and line.
+sed "s/^min_temperature = .*/min_temperature = '-150 degC'/" "$lub" > "$scratch/too-cold.toml"
+check data-below-floor 2 "too-cold.toml:[0-9]+: key 'min_temperature' = .*-150 degC.*: below 173.15 K \(-100 degC\)" -- g run "$case_file" -q --positions 11 --set "lubricant.file=$scratch/too-cold.toml" -o "$scratch/x.h5"
 rm -rf "$scratch"
