@@ -77,6 +77,16 @@ def read(path):
     return head, rows
 
 
+def binary_argument(argv, usage):
+    """The geartrib binary a case script's command line names, made absolute; None after printing
+    `usage` (the script's docstring) to standard error when none is named or an option stands in
+    its place (the script then exits 2)."""
+    if len(argv) < 2 or argv[1].startswith("-"):
+        print(usage.strip(), file=sys.stderr)
+        return None
+    return os.path.abspath(argv[1])
+
+
 def version(binary):
     try:
         out = subprocess.run([binary, "version"], capture_output=True, text=True, check=True).stdout

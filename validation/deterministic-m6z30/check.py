@@ -62,10 +62,9 @@ def mean(v):
 
 
 def main(argv):
-    if len(argv) < 2 or argv[1].startswith("-"):
-        print(__doc__.strip(), file=sys.stderr)
+    binary = expected_table.binary_argument(argv, __doc__)
+    if binary is None:
         return 2
-    binary = os.path.abspath(argv[1])
     rows = []
 
     def row(key, quantity, model, reference=None, **kw):

@@ -74,10 +74,9 @@ def peclet(mat, speed, b):
 
 
 def main(argv):
-    if len(argv) < 2 or argv[1].startswith("-"):
-        print(__doc__.strip(), file=sys.stderr)
+    binary = expected_table.binary_argument(argv, __doc__)
+    if binary is None:
         return 2
-    binary = os.path.abspath(argv[1])
     rows = []
     # The constant itself: the high-Peclet semi-elliptic source's peak and the mean over the band.
     peak, where = moving_source.high_peclet_peak()

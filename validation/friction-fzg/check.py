@@ -52,10 +52,9 @@ def run(binary, tmp, sets):
 
 
 def main(argv):
-    if len(argv) < 2 or argv[1].startswith("-"):
-        print(__doc__.strip(), file=sys.stderr)
+    binary = expected_table.binary_argument(argv, __doc__)
+    if binary is None:
         return 2
-    binary = os.path.abspath(argv[1])
     plot = argv[argv.index("--plot") + 1] if "--plot" in argv else None
     rows = []
     with tempfile.TemporaryDirectory() as tmp:

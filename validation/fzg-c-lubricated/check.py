@@ -143,10 +143,9 @@ def increasing(values):
 
 
 def main(argv):
-    if len(argv) < 2 or argv[1].startswith("-"):
-        print(__doc__.strip(), file=sys.stderr)
+    binary = expected_table.binary_argument(argv, __doc__)
+    if binary is None:
         return 2
-    binary = os.path.abspath(argv[1])
     failures = 0
     with tempfile.TemporaryDirectory() as tmp:
         run_h5 = os.path.join(tmp, "run.h5")

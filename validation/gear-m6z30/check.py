@@ -52,10 +52,9 @@ def rows_of(folder):
 
 
 def main(argv):
-    if len(argv) < 2 or argv[1].startswith("-"):
-        print(__doc__.strip(), file=sys.stderr)
+    binary = expected_table.binary_argument(argv, __doc__)
+    if binary is None:
         return 2
-    binary = argv[1]
     with tempfile.TemporaryDirectory() as tmp:
         subprocess.run(["bash", os.path.join(HERE, "tabulate.sh"), binary], check=True, cwd=ROOT,
                        env={**os.environ, "OUT": tmp}, stdout=subprocess.DEVNULL)

@@ -36,10 +36,9 @@ def table(binary, *args):
 
 
 def main(argv):
-    if len(argv) < 2 or argv[1].startswith("-"):
-        print(__doc__.strip(), file=sys.stderr)
+    binary = expected_table.binary_argument(argv, __doc__)
+    if binary is None:
         return 2
-    binary = os.path.abspath(argv[1])
     summary = {r["name"]: float(r["value"]) for r in table(binary, "kinematics", CASE, "--summary", "--csv")}
     points = {r["point"]: r for r in table(binary, "kinematics", CASE, "--csv")}
     with tempfile.TemporaryDirectory() as tmp:

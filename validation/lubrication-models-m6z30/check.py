@@ -42,10 +42,9 @@ def sweep(binary, tmp, name, sets):
 
 
 def main(argv):
-    if len(argv) < 2 or argv[1].startswith("-"):
-        print(__doc__.strip(), file=sys.stderr)
+    binary = expected_table.binary_argument(argv, __doc__)
+    if binary is None:
         return 2
-    binary = os.path.abspath(argv[1])
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         models = sweep(binary, tmp, "models", ["film_formula=dowson-higginson,pan-hamrock-min,pan-hamrock-central,"

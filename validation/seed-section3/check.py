@@ -55,10 +55,9 @@ def hertz_rows(binary):
 
 
 def main(argv):
-    if len(argv) < 2 or argv[1].startswith("-"):
-        print(__doc__.strip(), file=sys.stderr)
+    binary = expected_table.binary_argument(argv, __doc__)
+    if binary is None:
         return 2
-    binary = argv[1]
     table = argv[argv.index("--table") + 1] if "--table" in argv else os.path.relpath(os.path.join(HERE, "table.csv"), ROOT)
     shown = subprocess.run([binary, "asperity", "--model", "continuous", "--compare", table], check=True,
                            capture_output=True, text=True, cwd=ROOT).stdout
