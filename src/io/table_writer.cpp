@@ -20,6 +20,7 @@
 #include <iostream>
 #include <iterator>
 #include <mutex>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <thread>
@@ -382,15 +383,17 @@ void copy_to_stream(const std::filesystem::path& from, const std::filesystem::pa
   if (error != 0) fail_write(to, error);
 }
 
-// Whether two destinations are one file: the same standard descriptor, the same existing file
-// (device and inode), or the same path once made absolute and normal. Character devices are
-// streams that two outputs may share (/dev/null twice).
+// Whether two destinations are one file: the same existing file (device and inode; a standard
+// descriptor's file as fstat sees it), or the same path once made absolute and normal. Character
+// devices are streams that two outputs may share (/dev/null twice, or with standard output on it).
 bool same_file(const std::filesystem::path& a, int a_descriptor, const std::filesystem::path& b, int b_descriptor) {
-  if (a_descriptor >= 0 || b_descriptor >= 0) return a_descriptor == b_descriptor;
-  struct stat sa {
-  }, sb{};
-  if (::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0)
-    return !S_ISCHR(sa.st_mode) && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+  const auto stat_of = [](const std::filesystem::path& p, int descriptor) {
+    std::optional<struct stat> st{std::in_place};
+    if ((descriptor >= 0 ? ::fstat(descriptor, &*st) : ::stat(p.c_str(), &*st)) != 0) st.reset();
+    return st;
+  };
+  const auto sa = stat_of(a, a_descriptor), sb = stat_of(b, b_descriptor);
+  if (sa && sb) return !S_ISCHR(sa->st_mode) && sa->st_dev == sb->st_dev && sa->st_ino == sb->st_ino;
   std::error_code ea, eb;
   const auto ca = std::filesystem::weakly_canonical(std::filesystem::absolute(a), ea);
   const auto cb = std::filesystem::weakly_canonical(std::filesystem::absolute(b), eb);

@@ -44,6 +44,11 @@ rm -f "$scratch/stdout" "$scratch/job.log"
 # One file under two names: refused before the run (one output would replace the other).
 check two-names 2 "out.csv: is the same file as the output .*out.csv" -- bash -c 'cd "$0" && "$1" run "$2" --positions 5 -q -o out.csv --csv ./out.csv' "$scratch" "$bin" "$dry"
 check two-names-nothing 1 "" -- test -e "$scratch/out.csv"
+# A character device is a stream two outputs may share, standard output on it too (a cron job's
+# `-o /dev/null --csv /dev/stdout > /dev/null`); a file standard output is redirected to is not.
+check devnull-and-stdout-on-it 0 "" -- bash -c '"$0" run "$1" --positions 5 -q -o /dev/null --csv /dev/stdout > /dev/null' "$bin" "$dry"
+check stdout-file-named-again 2 "is the same file as the output /dev/stdout" -- bash -c 'cd "$0" && "$1" run "$2" --positions 5 -q -o /dev/stdout --csv log.csv > log.csv' "$scratch" "$bin" "$dry"
+rm -f "$scratch/log.csv"  # the shell's redirection made it
 # A symbolic link: the file it names gets the result, the link stays.
 mkdir "$scratch/real"; echo original > "$scratch/real/out.h5"; ln -s real/out.h5 "$scratch/link.h5"
 check symlink 0 "wrote .*link.h5" -- run -o "$scratch/link.h5"
