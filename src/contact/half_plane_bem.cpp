@@ -174,13 +174,16 @@ BemSolution HalfPlaneBem::solve_load_capped(const std::vector<double>& gap0, dou
   // warm-started solve may not move at all: it is already within its tolerance there): the bracket
   // ends at that width, and the load is then within s (hi - lo + 2 e) of the target. s: the secant
   // over the last bracket at least 16 e wide (the two solves' noise, 2 s e, at most 1/8 of its rise).
-  const double resolution = options_.tolerance * relief(gap0, hi);
+  const double relief_m = relief(gap0, hi);
+  const double resolution = options_.tolerance * relief_m;
   double slope = (at_hi.line_load - at_lo.line_load) / (hi - lo);
+  // The bracket closed to the resolution, or the load met within 1e-12.
+  const auto closed = [&] {
+    return hi - lo <= resolution ||
+           std::min(std::abs(at_hi.line_load - line_load), std::abs(at_lo.line_load - line_load)) <= 1e-12 * line_load;
+  };
   bool last_high = true;  // which end the last solve moved (it starts the next)
-  for (int k = 0; k < 200; ++k) {
-    if (std::min(std::abs(at_hi.line_load - line_load), std::abs(at_lo.line_load - line_load)) <= 1e-12 * line_load ||
-        hi - lo <= resolution)
-      break;
+  for (int k = 0; k < 200 && !closed(); ++k) {
     // Regula falsi on the load, bisection when it stalls.
     double mid = lo + (line_load - at_lo.line_load) / (at_hi.line_load - at_lo.line_load) * (hi - lo);
     if (!(mid > lo && mid < hi) || k % 3 == 2) mid = 0.5 * (lo + hi);
@@ -191,6 +194,7 @@ BemSolution HalfPlaneBem::solve_load_capped(const std::vector<double>& gap0, dou
     else lo = mid, at_lo = std::move(s);
     if (hi - lo >= 16.0 * resolution) slope = (at_hi.line_load - at_lo.line_load) / (hi - lo);
   }
+  const bool converged = closed();
   const bool low_closer =
       at_lo.pressure.size() == gap0.size() && line_load - at_lo.line_load < at_hi.line_load - line_load;
   BemSolution best = low_closer ? std::move(at_lo) : std::move(at_hi);
@@ -198,15 +202,13 @@ BemSolution HalfPlaneBem::solve_load_capped(const std::vector<double>& gap0, dou
   // then within s (hi - lo + 2 e) <= 3 s e, accepted within twice that (the secant is not the
   // local slope), or within 1e-12 where the solves resolve more. The bound is the resolution's,
   // not the final bracket's: a bracket that never closed is a failure, never passed by its width.
-  const bool closed = hi - lo <= resolution || std::min(std::abs(at_hi.line_load - line_load),
-                                                        std::abs(at_lo.line_load - line_load)) <= 1e-12 * line_load;
   const double resolved = std::max(1e-12 * line_load, 6.0 * slope * resolution);
-  if (!closed || !(std::abs(best.line_load - line_load) <= resolved))
+  if (!converged || !(std::abs(best.line_load - line_load) <= resolved))
     throw std::runtime_error(fmt::format(
         "boundary elements: capped load control reached {:.10g} N/m for {:.10g} N/m, farther than the {:.3g} N/m the "
         "solves resolve (complementarity tolerance {:.3g} of a relief of {:.4g} m; the approach's bracket {:.3g} m "
         "wide, the resolution {:.3g} m)",
-        best.line_load, line_load, resolved, options_.tolerance, relief(gap0, hi), hi - lo, resolution));
+        best.line_load, line_load, resolved, options_.tolerance, relief_m, hi - lo, resolution));
   best.iterations = total;
   best.coarse_iterations = coarse_iterations;
   return best;

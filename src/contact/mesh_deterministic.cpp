@@ -229,6 +229,11 @@ double strip_solve_seconds(int elements) {
   return kSeconds * std::pow(std::max(elements, 1) / kElements, kExponent);
 }
 
+int strip_threads(const ContactSettings& cs, int positions) {
+  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  return std::clamp(cs.threads > 0 ? cs.threads : hardware, 1, std::max(1, positions));
+}
+
 DeterministicCost deterministic_cost(const FlankSpan& span, const DeterministicWork& w) {
   // Bytes, measured with /usr/bin/time's peak RSS on the shipped case (docs/reference/performance.md#budgets):
   // a flank profile 8 a point (its heights); a kept pressure profile 24 an element (its pressure, the
@@ -356,7 +361,7 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
   const double capacity = grid.size * grid.spacing * o.pressure_cap;
   const double w_max = *std::max_element(load.begin(), load.end());
   if (w_max > 0.9 * capacity) throw strip_overload(cs, o, span, flanks, w_max, b_max, capacity, grid);
-  const int threads = cs.threads > 0 ? cs.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int threads = strip_threads(cs, n);
   const double modulus = mesh.composite_modulus();
 
   // The meshes: one (no running-in), or until shakedown.

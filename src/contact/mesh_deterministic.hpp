@@ -63,6 +63,9 @@ struct DeterministicCost {
 // One strip solve's time on one core [s] for `elements` boundary elements.
 double strip_solve_seconds(int elements);
 DeterministicCost deterministic_cost(const FlankSpan& span, const DeterministicWork& work);
+// The threads a deterministic run solves its strips on: contact.threads, or the hardware's when 0,
+// at least 1 and at most one a position.
+int strip_threads(const ContactSettings& cs, int positions);
 
 // Fills r's contact, validity, statistical, pressure-profile and running-in parts; r.mesh holds
 // the path's kinematics and loads (run_mesh_contact's stage 1). dynamics: the integrator of a case

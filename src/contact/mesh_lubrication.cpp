@@ -80,11 +80,11 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
   const gear::SpurPair& pair = mesh.pair();
   const gear::PathOfContact& path = pair.path();
   const double face = pair.spec().face_width;
-  const double torque = c.operating.pinion_torque, omega = mesh.pinion_speed();
+  const double omega = mesh.pinion_speed();
   const gear::FlankKinematics kc = pair.kinematics(path.c, omega);
-  pitch_.tangential_load = torque / pair.gear(0).pitch_radius / face;  // w_Bt = F_t/b [N/m]
-  pitch_.normal_load = torque / pair.gear(0).base_radius / face;       // F_bn/b [N/m]
-  pitch_.pitch_line_speed = omega * pair.gear(0).pitch_radius;         // v_t at the reference circle, as ISO 6336
+  pitch_.tangential_load = mesh.tangential_line_load();         // w_Bt = F_t/b [N/m]
+  pitch_.normal_load = mesh.normal_force() / face;              // F_bn/b [N/m]
+  pitch_.pitch_line_speed = omega * pair.gear(0).pitch_radius;  // v_t at the reference circle, as ISO 6336
   pitch_.sum_speed = kc.rolling_pinion + kc.rolling_wheel;
   pitch_.radius = pair.flank(path.c).radius_equivalent;
   pitch_.eta_oil = oil_at_inlet_.dynamic_viscosity;
@@ -163,7 +163,7 @@ lub::OilState MeshLubrication::oil_at(double t, bool& extrapolated, bool& clampe
     if (t > oil_range_.hi) t = oil_range_.hi;
     if (t < oil_range_.lo) t = oil_range_.lo;  // (NaN stays NaN: oil_state refuses it)
   }
-  return lub::oil_state(lubricant, t);
+  return lub::oil_state(lubricant, t, oil_range_);
 }
 
 void MeshLubrication::iso_temperatures(const PathPoint& p, Position& q) const {
@@ -265,7 +265,10 @@ void MeshLubrication::rest(const PathPoint& p, Position& q) const {
     rise = shear.midfilm_rise;
     return shear.shear_stress / p_f;
   };
-  auto mixed = [&](double mu) { return q.asperity_share * mu_b + film_share * film_coefficient(mu); };
+  // The mixed friction coefficient: mu = share_a mu_b + share_f tau_f/p_f, with p_f the film's mean
+  // pressure over the Hertz width (film_share w / 2b).
+  auto mix = [&](double film_coef) { return q.asperity_share * mu_b + film_share * film_coef; };
+  auto mixed = [&](double mu) { return mix(film_coefficient(mu)); };
   double mu = mixed(0.0);
   if (traction_ != lub::FilmTraction::curve && !lubricant.fixed() && vs != 0.0 && film_share > 0.0) {
     // mu = F(mu): F falls as mu heats the surfaces, so mu - F(mu) rises through one root in [0, top].
@@ -281,7 +284,7 @@ void MeshLubrication::rest(const PathPoint& p, Position& q) const {
     }
   }
   const double film_coef = film_coefficient(mu);  // also sets rise, curve_outside and surface_* at the answer
-  q.friction = q.asperity_share * mu_b + film_share * film_coef;
+  q.friction = mix(film_coef);
   q.film_traction = film_coef;
   q.midfilm_rise = rise;
   q.curve_outside = curve_outside ? 1.0 : 0.0;
@@ -383,7 +386,6 @@ void MeshLubrication::finish(MeshContactResult& r) {
     sum.mean_friction.push_back({lub::mean_friction_law_name(law), f.coefficient});
   const gear::SpurPair& pair = mesh_.pair();
   const gear::PathOfContact& path = pair.path();
-  const double face = pair.spec().face_width;
   // Time average over one mesh cycle of all pairs in contact: each pair sweeps A -> E at the
   // base speed, so the mean is (1/p_b) int_A^E P ds.
   sum.mesh_power_loss = path_mean(series(positions_, &Position::power_loss)) * path.length / path.base_pitch;
@@ -391,7 +393,7 @@ void MeshLubrication::finish(MeshContactResult& r) {
   sum.input_power = c.operating.pinion_torque * omega;
   sum.efficiency = sum.input_power > 0.0 ? 1.0 - sum.mesh_power_loss / sum.input_power : 1.0;
   {
-    const double base_load = c.operating.pinion_torque / pair.gear(0).base_radius / face;  // F_bt/b [N/m]
+    const double base_load = pitch_.normal_load;  // F_bn/b [N/m]
     const double base_speed = omega * pair.gear(0).base_radius;
     std::vector<double> integrand;
     for (std::size_t i = 0; i < n; ++i)

@@ -1,6 +1,7 @@
 #include "io/fzg_load_stages.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <stdexcept>
 
@@ -44,11 +45,9 @@ FzgTorque fzg_pinion_torque(std::string_view test, int stage) {
   const FzgTest* found = nullptr;
   for (const FzgTest& t : fzg_tests())
     if (t.name == test) found = &t;
-  if (!found) {
-    std::string names;
-    for (const FzgTest& t : fzg_tests()) names += (names.empty() ? "" : ", ") + std::string(t.name);
-    throw std::invalid_argument(fmt::format("unknown FZG test '{}' (known: {})", test, names));
-  }
+  if (!found)
+    throw std::invalid_argument(
+        fmt::format("unknown FZG test '{}' (known: {})", test, fmt::join(fzg_test_names(), ", ")));
   if (stage < kFzgMinLoadStage || stage > kFzgMaxLoadStage)
     throw std::invalid_argument(
         fmt::format("FZG load stage {} must lie in [{}, {}]", stage, kFzgMinLoadStage, kFzgMaxLoadStage));

@@ -94,7 +94,7 @@ ShardFile read_shard(const std::filesystem::path& path) {
   for (std::size_t r = 0; r < rows; ++r) {
     const double v = point.numbers[r];
     if (!(std::isfinite(v) && v >= 0.0 && v < static_cast<double>(f.total) && v == std::floor(v)) ||
-        static_cast<std::size_t>(v) % f.shard.count != f.shard.index)
+        !f.shard.owns(static_cast<std::size_t>(v)))
       f.fail("/points/point", fmt::format("{} (row {})", v, r),
              fmt::format("must be a point of shard {}/{}: a whole number below points_total ({}) with index % {} "
                          "== {}",

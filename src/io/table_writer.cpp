@@ -302,12 +302,14 @@ Destination destination_of(const std::filesystem::path& target) {
                                         to.string()));
     refuse_target(target, fmt::format("cannot be written: {}", std::strerror(error)));
   }
-  if (const int fd = standard_descriptor_of(st); fd >= 0) {
+  // A stream's temporary goes to the temporary folder (a device's folder takes no files).
+  const auto stream = [&](int descriptor) -> Destination {
     std::error_code ec;
     const auto folder = std::filesystem::temp_directory_path(ec);
     if (ec) refuse_target(target, fmt::format("a stream needs a temporary folder: {}", ec.message()));
-    return {target, folder, true, fd};
-  }
+    return {target, folder, true, descriptor};
+  };
+  if (const int fd = standard_descriptor_of(st); fd >= 0) return stream(fd);
   if (S_ISREG(st.st_mode)) {
     if (!S_ISLNK(link.st_mode)) return {target, parent(target), false};
     std::error_code ec;
@@ -319,10 +321,7 @@ Destination destination_of(const std::filesystem::path& target) {
   if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) {
     if (::faccessat(AT_FDCWD, target.c_str(), W_OK, AT_EACCESS) != 0)
       refuse_target(target, fmt::format("cannot be written: {}", std::strerror(errno)));
-    std::error_code ec;
-    const auto folder = std::filesystem::temp_directory_path(ec);
-    if (ec) refuse_target(target, fmt::format("a stream needs a temporary folder: {}", ec.message()));
-    return {target, folder, true};
+    return stream(-1);
   }
   if (S_ISDIR(st.st_mode)) refuse_target(target, "is a folder: an output is a file (name one inside the folder)");
   if (S_ISBLK(st.st_mode))

@@ -38,10 +38,10 @@ double density_ratio(const Lubricant& l, double t) { return 1.0 - l.density_temp
 // ISO/TR 15144-1 temperature law of alpha, relative to 38 degC (311 K in the standard).
 double iso_alpha_temperature_factor(double t) { return 1.0 + 516.0 * (1.0 / t - 1.0 / 311.0); }
 
-// A law asked outside law_range(): refused, naming the law, the temperature and the range.
-void require_in_range(const Lubricant& l, double t, const char* law) {
+// A law asked outside its law range `r` (law_range(l)): refused, naming the law, the temperature
+// and the range.
+void require_in_range(const Lubricant& l, const TemperatureRange& r, double t, const char* law) {
   if (l.fixed()) return;
-  const TemperatureRange r = law_range(l);
   if (!r.contains(t))
     throw OutsideLawRange(fmt::format("{} of {} asked at {:.6g} K, outside [{:.2f}, {:.2f}] K where its laws hold", law,
                                       l.name, t, r.lo, r.hi));
@@ -298,12 +298,12 @@ void Lubricant::validate() const {
 }
 
 double kinematic_viscosity(const Lubricant& l, double t) {
-  require_in_range(l, t, "Walther's viscosity");
+  require_in_range(l, law_range(l), t, "Walther's viscosity");
   return walther_viscosity(walther(l), t);
 }
 
 double density(const Lubricant& l, double t) {
-  require_in_range(l, t, "the density line");
+  require_in_range(l, law_range(l), t, "the density line");
   return l.density_15 * density_ratio(l, t);
 }
 
@@ -321,11 +321,13 @@ double alpha_at(const Lubricant& l, const Walther& w, double t) {
 
 double pressure_viscosity_coefficient(const Lubricant& l, double t) {
   if (l.fixed()) return l.pressure_viscosity;
-  require_in_range(l, t, "the pressure-viscosity coefficient");
+  require_in_range(l, law_range(l), t, "the pressure-viscosity coefficient");
   return alpha_at(l, walther(l), t);
 }
 
-OilState oil_state(const Lubricant& l, double t) {
+OilState oil_state(const Lubricant& l, double t) { return oil_state(l, t, law_range(l)); }
+
+OilState oil_state(const Lubricant& l, double t, const TemperatureRange& law) {
   OilState s;
   s.temperature = t;
   s.thermal_conductivity = l.thermal_conductivity;
@@ -339,7 +341,7 @@ OilState oil_state(const Lubricant& l, double t) {
     s.density = l.density_15;
     return s;
   }
-  require_in_range(l, t, "the oil state");  // once for every law below
+  require_in_range(l, law, t, "the oil state");  // once for every law below
   const Walther w = walther(l);
   s.pressure_viscosity = alpha_at(l, w, t);
   s.density = l.density_15 * density_ratio(l, t);

@@ -163,5 +163,8 @@ double density(const Lubricant& l, double temperature);
 // alpha is carried to T by the same temperature law.
 double pressure_viscosity_coefficient(const Lubricant& l, double temperature);
 OilState oil_state(const Lubricant& l, double temperature);
+// The same with the oil's law range given (law_range(l), computed once by a caller that evaluates
+// the oil many times: the mesh cycle's traction solves).
+OilState oil_state(const Lubricant& l, double temperature, const TemperatureRange& law);
 
 }  // namespace geartrib::lubrication

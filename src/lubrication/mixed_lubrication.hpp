@@ -67,14 +67,4 @@ FilmShear thermal_eyring_shear_stress(double eta_s, double eyring_stress, double
 FilmShear film_shear_stress(FilmTraction model, const OilState& oil, double mean_pressure, double sliding_speed,
                             double film_thickness);
 
-// The mixed friction coefficient: mu = share_a mu_b + share_f tau_f/p_f, with p_f the film's mean
-// pressure over the Hertz width (film_share w / 2b).
-struct MixedFriction {
-  double coefficient = 0.0;       // mu [-]
-  double film_coefficient = 0.0;  // tau_f / p_f [-]
-};
-inline MixedFriction mixed_friction(const LoadShare& share, double boundary_coefficient, double film_coefficient) {
-  return {share.asperity_share * boundary_coefficient + share.film_share * film_coefficient, film_coefficient};
-}
-
 }  // namespace geartrib::lubrication

@@ -382,9 +382,8 @@ void check_budget(const Case& c, const contact::FlankSpan& span, const int teeth
   w.kept_profiles = cs.pressure_profiles == PressureProfiles::all      ? span.positions
                     : cs.pressure_profiles == PressureProfiles::points ? std::min(5, span.positions)
                                                                        : 0;
-  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  w.threads = std::clamp(cs.threads > 0 ? cs.threads : hardware, 1, std::max(1, span.positions));
-  w.cores = std::min(w.threads, hardware);
+  w.threads = contact::strip_threads(cs, span.positions);
+  w.cores = std::min(w.threads, std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
   const contact::DeterministicCost cost = contact::deterministic_cost(span, w);
   const io::ResourceBudget budget = io::resource_budget();
   auto refuse = [&](const std::string& key, const std::string& value, const std::string& rule) {
@@ -476,12 +475,14 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
                ? fmt::format("position {} of {} (0 at A; s = {:.4f} mm)", i, n, s->values[i] * 1e3)
                : fmt::format("entry {} of {}", i, n);
   };
+  // One dataset's values, scanned where they are (a flank profile may hold millions).
+  auto values = [&](const std::string& dataset, const std::vector<double>& v, bool positions) {
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (!std::isfinite(v[i]))
+        fail(dataset, v[i], positions ? at_position(i, v.size()) : fmt::format("entry {} of {}", i, v.size()));
+  };
   auto group = [&](const std::string& path, const std::vector<contact::Series>& series, bool positions) {
-    for (const auto& q : series)
-      for (std::size_t i = 0; i < q.values.size(); ++i)
-        if (!std::isfinite(q.values[i]))
-          fail(path + q.name, q.values[i],
-               positions ? at_position(i, q.values.size()) : fmt::format("entry {} of {}", i, q.values.size()));
+    for (const auto& q : series) values(path + q.name, q.values, positions);
   };
   auto scalar = [&](const std::string& what, double v) {
     if (!std::isfinite(v)) fail(what, v, "");
@@ -511,8 +512,8 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
           fail("/lubrication/points/" + q.name, q.values[i], "point " + (i < points.size() ? points[i].name : ""));
   }
   for (const auto& p : r.pressure_profiles) {
-    group("/contact/pressure/", {contact::Series{"x_m", "m", p.x}}, false);
-    group("/contact/pressure/", {contact::Series{"position_" + std::to_string(p.position), "Pa", p.pressure}}, false);
+    values("/contact/pressure/x_m", p.x, false);
+    values("/contact/pressure/position_" + std::to_string(p.position), p.pressure, false);
   }
   if (r.running_in) {
     // Row 0 of the history is the new flanks, before any mesh: its per-mesh values are NaN by
@@ -526,8 +527,8 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
     }
     for (int g = 0; g < 2; ++g) {
       const std::string gear = g == 0 ? "pinion" : "wheel";
-      group("/running_in/", {contact::Series{gear + "_profile_initial_m", "m", r.running_in->initial[g]}}, false);
-      group("/running_in/", {contact::Series{gear + "_profile_final_m", "m", r.running_in->final[g]}}, false);
+      values("/running_in/" + gear + "_profile_initial_m", r.running_in->initial[g], false);
+      values("/running_in/" + gear + "_profile_final_m", r.running_in->final[g], false);
     }
   }
   for (const auto& f : r.synthesis)
