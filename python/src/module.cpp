@@ -172,15 +172,8 @@ py::dict result_dict(const contact::MeshContactResult& r) {
   if (r.lubrication_summary) {
     const auto& l = *r.lubrication_summary;
     py::dict s;
-    // The same names as the HDF5 attributes of /lubrication (contact::summary_values).
-    s["lubricant"] = l.lubricant;
-    s["film_formula"] = l.film_formula;
-    s["inlet_heating"] = l.inlet_heating;
-    s["film_gap"] = l.film_gap;
-    s["asperity_pressure"] = l.asperity_pressure;
-    s["traction"] = l.traction;
-    s["bulk_friction_law"] = l.bulk_friction_law;
-    s["roughness_source"] = l.roughness_source;
+    // The same names as the HDF5 attributes of /lubrication (contact::summary_texts, summary_values).
+    for (const auto& t : contact::summary_texts(l)) s[py::str(t.name)] = t.value;
     for (const auto& v : contact::summary_values(l)) s[py::str(v.name)] = v.value;
     py::dict points;
     std::vector<std::string> names;

@@ -38,6 +38,17 @@ double path_mean(const std::vector<double>& v) {
   return sum / static_cast<double>(v.size() - 1);
 }
 
+std::vector<SummaryText> summary_texts(const LubricationSummary& l) {
+  return {{"lubricant", l.lubricant},
+          {"film_formula", l.film_formula},
+          {"inlet_heating", l.inlet_heating},
+          {"film_gap", l.film_gap},
+          {"asperity_pressure", l.asperity_pressure},
+          {"traction", l.traction},
+          {"bulk_friction_law", l.bulk_friction_law},
+          {"roughness_source", l.roughness_source}};
+}
+
 std::vector<SummaryValue> summary_values(const LubricationSummary& l) {
   std::vector<SummaryValue> v = {{"oil_temperature_K", "K", l.oil_temperature},
                                  {"bulk_temperature_K", "K", l.bulk_temperature},
@@ -78,28 +89,23 @@ std::vector<SummaryValue> summary_values(const LubricationSummary& l) {
 
 std::vector<Series> named_point_series(const LubricationSummary& l) {
   using P = LubricationSummary::NamedPoint;
-  const std::pair<Series, double P::*> fields[] = {
-      {{"s_m", "m", {}}, &P::s},
-      {{"line_load_N_per_m", "N/m", {}}, &P::line_load},
-      {{"film_m", "m", {}}, &P::film},
-      {{"lambda_smooth_film", "1", {}}, &P::lambda_film},
-      {{"mean_gap_m", "m", {}}, &P::mean_gap},
-      {{"lambda_mean_gap", "1", {}}, &P::lambda_gap},
-      {{"iso_film_hy_m", "m", {}}, &P::iso_film},
-      {{"iso_lambda_gf", "1", {}}, &P::iso_lambda},
-      {{"asperity_load_share", "1", {}}, &P::asperity_share},
-      {{"asperity_share_closure_spread", "1", {}}, &P::share_spread},
-      {{"friction_coefficient", "1", {}}, &P::friction},
-      {{"flash_temperature_K", "K", {}}, &P::flash},
-      {{"iso_flash_temperature_K", "K", {}}, &P::iso_flash},
-      {{"contact_temperature_K", "K", {}}, &P::contact_temperature},
-      {{"iso_contact_temperature_K", "K", {}}, &P::iso_contact_temperature}};
   std::vector<Series> out;
-  for (const auto& [series, field] : fields) {
-    Series q = series;
-    for (const P& point : l.points) q.values.push_back(point.*field);
-    out.push_back(std::move(q));
-  }
+  add_columns<P>(out, l.points,
+                 {{"s_m", "m", [](const P& q) { return q.s; }},
+                  {"line_load_N_per_m", "N/m", [](const P& q) { return q.line_load; }},
+                  {"film_m", "m", [](const P& q) { return q.film; }},
+                  {"lambda_smooth_film", "1", [](const P& q) { return q.lambda_film; }},
+                  {"mean_gap_m", "m", [](const P& q) { return q.mean_gap; }},
+                  {"lambda_mean_gap", "1", [](const P& q) { return q.lambda_gap; }},
+                  {"iso_film_hy_m", "m", [](const P& q) { return q.iso_film; }},
+                  {"iso_lambda_gf", "1", [](const P& q) { return q.iso_lambda; }},
+                  {"asperity_load_share", "1", [](const P& q) { return q.asperity_share; }},
+                  {"asperity_share_closure_spread", "1", [](const P& q) { return q.share_spread; }},
+                  {"friction_coefficient", "1", [](const P& q) { return q.friction; }},
+                  {"flash_temperature_K", "K", [](const P& q) { return q.flash; }},
+                  {"iso_flash_temperature_K", "K", [](const P& q) { return q.iso_flash; }},
+                  {"contact_temperature_K", "K", [](const P& q) { return q.contact_temperature; }},
+                  {"iso_contact_temperature_K", "K", [](const P& q) { return q.iso_contact_temperature; }}});
   return out;
 }
 

@@ -83,6 +83,11 @@ struct SummaryValue {
   double value = 0.0;
 };
 std::vector<SummaryValue> summary_values(const LubricationSummary& s);
+// Its texts by name (the lubricant and the models chosen), in one order, for the same readers.
+struct SummaryText {
+  std::string name, value;
+};
+std::vector<SummaryText> summary_texts(const LubricationSummary& s);
 // The named points' values as series over the points (in the order of s.points; the names are
 // s.points[i].name): /lubrication/points in HDF5, the Python module's table.
 std::vector<Series> named_point_series(const LubricationSummary& s);

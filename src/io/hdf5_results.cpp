@@ -110,16 +110,9 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
     const auto& l = *r.lubrication_summary;
     Handle lub(H5Gcreate2(file, "/lubrication", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /lubrication");
     for (const auto& s : r.lubrication) hdf5::number_dataset(lub, s.name, s.values, s.unit);
-    string_attribute(lub, "lubricant", l.lubricant);
-    string_attribute(lub, "film_formula", l.film_formula);
-    string_attribute(lub, "inlet_heating", l.inlet_heating);
+    for (const auto& t : contact::summary_texts(l)) string_attribute(lub, t.name, t.value);
     string_attribute(lub, "ehl_regime_codes",
                      "0 rigid-isoviscous, 1 rigid-piezoviscous, 2 elastic-isoviscous, 3 elastic-piezoviscous");
-    string_attribute(lub, "film_gap", l.film_gap);
-    string_attribute(lub, "asperity_pressure", l.asperity_pressure);
-    string_attribute(lub, "traction", l.traction);
-    string_attribute(lub, "bulk_friction_law", l.bulk_friction_law);
-    string_attribute(lub, "roughness_source", l.roughness_source);
     for (const auto& v : contact::summary_values(l)) number_attribute(lub, v.name, v.value);
     // The named points, each evaluated where it stands (B and D on the single pair's side).
     Handle points(H5Gcreate2(lub, "points", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,

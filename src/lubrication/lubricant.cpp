@@ -132,7 +132,8 @@ TractionCurves::TractionCurves(std::vector<TractionCurve> curves) : curves_(std:
     if (!(c.slide_to_roll.front() >= 0.0)) fail(c, "slide_to_roll", "must start at 0 or above (SRR = |v1 - v2|/u)");
     for (std::size_t i = 1; i < c.slide_to_roll.size(); ++i)
       if (!(c.slide_to_roll[i] > c.slide_to_roll[i - 1]))
-        fail(c, "slide_to_roll", fmt::format("must increase strictly (entry {})", i));
+        fail(c, "slide_to_roll",
+             fmt::format("must increase strictly (entry {} after {:g})", i, c.slide_to_roll[i - 1]));
     if (!(c.slide_to_roll.back() <= 2.0)) fail(c, "slide_to_roll", "must not exceed 2 (pure sliding)");
     for (std::size_t i = 0; i < c.coefficient.size(); ++i)
       if (!(c.coefficient[i] >= 0.0 && c.coefficient[i] <= 1.0))
