@@ -61,6 +61,18 @@ std::pair<std::string, int> location_of(const Case& c, const std::string& key) {
   return {case_file_of(c) + " (" + p->origin + " " + key + "=" + p->value + ")", 0};
 }
 
+// A key's value as the case gave it, or `otherwise` when the case did not record it.
+std::string value_of(const Case& c, const std::string& key, const std::string& otherwise) {
+  const ResolvedParameter* p = recorded(c, key);
+  return p ? p->value : otherwise;
+}
+
+// A refusal of the value at `key`: located where it came from, with that value.
+[[noreturn]] void refuse_at(const Case& c, const std::string& key, const std::string& rule) {
+  const auto [file, line] = location_of(c, key);
+  throw io::InputError(file, line, key, value_of(c, key, ""), rule);
+}
+
 // The load the flanks cannot carry at any separation (the rough-surface table's search gives up):
 // an input error at the torque, naming the flanks' roughness and where each came from.
 [[noreturn]] void throw_overload(const Case& c, const std::string& what) {
@@ -269,10 +281,7 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
         try {
           s = surface::synthesise_profile(patch, options, length);
         } catch (const std::invalid_argument& e) {
-          const std::string key = t + (given ? "synthesis_length" : "synthesis");
-          const auto [where, line] = location_of(c, key);
-          const ResolvedParameter* value = recorded(c, key);
-          throw io::InputError(where, line, key, value ? value->value : "", e.what());
+          refuse_at(c, t + (given ? "synthesis_length" : "synthesis"), e.what());
         }
         const double start = given ? span.centred_start(g, s.profile.length()) : span.generated_first[g];
         if (given && (start > span.first[g] || start + s.profile.length() < span.last[g])) {
@@ -334,10 +343,7 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
           tracks.push_back({surface::generate_profile(spec, span.generated_last[g] - span.generated_first[g]),
                             span.generated_first[g]});
         } catch (const core::KeyedError& e) {
-          const std::string key = gear + ".flank.profile." + e.key();
-          const auto [where, line] = location_of(c, key);
-          const ResolvedParameter* value = recorded(c, key);
-          throw io::InputError(where, line, key, value ? value->value : "", e.what());
+          refuse_at(c, gear + ".flank.profile." + e.key(), e.what());
         } catch (const std::invalid_argument& e) {
           const auto [where, line] = location_of(c, gear + ".flank.profile.kind");
           throw io::InputError(where, line, gear + ".flank.profile", "", e.what());
@@ -364,11 +370,6 @@ double flank_points(const Case& c, const contact::FlankSpan& span, int g) {
   if (flank.measured_profile) return static_cast<double>(flank.measured_profile->z.size());
   if (flank.profile) return generated / flank.profile->spacing + 1.0;
   return 0.0;
-}
-
-std::string value_of(const Case& c, const std::string& key, const std::string& otherwise) {
-  const ResolvedParameter* p = recorded(c, key);
-  return p ? p->value : otherwise;
 }
 
 // A deterministic run's memory and time from its sizes (contact::deterministic_cost) against the
@@ -562,9 +563,7 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
     throw_overload(c, e.what());  // at the torque, naming the roughness and where each came from
   } catch (const core::KeyedError& e) {
     // A refusal the physics pins on one key: located where that key's value came from.
-    const auto [file, line] = location_of(c, e.key());
-    const ResolvedParameter* value = recorded(c, e.key());
-    throw io::InputError(file, line, e.key(), value ? value->value : "", e.what());
+    refuse_at(c, e.key(), e.what());
   } catch (const std::invalid_argument& e) {
     // The case's values are what the physics refused: name the case file rather than leave the
     // message without a place.
