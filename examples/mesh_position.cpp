@@ -12,7 +12,7 @@
 //   2. assemble the gear mesh and read off the load, curvature and Hertz pressure at C,
 //   3. build the equivalent rough surface and the Greenwood-Williamson summation over its summits,
 //   4. solve the rough line contact across the strip at C.
-// `geartrib run` does the same at every position from A to E (contact::run_mesh_contact).
+// `geartrib run` does the same at every position from A to E (runs::run_mesh_contact).
 //
 // Usage: mesh_position [gears/m6z30.toml]
 #include "asperity/case_setup.hpp"
@@ -21,6 +21,7 @@
 #include "contact/rough_line_contact.hpp"
 #include "gear/gear_mesh.hpp"
 #include "io/case_file.hpp"
+#include "runs/mesh_cycle.hpp"
 
 #include <cstdio>
 #include <string>
@@ -46,7 +47,7 @@ int main(int argc, char** argv) {
   // Step 3: the two flanks' roughness combined into one equivalent surface against a flat, the
   // summit contact pair, and the case's asperity model. GreenwoodWilliamson tabulates nominal
   // pressure against separation up to the pressure we will need.
-  const surface::EquivalentSurface surf = contact::case_equivalent_surface(c);
+  const surface::EquivalentSurface surf = runs::case_equivalent_surface(c);
   const asperity::ContactPair pair = asperity::contact_pair(c);
   const auto model = asperity::make_case_model(c, c.asperity.model);
   contact::GreenwoodWilliamsonOptions gw_options;

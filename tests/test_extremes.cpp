@@ -11,6 +11,7 @@
 #include "gear/gear_mesh.hpp"
 #include "gear/mesh_dynamics.hpp"
 #include "io/input_error.hpp"
+#include "runs/mesh_cycle.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/kinsol_solver.hpp"
 #include "test_support.hpp"
@@ -48,13 +49,14 @@ double min_of(const contact::MeshContactResult& r, const std::string& name) {
 contact::MeshContactResult cycle(const Case& c, int positions = 21) {
   const gear::GearMesh mesh(c);
   const solvers::KinsolSolver kinsol;
-  return contact::run_mesh_contact(c, mesh, c.contact.coupled() ? &kinsol : nullptr, {}, positions);
+  return runs::run_mesh_contact(c, mesh, c.contact.fidelity == ContactFidelity::coupled ? &kinsol : nullptr, {},
+                                positions);
 }
 
 // The seed's rough surface and pair with the table sized for `max_pressure`.
 struct Strip {
   explicit Strip(const Case& c, double max_pressure)
-      : surface(contact::case_equivalent_surface(c)),
+      : surface(runs::case_equivalent_surface(c)),
         pair(asperity::contact_pair(c)),
         model(asperity::make_case_model(c, c.asperity.model)),
         gw(surface, *model, pair, max_pressure, {}),

@@ -12,6 +12,7 @@
 #include "io/input_error.hpp"
 #include "lubrication/film_closure.hpp"
 #include "lubrication/lubricant.hpp"
+#include "runs/mesh_cycle.hpp"
 #include "solvers/integrators.hpp"
 #include "test_support.hpp"
 
@@ -83,7 +84,7 @@ TEST(FilmClosure, MeanGapLimitsAndInverse) {
 // The seed's rough surface and its GW table.
 struct SeedSurface {
   Case c = test::lubricated_case();
-  surface::EquivalentSurface surface = contact::case_equivalent_surface(c);
+  surface::EquivalentSurface surface = runs::case_equivalent_surface(c);
   asperity::ContactPair pair = asperity::contact_pair(c);
   std::unique_ptr<asperity::AsperityModel> model = asperity::make_case_model(c, c.asperity.model);
   contact::GreenwoodWilliamson gw{surface, *model, pair, 2e9, contact::GreenwoodWilliamsonOptions{}};
@@ -178,7 +179,7 @@ TEST(TractionCurves, InterpolatesAlongAndBetweenCurvesAndFlagsBeyond) {
 
 contact::MeshContactResult run(const Case& c, int positions = 41) {
   const gear::GearMesh mesh(c);
-  return contact::run_mesh_contact(c, mesh, nullptr, {}, positions);
+  return runs::run_mesh_contact(c, mesh, nullptr, {}, positions);
 }
 Case with(const std::vector<io::CaseChange>& changes) {
   return io::load_case(test::source_dir() / "gears/m6z30.toml", changes);
@@ -221,7 +222,7 @@ TEST(LubricatedSummary, WithDynamicsBAndDStillCarryTheSinglePairsLoad) {
   const Case c = with({{"mesh.dynamics", "odeint"}, {"speed", "300 rpm"}});
   const gear::GearMesh mesh(c);
   const auto integrator = solvers::make_integrator("odeint");
-  const auto r = contact::run_mesh_contact(c, mesh, nullptr, {}, 201, integrator.get());
+  const auto r = runs::run_mesh_contact(c, mesh, nullptr, {}, 201, integrator.get());
   ASSERT_NE(r.find("dynamic_load_factor"), nullptr);
   const auto& s = r.find("s_m")->values;
   const auto& w = r.find("line_load_N_per_m")->values;

@@ -1,11 +1,17 @@
 // The main job: rough-surface contact at every position of one tooth pair's path A -> E,
-// evaluating only what the case asks for, with the time each stage took.
+// evaluating only what the case asks for, with the time each stage took. The cycle's stages, each
+// from typed inputs to typed results: the path (contact/mesh_path.hpp), the contact fidelity's
+// preparation and solve (contact/fidelity.hpp; the registered ones in contact/fidelities.hpp), the
+// lubrication around it (contact/mesh_lubrication.hpp), and the output series built once at the end.
 #pragma once
 
-#include "case/case.hpp"
+#include "case/case.hpp"  // for the sub-structs until they move out of case.hpp
+#include "contact/contact_options.hpp"
+#include "contact/surface_model.hpp"
 #include "core/nonlinear_solver.hpp"
 #include "core/ode_integrator.hpp"
 #include "gear/gear_mesh.hpp"
+#include "gear/mesh_dynamics.hpp"
 #include "surface/rough_surface.hpp"
 
 #include <array>
@@ -22,9 +28,6 @@ struct Series {
   std::string unit;
   std::vector<double> values;
 };
-
-// The equivalent rough surface of a case's two flanks (seed section 4) with its roughness settings.
-surface::EquivalentSurface case_equivalent_surface(const Case& c);
 
 // The mean of a series along A -> E: trapezoidal rule over the evenly spaced positions.
 double path_mean(const std::vector<double>& values);
@@ -169,14 +172,30 @@ struct MeshContactResult {
 
 struct RollingFlanks;
 struct FlankSpan;
+// The flanks a fidelity that rolls their profiles reads: one track per tooth (teeth[g] of gear g)
+// over the span it reads (contact/deterministic/mesh_deterministic.hpp).
+using FlankSource = std::function<RollingFlanks(const FlankSpan& span, const int teeth[2])>;
 
-// progress(done, total) is called after each position. positions <= 0: the case's number.
-// flanks: the deterministic fidelity's flank profiles for the span it reads (mesh_deterministic.hpp).
-// dynamics: when the case asks for dynamics (mesh.dynamics = cvode | odeint), the integrator that
-// computes the steady mesh cycle; each pair then carries its dynamic load instead of the static share.
-MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
-                                   const std::function<void(int, int)>& progress = {}, int positions = 0,
-                                   const OdeIntegrator* dynamics = nullptr,
-                                   const std::function<RollingFlanks(const FlankSpan&, const int[2])>& flanks = {});
+// The mesh cycle's typed inputs.
+struct MeshCycleInputs {
+  const gear::GearMesh& mesh;
+  ContactSettings contact;  // contact.positions: the positions along A -> E
+  RunningInSettings running_in;
+  StatisticalFlanks flanks;
+  // Lubricated: the oil and its models, and the operating point's temperatures; nullptr: dry.
+  const LubricationCase* lubrication = nullptr;
+  const OperatingPoint* operating = nullptr;
+  // Dynamics: the integrator of the steady mesh cycle and the model's settings; each pair then
+  // carries its dynamic load instead of the static share. nullptr: static load sharing.
+  const OdeIntegrator* dynamics = nullptr;
+  gear::DynamicsSettings dynamics_settings;
+  const NonlinearSolver* solver = nullptr;  // for a fidelity that needs one (coupled)
+  FlankSource flank_source;                 // for a fidelity that rolls the flanks' profiles
+  std::function<void(int, int)> progress;   // (done, total) after each position
+};
+
+// The stages in order: path, the fidelity's preparation, the film (lubricated), its solve,
+// friction/temperatures/wear, the outputs.
+MeshContactResult run_mesh_contact(const MeshCycleInputs& in);
 
 }  // namespace geartrib::contact

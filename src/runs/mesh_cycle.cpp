@@ -1,8 +1,10 @@
 #include "runs/mesh_cycle.hpp"
 
+#include "asperity/case_setup.hpp"
+#include "contact/deterministic/mesh_deterministic.hpp"
+#include "contact/fidelity_registry.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
-#include "contact/mesh_deterministic.hpp"
 #include "core/keyed_error.hpp"
 #include "gear/gear_mesh.hpp"
 #include "gear/mesh_dynamics.hpp"
@@ -541,6 +543,39 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
       scalar("/synthesis/" + f.gear + " attribute " + name, v);
 }
 
+surface::EquivalentSurface case_equivalent_surface(const Case& c) {
+  return surface::equivalent_surface(c.pinion.flank.roughness, c.wheel.flank.roughness, c.roughness.distribution,
+                                     c.roughness.eta_sigma_beta);
+}
+
+contact::MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
+                                            const std::function<void(int, int)>& progress, int positions,
+                                            const OdeIntegrator* dynamics, const contact::FlankSource& flanks_source) {
+  const std::unique_ptr<asperity::AsperityModel> model = asperity::make_case_model(c, c.asperity.model);
+  contact::StatisticalFlanks flanks;
+  flanks.materials = {&c.pinion.material, &c.wheel.material};
+  flanks.roughness = {c.pinion.flank.roughness, c.wheel.flank.roughness};
+  flanks.distribution = c.roughness.distribution;
+  flanks.eta_sigma_beta = c.roughness.eta_sigma_beta;
+  flanks.model = model.get();
+  flanks.friction = c.friction_coefficient;
+  const bool dynamic = c.dynamics.engine != "none";
+  if (dynamic && !dynamics) throw std::invalid_argument("the case asks for dynamics but no integrator was given");
+  contact::MeshCycleInputs in{.mesh = mesh,
+                              .contact = c.contact,
+                              .running_in = c.running_in,
+                              .flanks = flanks,
+                              .lubrication = c.lubrication.lubricated ? &c.lubrication : nullptr,
+                              .operating = &c.operating,
+                              .dynamics = dynamic ? dynamics : nullptr,
+                              .dynamics_settings = dynamic ? gear::dynamics_settings(c) : gear::DynamicsSettings{},
+                              .solver = solver,
+                              .flank_source = flanks_source,
+                              .progress = progress};
+  if (positions > 0) in.contact.positions = positions;
+  return contact::run_mesh_contact(in);
+}
+
 double finest_element_size(const Case& c) {
   return std::max(profile_spacing(c.pinion.flank), profile_spacing(c.wheel.flank));
 }
@@ -554,11 +589,12 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
   std::vector<contact::FlankSynthesis> synthesis;
   PathHalfWidths half_widths(c, mesh, integrator.get());
   try {
-    r = contact::run_mesh_contact(c, mesh, c.contact.coupled() ? &kinsol : nullptr, progress, 0, integrator.get(),
-                                  [&](const contact::FlankSpan& span, const int teeth[2]) {
-                                    check_budget(c, span, teeth);
-                                    return rolling_flanks(c, span, teeth, synthesis, half_widths);
-                                  });
+    const contact::FidelityNeeds needs = contact::find_fidelity(c.contact.fidelity).traits.needs;
+    r = run_mesh_contact(c, mesh, needs.nonlinear_solver ? &kinsol : nullptr, progress, 0, integrator.get(),
+                         [&](const contact::FlankSpan& span, const int teeth[2]) {
+                           check_budget(c, span, teeth);
+                           return rolling_flanks(c, span, teeth, synthesis, half_widths);
+                         });
   } catch (const contact::RoughSurfaceOverload& e) {
     throw_overload(c, e.what());  // at the torque, naming the roughness and where each came from
   } catch (const core::KeyedError& e) {

@@ -3,13 +3,16 @@
 // the statistical model on the same flanks beside it, and running-in over successive meshes.
 #pragma once
 
-#include "case/case.hpp"
+#include "contact/contact_options.hpp"
 #include "contact/deterministic_contact.hpp"
-#include "contact/mesh_contact.hpp"
-#include "core/ode_integrator.hpp"
-#include "gear/gear_mesh.hpp"
+#include "contact/fidelity.hpp"
+#include "contact/half_plane_bem.hpp"
+#include "contact/statistical/strip_fidelities.hpp"
 
-#include <functional>
+#include <array>
+#include <limits>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace geartrib::contact {
@@ -41,7 +44,6 @@ struct FlankSpan {
 struct RollingFlanks {
   std::vector<FlankTrack> pinion, wheel;
 };
-using FlankSource = std::function<RollingFlanks(const FlankSpan& span, const int teeth[2])>;
 
 // What a deterministic run will take, estimated from its sizes alone (before any flank is made or
 // strip solved), from measured per-unit costs (docs/reference/performance.md#budgets).
@@ -67,10 +69,60 @@ DeterministicCost deterministic_cost(const FlankSpan& span, const DeterministicW
 // at least 1 and at most one a position.
 int strip_threads(const ContactSettings& cs, int positions);
 
-// Fills r's contact, validity, statistical, pressure-profile and running-in parts; r.mesh holds
-// the path's kinematics and loads (run_mesh_contact's stage 1). dynamics: the integrator of a case
-// that asks for dynamics (the statistical model beside runs on the same loads).
-void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactResult& r, const FlankSource& flanks,
-                       const std::function<void(int, int)>& progress, const OdeIntegrator* dynamics);
+namespace deterministic {
+
+inline constexpr std::array<std::string_view, 10> kKeys = {
+    "contact.positions",         "contact.outputs", "contact.element_size", "contact.strip_halfwidths",
+    "contact.pressure_profiles", "contact.threads", "running_in.meshes",    "running_in.tolerance",
+    "running_in.teeth",          "asperity.model"};
+inline constexpr std::array<TradeKnob, 3> kKnobs = {TradeKnob{"positions", "contact.positions"},
+                                                    {"element_size", "contact.element_size"},
+                                                    {"strip_halfwidths", "contact.strip_halfwidths"}};
+inline constexpr std::array<OutputGroup, 4> kGroups = {
+    OutputGroup{"/contact", "the flanks' profiles in contact across the strip, by boundary elements"},
+    OutputGroup{"/contact/pressure", "the pressure across the strip at the positions kept"},
+    OutputGroup{"/statistical",
+                "the statistical model (uncoupled) on the same flanks: their spectral moments from the profiles"},
+    OutputGroup{"/running_in", "the flanks' plastic deformation carried from mesh to mesh"}};
+
+// A row of the running-in history.
+struct HistoryRow {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();  // row 0: before any mesh
+  double mesh = 0.0, new_plastic = kNaN, real_area = kNaN, plastic_fraction = kNaN, peak_pressure = kNaN;
+  surface::ProfileStatistics flank[2];
+};
+
+// The flanks' profiles rolled through the strip by boundary elements, with the statistical model
+// on the same flanks beside it and running-in over successive meshes.
+struct BoundaryElements {
+  static constexpr std::string_view name = "deterministic";
+  static constexpr std::string_view description =
+      "the flanks' profiles in contact through boundary elements, sliding past each other along the path";
+  static constexpr FidelityTraits traits{kKeys,   kKnobs, {false, true}, "deterministic", "", "max_von_mises_Pa",
+                                         kGroups, true};
+
+  struct State {
+    FlankSpan span;
+    DeterministicOptions options;
+    HalfPlaneGrid grid;
+    std::array<std::vector<double>, 2> sigma;  // the contact point's arc coordinate on each flank [m]
+    int teeth[2] = {1, 1};
+    bool hunting = false;
+    RollingFlanks flanks;
+    std::optional<SurfaceModel> model;  // the statistical model of the flanks' profiles (both rough)
+    const SurfaceModel* surface() const { return model ? &*model : nullptr; }
+  };
+  struct Solution {
+    std::optional<StatisticalSolution> statistical;
+    MeshPass first;  // the first mesh's strips and pressure profiles
+    std::vector<HistoryRow> history;
+    std::optional<RunningInResult> running_in;
+  };
+  static State prepare(const FidelityInputs& in, StageClock& clock);
+  static Solution solve(const FidelityInputs& in, State& state, const std::vector<double>& share, StageClock& clock);
+  static void write(const FidelityInputs& in, State& state, Solution& s, MeshContactResult& r);
+};
+
+}  // namespace deterministic
 
 }  // namespace geartrib::contact
