@@ -642,7 +642,7 @@ std::vector<std::string> MeshLubrication::warnings(const LubricationSummary& sum
       break;
     }
   if (!roughness_.from_heights)
-    out.push_back(
+    out.emplace_back(
         "the flanks are given by summit statistics alone: lambda and the ISO formulas take the summit model's "
         "composite sigma, not a measured Rq and Ra");
   else if (surfaces_disagree())
@@ -652,7 +652,7 @@ std::vector<std::string> MeshLubrication::warnings(const LubricationSummary& sum
         "formulas take the flanks' Rq and Ra, the asperity contact and the sharing the summit model",
         model_.surface.surface_sigma * 1e6, roughness_.rq * 1e6, roughness_.source, sigma_ratio()));
   if (largest(positions_, &Position::bearing_saturated) > 0.0)
-    out.push_back(
+    out.emplace_back(
         "the Hertz pressure reaches the hardness at some positions (flag_bearing_area_saturated): the bearing-area "
         "model has flattened the flanks completely there");
   curve_warnings(out);

@@ -375,6 +375,7 @@ void run_meshes(const FidelityInputs& in, BoundaryElements::State& st, const std
     }
     if (ri) {
       std::vector<const MeshPass*> views;
+      views.reserve(passes.size());
       for (const auto& q : passes) views.push_back(&q);
       out.history.push_back(history_row(round, views, all, st.span));
     }
