@@ -382,8 +382,8 @@ TEST(CaseParameters, TableIsConsistent) {
 }
 
 // The case's defaults (case/case.hpp, what a case file gets) and the physics option structs'
-// defaults (what a library caller gets) are stated in two layers that cannot include each other
-// (case/ sits below contact/ and gear/); they must agree.
+// defaults (what a library caller gets) must agree: the contact resolutions are still stated in
+// both (ContactSettings and the contact options); the dynamics' are one struct.
 TEST(CaseParameters, CaseDefaultsAreThePhysicsDefaults) {
   const Case c;
   const contact::StripOptions strip;
