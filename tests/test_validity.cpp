@@ -146,7 +146,7 @@ TEST(Quadrature, JacksonGreenPlasticFractionConvergedAtTheDefault) {
   const Case c = io::load_case(test::source_dir() / "gears/m6z30-dry.toml", {{"model", "jackson-green"}});
   Case fine = c;
   fine.contact.height_points = 2048;
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   const auto a = contact::run_mesh_contact(c, mesh, nullptr, {}, 11);
   const auto b = contact::run_mesh_contact(fine, mesh, nullptr, {}, 11);
   const auto& x = a.find("plastic_area_fraction")->values;
@@ -158,7 +158,7 @@ TEST(Validity, SeedCaseIsFullyPlasticAndOutsideTheRanges) {
   // The seed's flanks (psi ~ 121): every position fully plastic, beyond the law's fitted range,
   // summits interacting; the verdict says so once, with the counts.
   const Case& c = test::seed_case();
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   const auto r = contact::run_mesh_contact(c, mesh, nullptr, {}, 21);
   EXPECT_EQ(r.regime, "fully plastic");
   for (const char* q : {"flag_beyond_fitted_range", "flag_summits_interact"})
@@ -183,7 +183,7 @@ TEST(Validity, SmoothLightlyLoadedCaseIsElasticAndWithinRange) {
   // A mirror-like surface (psi 0.39) at a light load: no flag, no position beyond delta_c, regime elastic.
   const Case c = io::load_case(test::source_dir() / "gears/m6z30-dry.toml",
                                {{"ra", "0.005 um"}, {"summit_radius", "1000 um"}, {"torque", "5 N m"}});
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   const auto r = contact::run_mesh_contact(c, mesh, nullptr, {}, 11);
   EXPECT_EQ(r.regime, "elastic") << r.verdict;
   for (const auto& f : r.flag_counts) EXPECT_EQ(f.positions, 0) << f.name << ": " << r.verdict;

@@ -23,7 +23,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
-#include <tuple>
+#include <utility>
 
 namespace geartrib::app {
 
@@ -103,7 +103,7 @@ std::vector<Knob> knobs_of(const Case& c) {
   out.push_back(
       {"dynamics", {{"none (static)", {{"mesh.dynamics", "none"}}}, {"cvode " + rtols.back(), finest}}, true});
   // The integrators and their tolerances (recommended when the case asks for dynamics).
-  Knob integrator{"integrator", {}, c.dynamics.engine == "none"};
+  Knob integrator{"integrator", {}, c.dynamics.engine == gear::DynamicsEngine::none};
   std::vector<std::string> engines = row("mesh.dynamics").choices;
   std::erase(engines, "none");
   std::stable_partition(engines.begin(), engines.end(), [](const std::string& e) { return e != "cvode"; });
@@ -122,9 +122,9 @@ std::vector<Knob> knobs_of(const Case& c) {
   // Lubricated: the film formulas and inlet-heating corrections (physics choices; the case's own
   // last, the reference), through the asperities' share of the load they leave.
   if (c.lubrication.lubricated)
-    for (const auto& [name, key, own] :
-         {std::tuple{"film_formula", "lubrication.film_formula", c.lubrication.film_formula},
-          std::tuple{"inlet_heating", "lubrication.inlet_heating", c.lubrication.inlet_heating}}) {
+    for (const auto& [name, key] : {std::pair{"film_formula", "lubrication.film_formula"},
+                                    std::pair{"inlet_heating", "lubrication.inlet_heating"}}) {
+      const std::string own = row(key).get(c, -1).text;  // the case's choice by name
       Knob k{name, {}, true};
       for (const auto& v : row(key).choices)
         if (v != own) k.settings.push_back({v, {{key, v}}});

@@ -1,7 +1,9 @@
 #include "contact/mesh_contact.hpp"
 
-#include "asperity/case_setup.hpp"
 #include "asperity/side_contact.hpp"
+#include "case/asperity_setup.hpp"
+#include "case/contact_setup.hpp"
+#include "case/gear_setup.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_deterministic.hpp"
 #include "contact/mesh_lubrication.hpp"
@@ -24,11 +26,6 @@ const Series* MeshContactResult::find(const std::string& name) const {
     for (const auto& s : *group)
       if (s.name == name) return &s;
   return nullptr;
-}
-
-surface::EquivalentSurface case_equivalent_surface(const Case& c) {
-  return surface::equivalent_surface(c.pinion.flank.roughness, c.wheel.flank.roughness, c.roughness.distribution,
-                                     c.roughness.eta_sigma_beta);
 }
 
 double path_mean(const std::vector<double>& v) {
@@ -188,7 +185,7 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
                                            k.rolling_pinion, k.rolling_wheel, own.share});
       }
     }
-    if (c.dynamics.engine != "none") {
+    if (c.dynamics.engine != gear::DynamicsEngine::none) {
       // The steady mesh cycle at the operating speed; each pair's dynamic load replaces its share.
       if (!dynamics) throw std::invalid_argument("the case asks for dynamics but no integrator was given");
       const gear::MeshDynamics dyn(mesh, gear::dynamics_settings(c));
@@ -233,10 +230,7 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   r.plasticity_index = surface::plasticity_index(r.surface, pair.modulus, pair.hardness);
   const auto model = asperity::make_case_model(c, c.asperity.model);
   r.asperity_model = std::string(model->name());
-  GreenwoodWilliamsonOptions gwo;
-  gwo.height_points = cs.height_points;
-  gwo.table_points_per_sigma = cs.table_points;
-  gwo.plastic = cs.plastic_fraction;
+  const GreenwoodWilliamsonOptions gwo = greenwood_williamson_options(c);
   double p_max = 0.0;
   for (double p : p0) p_max = std::max(p_max, p);
   const GreenwoodWilliamson gw(r.surface, *model, pair, 1.5 * p_max + 1.0, gwo);
@@ -255,11 +249,7 @@ MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, co
   }
 
   // Stage 3: the rough line contact across the strip at every position.
-  StripOptions so;
-  so.fidelity = cs.coupled() ? StripFidelity::coupled : StripFidelity::uncoupled;
-  so.strip_points = cs.strip_points;
-  so.lookup = cs.exact_strip_lookup ? StripLookup::exact : StripLookup::cubic;
-  so.coupled_nodes = cs.coupled_nodes;
+  const StripOptions so = strip_options(c);
   const RoughLineContact strip(gw, mesh.composite_modulus(), mesh.pair().spec().face_width, so, solver);
   std::vector<StripResult> strips;
   strips.reserve(static_cast<std::size_t>(n));

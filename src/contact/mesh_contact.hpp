@@ -23,9 +23,6 @@ struct Series {
   std::vector<double> values;
 };
 
-// The equivalent rough surface of a case's two flanks (seed section 4) with its roughness settings.
-surface::EquivalentSurface case_equivalent_surface(const Case& c);
-
 // The mean of a series along A -> E: trapezoidal rule over the evenly spaced positions.
 double path_mean(const std::vector<double>& values);
 

@@ -1,5 +1,6 @@
 #include "contact/mesh_deterministic.hpp"
 
+#include "case/contact_setup.hpp"
 #include "contact/series_columns.hpp"
 #include "core/keyed_error.hpp"
 #include "core/stopwatch.hpp"
@@ -280,16 +281,7 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
   }
   // The boundary elements: the softer flank's hardness caps the pressure and takes the plastic
   // deformation (equal hardness: half each).
-  const Material& m1 = c.pinion.material;
-  const Material& m2 = c.wheel.material;
-  DeterministicOptions o;
-  o.element_size = cs.element_size;
-  o.strip_halfwidths = cs.strip_halfwidths;
-  o.pressure_cap = std::min(m1.hardness, m2.hardness);
-  o.poisson_ratio = m1.hardness <= m2.hardness ? m1.poisson_ratio : m2.poisson_ratio;
-  o.pinion_plastic_share = m1.hardness < 0.99 * m2.hardness ? 1.0 : m2.hardness < 0.99 * m1.hardness ? 0.0 : 0.5;
-  o.subsurface_stress = cs.asperity_stress;
-  o.plastic_overlap = c.running_in.tolerance;
+  const DeterministicOptions o = deterministic_options(c);
   // The flanks are read over the grid's whole reach (at least 8 elements) and two elements more.
   const HalfPlaneGrid grid = strip_grid(span.strip_half_length, o);
   span.elements = grid.size;

@@ -61,11 +61,11 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
     : case_(c),
       mesh_(mesh),
       path_(p),
-      formula_(lub::film_formula_from_name(c.lubrication.film_formula)),
-      inlet_(lub::inlet_heating_from_name(c.lubrication.inlet_heating)),
-      film_gap_(lub::film_gap_from_name(c.lubrication.film_gap)),
-      traction_(lub::film_traction_from_name(c.lubrication.traction)),
-      bulk_law_(lub::mean_friction_law_from_name(c.lubrication.mean_friction)) {
+      formula_(c.lubrication.film_formula),
+      inlet_(c.lubrication.inlet_heating),
+      film_gap_(c.lubrication.film_gap),
+      traction_(c.lubrication.traction),
+      bulk_law_(c.lubrication.mean_friction) {
   const auto& lubricant = c.lubrication.lubricant;
   reduced_modulus_ = 2.0 * mesh.composite_modulus();
   for (int g = 0; g < 2; ++g) {
@@ -134,15 +134,15 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
         "the flanks' bulk temperature (/lubrication bulk_temperature_K), estimated by ISO/TS 6336-20 with the {} "
         "friction law's flash temperature, is {:.1f} degC, beyond {:.1f} degC, the hottest at which {}'s laws hold "
         "(its data reach {:.1f} degC): the film, the load sharing and the friction have no viscosity there",
-        c.lubrication.mean_friction, bulk_temperature_ - 273.15, oil_range_.hi - 273.15, lubricant.name,
-        lubricant.max_temperature - 273.15));
+        lub::mean_friction_law_name(c.lubrication.mean_friction), bulk_temperature_ - 273.15, oil_range_.hi - 273.15,
+        lubricant.name, lubricant.max_temperature - 273.15));
   bulk_extrapolated_ = !lubricant.fixed() && !lub::data_range(lubricant).contains(bulk_temperature_);
   oil_at_bulk_ = lub::oil_state(lubricant, bulk_temperature_);
 
   // The asperities' pressure against the mean-plane separation, and the film and shares.
   plasticity_index_ = surface::plasticity_index(gw.surface(), gw.pair().modulus, gw.pair().hardness);
-  const AsperityPressureModel model = asperity_pressure_model_from_name(c.lubrication.asperity_pressure);
-  plastic_fraction_ = model == AsperityPressureModel::automatic ? smallest_plastic_fraction(gw, p.hertz_p0) : 0.0;
+  const lub::AsperityPressureModel model = c.lubrication.asperity_pressure;
+  plastic_fraction_ = model == lub::AsperityPressureModel::automatic ? smallest_plastic_fraction(gw, p.hertz_p0) : 0.0;
   const double weight = bearing_area_weight(model, plastic_fraction_);
   // The closure's heights are the summit model's surface (its composite sigma): the gap the film
   // fills and the asperities' pressure then describe one surface. (lambda and the ISO formulas take
@@ -365,13 +365,13 @@ void MeshLubrication::finish(MeshContactResult& r) {
 
   LubricationSummary sum;
   sum.lubricant = c.lubrication.lubricant.name;
-  sum.film_formula = c.lubrication.film_formula;
-  sum.inlet_heating = c.lubrication.inlet_heating;
-  sum.film_gap = c.lubrication.film_gap;
-  sum.asperity_pressure = c.lubrication.asperity_pressure;
+  sum.film_formula = lub::film_formula_name(c.lubrication.film_formula);
+  sum.inlet_heating = lub::inlet_heating_name(c.lubrication.inlet_heating);
+  sum.film_gap = lub::film_gap_name(c.lubrication.film_gap);
+  sum.asperity_pressure = lub::asperity_pressure_model_name(c.lubrication.asperity_pressure);
   sum.bearing_area_weight = asperity_->bearing_weight();
-  sum.traction = c.lubrication.traction;
-  sum.bulk_friction_law = c.lubrication.mean_friction;
+  sum.traction = lub::film_traction_name(c.lubrication.traction);
+  sum.bulk_friction_law = lub::mean_friction_law_name(c.lubrication.mean_friction);
   sum.oil_temperature = c.operating.oil_temperature;
   sum.bulk_temperature = bulk_temperature_;
   sum.bulk_estimated = bulk_estimated_;
@@ -460,10 +460,11 @@ void MeshLubrication::finish(MeshContactResult& r) {
   {
     const double w = sum.bearing_area_weight;
     const std::string why =
-        c.lubrication.asperity_pressure == "auto"
+        c.lubrication.asperity_pressure == lub::AsperityPressureModel::automatic
             ? fmt::format(" (its plastic area fraction under the whole load at least {:.3g}; plasticity index {:.3g})",
                           plastic_fraction_, plasticity_index_)
-            : fmt::format(" (lubrication.asperity_pressure = {})", c.lubrication.asperity_pressure);
+            : fmt::format(" (lubrication.asperity_pressure = {})",
+                          lub::asperity_pressure_model_name(c.lubrication.asperity_pressure));
     std::string pressure = w >= 1.0   ? "by their bearing area at the hardness, the flanks fully plastic" + why
                            : w <= 0.0 ? fmt::format("by the {} model{}", r.asperity_model, why)
                                       : fmt::format("by a blend, {:.2f} bearing area and {:.2f} {} model{}", w, 1.0 - w,
