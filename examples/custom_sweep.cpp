@@ -13,8 +13,8 @@
 //   4. pick a few numbers out of the result's named series and print one table row.
 //
 // Usage: custom_sweep [gears/m6z30-dry.toml]
+#include "case/gear_setup.hpp"
 #include "contact/mesh_contact.hpp"
-#include "gear/gear_mesh.hpp"
 #include "io/case_file.hpp"
 #include "runs/mesh_cycle.hpp"
 
@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
 
       // Step 2: the mesh depends on the torque (load sharing, Hertz pressures), so it is built
       // for each variant.
-      const gear::GearMesh mesh(c);
+      const gear::GearMesh mesh = gear::case_mesh(c);
 
       // Step 3: the contact along A -> E. No solver is needed for the uncoupled fidelity the case
       // asks for, and no integrator since the case's dynamics are "none". 41 positions are

@@ -15,11 +15,12 @@
 // `geartrib run` does the same at every position from A to E (runs::run_mesh_contact).
 //
 // Usage: mesh_position [gears/m6z30.toml]
-#include "asperity/case_setup.hpp"
+#include "case/asperity_setup.hpp"
+#include "case/contact_setup.hpp"
+#include "case/gear_setup.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
 #include "contact/rough_line_contact.hpp"
-#include "gear/gear_mesh.hpp"
 #include "io/case_file.hpp"
 #include "runs/mesh_cycle.hpp"
 
@@ -35,7 +36,7 @@ int main(int argc, char** argv) {
 
   // Step 2: the gear mesh: geometry, tooth stiffness and load sharing at the operating point.
   // Positions are distances s from T1 along the line of action; path().c is the pitch point.
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   const double s = mesh.pair().path().c;
   const gear::MeshInstant instant = mesh.analysis().at(s);
   const gear::PairLoad load = instant.pairs.front();  // between B and D one pair carries it all
@@ -47,22 +48,19 @@ int main(int argc, char** argv) {
   // Step 3: the two flanks' roughness combined into one equivalent surface against a flat, the
   // summit contact pair, and the case's asperity model. GreenwoodWilliamson tabulates nominal
   // pressure against separation up to the pressure we will need.
-  const surface::EquivalentSurface surf = runs::case_equivalent_surface(c);
+  const surface::EquivalentSurface surf = contact::case_equivalent_surface(c);
   const asperity::ContactPair pair = asperity::contact_pair(c);
   const auto model = asperity::make_case_model(c, c.asperity.model);
-  contact::GreenwoodWilliamsonOptions gw_options;
-  gw_options.height_points = c.contact.height_points;
-  gw_options.table_points_per_sigma = c.contact.table_points;
-  const contact::GreenwoodWilliamson gw(surf, *model, pair, 1.5 * load.hertz_peak, gw_options);
+  const contact::GreenwoodWilliamson gw(surf, *model, pair, 1.5 * load.hertz_peak,
+                                        contact::greenwood_williamson_options(c));
   std::printf("surface: sigma_s = %.3f um, plasticity index %.2f, model %s\n", surf.summit_sigma * 1e6,
               surface::plasticity_index(surf, pair.modulus, pair.hardness), c.asperity.model.c_str());
 
   // Step 4: the strip. Uncoupled fidelity imposes the smooth Hertz pressure on the rough surface
   // and integrates the summits' contacts across the strip (the coupled one needs a Newton solver,
   // e.g. solvers::KinsolSolver from geartrib::solvers).
-  contact::StripOptions options;
-  options.strip_points = c.contact.strip_points;
-  const contact::RoughLineContact strip(gw, mesh.composite_modulus(), c.gear_pair.face_width, options, nullptr);
+  const contact::RoughLineContact strip(gw, mesh.composite_modulus(), c.gear_pair.face_width, contact::strip_options(c),
+                                        nullptr);
   const contact::StripResult r = strip.solve(load.line_load, radius);
   std::printf("real area ratio %.4f, plastic area fraction %.4f, mean real pressure %.2f GPa\n", r.real_area_ratio,
               r.plastic_area_fraction, r.mean_real_pressure * 1e-9);

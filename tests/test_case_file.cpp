@@ -258,7 +258,7 @@ TEST(CaseFile, MeasuredPatchSynthesisKeys) {
   const auto path = test::source_dir() / "gears/m6z30-measured.toml";
   const Case c = io::load_case(path);
   ASSERT_TRUE(c.pinion.flank.topography.has_value());
-  const TopographySpec& t = *c.pinion.flank.topography;
+  const surface::TopographySpec& t = *c.pinion.flank.topography;
   EXPECT_EQ(t.synthesis, surface::SynthesisMethod::psd);
   EXPECT_EQ(t.synthesis_seed, 1u);
   EXPECT_EQ(c.wheel.flank.topography->synthesis_seed, 1001u);
@@ -382,8 +382,8 @@ TEST(CaseParameters, TableIsConsistent) {
 }
 
 // The case's defaults (case/case.hpp, what a case file gets) and the physics option structs'
-// defaults (what a library caller gets) are stated in two layers that cannot include each other
-// (case/ sits below contact/ and gear/); they must agree.
+// defaults (what a library caller gets) must agree: the contact resolutions are still stated in
+// both (ContactSettings and the contact options); the dynamics' are one struct.
 TEST(CaseParameters, CaseDefaultsAreThePhysicsDefaults) {
   const Case c;
   const contact::StripOptions strip;
@@ -394,7 +394,7 @@ TEST(CaseParameters, CaseDefaultsAreThePhysicsDefaults) {
   EXPECT_EQ(c.contact.table_points, gw.table_points_per_sigma);
   const gear::DynamicsSettings dyn;
   EXPECT_EQ(c.dynamics.damping_ratio, dyn.damping_ratio);
-  EXPECT_EQ(c.dynamics.relative_tolerance, dyn.tolerances.relative);
+  EXPECT_EQ(c.dynamics.tolerances.relative, dyn.tolerances.relative);
 }
 
 // --- Fuzz findings 04, 08, 11 (tests/corpus/): values and files that must end in a located error.

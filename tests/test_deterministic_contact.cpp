@@ -424,7 +424,7 @@ surface::FlankProfile smooth(double spacing, double length) {
 TEST(DeterministicMeshContact, SmoothFlanksGiveHertzAlongThePath) {
   const double e = 2e-6;
   const Case c = deterministic_case(11, e);
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   const MeshContactResult r = runs::run_mesh_contact(
       c, mesh, nullptr, {}, 0, nullptr, source([e](int, int, double length) { return smooth(e, length); }));
   EXPECT_EQ(r.fidelity, "deterministic");
@@ -457,7 +457,7 @@ TEST(DeterministicMeshContact, SmoothFlanksGiveHertzAlongThePath) {
 TEST(DeterministicMeshContact, RefusesMissingOrWrongFlanks) {
   const double e = 2e-6;
   const Case c = deterministic_case(3, e);
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   EXPECT_THROW(runs::run_mesh_contact(c, mesh, nullptr, {}, 0, nullptr, {}), std::invalid_argument);
   // A pair (one tooth each): one pinion track too many, or no wheel track.
   auto flat_source = [e](std::array<int, 2> extra) {
@@ -473,7 +473,7 @@ TEST(DeterministicMeshContact, RoughFlanksRunTheStatisticalModelAndRunIn) {
   const double e = 2e-6;
   Case c = deterministic_case(5, e);
   c.running_in.meshes = 3;
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   const MeshContactResult r =
       runs::run_mesh_contact(c, mesh, nullptr, {}, 0, nullptr, source([](int g, int t, double length) {
                                return ground(static_cast<std::uint64_t>(1 + g + 2 * t), 0.5e-6, length);

@@ -21,7 +21,7 @@ Case with_damping(double zeta) {
 }
 }  // namespace
 
-class EachIntegrator : public ::testing::TestWithParam<const char*> {};
+class EachIntegrator : public ::testing::TestWithParam<DynamicsEngine> {};
 
 TEST_P(EachIntegrator, UndampedHarmonicSolution) {
   // m x'' + k x = F from rest at 0: x = (F/k)(1 - cos w t).
@@ -56,15 +56,15 @@ TEST_P(EachIntegrator, DampedStepSettlesToTheStaticDeflection) {
   EXPECT_NEAR(y[1], 0.0, 1e-8 * xs * std::sqrt(k / m));
 }
 
-INSTANTIATE_TEST_SUITE_P(Engines, EachIntegrator, ::testing::Values("cvode", "odeint"));
+INSTANTIATE_TEST_SUITE_P(Engines, EachIntegrator, ::testing::Values(DynamicsEngine::cvode, DynamicsEngine::odeint));
 
 TEST(MeshDynamics, EnginesAgreeOnTheSteadyCycle) {
-  const GearMesh mesh(test::seed_case());
+  const GearMesh mesh = case_mesh(test::seed_case());
   DynamicsSettings s = dynamics_settings(test::seed_case());
   s.tolerances.relative = 1e-11;
   const MeshDynamics dyn(mesh, s);
-  const SteadyCycle a = dyn.steady_cycle(*solvers::make_integrator("cvode"), 1000.0 * kRpm);
-  const SteadyCycle b = dyn.steady_cycle(*solvers::make_integrator("odeint"), 1000.0 * kRpm);
+  const SteadyCycle a = dyn.steady_cycle(*solvers::make_integrator(gear::DynamicsEngine::cvode), 1000.0 * kRpm);
+  const SteadyCycle b = dyn.steady_cycle(*solvers::make_integrator(gear::DynamicsEngine::odeint), 1000.0 * kRpm);
   ASSERT_TRUE(a.periodic && b.periodic);
   double worst = 0.0;
   for (std::size_t i = 0; i < a.force.size(); ++i)
@@ -74,7 +74,7 @@ TEST(MeshDynamics, EnginesAgreeOnTheSteadyCycle) {
 }
 
 TEST(MeshDynamics, StiffnessStepsAndMeanStiffness) {
-  const GearMesh mesh(test::seed_case());
+  const GearMesh mesh = case_mesh(test::seed_case());
   const MeshDynamics dyn(mesh, dynamics_settings(test::seed_case()));
   const PathOfContact& p = mesh.pair().path();
   const double split = p.b - p.a, eps = 1e-9 * p.base_pitch;
@@ -100,9 +100,9 @@ TEST(MeshDynamics, ResonanceNearTheNaturalFrequency) {
   // sqrt(k_mean/m_e)/(2 pi); with the default zeta = 0.07 contact loss softens the mesh and the
   // peak moves lower (validation/dynamics-m6z30).
   const Case c = with_damping(0.2);
-  const GearMesh mesh(c);
+  const GearMesh mesh = case_mesh(c);
   const MeshDynamics dyn(mesh, dynamics_settings(c));
-  const auto cvode = solvers::make_integrator("cvode");
+  const auto cvode = solvers::make_integrator(gear::DynamicsEngine::cvode);
   double best = 0.0, best_f = 0.0;
   for (double rpm = 4000.0; rpm <= 7000.0; rpm += 200.0) {
     const SteadyCycle s = dyn.steady_cycle(*cvode, rpm * kRpm);
@@ -113,9 +113,9 @@ TEST(MeshDynamics, ResonanceNearTheNaturalFrequency) {
 }
 
 TEST(MeshDynamics, LowSpeedTendsToTheQuasiStaticResponse) {
-  const GearMesh mesh(test::seed_case());
+  const GearMesh mesh = case_mesh(test::seed_case());
   const MeshDynamics dyn(mesh, dynamics_settings(test::seed_case()));
-  const SteadyCycle s = dyn.steady_cycle(*solvers::make_integrator("cvode"), 30.0 * kRpm);
+  const SteadyCycle s = dyn.steady_cycle(*solvers::make_integrator(gear::DynamicsEngine::cvode), 30.0 * kRpm);
   EXPECT_NEAR(s.dynamic_factor_quasi_static, 1.0, 1e-3);
   // The absolute factor stays at the engagement impact of the stiffness step, k2/k1 = 1.70.
   EXPECT_NEAR(s.dynamic_factor, dyn.quasi_static_peak() / mesh.normal_force(), 1e-3 * s.dynamic_factor);

@@ -5,6 +5,7 @@
 // impossible. The single-asperity models over delta* 1e-9 to 1e6 are in test_model_ranges.cpp,
 // also in this label.
 #include "asperity/side_contact.hpp"
+#include "case/contact_setup.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
 #include "contact/rough_line_contact.hpp"
@@ -47,7 +48,7 @@ double min_of(const contact::MeshContactResult& r, const std::string& name) {
 }
 
 contact::MeshContactResult cycle(const Case& c, int positions = 21) {
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   const solvers::KinsolSolver kinsol;
   return runs::run_mesh_contact(c, mesh, c.contact.fidelity == ContactFidelity::coupled ? &kinsol : nullptr, {},
                                 positions);
@@ -56,11 +57,11 @@ contact::MeshContactResult cycle(const Case& c, int positions = 21) {
 // The seed's rough surface and pair with the table sized for `max_pressure`.
 struct Strip {
   explicit Strip(const Case& c, double max_pressure)
-      : surface(runs::case_equivalent_surface(c)),
+      : surface(contact::case_equivalent_surface(c)),
         pair(asperity::contact_pair(c)),
         model(asperity::make_case_model(c, c.asperity.model)),
         gw(surface, *model, pair, max_pressure, {}),
-        mesh(c) {}
+        mesh(gear::case_mesh(c)) {}
   surface::EquivalentSurface surface;
   asperity::ContactPair pair;
   std::unique_ptr<asperity::AsperityModel> model;
@@ -77,7 +78,7 @@ TEST(Extremes, StripFromZeroLoadToTenTimesFullPlasticity) {
   const Case& c = test::seed_case();
   const double hardness = asperity::contact_pair(c).hardness;
   const double radius = 0.02;  // [m], the seed pair's equivalent radius near C
-  const double e = gear::GearMesh(c).composite_modulus();
+  const double e = gear::case_mesh(c).composite_modulus();
   // Hertz line contact: p0 = sqrt(w E*/(pi R)) -> w for p0 = 10 H.
   const double w_max = std::numbers::pi * radius * 100.0 * hardness * hardness / e;
   const Strip s(c, 12.0 * hardness);
@@ -224,9 +225,9 @@ TEST(Extremes, TorqueFromTinyToHundredTimes) {
 // positive and tending to the quasi-static response at the lowest speed.
 TEST(Extremes, SpeedsFromOneRpmToThreeTimesResonance) {
   const Case& c = test::seed_case();
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   const gear::MeshDynamics dyn(mesh, gear::dynamics_settings(c));
-  const auto integrator = solvers::make_integrator("cvode");
+  const auto integrator = solvers::make_integrator(gear::DynamicsEngine::cvode);
   const double resonance =
       2.0 * std::numbers::pi * dyn.natural_frequency() / mesh.pair().pinion().teeth;  // pinion rad/s
   for (double f : {1.0 / (resonance * 60.0 / (2.0 * std::numbers::pi)), 0.01, 0.3, 0.9, 1.0, 1.1, 2.0, 3.0}) {

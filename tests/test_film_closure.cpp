@@ -2,7 +2,8 @@
 // quadrature, the asperity pressure of the sharing (asperity model, bearing area, their blend),
 // measured traction curves, and, through the mesh cycle, the named points where they stand and the
 // roughness lambda is computed with.
-#include "asperity/case_setup.hpp"
+#include "case/asperity_setup.hpp"
+#include "case/contact_setup.hpp"
 #include "contact/asperity_pressure.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
@@ -84,7 +85,7 @@ TEST(FilmClosure, MeanGapLimitsAndInverse) {
 // The seed's rough surface and its GW table.
 struct SeedSurface {
   Case c = test::lubricated_case();
-  surface::EquivalentSurface surface = runs::case_equivalent_surface(c);
+  surface::EquivalentSurface surface = contact::case_equivalent_surface(c);
   asperity::ContactPair pair = asperity::contact_pair(c);
   std::unique_ptr<asperity::AsperityModel> model = asperity::make_case_model(c, c.asperity.model);
   contact::GreenwoodWilliamson gw{surface, *model, pair, 2e9, contact::GreenwoodWilliamsonOptions{}};
@@ -124,7 +125,8 @@ TEST(AsperityPressure, ItsTwoModelsAndTheirBlend) {
 }
 
 TEST(AsperityPressure, AutomaticWeightIsContinuousInThePlasticFraction) {
-  using contact::AsperityPressureModel;
+  using contact::bearing_area_weight;
+  using lubrication::AsperityPressureModel;
   EXPECT_EQ(bearing_area_weight(AsperityPressureModel::automatic, 0.3), 0.0);
   EXPECT_EQ(bearing_area_weight(AsperityPressureModel::automatic, 0.9), 0.0);
   EXPECT_EQ(bearing_area_weight(AsperityPressureModel::automatic, 0.99), 1.0);
@@ -178,7 +180,7 @@ TEST(TractionCurves, InterpolatesAlongAndBetweenCurvesAndFlagsBeyond) {
 }
 
 contact::MeshContactResult run(const Case& c, int positions = 41) {
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   return runs::run_mesh_contact(c, mesh, nullptr, {}, positions);
 }
 Case with(const std::vector<io::CaseChange>& changes) {
@@ -190,7 +192,7 @@ TEST(LubricatedSummary, NamedPointsStandWhereTheyAreBAndDOnTheSinglePairSide) {
   const auto r = run(c, 401);
   const auto& sum = *r.lubrication_summary;
   ASSERT_EQ(sum.points.size(), 7u);
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   const double full = mesh.normal_force() / c.gear_pair.face_width;  // one pair carries all
   const auto& s = r.find("s_m")->values;
   const auto& film = r.find("mean_gap_m")->values;
@@ -220,8 +222,8 @@ TEST(LubricatedSummary, WithDynamicsBAndDStillCarryTheSinglePairsLoad) {
   // counts; the named B must take the single pair's side (the whole mesh force), well above the
   // two-pair side just before it (about half the force), and D likewise after it.
   const Case c = with({{"mesh.dynamics", "odeint"}, {"speed", "300 rpm"}});
-  const gear::GearMesh mesh(c);
-  const auto integrator = solvers::make_integrator("odeint");
+  const gear::GearMesh mesh = gear::case_mesh(c);
+  const auto integrator = solvers::make_integrator(gear::DynamicsEngine::odeint);
   const auto r = runs::run_mesh_contact(c, mesh, nullptr, {}, 201, integrator.get());
   ASSERT_NE(r.find("dynamic_load_factor"), nullptr);
   const auto& s = r.find("s_m")->values;

@@ -125,7 +125,7 @@ TEST(SpurPair, UndercutIsAWarning) {
 }
 
 TEST(MeshAnalysis, HertzLineContactClosedForm) {
-  const GearMesh mesh(test::seed_case());
+  const GearMesh mesh = case_mesh(test::seed_case());
   const double w = 1.5e5, s = mesh.pair().path().c;
   const PairLoad l = mesh.analysis().pair_load(s, w);
   const double r = mesh.pair().flank(s).radius_equivalent, e = mesh.composite_modulus();

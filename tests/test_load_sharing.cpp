@@ -7,6 +7,15 @@
 using namespace geartrib;
 using namespace geartrib::gear;
 
+namespace {
+// The seed pair's mesh with the load shared by `method`.
+GearMesh seed_mesh(LoadSharing method) {
+  Case c = test::seed_case();
+  c.mesh.load_sharing = method;
+  return case_mesh(c);
+}
+}  // namespace
+
 TEST(LoadSharing, IsoFactorShape) {
   const SpurPair p(test::seed_case().gear_pair);
   const PathOfContact& path = p.path();
@@ -21,7 +30,7 @@ TEST(LoadSharing, IsoFactorShape) {
 
 TEST(LoadSharing, SharesSumToOneOverTheCycleForBothMethods) {
   for (auto method : {LoadSharing::iso, LoadSharing::stiffness}) {
-    const GearMesh mesh(test::seed_case(), method);
+    const GearMesh mesh = seed_mesh(method);
     const auto cycle = mesh.analysis().cycle(257);
     int single = 0, dual = 0;
     for (const auto& m : cycle) {
@@ -38,7 +47,7 @@ TEST(LoadSharing, SharesSumToOneOverTheCycleForBothMethods) {
 
 TEST(LoadSharing, IsoSharesOfThePairsAreComplementary) {
   // With pairs at s (in AB) and s + p_b (in DE): 1/3 + x/3 and 2/3 - x/3 sum to 1 exactly.
-  const GearMesh mesh(test::seed_case(), LoadSharing::iso);
+  const GearMesh mesh = seed_mesh(LoadSharing::iso);
   const PathOfContact& p = mesh.pair().path();
   for (double t : {0.0, 0.25, 0.5, 0.99}) {
     const double s = p.a + t * (p.b - p.a);
@@ -49,7 +58,7 @@ TEST(LoadSharing, IsoSharesOfThePairsAreComplementary) {
 TEST(LoadSharing, OneToOnePairIsSymmetric) {
   // Identical gears: the stiffness at s equals that at the mirror point T1T2 - s, so shares and
   // mesh stiffness mirror about the pitch point.
-  const GearMesh mesh(test::seed_case(), LoadSharing::stiffness);
+  const GearMesh mesh = seed_mesh(LoadSharing::stiffness);
   const PathOfContact& p = mesh.pair().path();
   for (double t : {0.0, 0.1, 0.3, 0.45}) {
     const double s = p.a + t * p.length, mirror = p.line_length - s;

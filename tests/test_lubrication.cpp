@@ -333,7 +333,7 @@ TEST(FlashTemperature, IsoMethodsFactorsAndItsClosedFormIsBlok) {
   // The standard's closed form (A.5) with X_J = X_Gamma = 1 against Blok's band formula with the
   // same mu at the same point of a profile-shifted pair (the FZG C gear, a_w 91.5 mm).
   const Case c = io::load_case(test::source_dir() / "validation/fzg-c-lubricated/fzg-c-lubricated.toml");
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   const auto& pair = mesh.pair();
   IsoFlashGeometry g;
   g.gear_ratio = 24.0 / 16.0;
@@ -421,7 +421,7 @@ TEST(IsoFriction, MeanCoefficientsInTheStandardsUnits) {
 
 // The lubricated default case through the whole mesh cycle.
 contact::MeshContactResult run(const Case& c) {
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   return runs::run_mesh_contact(c, mesh, nullptr, {}, 41);
 }
 Case with(const std::vector<io::CaseChange>& changes) {

@@ -345,7 +345,7 @@ TEST(MeshContact, FastPathsEqualTheExactPathOnTheDefaultCase) {
       c->pinion.flank.roughness.ra = ra;
       c->wheel.flank.roughness.ra = ra;
     }
-    const gear::GearMesh mesh_f(f), mesh_e(e);
+    const gear::GearMesh mesh_f = gear::case_mesh(f), mesh_e = gear::case_mesh(e);
     const MeshContactResult rf = runs::run_mesh_contact(f, mesh_f, nullptr, {}, 201);
     const MeshContactResult re = runs::run_mesh_contact(e, mesh_e, nullptr, {}, 201);
     int compared = 0;
@@ -368,7 +368,7 @@ TEST(MeshContact, ToothPairStiffnessOnlyWhenAskedOrUsed) {
   Case c = test::seed_case();
   ASSERT_FALSE(c.contact.mesh_stiffness);
   c.contact.real_area = c.contact.plastic_fraction = c.contact.asperity_stress = false;
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   ASSERT_EQ(mesh.analysis().method(), gear::LoadSharing::iso);
   EXPECT_EQ(runs::run_mesh_contact(c, mesh, nullptr, {}, 11).find("mesh_stiffness_N_per_m"), nullptr);
   c.contact.mesh_stiffness = true;

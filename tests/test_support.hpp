@@ -1,8 +1,10 @@
 // Shared fixtures of the test suite: the seed's case and its equivalent asperity pair.
 #pragma once
 
-#include "asperity/case_setup.hpp"
+#include "case/asperity_setup.hpp"
 #include "case/case.hpp"
+#include "case/contact_setup.hpp"
+#include "case/gear_setup.hpp"
 #include "io/case_file.hpp"
 
 #include <filesystem>

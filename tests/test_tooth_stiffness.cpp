@@ -66,7 +66,7 @@ TEST(ToothStiffness, ComplianceGrowsTowardTheTip) {
 }
 
 TEST(ToothStiffness, HertzTermAndPairSeries) {
-  const GearMesh mesh(test::seed_case());
+  const GearMesh mesh = case_mesh(test::seed_case());
   const PairStiffness k = mesh.stiffness().pair(mesh.pair().path().c);
   // Yang & Lin: k_h = pi E b/(4 (1 - nu^2)) for equal materials = pi b E_t/2.
   EXPECT_NEAR(1.0 / k.hertz_compliance, std::numbers::pi * 206e9 * 0.08 / (4.0 * 0.91), 1e-3);
@@ -76,7 +76,7 @@ TEST(ToothStiffness, HertzTermAndPairSeries) {
 TEST(ToothStiffness, IsoSingleAndMeshStiffnessByHand) {
   // ISO 6336-1 method B for z = 30/30, x = 0: q' = 0.04723 + 0.15551/30 + 0.25791/30
   // = 0.0610107 mm um/N; c' = 0.8 x 0.975 / q' (C_M, C_B for h_fP = 1.25 m, alpha = 20 deg).
-  const GearMesh mesh(test::seed_case());
+  const GearMesh mesh = case_mesh(test::seed_case());
   const IsoMeshStiffness iso = iso6336_mesh_stiffness(mesh.pair(), 150e3);
   const double q = 0.04723 + 0.15551 / 30 + 0.25791 / 30;
   EXPECT_NEAR(iso.flexibility_q, q * 1e-9, 1e-20);
@@ -89,7 +89,7 @@ TEST(ToothStiffness, IsoSingleAndMeshStiffnessByHand) {
 TEST(ToothStiffness, MeanMeshStiffnessWithinThirtyPercentOfIso) {
   // The methods differ (ISO is an empirical fit for typical gears); the issue expects the
   // ratio within 30%.
-  const GearMesh mesh(test::seed_case());
+  const GearMesh mesh = case_mesh(test::seed_case());
   double mean = 0.0;
   const auto cycle = mesh.analysis().cycle(128);
   for (const auto& m : cycle) mean += m.mesh_stiffness / cycle.size();
@@ -159,7 +159,7 @@ TEST(ToothStiffness, SolidBodyFoundationSitsOnAShaftSeatAtAThirdOfTheRoot) {
 // stiffness and its ratio to ISO as `geartrib kinematics validation/fzg-type-c/fzg-c.toml
 // --summary` printed them before the rule (10 digits).
 TEST(ToothStiffness, BoredFzgPairUnchanged) {
-  const GearMesh mesh(fzg_c());
+  const GearMesh mesh = case_mesh(fzg_c());
   const IsoStiffnessComparison k = mesh.iso_comparison(fzg_c().mesh.positions);
   EXPECT_NEAR(k.model.mean / 214839568.4, 1.0, 1e-9);
   EXPECT_NEAR(k.ratio, 0.9389547336, 1e-9);
@@ -170,7 +170,7 @@ TEST(ToothStiffness, BoredFzgPairUnchanged) {
 // foundation, they were 2.32 to 2.49 times ISO's c_gamma_alpha b).
 TEST(ToothStiffness, SolidBodiesWithinTheIsoBand) {
   for (const Case* c : {&test::seed_case(), &fzg_c(), &z20_z60()}) {
-    const GearMesh mesh(with_rim_ratio(*c, 0.0));
+    const GearMesh mesh = case_mesh(with_rim_ratio(*c, 0.0));
     const IsoStiffnessComparison k = mesh.iso_comparison(c->mesh.positions);
     EXPECT_GT(k.ratio, 1.0 / kIsoStiffnessBand) << c->title;
     EXPECT_LT(k.ratio, kIsoStiffnessBand) << c->title;
@@ -183,7 +183,7 @@ TEST(ToothStiffness, SolidBodiesWithinTheIsoBand) {
 // Bores at the fit's end (r_f/r_bore = 7) halve the stiffness (0.47 of ISO): warned, naming the
 // bores' keys and their rim ratio; the band's edges are inclusive.
 TEST(ToothStiffness, WarnsBeyondTheIsoBand) {
-  const GearMesh mesh(with_rim_ratio(test::seed_case(), 7.0));
+  const GearMesh mesh = case_mesh(with_rim_ratio(test::seed_case(), 7.0));
   IsoStiffnessComparison k = mesh.iso_comparison(test::seed_case().mesh.positions);
   EXPECT_NEAR(k.ratio, 0.469, 0.005);
   const std::string w = iso_stiffness_warning(mesh, k);
@@ -203,7 +203,7 @@ TEST(ToothStiffness, WarnsBeyondTheIsoBand) {
 TEST(ToothStiffness, IsoBandAtFullLoad) {
   Case light = test::seed_case();
   light.operating.pinion_torque = 10.0;
-  const GearMesh heavy_mesh(test::seed_case()), light_mesh(light);
+  const GearMesh heavy_mesh = case_mesh(test::seed_case()), light_mesh = case_mesh(light);
   const IsoStiffnessComparison heavy = heavy_mesh.iso_comparison(64), k = light_mesh.iso_comparison(64);
   EXPECT_GT(heavy_mesh.tangential_line_load(), kIsoFullLineLoad);  // 139 N/mm: ISO unscaled
   EXPECT_EQ(heavy.ratio, heavy.full_load_ratio);

@@ -3,6 +3,7 @@
 // yield, the quadrature's panels at the laws' breakpoints, the validity figures and verdict
 // of a mesh cycle, and one equivalent surface per run.
 #include "asperity/model.hpp"
+#include "case/contact_setup.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
 #include "gear/gear_mesh.hpp"
@@ -128,7 +129,7 @@ TEST(Quadrature, PanelsAtBreakpointsConverge) {
     const auto m = make_asperity_model(name);
     contact::GreenwoodWilliamsonOptions coarse, fine;
     fine.height_points = 4096;
-    const auto surface = runs::case_equivalent_surface(c);
+    const auto surface = contact::case_equivalent_surface(c);
     const contact::GreenwoodWilliamson a(surface, *m, pair, 1e9, coarse), b(surface, *m, pair, 1e9, fine);
     for (double d_over_sigma : {2.0, 0.0, -1.5}) {
       const double d = d_over_sigma * surface.summit_sigma;
@@ -147,7 +148,7 @@ TEST(Quadrature, JacksonGreenPlasticFractionConvergedAtTheDefault) {
   const Case c = io::load_case(test::source_dir() / "gears/m6z30-dry.toml", {{"model", "jackson-green"}});
   Case fine = c;
   fine.contact.height_points = 2048;
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   const auto a = runs::run_mesh_contact(c, mesh, nullptr, {}, 11);
   const auto b = runs::run_mesh_contact(fine, mesh, nullptr, {}, 11);
   const auto& x = a.find("plastic_area_fraction")->values;
@@ -159,7 +160,7 @@ TEST(Validity, SeedCaseIsFullyPlasticAndOutsideTheRanges) {
   // The seed's flanks (psi ~ 121): every position fully plastic, beyond the law's fitted range,
   // summits interacting; the verdict says so once, with the counts.
   const Case& c = test::seed_case();
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   const auto r = runs::run_mesh_contact(c, mesh, nullptr, {}, 21);
   EXPECT_EQ(r.regime, "fully plastic");
   for (const char* q : {"flag_beyond_fitted_range", "flag_summits_interact"})
@@ -184,7 +185,7 @@ TEST(Validity, SmoothLightlyLoadedCaseIsElasticAndWithinRange) {
   // A mirror-like surface (psi 0.39) at a light load: no flag, no position beyond delta_c, regime elastic.
   const Case c = io::load_case(test::source_dir() / "gears/m6z30-dry.toml",
                                {{"ra", "0.005 um"}, {"summit_radius", "1000 um"}, {"torque", "5 N m"}});
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   const auto r = runs::run_mesh_contact(c, mesh, nullptr, {}, 11);
   EXPECT_EQ(r.regime, "elastic") << r.verdict;
   for (const auto& f : r.flag_counts) EXPECT_EQ(f.positions, 0) << f.name << ": " << r.verdict;
@@ -207,7 +208,7 @@ TEST(EquivalentSurface, SpectralFlanksUseOneRadius) {
   replace("ra = \"0.8 um\"                    # as for", "# ");
   std::ofstream(dir / "gears/case.toml") << text;
   const Case c = io::load_case(dir / "gears/case.toml");
-  const auto s = runs::case_equivalent_surface(c);
+  const auto s = contact::case_equivalent_surface(c);
   const double r1 = c.pinion.flank.roughness.summit_radius, r2 = c.wheel.flank.roughness.summit_radius;
   EXPECT_NEAR(r1 * r2 / (r1 + r2) / s.summit_radius, 1.0, 1e-12);
   EXPECT_NEAR(s.summit_radius, 0.375 * std::sqrt(kPi / 3e8), 1e-18);

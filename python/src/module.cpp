@@ -8,11 +8,11 @@
 // digit. io::InputError becomes geartrib.InputError (a ValueError) with the command line's
 // located message and its parts as attributes; std::invalid_argument a ValueError; other
 // failures a RuntimeError.
-#include "asperity/case_setup.hpp"
+#include "case/asperity_setup.hpp"
+#include "case/gear_setup.hpp"
 #include "contact/fidelity_registry.hpp"
 #include "contact/half_plane_bem.hpp"
 #include "contact/mesh_contact.hpp"
-#include "gear/gear_mesh.hpp"
 #include "io/case_file.hpp"
 #include "io/case_parameters.hpp"
 #include "io/column_table.hpp"
@@ -415,7 +415,7 @@ PYBIND11_MODULE(_geartrib, m) {
         io::Table t;
         {
           py::gil_scoped_release release;
-          const gear::GearMesh mesh(c);
+          const gear::GearMesh mesh = gear::case_mesh(c);
           t = positions ? runs::kinematics_table(mesh, *positions) : runs::kinematics_table(mesh, points);
         }
         py::array_t<double> rows(

@@ -4,8 +4,8 @@
 #include "app/commands.hpp"
 #include "runs/asperity_columns.hpp"
 
-#include "asperity/case_setup.hpp"
 #include "asperity/side_contact.hpp"
+#include "case/asperity_setup.hpp"
 #include "io/case_file.hpp"
 #include "io/input_error.hpp"
 #include "io/reference_table.hpp"

@@ -3,7 +3,7 @@
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
 
-#include "gear/mesh_dynamics.hpp"
+#include "case/gear_setup.hpp"
 #include "io/table_writer.hpp"
 #include "io/units.hpp"
 #include "solvers/integrators.hpp"
@@ -52,12 +52,13 @@ void run(const Options& o) {
   const Case c = load_case_reporting(co, io::kGeometryPart);
   io::OutputSet outputs;  // the table's files, checked before any work
   reserve_table(o.table, outputs);
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   // The dynamics rest on the mesh stiffness: warned when it leaves ISO's band.
   if (const std::string w = gear::iso_stiffness_warning(mesh, mesh.iso_comparison(c.mesh.positions)); !w.empty())
     std::cerr << "warning: " << w << '\n';
   const gear::DynamicsSettings settings = gear::dynamics_settings(c);
-  const std::string engine = c.dynamics.engine == "none" ? "cvode" : c.dynamics.engine;
+  const gear::DynamicsEngine engine =
+      c.dynamics.engine == gear::DynamicsEngine::none ? gear::DynamicsEngine::cvode : c.dynamics.engine;
   const auto integrator = solvers::make_integrator(engine);
   const gear::MeshDynamics dyn(mesh, settings);
   const int z1 = mesh.pair().pinion().teeth;

@@ -3,9 +3,9 @@
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
 
-#include "asperity/case_setup.hpp"
 #include "asperity/critical.hpp"
 #include "asperity/cylinder.hpp"
+#include "case/asperity_setup.hpp"
 #include "fem/asperity_deck.hpp"
 #include "fem/ccx_results.hpp"
 #include "io/table_writer.hpp"
@@ -74,7 +74,7 @@ void single_asperity(const SingleOptions& o) {
   s.material = o.material == "elastic" ? fem::FemMaterial::elastic
                : o.material == "table" ? fem::FemMaterial::table
                                        : fem::FemMaterial::perfectly_plastic;
-  const Material& soft = c.pinion.material.hardness <= c.wheel.material.hardness ? c.pinion.material : c.wheel.material;
+  const Material& soft = asperity::softer_material(c);
   s.flow_table.emplace_back(soft.yield_strength, 0.0);
   for (const auto& p : soft.flow_curve)
     if (p.plastic_strain > 0.0) s.flow_table.emplace_back(p.stress, p.plastic_strain);
@@ -196,7 +196,7 @@ void three_cylinders(const CylinderOptions& o) {
   if (!o.output.empty()) outputs.reserve(o.output);
   const double delta_pc = o.delta_pc.empty() ? asperity::seed_critical_interference(asperity::cylinder_asperity(c))
                                              : quantity_option("--delta-pc", o.delta_pc, io::Dimension::length);
-  const Material& m = c.pinion.material.hardness <= c.wheel.material.hardness ? c.pinion.material : c.wheel.material;
+  const Material& m = asperity::softer_material(c);
   if (o.layout.empty() || o.layout.find_first_not_of("HL") != std::string::npos ||
       o.layout.find('H') == std::string::npos)
     throw std::invalid_argument("--layout must be letters H and L with at least one H (e.g. HLH, H)");

@@ -3,7 +3,7 @@
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
 
-#include "asperity/case_setup.hpp"
+#include "case/asperity_setup.hpp"
 #include "fit/fit_files.hpp"
 #include "fit/model_fit.hpp"
 #include "io/input_error.hpp"

@@ -4,7 +4,7 @@
 #include "app/commands.hpp"
 #include "runs/kinematics_table.hpp"
 
-#include "gear/gear_mesh.hpp"
+#include "case/gear_setup.hpp"
 #include "io/table_writer.hpp"
 
 #include <fmt/format.h>
@@ -81,7 +81,7 @@ void run(const Options& o) {
   const Case c = load_case_reporting(co, io::kGeometryPart);
   io::OutputSet outputs;  // the table's files, checked before any work
   reserve_table(o.table, outputs);
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   if (o.summary) return run_summary(o, c, mesh, outputs);
 
   emit_table(o.positions ? runs::kinematics_table(mesh, *o.positions) : runs::kinematics_table(mesh, o.points), o.table,

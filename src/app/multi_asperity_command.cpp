@@ -4,7 +4,7 @@
 #include "app/commands.hpp"
 #include "app/surface_input.hpp"
 
-#include "asperity/case_setup.hpp"
+#include "case/asperity_setup.hpp"
 #include "contact/multi_asperity.hpp"
 #include "io/table_writer.hpp"
 #include "io/units.hpp"
@@ -49,7 +49,7 @@ struct Options {
 };
 
 contact::MultiAsperitySpec make_spec(const Options& o, const Case& c, double delta_pc) {
-  const Material& m = c.pinion.material.hardness <= c.wheel.material.hardness ? c.pinion.material : c.wheel.material;
+  const Material& m = asperity::softer_material(c);
   contact::MultiAsperitySpec s;
   s.layout = o.layout;
   s.tip_radius = c.asperity.cylinder_tip_radius;

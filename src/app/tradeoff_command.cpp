@@ -24,7 +24,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
-#include <tuple>
+#include <utility>
 
 namespace geartrib::app {
 
@@ -103,7 +103,7 @@ Knob dynamics_knob(const Case& c, bool integrators) {
                                               {"dynamics.relative_tolerance", rtols.back()}};
   if (!integrators)
     return {"dynamics", {{"none (static)", {{"mesh.dynamics", "none"}}}, {"cvode " + rtols.back(), finest}}, true};
-  Knob integrator{"integrator", {}, c.dynamics.engine == "none"};
+  Knob integrator{"integrator", {}, c.dynamics.engine == gear::DynamicsEngine::none};
   std::vector<std::string> engines = row("mesh.dynamics").choices;
   std::erase(engines, "none");
   std::stable_partition(engines.begin(), engines.end(), [](const std::string& e) { return e != "cvode"; });
@@ -143,9 +143,9 @@ std::vector<Knob> knobs_of(const Case& c) {
     } else if (k.name == "film_formula" && c.lubrication.lubricated) {
       // Lubricated: the film formulas and inlet-heating corrections, through the asperities' share
       // of the load they leave.
-      out.push_back(choice_knob(k.name, "lubrication.film_formula", c.lubrication.film_formula));
+      out.push_back(choice_knob(k.name, "lubrication.film_formula", row("lubrication.film_formula").get(c, -1).text));
     } else if (k.name == "inlet_heating" && c.lubrication.lubricated) {
-      out.push_back(choice_knob(k.name, "lubrication.inlet_heating", c.lubrication.inlet_heating));
+      out.push_back(choice_knob(k.name, "lubrication.inlet_heating", row("lubrication.inlet_heating").get(c, -1).text));
     }
   }
   return out;

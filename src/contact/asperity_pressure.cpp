@@ -1,7 +1,5 @@
 #include "contact/asperity_pressure.hpp"
 
-#include "core/named_choices.hpp"
-
 #include <boost/math/tools/roots.hpp>
 
 #include <algorithm>
@@ -12,16 +10,7 @@
 
 namespace geartrib::contact {
 
-namespace {
-constexpr NamedChoice<AsperityPressureModel> kModelNames[] = {{AsperityPressureModel::automatic, "auto"},
-                                                              {AsperityPressureModel::asperity_model, "asperity-model"},
-                                                              {AsperityPressureModel::bearing_area, "bearing-area"}};
-}  // namespace
-
-AsperityPressureModel asperity_pressure_model_from_name(const std::string& name) {
-  return choice_from_name<AsperityPressureModel>(kModelNames, name, "asperity pressure model");
-}
-std::vector<std::string> asperity_pressure_model_names() { return choice_names<AsperityPressureModel>(kModelNames); }
+using lubrication::AsperityPressureModel;
 
 double bearing_area_weight(AsperityPressureModel m, double plastic) {
   switch (m) {

@@ -15,15 +15,9 @@
 
 namespace geartrib::contact {
 
-// auto (default): the bearing-area model's weight w rises from 0 to 1 as the asperity model's own
-// plastic area fraction under the whole load (at the strip's centre, its smallest along the path)
-// rises from 0.9 to 0.99, the bound above which the run's regime verdict calls the flanks fully
-// plastic: the asperity model where it holds, the bearing area where every contact flows, linear
-// between (continuous across a sweep). asperity-model: w = 0; bearing-area: w = 1.
-enum class AsperityPressureModel { automatic, asperity_model, bearing_area };
-AsperityPressureModel asperity_pressure_model_from_name(const std::string& name);  // throws std::invalid_argument
-std::vector<std::string> asperity_pressure_model_names();
-double bearing_area_weight(AsperityPressureModel m, double plastic_area_fraction);
+// The bearing-area model's weight w of the choice (lubrication::AsperityPressureModel, where the
+// choice and its names are stated) at the asperity model's plastic area fraction.
+double bearing_area_weight(lubrication::AsperityPressureModel m, double plastic_area_fraction);
 inline constexpr double kPlasticBlendStart = 0.9;  // the blend's start; its end: kFullyPlasticAreaFraction
 // The asperity model's smallest plastic area fraction over the nominal pressures p0 (each the
 // whole load at the strip's centre), at the lightest of them: what `auto` weighs by.

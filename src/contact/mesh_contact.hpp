@@ -5,13 +5,13 @@
 // lubrication around it (contact/mesh_lubrication.hpp), and the output series built once at the end.
 #pragma once
 
-#include "case/case.hpp"  // for the sub-structs until they move out of case.hpp
 #include "contact/contact_options.hpp"
 #include "contact/surface_model.hpp"
 #include "core/nonlinear_solver.hpp"
 #include "core/ode_integrator.hpp"
 #include "gear/gear_mesh.hpp"
 #include "gear/mesh_dynamics.hpp"
+#include "lubrication/lubrication_settings.hpp"
 #include "surface/rough_surface.hpp"
 
 #include <array>
@@ -176,6 +176,13 @@ struct FlankSpan;
 // over the span it reads (contact/deterministic/mesh_deterministic.hpp).
 using FlankSource = std::function<RollingFlanks(const FlankSpan& span, const int teeth[2])>;
 
+// The operating point as the lubricated stage takes it.
+struct LubricatedOperatingPoint {
+  double oil_temperature = 0.0;   // theta_oil, the inlet oil [K]
+  double bulk_temperature = 0.0;  // theta_M of the flanks [K]; 0: the ISO/TS 6336-20 estimate
+  double pinion_torque = 0.0;     // [N m]
+};
+
 // The mesh cycle's typed inputs.
 struct MeshCycleInputs {
   const gear::GearMesh& mesh;
@@ -183,8 +190,8 @@ struct MeshCycleInputs {
   RunningInSettings running_in;
   StatisticalFlanks flanks;
   // Lubricated: the oil and its models, and the operating point's temperatures; nullptr: dry.
-  const LubricationCase* lubrication = nullptr;
-  const OperatingPoint* operating = nullptr;
+  const lubrication::LubricationSettings* lubrication = nullptr;
+  LubricatedOperatingPoint operating;
   // Dynamics: the integrator of the steady mesh cycle and the model's settings; each pair then
   // carries its dynamic load instead of the static share. nullptr: static load sharing.
   const OdeIntegrator* dynamics = nullptr;

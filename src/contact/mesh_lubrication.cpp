@@ -65,11 +65,11 @@ MeshLubrication::MeshLubrication(const LubricationInputs& in, const gear::GearMe
       model_(model),
       mesh_(mesh),
       path_(p),
-      formula_(lub::film_formula_from_name(in.lubrication.film_formula)),
-      inlet_(lub::inlet_heating_from_name(in.lubrication.inlet_heating)),
-      film_gap_(lub::film_gap_from_name(in.lubrication.film_gap)),
-      traction_(lub::film_traction_from_name(in.lubrication.traction)),
-      bulk_law_(lub::mean_friction_law_from_name(in.lubrication.mean_friction)) {
+      formula_(in.lubrication.film_formula),
+      inlet_(in.lubrication.inlet_heating),
+      film_gap_(in.lubrication.film_gap),
+      traction_(in.lubrication.traction),
+      bulk_law_(in.lubrication.mean_friction) {
   reduced_modulus_ = 2.0 * mesh.composite_modulus();
   for (int g = 0; g < 2; ++g) {
     const Material& m = *model.flanks.materials[static_cast<std::size_t>(g)];
@@ -136,7 +136,7 @@ void MeshLubrication::pitch_and_iso() {
 
 void MeshLubrication::bulk_temperature() {
   const auto& lubricant = lubrication_.lubricant;
-  const OperatingPoint& op = operating_;
+  const LubricatedOperatingPoint& op = operating_;
   // ISO/TS 6336-20 eq. 22: theta_M = theta_oil + 0.47 X_S X_mp theta_fl,m; the flash temperature is
   // linear in mu_m, so another law's estimate scales the method's by its coefficient.
   bulk_estimated_ = !(op.bulk_temperature > 0.0);
@@ -153,8 +153,8 @@ void MeshLubrication::bulk_temperature() {
         "the flanks' bulk temperature (/lubrication bulk_temperature_K), estimated by ISO/TS 6336-20 with the {} "
         "friction law's flash temperature, is {:.1f} degC, beyond {:.1f} degC, the hottest at which {}'s laws hold "
         "(its data reach {:.1f} degC): the film, the load sharing and the friction have no viscosity there",
-        lubrication_.mean_friction, bulk_temperature_ - 273.15, oil_range_.hi - 273.15, lubricant.name,
-        lubricant.max_temperature - 273.15));
+        lub::mean_friction_law_name(lubrication_.mean_friction), bulk_temperature_ - 273.15, oil_range_.hi - 273.15,
+        lubricant.name, lubricant.max_temperature - 273.15));
   bulk_extrapolated_ = !lubricant.fixed() && !lub::data_range(lubricant).contains(bulk_temperature_);
   oil_at_bulk_ = lub::oil_state(lubricant, bulk_temperature_);
 }
@@ -163,8 +163,9 @@ void MeshLubrication::asperity_pressure() {
   // The asperities' pressure against the mean-plane separation.
   const GreenwoodWilliamson& gw = model_.table;
   plasticity_index_ = surface::plasticity_index(gw.surface(), gw.pair().modulus, gw.pair().hardness);
-  const AsperityPressureModel model = asperity_pressure_model_from_name(lubrication_.asperity_pressure);
-  plastic_fraction_ = model == AsperityPressureModel::automatic ? smallest_plastic_fraction(gw, path_.hertz_p0) : 0.0;
+  const lub::AsperityPressureModel model = lubrication_.asperity_pressure;
+  plastic_fraction_ =
+      model == lub::AsperityPressureModel::automatic ? smallest_plastic_fraction(gw, path_.hertz_p0) : 0.0;
   const double weight = bearing_area_weight(model, plastic_fraction_);
   // The closure's heights are the summit model's surface (its composite sigma): the gap the film
   // fills and the asperities' pressure then describe one surface. (lambda and the ISO formulas take
@@ -403,16 +404,16 @@ void add_lubrication_series(const LubricationResult& l, std::vector<Series>& g) 
 }
 
 LubricationSummary MeshLubrication::summary() const {
-  const LubricationCase& lc = lubrication_;
+  const lub::LubricationSettings& lc = lubrication_;
   LubricationSummary sum;
   sum.lubricant = lc.lubricant.name;
-  sum.film_formula = lc.film_formula;
-  sum.inlet_heating = lc.inlet_heating;
-  sum.film_gap = lc.film_gap;
-  sum.asperity_pressure = lc.asperity_pressure;
+  sum.film_formula = lub::film_formula_name(lc.film_formula);
+  sum.inlet_heating = lub::inlet_heating_name(lc.inlet_heating);
+  sum.film_gap = lub::film_gap_name(lc.film_gap);
+  sum.asperity_pressure = lub::asperity_pressure_model_name(lc.asperity_pressure);
   sum.bearing_area_weight = asperity_->bearing_weight();
-  sum.traction = lc.traction;
-  sum.bulk_friction_law = lc.mean_friction;
+  sum.traction = lub::film_traction_name(lc.traction);
+  sum.bulk_friction_law = lub::mean_friction_law_name(lc.mean_friction);
   sum.oil_temperature = operating_.oil_temperature;
   sum.bulk_temperature = bulk_temperature_;
   sum.bulk_estimated = bulk_estimated_;
@@ -517,10 +518,11 @@ std::string MeshLubrication::verdict_text(const LubricationSummary& sum) const {
   const std::string asperity_model(model_.table.model().name());
   const double w = sum.bearing_area_weight;
   const std::string why =
-      lubrication_.asperity_pressure == "auto"
+      lubrication_.asperity_pressure == lub::AsperityPressureModel::automatic
           ? fmt::format(" (its plastic area fraction under the whole load at least {:.3g}; plasticity index {:.3g})",
                         plastic_fraction_, plasticity_index_)
-          : fmt::format(" (lubrication.asperity_pressure = {})", lubrication_.asperity_pressure);
+          : fmt::format(" (lubrication.asperity_pressure = {})",
+                        lub::asperity_pressure_model_name(lubrication_.asperity_pressure));
   std::string pressure = w >= 1.0   ? "by their bearing area at the hardness, the flanks fully plastic" + why
                          : w <= 0.0 ? fmt::format("by the {} model{}", asperity_model, why)
                                     : fmt::format("by a blend, {:.2f} bearing area and {:.2f} {} model{}", w, 1.0 - w,

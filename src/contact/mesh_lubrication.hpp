@@ -6,7 +6,6 @@
 // beside them: the mesh cycle's lubrication stage.
 #pragma once
 
-#include "case/case.hpp"  // for the sub-structs until they move out of case.hpp
 #include "contact/asperity_pressure.hpp"
 #include "contact/mesh_contact.hpp"
 #include "contact/mesh_path.hpp"
@@ -16,6 +15,7 @@
 #include "lubrication/film_closure.hpp"
 #include "lubrication/flank_temperature.hpp"
 #include "lubrication/lubricant.hpp"
+#include "lubrication/lubrication_settings.hpp"
 #include "lubrication/mixed_lubrication.hpp"
 
 #include <array>
@@ -38,8 +38,8 @@ CompositeRoughness composite_roughness(const std::array<surface::FlankRoughness,
 
 // What the lubricated cycle takes beyond the path and the flanks' statistical model.
 struct LubricationInputs {
-  const LubricationCase& lubrication;  // the oil and the models along the path
-  const OperatingPoint& operating;     // the oil's and the flanks' temperatures, the torque
+  const lubrication::LubricationSettings& lubrication;  // the oil and the models along the path
+  LubricatedOperatingPoint operating;
 };
 
 struct LubricationResult;
@@ -105,8 +105,8 @@ class MeshLubrication {
   void oil_warnings(const LubricationSummary& sum, std::vector<std::string>& out) const;
   void curve_warnings(std::vector<std::string>& out) const;
 
-  const LubricationCase& lubrication_;
-  const OperatingPoint& operating_;
+  const lubrication::LubricationSettings& lubrication_;
+  const LubricatedOperatingPoint operating_;
   const SurfaceModel& model_;
   const gear::GearMesh& mesh_;
   const PathState& path_;

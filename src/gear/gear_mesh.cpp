@@ -10,15 +10,21 @@ namespace {
 ToothMaterial tooth_material(const Material& m) { return {m.youngs_modulus, m.poisson_ratio}; }
 }  // namespace
 
-GearMesh::GearMesh(const Case& c, std::optional<LoadSharing> method)
-    : composite_modulus_(geartrib::composite_modulus(c.pinion.material, c.wheel.material)),
-      pinion_speed_(c.operating.pinion_speed),
-      pinion_torque_(c.operating.pinion_torque),
-      pair_(c.gear_pair),
-      stiffness_(pair_, tooth_material(c.pinion.material), tooth_material(c.wheel.material), composite_modulus_,
-                 c.mesh.plane_strain),
-      analysis_(pair_, stiffness_, method.value_or(parse_load_sharing(c.mesh.load_sharing)),
-                c.operating.pinion_torque / pair_.pinion().base_radius, composite_modulus_) {}
+void MeshSettings::validate() const {
+  if (positions < 2) throw core::KeyedError("positions", "at least 2 positions sample a base pitch");
+}
+
+GearMesh::GearMesh(const GearPairSpec& spec, const Material& pinion, const Material& wheel,
+                   const MeshSettings& settings, double pinion_torque, double pinion_speed)
+    : composite_modulus_(geartrib::composite_modulus(pinion, wheel)),
+      pinion_speed_(pinion_speed),
+      pinion_torque_(pinion_torque),
+      pair_(spec),
+      stiffness_(pair_, tooth_material(pinion), tooth_material(wheel), composite_modulus_, settings.plane_strain),
+      analysis_(pair_, stiffness_, settings.load_sharing, pinion_torque / pair_.pinion().base_radius,
+                composite_modulus_) {
+  settings.validate();
+}
 
 IsoStiffnessComparison GearMesh::iso_comparison(int positions) const {
   IsoStiffnessComparison k;

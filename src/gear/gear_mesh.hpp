@@ -1,18 +1,27 @@
-// A case's gear mesh, assembled: the pair's geometry, its tooth-pair stiffness model and the
-// loaded-mesh analysis at the case's operating point.
+// A gear mesh, assembled: the pair's geometry, its tooth-pair stiffness model and the loaded-mesh
+// analysis at an operating point (a case's: case/gear_setup.hpp).
 #pragma once
 
-#include "case/case.hpp"
+#include "core/keyed_error.hpp"
 #include "gear/iso6336_stiffness.hpp"
 #include "gear/load_sharing.hpp"
 #include "gear/mesh_analysis.hpp"
 #include "gear/spur_pair.hpp"
 #include "gear/tooth_stiffness.hpp"
+#include "material/material.hpp"
 
-#include <optional>
 #include <string>
 
 namespace geartrib::gear {
+
+// Mesh-cycle settings: how the load is shared between simultaneous tooth pairs, how many
+// positions sample one base pitch, and the beam model of the tooth stiffness.
+struct MeshSettings {
+  LoadSharing load_sharing = LoadSharing::iso;
+  int positions = 64;        // samples of one base pitch of pinion rotation
+  bool plane_strain = true;  // tooth beam in plane strain (wide face) or plane stress
+  void validate() const;     // throws core::KeyedError naming the field
+};
 
 // The potential-energy mesh stiffness over one base pitch beside ISO 6336-1's c_gamma_alpha b
 // (method B, solid steel gears) at the case's load.
@@ -36,8 +45,10 @@ inline constexpr double kIsoStiffnessBand = 1.5;
 
 class GearMesh {
  public:
-  // Throws GeometryError for an impossible pair; `method` overrides the case's load sharing.
-  explicit GearMesh(const Case& c, std::optional<LoadSharing> method = std::nullopt);
+  // The pair of `spec` with the pinion's and the wheel's materials at pinion torque T1 [N m] and
+  // speed omega1 [rad/s]. Throws GeometryError for an impossible pair.
+  GearMesh(const GearPairSpec& spec, const Material& pinion, const Material& wheel, const MeshSettings& settings,
+           double pinion_torque, double pinion_speed);
   GearMesh(const GearMesh&) = delete;
   GearMesh& operator=(const GearMesh&) = delete;
 

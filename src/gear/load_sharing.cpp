@@ -6,13 +6,13 @@
 
 namespace geartrib::gear {
 
-LoadSharing parse_load_sharing(std::string_view name) {
-  if (name == "iso") return LoadSharing::iso;
-  if (name == "stiffness") return LoadSharing::stiffness;
-  throw std::invalid_argument("unknown load sharing '" + std::string(name) + "' (known: iso, stiffness)");
-}
+namespace {
+constexpr NamedChoice<LoadSharing> kLoadSharingNames[] = {{LoadSharing::iso, "iso"},
+                                                          {LoadSharing::stiffness, "stiffness"}};
+}  // namespace
 
-std::string_view to_string(LoadSharing method) { return method == LoadSharing::iso ? "iso" : "stiffness"; }
+std::span<const NamedChoice<LoadSharing>> load_sharing_choices() { return kLoadSharingNames; }
+std::string_view to_string(LoadSharing method) { return choice_name(load_sharing_choices(), method); }
 
 double iso_load_sharing_factor(const PathOfContact& p, double s, bool single_side) {
   const double tol = 1e-12 * p.line_length;

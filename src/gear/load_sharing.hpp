@@ -1,9 +1,11 @@
 // How the transmitted load divides between tooth pairs in contact at the same instant.
 #pragma once
 
+#include "core/named_choices.hpp"
 #include "gear/spur_pair.hpp"
 #include "gear/tooth_stiffness.hpp"
 
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -13,7 +15,7 @@ enum class LoadSharing {
   iso,        // ISO/TS 6336-22 method B, unmodified spur profiles
   stiffness,  // in proportion to the tooth-pair stiffness (equal deflection, no profile errors)
 };
-LoadSharing parse_load_sharing(std::string_view name);  // throws std::invalid_argument
+std::span<const NamedChoice<LoadSharing>> load_sharing_choices();  // mesh.load_sharing
 std::string_view to_string(LoadSharing method);
 
 // ISO/TS 6336-22 (method B) load-sharing factor of one pair at s, for 1 <= eps_alpha < 2:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -11,28 +12,25 @@ namespace geartrib::gear {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
-}
+constexpr NamedChoice<DynamicsEngine> kEngineNames[] = {
+    {DynamicsEngine::none, "none"}, {DynamicsEngine::cvode, "cvode"}, {DynamicsEngine::odeint, "odeint"}};
+}  // namespace
+
+std::span<const NamedChoice<DynamicsEngine>> dynamics_engine_choices() { return kEngineNames; }
+const char* dynamics_engine_name(DynamicsEngine engine) { return choice_name(dynamics_engine_choices(), engine); }
 
 void DynamicsSettings::validate() const {
-  if (!(damping_ratio >= 0.0 && damping_ratio < 1.0)) throw std::invalid_argument("damping ratio must lie in [0, 1)");
-  if (!(backlash > 0.0)) throw std::invalid_argument("backlash must be positive");
-  if (!(pinion_inertia >= 0.0 && wheel_inertia >= 0.0)) throw std::invalid_argument("inertias must not be negative");
-  if (!(density > 0.0)) throw std::invalid_argument("density must be positive");
-  if (!(tolerances.relative > 0.0)) throw std::invalid_argument("relative tolerance must be positive");
-  if (!(steady_tolerance >= 0.0)) throw std::invalid_argument("steady-state tolerance must not be negative");
-  if (max_cycles < 1 || samples_per_cycle < 8)
-    throw std::invalid_argument("max_cycles >= 1 and samples_per_cycle >= 8");
-}
-
-DynamicsSettings dynamics_settings(const Case& c) {
-  DynamicsSettings s;
-  s.damping_ratio = c.dynamics.damping_ratio;
-  s.backlash = c.dynamics.backlash > 0.0 ? c.dynamics.backlash : std::numeric_limits<double>::infinity();
-  s.pinion_inertia = c.dynamics.pinion_inertia;
-  s.wheel_inertia = c.dynamics.wheel_inertia;
-  s.density = c.pinion.material.density;
-  s.tolerances.relative = c.dynamics.relative_tolerance;
-  return s;
+  using core::KeyedError;
+  if (!(damping_ratio >= 0.0 && damping_ratio < 1.0))
+    throw KeyedError("damping_ratio", "damping ratio must lie in [0, 1)");
+  if (!(backlash >= 0.0)) throw KeyedError("backlash", "backlash must not be negative (0: no back-flank contact)");
+  if (!(pinion_inertia >= 0.0)) throw KeyedError("pinion_inertia", "inertias must not be negative");
+  if (!(wheel_inertia >= 0.0)) throw KeyedError("wheel_inertia", "inertias must not be negative");
+  if (!(density > 0.0)) throw KeyedError("density", "density must be positive");
+  if (!(tolerances.relative > 0.0)) throw KeyedError("tolerances.relative", "relative tolerance must be positive");
+  if (!(steady_tolerance >= 0.0)) throw KeyedError("steady_tolerance", "steady-state tolerance must not be negative");
+  if (max_cycles < 1) throw KeyedError("max_cycles", "max_cycles >= 1 and samples_per_cycle >= 8");
+  if (samples_per_cycle < 8) throw KeyedError("samples_per_cycle", "max_cycles >= 1 and samples_per_cycle >= 8");
 }
 
 MeshDynamics::MeshDynamics(const GearMesh& mesh, const DynamicsSettings& settings) : mesh_(mesh), settings_(settings) {
@@ -121,7 +119,8 @@ SteadyCycle MeshDynamics::steady_cycle(const OdeIntegrator& integrator, double p
   const double force = mesh_.normal_force();
   const double x_static = force / mean_stiffness_;
   const double omega_n = 2.0 * kPi * natural_frequency();
-  const double backlash = settings_.backlash;
+  // No backlash given: no back-flank contact.
+  const double backlash = settings_.backlash > 0.0 ? settings_.backlash : std::numeric_limits<double>::infinity();
   auto contact = [backlash](double x) { return x > 0.0 ? x : (x <= -backlash ? x + backlash : 0.0); };
   OdeSystem sys;
   sys.size = 2;

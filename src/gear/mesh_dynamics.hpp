@@ -7,20 +7,29 @@
 // Integrated cycle after cycle to a periodic steady state through an OdeIntegrator.
 #pragma once
 
+#include "core/named_choices.hpp"
 #include "core/ode_integrator.hpp"
 #include "gear/gear_mesh.hpp"
 
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 
-#include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
 namespace geartrib::gear {
 
+// What integrates the mesh dynamics (solvers::make_integrator builds it): none (static load
+// sharing, no dynamics), SUNDIALS CVODE (BDF) or Boost.Odeint (Dormand-Prince 5(4)).
+enum class DynamicsEngine { none, cvode, odeint };
+std::span<const NamedChoice<DynamicsEngine>> dynamics_engine_choices();  // mesh.dynamics
+const char* dynamics_engine_name(DynamicsEngine engine);
+
+// The mesh dynamics: the engine and the model's data.
 struct DynamicsSettings {
+  DynamicsEngine engine = DynamicsEngine::none;  // what a mesh cycle runs the dynamics with
   double damping_ratio = 0.07;  // zeta: typical of spur meshes (0.03-0.17 reported; Kasuba & Evans 1981)
-  double backlash = std::numeric_limits<double>::infinity();  // along the line of action [m]
+  double backlash = 0.0;        // along the line of action [m]; 0: no back-flank contact
   double pinion_inertia = 0.0;  // [kg m^2]; 0: a solid disc of the pitch radius, face width and density, less the bore
   double wheel_inertia = 0.0;
   double density = 7850.0;              // [kg/m^3] for the solid discs
@@ -28,7 +37,7 @@ struct DynamicsSettings {
   double steady_tolerance = 0.0;        // cycle-to-cycle change relative to the static deflection; 0: 100 x rtol
   int max_cycles = 3000;
   int samples_per_cycle = 256;
-  void validate() const;
+  void validate() const;  // throws core::KeyedError naming the field
 };
 
 struct SteadyCycle {
@@ -52,9 +61,6 @@ struct SteadyCycle {
   int cycles = 0;            // cycles integrated to reach the steady state
   long steps = 0;            // integrator steps
 };
-
-// The settings a case asks for (density from the pinion's material).
-DynamicsSettings dynamics_settings(const Case& c);
 
 class MeshDynamics {
  public:

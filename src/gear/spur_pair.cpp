@@ -16,18 +16,21 @@ constexpr double kPi = std::numbers::pi;
 const char* kGearName[2] = {"pinion", "wheel"};
 }  // namespace
 
-SpurPair::SpurPair(const GearPairSpec& spec) : spec_(spec) {
-  const double m = spec.module, alpha = spec.pressure_angle;
-  if (!(m > 0.0)) throw GeometryError("gear_pair.module", "module must be positive");
-  if (!(alpha > 0.0 && alpha < kPi / 4.0))
+void GearPairSpec::validate() const {
+  if (!(module > 0.0)) throw GeometryError("gear_pair.module", "module must be positive");
+  if (!(pressure_angle > 0.0 && pressure_angle < kPi / 4.0))
     throw GeometryError("gear_pair.pressure_angle", "pressure angle must lie in (0, 45) deg");
-  if (!(spec.face_width > 0.0)) throw GeometryError("gear_pair.face_width", "face width must be positive");
-  const int z1 = spec.teeth[0], z2 = spec.teeth[1];
+  if (!(face_width > 0.0)) throw GeometryError("gear_pair.face_width", "face width must be positive");
   for (int i = 0; i < 2; ++i)
-    if (spec.teeth[i] < GearPairSpec::kMinTeeth || spec.teeth[i] > GearPairSpec::kMaxTeeth)
-      throw GeometryError(
-          std::string(kGearName[i]) + ".teeth",
-          fmt::format("tooth number must lie in [{}, {}]", GearPairSpec::kMinTeeth, GearPairSpec::kMaxTeeth));
+    if (teeth[i] < kMinTeeth || teeth[i] > kMaxTeeth)
+      throw GeometryError(std::string(kGearName[i]) + ".teeth",
+                          fmt::format("tooth number must lie in [{}, {}]", kMinTeeth, kMaxTeeth));
+}
+
+SpurPair::SpurPair(const GearPairSpec& spec) : spec_(spec) {
+  spec.validate();
+  const double m = spec.module, alpha = spec.pressure_angle;
+  const int z1 = spec.teeth[0], z2 = spec.teeth[1];
 
   reference_center_distance_ = 0.5 * m * (z1 + z2);
   // Zero-backlash operating pressure angle for the shifts (ISO 21771 eq. for inv alpha_w).

@@ -2,7 +2,6 @@
 // geometry and kinematics at any point of it (ISO 21771; Niemann-Winter; Litvin).
 #pragma once
 
-#include "case/case.hpp"
 #include "core/keyed_error.hpp"
 
 #include <stdexcept>
@@ -21,6 +20,28 @@ class GeometryError : public core::KeyedError {
 struct GeometryWarning {
   std::string key;
   std::string message;
+};
+
+// The pair's geometry: basic rack (ISO 53 by default), centre distance and both gears' teeth,
+// shifts, tip and bore diameters; index 0 the pinion, 1 the wheel. SpurPair builds on it.
+struct GearPairSpec {
+  static constexpr int kMinTeeth = 5;  // below this no involute spur gear is cut in practice
+  static constexpr int kMaxTeeth = 1000;
+  double module = 0.0;                    // m [m]
+  double pressure_angle = 0.0;            // alpha of the basic rack [rad]
+  double face_width = 0.0;                // b [m]
+  double addendum_coefficient = 1.0;      // h_aP / m
+  double dedendum_coefficient = 1.25;     // h_fP / m
+  double root_radius_coefficient = 0.38;  // rho_fP / m
+  double tip_shortening = 0.0;            // k: tip diameter reduced by 2 k m on both gears
+  double center_distance = 0.0;           // a_w [m]; 0: zero-backlash distance from the shifts
+  int teeth[2] = {0, 0};                  // z
+  double profile_shift[2] = {0.0, 0.0};   // x [-]
+  double tip_diameter[2] = {0.0, 0.0};    // d_a [m]; 0: from addendum, shift and tip shortening
+  double bore_diameter[2] = {0.0, 0.0};   // gear-body bore [m], for the fillet-foundation stiffness
+  // The rules of each value on its own (the pair's rules between values: SpurPair); throws
+  // GeometryError naming the key ("gear_pair.module", "pinion.teeth").
+  void validate() const;
 };
 
 struct GearBody {

@@ -2,6 +2,7 @@
 
 #include "asperity/critical.hpp"
 #include "asperity/model.hpp"
+#include "case/asperity_setup.hpp"
 #include "contact/fidelity_registry.hpp"
 #include "core/keyed_error.hpp"
 #include "gear/spur_pair.hpp"
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace geartrib::io {
 
@@ -324,6 +326,26 @@ void read_model_constants(TomlReader& r, Case& c) {
 constexpr std::size_t kFewSummits = 100;           // below this a summit statistic scatters by more than 10%
 constexpr double kReferenceProfilePoints = 65536;  // a generated profile's sample for its statistics
 
+// A component's validate(): its refusal (core::KeyedError naming the field) failed at the case key
+// `prefix` + field, or at the key the parameter table gives that field another name under.
+template <class Validate>
+void check_rules(TomlReader& r, const std::string& prefix, Validate validate) {
+  static const std::pair<const char*, const char*> kRenamed[] = {
+      {"dynamics.tolerances.relative", "dynamics.relative_tolerance"},
+      {"asperity.measured_axis_offset", "asperity.side_contact.measured_offset"},
+      {"asperity.measured_tip_gap", "asperity.side_contact.measured_tip_gap"},
+      {"asperity.cylinder_tip_radius", "asperity.cylinder.tip_radius"},
+      {"asperity.cylinder_yield_constant", "asperity.cylinder.yield_constant"}};
+  try {
+    validate();
+  } catch (const core::KeyedError& e) {
+    std::string key = prefix + e.key();
+    for (const auto& [field, case_key] : kRenamed)
+      if (key == field) key = case_key;
+    r.fail(key, e.what());
+  }
+}
+
 // The flank's roughness form: exactly one of ra, rq, summits, spectral moments or a measured
 // topography (loaded and reduced to its summit statistics here).
 void read_flank(TomlReader& r, Case& c, int gear) {
@@ -347,7 +369,8 @@ void read_flank(TomlReader& r, Case& c, int gear) {
     // (summit_radius, if given, overrides the measured radius: grid sampling biases it).
     const std::string t = f + "topography.";
     need("topography.file");
-    const TopographySpec& spec = *g.flank.topography;
+    const surface::TopographySpec& spec = *g.flank.topography;
+    check_rules(r, t, [&] { spec.validate(); });
     const auto path = r.directory() / spec.file;
     if (const std::string why = data_file_problem(path, kNoSizeLimit); !why.empty()) r.fail(t + "file", why);
     TopographyReadOptions read;
@@ -604,7 +627,7 @@ void read_fzg_load_stage(TomlReader& r, Case& c) {
 // [lubricant] given: the oil from its file or the fixed form, its temperatures checked against the
 // data range, and the bodies' thermal data the flash temperature needs.
 void read_lubrication(TomlReader& r, Case& c) {
-  LubricationCase& lc = c.lubrication;
+  lubrication::LubricationSettings& lc = c.lubrication;
   lc.lubricated = true;
   if (!r.has("operating.oil_temperature"))
     r.fail("operating.oil_temperature", "missing required key (a lubricated run needs the oil temperature)");
@@ -664,7 +687,7 @@ void read_lubrication(TomlReader& r, Case& c) {
     r.fail("lubricant.base_oil", fmt::format("ISO/TS 6336-20 tabulates no lubricant factor X_L for '{}': give "
                                              "lubricant.iso_lubricant_factor with its source",
                                              lubrication::base_oil_name(l.base_oil)));
-  if (lc.traction == "curve" && l.traction.empty())
+  if (lc.traction == lubrication::FilmTraction::curve && l.traction.empty())
     r.fail("lubrication.traction",
            l.fixed() ? std::string("\"curve\" needs measured traction curves: give a lubricant file with "
                                    "[traction_curves.NAME] tables")
@@ -727,9 +750,15 @@ Case load_case_from(TomlReader& r, const std::vector<CaseChange>& changes, unsig
   if (r.has("lubricant")) read_lubrication(r, c);
   if (r.is_string("asperity.cylinder.yield_constant")) {
     // green-2005: Green's plane-strain C_L(nu) of the softer body.
-    const auto& soft = c.pinion.material.hardness <= c.wheel.material.hardness ? c.pinion.material : c.wheel.material;
-    c.asperity.cylinder_yield_constant = asperity::green_cylinder_yield_factor(soft.poisson_ratio);
+    c.asperity.cylinder_yield_constant =
+        asperity::green_cylinder_yield_factor(asperity::softer_material(c).poisson_ratio);
   }
+  // The components' own rules (the ranges above hold most of them), each refusal at its key.
+  check_rules(r, "lubrication.", [&] { c.lubrication.validate(); });
+  check_rules(r, "mesh.", [&] { c.mesh.validate(); });
+  check_rules(r, "roughness.", [&] { c.roughness.validate(); });
+  check_rules(r, "dynamics.", [&] { c.dynamics.validate(); });
+  check_rules(r, "asperity.", [&] { c.asperity.validate(); });
 
   // The flanks, when asked for (or given): one roughness form each, the same on both.
   const bool flanks = (parts & kRoughnessPart) || r.has("pinion.flank") || r.has("wheel.flank");

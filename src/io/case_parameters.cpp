@@ -1,7 +1,6 @@
 #include "io/case_parameters.hpp"
 
 #include "asperity/model.hpp"
-#include "contact/asperity_pressure.hpp"
 #include "contact/deterministic_contact.hpp"
 #include "contact/fidelity_registry.hpp"
 #include "contact/greenwood_williamson.hpp"
@@ -18,6 +17,7 @@
 #include <charconv>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <type_traits>
 #include <utility>
 
@@ -84,6 +84,21 @@ Parameter mapped_choice(std::string key, std::vector<std::string> choices, Ref r
   p.choices = std::move(choices);
   p.get = [ref, from](const Case& c, int g) { return text_value(from(ref(c, g))); };
   p.set = [ref, to](Case& c, int g, const ParameterValue& v) { ref(c, g) = to(v.text); };
+  return p;
+}
+
+// A choice stored as an enum, read and written through its component's table of names.
+template <class E, class Ref>
+Parameter named_choice(std::string key, std::span<const NamedChoice<E>> table, std::string noun, Ref ref) {
+  Parameter p;
+  p.key = std::move(key);
+  p.kind = ParameterKind::choice;
+  p.choices = choice_names(table);
+  p.noun = noun;
+  p.get = [ref, table](const Case& c, int g) { return text_value(choice_name(table, ref(c, g))); };
+  p.set = [ref, table, noun](Case& c, int g, const ParameterValue& v) {
+    ref(c, g) = choice_from_name(table, v.text, noun);
+  };
   return p;
 }
 
@@ -219,7 +234,7 @@ std::vector<Parameter> build_table() {
   // [pinion], [wheel]: each gear's teeth, body and flank.
   add(integer(
           "{gear}.teeth", [](auto& c, int g) -> auto& { return c.gear_pair.teeth[g]; }))
-      .range(GearPairSpec::kMinTeeth, GearPairSpec::kMaxTeeth)
+      .range(gear::GearPairSpec::kMinTeeth, gear::GearPairSpec::kMaxTeeth)
       .required(kGeometryPart)
       .alias({"teeth"})
       .gear_alias("z1", "z2")
@@ -305,13 +320,13 @@ std::vector<Parameter> build_table() {
           "measured flank, it overrides the measured radius");
   auto topo = [gear](auto& c, int g) -> auto& { return gear(c, g).flank.topography; };
   // A measured flank: the rows fill the topography spec (created on first use).
-  auto topo_spec = [topo](Case& c, int g) -> TopographySpec& {
+  auto topo_spec = [topo](Case& c, int g) -> surface::TopographySpec& {
     auto& t = topo(c, g);
     if (!t) t.emplace();
     return *t;
   };
-  auto topo_get = [topo](const Case& c, int g) -> const TopographySpec& {
-    static const TopographySpec kDefault;
+  auto topo_get = [topo](const Case& c, int g) -> const surface::TopographySpec& {
+    static const surface::TopographySpec kDefault;
     const auto& t = topo(c, g);
     return t ? *t : kDefault;
   };
@@ -530,14 +545,14 @@ std::vector<Parameter> build_table() {
       .doc("Fixed form: the ISO lubricant factor X_L itself; 0: the base stock's tabulated value");
 
   // [lubrication]: the models along the path.
-  add(text(
-          "lubrication.film_formula", K::choice, [](auto& c, int) -> auto& { return c.lubrication.film_formula; }))
-      .choices(lubrication::film_formula_names(), "film formula")
+  add(named_choice(
+          "lubrication.film_formula", lubrication::film_formula_choices(), "film formula",
+          [](auto& c, int) -> auto& { return c.lubrication.film_formula; }))
       .alias({"film_formula"})
       .doc("Smooth EHL film: Dowson-Higginson minimum, Pan-Hamrock minimum or central, Dowson-Toyoda central");
-  add(text(
-          "lubrication.inlet_heating", K::choice, [](auto& c, int) -> auto& { return c.lubrication.inlet_heating; }))
-      .choices(lubrication::inlet_heating_names(), "inlet-heating correction")
+  add(named_choice(
+          "lubrication.inlet_heating", lubrication::inlet_heating_choices(), "inlet-heating correction",
+          [](auto& c, int) -> auto& { return c.lubrication.inlet_heating; }))
       .alias({"inlet_heating"})
       .doc("Inlet shear-heating correction of the film: Gupta et al. 1992, Murch-Wilson 1975 or none");
   add(quantity(
@@ -551,31 +566,30 @@ std::vector<Parameter> build_table() {
           [](auto& c, int) -> auto& { return c.lubrication.scuffing_temperature; }))
       .range(0.0, 2000.0)
       .doc("Scuffing temperature theta_S for the ISO/TS 6336-20 flash-temperature safety; 0: none");
-  add(text(
-          "lubrication.film_gap", K::choice, [](auto& c, int) -> auto& { return c.lubrication.film_gap; }))
-      .choices(lubrication::film_gap_names(), "film gap")
+  add(named_choice(
+          "lubrication.film_gap", lubrication::film_gap_choices(), "film gap",
+          [](auto& c, int) -> auto& { return c.lubrication.film_gap; }))
       .alias({"film_gap"})
       .doc(
           "What the shared film's thickness equals: the mean gap between the rough flanks (Patir & Cheng), the "
           "separation of their mean planes (JGP 1972), or the gap counted from the dry contact (geartrib 0.1)");
-  add(text(
-          "lubrication.asperity_pressure", K::choice,
+  add(named_choice(
+          "lubrication.asperity_pressure", lubrication::asperity_pressure_model_choices(), "asperity pressure model",
           [](auto& c, int) -> auto& { return c.lubrication.asperity_pressure; }))
-      .choices(contact::asperity_pressure_model_names(), "asperity pressure model")
       .alias({"asperity_pressure"})
       .doc(
           "Asperity pressure in the load sharing: auto (the asperity model, or the bearing area at the hardness "
           "where its plastic area fraction exceeds 0.99, blended from 0.9), asperity-model or bearing-area");
-  add(text(
-          "lubrication.traction", K::choice, [](auto& c, int) -> auto& { return c.lubrication.traction; }))
-      .choices(lubrication::film_traction_names(), "film traction model")
+  add(named_choice(
+          "lubrication.traction", lubrication::film_traction_choices(), "film traction model",
+          [](auto& c, int) -> auto& { return c.lubrication.traction; }))
       .alias({"traction"})
       .doc(
           "Film traction: thermal Eyring (Johnson & Greenwood 1980), isothermal Eyring, or the lubricant's measured "
           "traction curves");
-  add(text(
-          "lubrication.mean_friction", K::choice, [](auto& c, int) -> auto& { return c.lubrication.mean_friction; }))
-      .choices(lubrication::mean_friction_law_names(), "gear-mean friction law")
+  add(named_choice(
+          "lubrication.mean_friction", lubrication::mean_friction_law_choices(), "gear-mean friction law",
+          [](auto& c, int) -> auto& { return c.lubrication.mean_friction; }))
       .alias({"mean_friction"})
       .doc(
           "Gear-mean friction law of the bulk-temperature estimate: iso-flash (ISO/TS 6336-20's own), iso "
@@ -592,9 +606,9 @@ std::vector<Parameter> build_table() {
           "normal tilted by atan(mu)) and the boundary coefficient of a lubricated run");
 
   // [mesh]
-  add(text(
-          "mesh.load_sharing", K::choice, [](auto& c, int) -> auto& { return c.mesh.load_sharing; }))
-      .choices({"iso", "stiffness"})
+  add(named_choice(
+          "mesh.load_sharing", gear::load_sharing_choices(), "value",
+          [](auto& c, int) -> auto& { return c.mesh.load_sharing; }))
       .alias({"load_sharing"})
       .doc("Load sharing between tooth pairs: ISO/TS 6336-22 method B or the pairs' stiffnesses");
   add(integer(
@@ -607,9 +621,9 @@ std::vector<Parameter> build_table() {
           [](const std::string& t) { return t == "plane-strain"; },
           [](bool strain) { return std::string(strain ? "plane-strain" : "plane-stress"); }))
       .doc("Tooth beam of the stiffness model: plane strain (wide face) or plane stress");
-  add(text(
-          "mesh.dynamics", K::choice, [](auto& c, int) -> auto& { return c.dynamics.engine; }))
-      .choices({"none", "cvode", "odeint"})
+  add(named_choice(
+          "mesh.dynamics", gear::dynamics_engine_choices(), "value",
+          [](auto& c, int) -> auto& { return c.dynamics.engine; }))
       .alias({"dynamics"})
       .doc("Mesh dynamics: none (static load sharing) or the steady dynamic cycle with an integrator");
 
@@ -620,7 +634,7 @@ std::vector<Parameter> build_table() {
       .alias({"damping"})
       .doc("Mesh damping ratio zeta (0.03-0.17 reported; Kasuba & Evans 1981)");
   add(number(
-          "dynamics.relative_tolerance", [](auto& c, int) -> auto& { return c.dynamics.relative_tolerance; }))
+          "dynamics.relative_tolerance", [](auto& c, int) -> auto& { return c.dynamics.tolerances.relative; }))
       .range(1e-14, 1e-2)
       .alias({"rtol"})
       .ladder({"1e-4", "1e-6", "1e-8", "1e-10", "1e-12"})

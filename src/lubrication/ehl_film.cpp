@@ -14,7 +14,13 @@ constexpr std::array<FilmLaw, 4> kLaws{{
     {"pan-hamrock-central", 2.922, 0.692, 0.470, -0.166, true, "Pan & Hamrock 1989"},
     {"dowson-toyoda", 3.06, 0.69, 0.56, -0.10, true, "Dowson & Toyoda 1979"},
 }};
-constexpr std::array<const char*, 3> kInletNames{"none", "murch-wilson", "gupta"};
+constexpr auto kFormulaNames = [] {
+  std::array<NamedChoice<FilmFormula>, kLaws.size()> names{};
+  for (std::size_t i = 0; i < kLaws.size(); ++i) names[i] = {static_cast<FilmFormula>(i), kLaws[i].name};
+  return names;
+}();
+constexpr NamedChoice<InletHeating> kInletNames[] = {
+    {InletHeating::none, "none"}, {InletHeating::murch_wilson, "murch-wilson"}, {InletHeating::gupta, "gupta"}};
 }  // namespace
 
 EhlGroups ehl_groups(double eta0, double alpha, double u, double w, double radius, double e) {
@@ -23,18 +29,8 @@ EhlGroups ehl_groups(double eta0, double alpha, double u, double w, double radiu
 
 const FilmLaw& film_law(FilmFormula f) { return kLaws[static_cast<std::size_t>(f)]; }
 
-FilmFormula film_formula_from_name(const std::string& name) {
-  for (std::size_t i = 0; i < kLaws.size(); ++i)
-    if (name == kLaws[i].name) return static_cast<FilmFormula>(i);
-  throw std::invalid_argument("unknown film formula '" + name + "'");
-}
-
-std::vector<std::string> film_formula_names() {
-  std::vector<std::string> names;
-  names.reserve(std::size(kLaws));
-  for (const auto& l : kLaws) names.emplace_back(l.name);
-  return names;
-}
+std::span<const NamedChoice<FilmFormula>> film_formula_choices() { return kFormulaNames; }
+const char* film_formula_name(FilmFormula f) { return choice_name(film_formula_choices(), f); }
 
 double smooth_film(FilmFormula f, const EhlGroups& g, double radius) {
   if (!(g.speed > 0.0) || !(g.load > 0.0)) return 0.0;  // no entrainment (or no viscosity): no film
@@ -43,13 +39,8 @@ double smooth_film(FilmFormula f, const EhlGroups& g, double radius) {
          std::pow(g.load, l.load_exponent);
 }
 
-InletHeating inlet_heating_from_name(const std::string& name) {
-  for (std::size_t i = 0; i < kInletNames.size(); ++i)
-    if (name == kInletNames[i]) return static_cast<InletHeating>(i);
-  throw std::invalid_argument("unknown inlet-heating correction '" + name + "'");
-}
-
-std::vector<std::string> inlet_heating_names() { return {kInletNames.begin(), kInletNames.end()}; }
+std::span<const NamedChoice<InletHeating>> inlet_heating_choices() { return kInletNames; }
+const char* inlet_heating_name(InletHeating model) { return choice_name(inlet_heating_choices(), model); }
 
 double thermal_loading(double beta, double eta0, double u, double k_f) { return beta * eta0 * u * u / k_f; }
 

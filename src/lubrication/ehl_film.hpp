@@ -4,6 +4,9 @@
 // speed (v1 + v2)/2, R the reduced radius and w the load per unit face width.
 #pragma once
 
+#include "core/named_choices.hpp"
+
+#include <span>
 #include <string>
 #include <vector>
 
@@ -33,8 +36,9 @@ struct FilmLaw {
   const char* source;
 };
 const FilmLaw& film_law(FilmFormula f);
-FilmFormula film_formula_from_name(const std::string& name);  // throws std::invalid_argument
-std::vector<std::string> film_formula_names();
+// The formulas by name (lubrication.film_formula): film_law(f).name.
+std::span<const NamedChoice<FilmFormula>> film_formula_choices();
+const char* film_formula_name(FilmFormula f);
 // Isothermal smooth film [m].
 double smooth_film(FilmFormula f, const EhlGroups& g, double radius);
 
@@ -45,8 +49,8 @@ double smooth_film(FilmFormula f, const EhlGroups& g, double radius);
 //  - murch-wilson: Murch & Wilson, J. Lubr. Technol. 97 (1975), pure rolling: 3.94/(3.94 + L^0.62);
 //  - none: 1.
 enum class InletHeating { none, murch_wilson, gupta };
-InletHeating inlet_heating_from_name(const std::string& name);
-std::vector<std::string> inlet_heating_names();
+std::span<const NamedChoice<InletHeating>> inlet_heating_choices();  // lubrication.inlet_heating
+const char* inlet_heating_name(InletHeating model);
 double thermal_loading(double temperature_viscosity, double eta0, double entrainment, double oil_conductivity);
 // srr: |v1 - v2|/u; hertz_over_modulus: p_h/E'.
 double inlet_heating_factor(InletHeating model, double thermal_load, double srr, double hertz_over_modulus);

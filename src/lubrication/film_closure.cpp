@@ -14,11 +14,18 @@ namespace geartrib::lubrication {
 namespace {
 constexpr NamedChoice<FilmGap> kGapNames[] = {
     {FilmGap::mean_gap, "mean-gap"}, {FilmGap::mean_plane, "mean-plane"}, {FilmGap::dry_offset, "dry-offset"}};
+constexpr NamedChoice<AsperityPressureModel> kAsperityPressureNames[] = {
+    {AsperityPressureModel::automatic, "auto"},
+    {AsperityPressureModel::asperity_model, "asperity-model"},
+    {AsperityPressureModel::bearing_area, "bearing-area"}};
 }  // namespace
 
-FilmGap film_gap_from_name(const std::string& name) { return choice_from_name<FilmGap>(kGapNames, name, "film gap"); }
-const char* film_gap_name(FilmGap g) { return choice_name<FilmGap>(kGapNames, g); }
-std::vector<std::string> film_gap_names() { return choice_names<FilmGap>(kGapNames); }
+std::span<const NamedChoice<FilmGap>> film_gap_choices() { return kGapNames; }
+const char* film_gap_name(FilmGap g) { return choice_name(film_gap_choices(), g); }
+std::span<const NamedChoice<AsperityPressureModel>> asperity_pressure_model_choices() { return kAsperityPressureNames; }
+const char* asperity_pressure_model_name(AsperityPressureModel m) {
+  return choice_name(asperity_pressure_model_choices(), m);
+}
 
 double mean_gap(const CompositeHeights& s, double h) {
   if (!(s.sigma > 0.0)) return std::max(h, 0.0);

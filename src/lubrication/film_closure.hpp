@@ -4,8 +4,10 @@
 // separation of the two flanks' mean planes of heights [m].
 #pragma once
 
+#include "core/named_choices.hpp"
 #include "surface/rough_surface.hpp"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -19,9 +21,19 @@ namespace geartrib::lubrication {
 //  - dry_offset: h less the dry contact's separation where that is negative (geartrib 0.1's
 //    device, kept for comparison; no physical basis).
 enum class FilmGap { mean_gap, mean_plane, dry_offset };
-FilmGap film_gap_from_name(const std::string& name);  // throws std::invalid_argument
+std::span<const NamedChoice<FilmGap>> film_gap_choices();  // lubrication.film_gap
 const char* film_gap_name(FilmGap g);
-std::vector<std::string> film_gap_names();
+
+// The asperities' pressure in the film's load sharing (contact/asperity_pressure.hpp):
+//  - automatic (auto, default): the bearing-area model's weight w rises from 0 to 1 as the asperity
+//    model's own plastic area fraction under the whole load (at the strip's centre, its smallest
+//    along the path) rises from 0.9 to 0.99, the bound above which the run's regime verdict calls
+//    the flanks fully plastic: the asperity model where it holds, the bearing area where every
+//    contact flows, linear between (continuous across a sweep);
+//  - asperity_model: w = 0; bearing_area: w = 1.
+enum class AsperityPressureModel { automatic, asperity_model, bearing_area };
+std::span<const NamedChoice<AsperityPressureModel>> asperity_pressure_model_choices();  // lubrication.asperity_pressure
+const char* asperity_pressure_model_name(AsperityPressureModel m);
 
 struct CompositeHeights {
   double sigma = 0.0;  // [m]

@@ -27,11 +27,8 @@ constexpr NamedChoice<MeanFrictionLaw> kLawNames[] = {{MeanFrictionLaw::iso, "is
                                                       {MeanFrictionLaw::fernandes, "fernandes"}};
 }  // namespace
 
-MeanFrictionLaw mean_friction_law_from_name(const std::string& name) {
-  return choice_from_name<MeanFrictionLaw>(kLawNames, name, "mean friction law");
-}
-const char* mean_friction_law_name(MeanFrictionLaw law) { return choice_name<MeanFrictionLaw>(kLawNames, law); }
-std::vector<std::string> mean_friction_law_names() { return choice_names<MeanFrictionLaw>(kLawNames); }
+std::span<const NamedChoice<MeanFrictionLaw>> mean_friction_law_choices() { return kLawNames; }
+const char* mean_friction_law_name(MeanFrictionLaw law) { return choice_name(mean_friction_law_choices(), law); }
 
 double fernandes_lubricant_factor(BaseOil b, double iso_factor) {
   switch (b) {

@@ -4,8 +4,10 @@
 // scuffing safety, and the ISO/TS 6336-22 film h_Y.
 #pragma once
 
+#include "core/named_choices.hpp"
 #include "lubrication/lubricant.hpp"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -73,9 +75,8 @@ inline constexpr double kIsoMinTangentialLoad = 150e3;            // w_Bt [N/m]
 //    per base stock (mineral 0.846, PAO 0.65, ester 0.65, polyglycol 0.585, as the authors' own
 //    public code states them; other stocks: the ISO table's value).
 enum class MeanFrictionLaw { iso, iso_flash, schlenk, fernandes };
-MeanFrictionLaw mean_friction_law_from_name(const std::string& name);  // throws std::invalid_argument
+std::span<const NamedChoice<MeanFrictionLaw>> mean_friction_law_choices();  // lubrication.mean_friction
 const char* mean_friction_law_name(MeanFrictionLaw law);
-std::vector<std::string> mean_friction_law_names();
 MeanFriction mean_friction(MeanFrictionLaw law, const PitchPointLoad& c, BaseOil base_oil);
 double fernandes_lubricant_factor(BaseOil b, double iso_factor);
 

@@ -67,11 +67,8 @@ double asinh_exp(double l) { return l > 20.0 ? l + std::numbers::ln2 : std::asin
 double eyring_log(double ln_drive, double tau0) { return tau0 * asinh_exp(ln_drive - std::log(tau0)); }
 }  // namespace
 
-FilmTraction film_traction_from_name(const std::string& name) {
-  return choice_from_name<FilmTraction>(kTractionNames, name, "film traction model");
-}
-const char* film_traction_name(FilmTraction t) { return choice_name<FilmTraction>(kTractionNames, t); }
-std::vector<std::string> film_traction_names() { return choice_names<FilmTraction>(kTractionNames); }
+std::span<const NamedChoice<FilmTraction>> film_traction_choices() { return kTractionNames; }
+const char* film_traction_name(FilmTraction t) { return choice_name(film_traction_choices(), t); }
 
 double eyring_shear_stress(double eta, double tau0, double vs, double h) {
   if (!(h > 0.0) || vs == 0.0 || !(eta > 0.0)) return 0.0;

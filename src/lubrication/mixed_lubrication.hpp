@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -47,9 +48,8 @@ LoadShare share_load(double h_smooth, double film_exponent, const std::function<
 // Both Eyring forms take eta = eta0(T) exp(alpha p_f) (Barus) and are capped by the limiting shear
 // stress Lambda p_f (Evans & Johnson, Proc. IMechE 200C (1986), the Eyring-limiting form).
 enum class FilmTraction { thermal_eyring, isothermal_eyring, curve };
-FilmTraction film_traction_from_name(const std::string& name);  // throws std::invalid_argument
+std::span<const NamedChoice<FilmTraction>> film_traction_choices();  // lubrication.traction
 const char* film_traction_name(FilmTraction t);
-std::vector<std::string> film_traction_names();
 
 struct FilmShear {
   double shear_stress = 0.0;  // tau_f [Pa]

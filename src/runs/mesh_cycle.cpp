@@ -1,6 +1,7 @@
 #include "runs/mesh_cycle.hpp"
 
-#include "asperity/case_setup.hpp"
+#include "case/asperity_setup.hpp"
+#include "case/gear_setup.hpp"
 #include "contact/deterministic/mesh_deterministic.hpp"
 #include "contact/fidelity_registry.hpp"
 #include "contact/greenwood_williamson.hpp"
@@ -189,8 +190,8 @@ long running_in_positions(const Case& c, const contact::FlankSpan& span, PathHal
 }
 
 // The spacing of the profile a flank rolls, as rolling_flanks takes it (0: none).
-double profile_spacing(const FlankSpec& flank) {
-  const TopographySpec* topo = flank.topography ? &*flank.topography : nullptr;
+double profile_spacing(const surface::FlankSpec& flank) {
+  const surface::TopographySpec* topo = flank.topography ? &*flank.topography : nullptr;
   if (topo && topo->synthesis != surface::SynthesisMethod::none)
     return flank.patch_spectrum ? flank.patch_spectrum->spacing : 0.0;
   if (flank.measured_profile) return flank.measured_profile->spacing;
@@ -230,7 +231,7 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
   }
   for (int g = 0; g < 2; ++g) {
     const std::string gear = g == 0 ? "pinion" : "wheel";
-    const FlankSpec& flank = (g == 0 ? c.pinion : c.wheel).flank;
+    const surface::FlankSpec& flank = (g == 0 ? c.pinion : c.wheel).flank;
     auto& tracks = g == 0 ? out.pinion : out.wheel;
     const double needed = span.length(g);
     const std::string why_needed = fmt::format(
@@ -258,7 +259,7 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
                                          mm(span.strip_half_length), gear, what));
       }
     };
-    const TopographySpec* topo = flank.topography ? &*flank.topography : nullptr;
+    const surface::TopographySpec* topo = flank.topography ? &*flank.topography : nullptr;
     if (topo && topo->synthesis != surface::SynthesisMethod::none) {
       // A flank-long profile synthesised from the patch's spectrum: over the generated stretch, or
       // the given length centred on the active part.
@@ -364,9 +365,9 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
 
 // The points of one flank profile of gear g as rolling_flanks will make or take it.
 double flank_points(const Case& c, const contact::FlankSpan& span, int g) {
-  const FlankSpec& flank = (g == 0 ? c.pinion : c.wheel).flank;
+  const surface::FlankSpec& flank = (g == 0 ? c.pinion : c.wheel).flank;
   const double generated = span.generated_last[g] - span.generated_first[g];
-  const TopographySpec* topo = flank.topography ? &*flank.topography : nullptr;
+  const surface::TopographySpec* topo = flank.topography ? &*flank.topography : nullptr;
   if (topo && topo->synthesis != surface::SynthesisMethod::none && flank.patch_spectrum)
     return (topo->synthesis_length > 0.0 ? topo->synthesis_length : generated) / flank.patch_spectrum->spacing + 1.0;
   if (flank.measured_profile) return static_cast<double>(flank.measured_profile->z.size());
@@ -543,11 +544,6 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
       scalar("/synthesis/" + f.gear + " attribute " + name, v);
 }
 
-surface::EquivalentSurface case_equivalent_surface(const Case& c) {
-  return surface::equivalent_surface(c.pinion.flank.roughness, c.wheel.flank.roughness, c.roughness.distribution,
-                                     c.roughness.eta_sigma_beta);
-}
-
 contact::MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
                                             const std::function<void(int, int)>& progress, int positions,
                                             const OdeIntegrator* dynamics, const contact::FlankSource& flanks_source) {
@@ -559,19 +555,20 @@ contact::MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh&
   flanks.eta_sigma_beta = c.roughness.eta_sigma_beta;
   flanks.model = model.get();
   flanks.friction = c.friction_coefficient;
-  const bool dynamic = c.dynamics.engine != "none";
+  const bool dynamic = c.dynamics.engine != gear::DynamicsEngine::none;
   if (dynamic && !dynamics) throw std::invalid_argument("the case asks for dynamics but no integrator was given");
-  contact::MeshCycleInputs in{.mesh = mesh,
-                              .contact = c.contact,
-                              .running_in = c.running_in,
-                              .flanks = flanks,
-                              .lubrication = c.lubrication.lubricated ? &c.lubrication : nullptr,
-                              .operating = &c.operating,
-                              .dynamics = dynamic ? dynamics : nullptr,
-                              .dynamics_settings = dynamic ? gear::dynamics_settings(c) : gear::DynamicsSettings{},
-                              .solver = solver,
-                              .flank_source = flanks_source,
-                              .progress = progress};
+  contact::MeshCycleInputs in{
+      .mesh = mesh,
+      .contact = c.contact,
+      .running_in = c.running_in,
+      .flanks = flanks,
+      .lubrication = c.lubrication.lubricated ? &c.lubrication : nullptr,
+      .operating = {c.operating.oil_temperature, c.operating.bulk_temperature, c.operating.pinion_torque},
+      .dynamics = dynamic ? dynamics : nullptr,
+      .dynamics_settings = dynamic ? gear::dynamics_settings(c) : gear::DynamicsSettings{},
+      .solver = solver,
+      .flank_source = flanks_source,
+      .progress = progress};
   if (positions > 0) in.contact.positions = positions;
   return contact::run_mesh_contact(in);
 }
@@ -581,10 +578,10 @@ double finest_element_size(const Case& c) {
 }
 
 contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress) {
-  const gear::GearMesh mesh(c);
+  const gear::GearMesh mesh = gear::case_mesh(c);
   const solvers::KinsolSolver kinsol;
   const std::unique_ptr<OdeIntegrator> integrator =
-      c.dynamics.engine != "none" ? solvers::make_integrator(c.dynamics.engine) : nullptr;
+      c.dynamics.engine != gear::DynamicsEngine::none ? solvers::make_integrator(c.dynamics.engine) : nullptr;
   contact::MeshContactResult r;
   std::vector<contact::FlankSynthesis> synthesis;
   PathHalfWidths half_widths(c, mesh, integrator.get());
@@ -622,7 +619,7 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
   check_finite_outputs(r);
   // A run whose outputs rest on the mesh stiffness is warned, first, when it leaves ISO's band.
   const bool uses_stiffness = c.contact.mesh_stiffness || mesh.analysis().method() == gear::LoadSharing::stiffness ||
-                              c.dynamics.engine != "none";
+                              c.dynamics.engine != gear::DynamicsEngine::none;
   if (uses_stiffness)
     if (std::string w = gear::iso_stiffness_warning(mesh, mesh.iso_comparison(c.mesh.positions)); !w.empty())
       r.warnings.insert(r.warnings.begin(), std::move(w));

@@ -24,9 +24,6 @@ void check_finite_outputs(const contact::MeshContactResult& r);
 
 contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress = {});
 
-// The equivalent rough surface of a case's two flanks (seed section 4) with its roughness settings.
-surface::EquivalentSurface case_equivalent_surface(const Case& c);
-
 // The mesh cycle of a case on `mesh`, its inputs translated from the case (contact::MeshCycleInputs),
 // without run_mesh_cycle's located errors and checks. solver: for a fidelity that needs one;
 // positions <= 0: the case's number; dynamics: the integrator, when the case asks for dynamics

@@ -4,14 +4,19 @@
 #include "solvers/odeint_integrator.hpp"
 
 #include <stdexcept>
-#include <string>
 
 namespace geartrib::solvers {
 
-std::unique_ptr<OdeIntegrator> make_integrator(std::string_view name) {
-  if (name == "cvode") return std::make_unique<CvodeIntegrator>();
-  if (name == "odeint") return std::make_unique<OdeintIntegrator>();
-  throw std::invalid_argument("unknown integrator '" + std::string(name) + "' (known: cvode, odeint)");
+std::unique_ptr<OdeIntegrator> make_integrator(gear::DynamicsEngine engine) {
+  switch (engine) {
+    case gear::DynamicsEngine::cvode:
+      return std::make_unique<CvodeIntegrator>();
+    case gear::DynamicsEngine::odeint:
+      return std::make_unique<OdeintIntegrator>();
+    case gear::DynamicsEngine::none:
+      break;
+  }
+  throw std::invalid_argument("no integrator for the dynamics engine 'none' (known: cvode, odeint)");
 }
 
 }  // namespace geartrib::solvers

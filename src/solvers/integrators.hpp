@@ -1,14 +1,15 @@
-// The ODE integrators by name: "cvode" (SUNDIALS CVODE, BDF) or "odeint" (Boost.Odeint
-// Dormand-Prince 5(4)).
+// The ODE integrators of the mesh dynamics by their engine (gear::DynamicsEngine): cvode (SUNDIALS
+// CVODE, BDF) or odeint (Boost.Odeint Dormand-Prince 5(4)).
 #pragma once
 
 #include "core/ode_integrator.hpp"
+#include "gear/mesh_dynamics.hpp"
 
 #include <memory>
-#include <string_view>
 
 namespace geartrib::solvers {
 
-std::unique_ptr<OdeIntegrator> make_integrator(std::string_view name);  // throws std::invalid_argument
+// Throws std::invalid_argument for DynamicsEngine::none (no integrator).
+std::unique_ptr<OdeIntegrator> make_integrator(gear::DynamicsEngine engine);
 
 }  // namespace geartrib::solvers

@@ -1,7 +1,7 @@
 // Cost of one single-asperity evaluation, by model and by detail (load and area only, or the
 // full stress outputs). Run: ./build/tests/geartrib_bench
-#include "asperity/case_setup.hpp"
 #include "asperity/side_contact.hpp"
+#include "case/asperity_setup.hpp"
 #include "io/case_file.hpp"
 
 #include <benchmark/benchmark.h>

@@ -1,6 +1,6 @@
 // The steady mesh cycle of the reference pair at 1000 rpm by both integrators at several
 // tolerances: time, steps, and the error of the mesh force against a CVODE reference at 1e-12.
-#include "gear/mesh_dynamics.hpp"
+#include "case/gear_setup.hpp"
 #include "io/case_file.hpp"
 #include "solvers/integrators.hpp"
 
@@ -19,12 +19,14 @@ const Case& reference_case() {
 constexpr double kSpeed = 1000.0 * 2.0 * std::numbers::pi / 60.0;
 
 const gear::SteadyCycle& reference_cycle(const gear::MeshDynamics& dyn) {
-  static const gear::SteadyCycle r = [&] { return dyn.steady_cycle(*solvers::make_integrator("cvode"), kSpeed); }();
+  static const gear::SteadyCycle r = [&] {
+    return dyn.steady_cycle(*solvers::make_integrator(gear::DynamicsEngine::cvode), kSpeed);
+  }();
   return r;
 }
 
-void steady_cycle(benchmark::State& state, const char* engine) {
-  const gear::GearMesh mesh(reference_case());
+void steady_cycle(benchmark::State& state, gear::DynamicsEngine engine) {
+  const gear::GearMesh mesh = gear::case_mesh(reference_case());
   gear::DynamicsSettings tight = gear::dynamics_settings(reference_case());
   tight.tolerances.relative = 1e-12;
   const gear::MeshDynamics reference(mesh, tight);
@@ -45,5 +47,9 @@ void steady_cycle(benchmark::State& state, const char* engine) {
 }
 }  // namespace
 
-BENCHMARK_CAPTURE(steady_cycle, cvode, "cvode")->DenseRange(4, 10, 2)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(steady_cycle, odeint, "odeint")->DenseRange(4, 10, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(steady_cycle, cvode, gear::DynamicsEngine::cvode)
+    ->DenseRange(4, 10, 2)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(steady_cycle, odeint, gear::DynamicsEngine::odeint)
+    ->DenseRange(4, 10, 2)
+    ->Unit(benchmark::kMillisecond);

@@ -3,11 +3,12 @@
 // strip (uncoupled, coupled), the coupled strip along the path (cold, warm), the highest
 // asperity's stresses, the whole cycle as `geartrib run` does it, dry and lubricated, and the
 // deterministic cycle. Run: ./build/tests/geartrib_bench --benchmark_filter='gw_|strip_|cycle'
-#include "asperity/case_setup.hpp"
+#include "case/asperity_setup.hpp"
+#include "case/contact_setup.hpp"
+#include "case/gear_setup.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
 #include "contact/rough_line_contact.hpp"
-#include "gear/gear_mesh.hpp"
 #include "io/case_file.hpp"
 #include "runs/mesh_cycle.hpp"
 #include "solvers/kinsol_solver.hpp"
@@ -21,8 +22,8 @@ using namespace geartrib;
 namespace {
 struct Setup {
   Case c = io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30.toml");
-  gear::GearMesh mesh{c};
-  surface::EquivalentSurface surface = runs::case_equivalent_surface(c);
+  gear::GearMesh mesh = gear::case_mesh(c);
+  surface::EquivalentSurface surface = contact::case_equivalent_surface(c);
   asperity::ContactPair pair = asperity::contact_pair(c);
   std::unique_ptr<asperity::AsperityModel> model = asperity::make_case_model(c, c.asperity.model);
   double line_load = mesh.normal_force() / c.gear_pair.face_width;  // the whole load on one pair

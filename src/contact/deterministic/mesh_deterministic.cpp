@@ -191,6 +191,19 @@ core::KeyedError strip_overload(const ContactSettings& cs, const DeterministicOp
 
 }  // namespace
 
+DeterministicOptions deterministic_options(const ContactSettings& cs, const RunningInSettings& running_in,
+                                           const Material& m1, const Material& m2) {
+  DeterministicOptions o;
+  o.element_size = cs.element_size;
+  o.strip_halfwidths = cs.strip_halfwidths;
+  o.pressure_cap = std::min(m1.hardness, m2.hardness);
+  o.poisson_ratio = m1.hardness <= m2.hardness ? m1.poisson_ratio : m2.poisson_ratio;
+  o.pinion_plastic_share = m1.hardness < 0.99 * m2.hardness ? 1.0 : m2.hardness < 0.99 * m1.hardness ? 0.0 : 0.5;
+  o.subsurface_stress = cs.asperity_stress;
+  o.plastic_overlap = running_in.tolerance;
+  return o;
+}
+
 double strip_solve_seconds(int elements) {
   // Measured on the shipped case (gears/m6z30-deterministic.toml, 201 positions, one thread):
   // 1.18 s for 1280 elements of 0.5 um (docs/reference/timings.md, cycle_deterministic/element_nm:500),
@@ -247,16 +260,8 @@ void plan_strip(const FidelityInputs& in, BoundaryElements::State& st) {
     st.sigma[0].push_back(p.rho1[k] * p.rho1[k] / (2.0 * rb[0]));  // involute arc length from the base circle
     st.sigma[1].push_back(p.rho2[k] * p.rho2[k] / (2.0 * rb[1]));
   }
-  const Material& m1 = *in.flanks.materials[0];
-  const Material& m2 = *in.flanks.materials[1];
-  DeterministicOptions& o = st.options;
-  o.element_size = cs.element_size;
-  o.strip_halfwidths = cs.strip_halfwidths;
-  o.pressure_cap = std::min(m1.hardness, m2.hardness);
-  o.poisson_ratio = m1.hardness <= m2.hardness ? m1.poisson_ratio : m2.poisson_ratio;
-  o.pinion_plastic_share = m1.hardness < 0.99 * m2.hardness ? 1.0 : m2.hardness < 0.99 * m1.hardness ? 0.0 : 0.5;
-  o.subsurface_stress = cs.asperity_stress;
-  o.plastic_overlap = in.running_in.tolerance;
+  st.options = deterministic_options(cs, in.running_in, *in.flanks.materials[0], *in.flanks.materials[1]);
+  const DeterministicOptions& o = st.options;
   // The flanks are read over the grid's whole reach (at least 8 elements) and two elements more.
   st.grid = strip_grid(span.strip_half_length, o);
   span.elements = st.grid.size;

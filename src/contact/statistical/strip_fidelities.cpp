@@ -88,16 +88,21 @@ std::vector<HighestAsperity> highest_asperities(const FidelityInputs& in, const 
 
 }  // namespace
 
-StatisticalSolution solve_statistical(const FidelityInputs& in, const SurfaceModel& m, StripFidelity fidelity,
-                                      const std::vector<double>& share, StageClock* clock,
-                                      const std::function<void(int, int)>& progress) {
-  const ContactSettings& cs = in.contact;
+StripOptions strip_options(const ContactSettings& cs, StripFidelity fidelity) {
   StripOptions so;
   so.fidelity = fidelity;
   so.strip_points = cs.strip_points;
   so.lookup = cs.exact_strip_lookup ? StripLookup::exact : StripLookup::cubic;
   so.coupled_nodes = cs.coupled_nodes;
-  const RoughLineContact strip(m.table, in.mesh.composite_modulus(), in.mesh.pair().spec().face_width, so, in.solver);
+  return so;
+}
+
+StatisticalSolution solve_statistical(const FidelityInputs& in, const SurfaceModel& m, StripFidelity fidelity,
+                                      const std::vector<double>& share, StageClock* clock,
+                                      const std::function<void(int, int)>& progress) {
+  const ContactSettings& cs = in.contact;
+  const RoughLineContact strip(m.table, in.mesh.composite_modulus(), in.mesh.pair().spec().face_width,
+                               strip_options(cs, fidelity), in.solver);
   StatisticalSolution s;
   s.strips = solve_strips(in, strip, share, progress);
   if (clock) clock->lap(fidelity == StripFidelity::coupled ? "strip_contact_coupled" : "strip_contact_uncoupled");

@@ -1,4 +1,4 @@
-#include "asperity/case_setup.hpp"
+#include "case/asperity_setup.hpp"
 
 #include <string>
 
@@ -14,6 +14,10 @@ std::unique_ptr<AsperityModel> make_case_model(const Case& c, std::string_view n
   if (const auto it = c.asperity.constants.find(std::string(name)); it != c.asperity.constants.end())
     for (const auto& [constant, value] : it->second) model->set_constant(constant, value);
   return model;
+}
+
+const Material& softer_material(const Case& c) {
+  return c.pinion.material.hardness <= c.wheel.material.hardness ? c.pinion.material : c.wheel.material;
 }
 
 CylinderAsperity cylinder_asperity(const Case& c) {
