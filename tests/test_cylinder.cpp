@@ -2,6 +2,7 @@
 #include "asperity/critical.hpp"
 #include "asperity/cylinder.hpp"
 #include "core/maximize.hpp"
+#include "reference_solutions.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -28,9 +29,9 @@ TEST(Cylinder, GreenYieldFactorMatchesTheExactLineContact) {
 }
 
 TEST(Cylinder, HertzHalfWidth) {
-  // b = sqrt(4 F' R/(pi E_t)) inverts F' = pi E_t b^2/(4 R).
+  // Hertz's half-width back from the load that makes it.
   const double r = 6.6e-6, e = 113.19e9, b = 50e-9;
-  EXPECT_NEAR(hertz_half_width(std::numbers::pi * e * b * b / (4.0 * r), r, e) / b, 1.0, 1e-14);
+  EXPECT_NEAR(hertz_half_width(reference::hertz_line_load_of_half_width(b, r, e), r, e) / b, 1.0, 1e-14);
 }
 
 TEST(Cylinder, LineLawContinuousMonotoneAndBoundedByHardness) {

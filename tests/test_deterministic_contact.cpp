@@ -6,6 +6,7 @@
 #include "contact/deterministic_contact.hpp"
 #include "contact/mesh_contact.hpp"
 #include "gear/gear_mesh.hpp"
+#include "reference_solutions.hpp"
 #include "runs/mesh_cycle.hpp"
 #include "surface/flank_profile.hpp"
 #include "test_support.hpp"
@@ -34,8 +35,8 @@ constexpr double kLineLoad = 1.2e5;  // [N/m]
 constexpr double kElement = 1e-6;    // element size of the strip tests [m]
 constexpr double kSigmaP = 0.02;     // arc coordinates of the contact point [m]
 constexpr double kSigmaW = 0.03;
-const double kP0 = std::sqrt(kLineLoad * kEstar / (kPi * kRadius));       // Hertz peak, 561.8 MPa
-const double kB = std::sqrt(4.0 * kLineLoad * kRadius / (kPi * kEstar));  // Hertz half-width, 136.0 um
+const double kP0 = reference::hertz_line_peak(kLineLoad, kRadius, kEstar);       // Hertz peak, 561.8 MPa
+const double kB = reference::hertz_line_half_width(kLineLoad, kRadius, kEstar);  // Hertz half-width, 136.0 um
 // The von Mises maximum of the Hertz line contact on its axis (McEwen's closed-form axis stresses,
 // plane strain, nu = 0.3, maximised on a 1e-5 b comb): 0.5575 p0 at 0.7043 b.
 constexpr double kVonMisesRatio = 0.5575, kVonMisesDepth = 0.7043;
@@ -162,7 +163,8 @@ TEST(DeterministicStrip, FourElementsAcrossASpotResolveItsPeak) {
   // contacts of half-width 1.75 to 2.5 elements, each placed differently on the element grid,
   // cover 3 to 6 elements and peak within 5% of p0 (measured <= 2.7%).
   for (double ratio : {1.75, 2.0, 2.1, 2.25, 2.5}) {
-    const double b = ratio * kElement, w = kPi * kEstar * b * b / (4.0 * kRadius), p0 = 2.0 * w / (kPi * b);
+    const double b = ratio * kElement, w = reference::hertz_line_load_of_half_width(b, kRadius, kEstar),
+                 p0 = reference::hertz_line_peak_of_half_width(w, b);
     const StripSolver solver(kEstar, 3.0 * b, strip_options());
     const DeterministicStrip s = solver.solve(flat_pinion(), flat_wheel(), {w, kRadius, b, kSigmaP, kSigmaW}, false);
     EXPECT_NEAR(s.peak_pressure / p0, 1.0, 0.05) << ratio;

@@ -12,6 +12,7 @@
 #include "gear/gear_mesh.hpp"
 #include "gear/mesh_dynamics.hpp"
 #include "io/input_error.hpp"
+#include "reference_solutions.hpp"
 #include "runs/mesh_cycle.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/kinsol_solver.hpp"
@@ -79,8 +80,8 @@ TEST(Extremes, StripFromZeroLoadToTenTimesFullPlasticity) {
   const double hardness = asperity::contact_pair(c).hardness;
   const double radius = 0.02;  // [m], the seed pair's equivalent radius near C
   const double e = gear::case_mesh(c).composite_modulus();
-  // Hertz line contact: p0 = sqrt(w E*/(pi R)) -> w for p0 = 10 H.
-  const double w_max = std::numbers::pi * radius * 100.0 * hardness * hardness / e;
+  // Hertz line contact: w for p0 = 10 H.
+  const double w_max = reference::hertz_line_load_of_peak(10.0 * hardness, radius, e);
   const Strip s(c, 12.0 * hardness);
   const solvers::KinsolSolver kinsol;
   for (auto fidelity : {contact::StripFidelity::uncoupled, contact::StripFidelity::coupled}) {
@@ -148,7 +149,7 @@ TEST(Extremes, RoughnessTowardZeroTendsToHertzAndVeryLargeSpreadsTheLoad) {
     const contact::RoughLineContact strip(s.gw, s.mesh.composite_modulus(), c.gear_pair.face_width, o, &kinsol);
     const double w = s.mesh.normal_force() / c.gear_pair.face_width, radius = 0.02;
     const contact::StripResult r = strip.solve(w, radius);
-    const double p0 = std::sqrt(w * s.mesh.composite_modulus() / (std::numbers::pi * radius));
+    const double p0 = reference::hertz_line_peak(w, radius, s.mesh.composite_modulus());
     const double peak_error = std::abs(r.max_nominal_pressure / p0 - 1.0);
     EXPECT_LT(peak_error, previous_peak_error * (1.0 + 1e-6)) << rq << ": peak must approach Hertz as rq falls";
     previous_peak_error = peak_error;

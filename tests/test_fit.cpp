@@ -1,6 +1,7 @@
 // Fitting model constants with Ceres: parameter recovery, coverage of the standard errors, the
 // continuous model's defaults as the fit's output, and the errors a fit must report.
 #include "asperity/continuous_defaults.hpp"
+#include "asperity/laws.hpp"
 #include "fit/fit_files.hpp"
 #include "fit/model_fit.hpp"
 #include "io/input_error.hpp"
@@ -160,7 +161,7 @@ TEST(Fit, ReportsWhatCannotBeFitted) {
   EXPECT_THROW(fit_model(*model, test::seed_pair(), {d}, bounded), std::invalid_argument);
   bounded.bounds = {{"area_scale", 10.0, 20.0}};  // the truth (30) excluded: the fit stops at the bound
   const FitResult at_bound = fit_model(*near(*truth), test::seed_pair(), {d}, bounded);
-  EXPECT_NEAR(at_bound.constants[0].value, 20.0, 1e-9);
+  EXPECT_NEAR(at_bound.constants[asperity::ContinuousLaw::Index::area_scale].value, 20.0, 1e-9);
   opt.max_iterations = 1;  // cannot converge in one step from the defaults
   EXPECT_THROW(fit_model(*model, test::seed_pair(), {d}, opt), std::runtime_error);
   EXPECT_THROW(fit_model(*asperity::make_asperity_model("hertz"), test::seed_pair(), {d}, {}), std::invalid_argument);

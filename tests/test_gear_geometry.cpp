@@ -1,6 +1,7 @@
 // Involute spur pair geometry and kinematics: identities and closed forms.
 #include "gear/gear_mesh.hpp"
 #include "gear/involute.hpp"
+#include "reference_solutions.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -129,9 +130,9 @@ TEST(MeshAnalysis, HertzLineContactClosedForm) {
   const double w = 1.5e5, s = mesh.pair().path().c;
   const PairLoad l = mesh.analysis().pair_load(s, w);
   const double r = mesh.pair().flank(s).radius_equivalent, e = mesh.composite_modulus();
-  // p0 = sqrt(w E_t/(pi R)), b = sqrt(4 w R/(pi E_t)) (Johnson eq. 4.45 with E* = E_t).
-  EXPECT_NEAR(l.hertz_peak / std::sqrt(w * e / (kPi * r)), 1.0, 1e-14);
-  EXPECT_NEAR(l.hertz_half_width / std::sqrt(4.0 * w * r / (kPi * e)), 1.0, 1e-14);
+  // Johnson's closed form with E* = E_t.
+  EXPECT_NEAR(l.hertz_peak / reference::hertz_line_peak(w, r, e), 1.0, 1e-14);
+  EXPECT_NEAR(l.hertz_half_width / reference::hertz_line_half_width(w, r, e), 1.0, 1e-14);
   // The seed pair's normal force F_bn = T1 / r_b1 = 1000 N m / 84.57 mm.
   EXPECT_NEAR(mesh.normal_force(), 1000.0 / (0.090 * std::cos(20 * kDeg)), 1e-9);
 }

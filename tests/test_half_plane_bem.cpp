@@ -2,6 +2,7 @@
 // convergence, controls, the plastic cap, the periodic kernel, the solver's options and cost.
 #include "asperity/critical.hpp"
 #include "contact/half_plane_bem.hpp"
+#include "reference_solutions.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -44,9 +45,10 @@ TEST(ToeplitzConvolution, EqualsDirectSum) {
 }
 
 TEST(HalfPlaneBem, HertzLineContact) {
-  // Cylinder R = 6.6 um under w = 200 N/m: b = sqrt(4 w R/(pi E*)), p0 = 2 w/(pi b).
+  // Cylinder R = 6.6 um under w = 200 N/m: Hertz's half-width and peak.
   const double r = 6.6e-6, w = 200.0;
-  const double b = std::sqrt(4.0 * w * r / (kPi * kEstar)), p0 = 2.0 * w / (kPi * b);
+  const double b = geartrib::reference::hertz_line_half_width(w, r, kEstar),
+               p0 = geartrib::reference::hertz_line_peak_of_half_width(w, b);
   const HalfPlaneGrid grid{-2.0 * b, 4.0 * b / 2048, 2048};
   const HalfPlaneBem bem(grid, kEstar, {});
   const BemSolution s = bem.solve_load(cylinder_gap(grid, r), w);
@@ -150,7 +152,8 @@ TEST(HalfPlaneBem, PeriodicArrayOfCylindersCarriesTheLoad) {
   // One cylinder per period L: with L much wider than the contact, the peak pressure approaches
   // the isolated cylinder's Hertz p0 (within 2%: the neighbours' images relieve the edges).
   const double r = 6.6e-6, w = 200.0;
-  const double b = std::sqrt(4.0 * w * r / (kPi * kEstar)), p0 = 2.0 * w / (kPi * b);
+  const double b = geartrib::reference::hertz_line_half_width(w, r, kEstar),
+               p0 = geartrib::reference::hertz_line_peak_of_half_width(w, b);
   const HalfPlaneGrid grid{-10.0 * b, 20.0 * b / 4096, 4096};
   BemOptions opt;
   opt.periodic = true;

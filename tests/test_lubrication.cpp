@@ -9,6 +9,7 @@
 #include "lubrication/flank_temperature.hpp"
 #include "lubrication/lubricant.hpp"
 #include "lubrication/mixed_lubrication.hpp"
+#include "reference_solutions.hpp"
 #include "runs/mesh_cycle.hpp"
 #include "test_support.hpp"
 
@@ -310,7 +311,7 @@ TEST(FlashTemperature, BlokAgainstJaegersMovingSourceIntegrated) {
   const double b1 = thermal_contact_coefficient(48.0, 7850.0, 470.0),
                b2 = thermal_contact_coefficient(25.0, 8000.0, 500.0);
   const double mu = 0.06, w = 2e5, b = 1.5e-4, v1 = 2.0, v2 = 6.5;
-  const double q0 = mu * 2.0 * w / (std::numbers::pi * b) * std::abs(v1 - v2);
+  const double q0 = mu * reference::hertz_line_peak_of_half_width(w, b) * std::abs(v1 - v2);
   const double phi = b1 * std::sqrt(v1) / (b1 * std::sqrt(v1) + b2 * std::sqrt(v2));
   const double t1 = phi * q0 * std::sqrt(b) * peak_integral / (b1 * std::sqrt(std::numbers::pi * v1));
   EXPECT_NEAR(blok_flash_temperature(mu, w, b, v1, v2, b1, b2) / t1, 1.0, 2e-3);  // 1.11 vs 1.1115, as above
@@ -350,7 +351,7 @@ TEST(FlashTemperature, IsoMethodsFactorsAndItsClosedFormIsBlok) {
     const double at = pair.path().a + s * pair.path().length;
     const auto f = pair.flank(at);
     const auto k = pair.kinematics(at, mesh.pinion_speed());
-    const double b_h = std::sqrt(4.0 * w_bn * f.radius_equivalent / (std::numbers::pi * mesh.composite_modulus()));
+    const double b_h = reference::hertz_line_half_width(w_bn, f.radius_equivalent, mesh.composite_modulus());
     const double blok = blok_flash_temperature(0.05, w_bn, b_h, k.rolling_pinion, k.rolling_wheel, bm, bm);
     const double iso = iso_flash_temperature(0.05, x_m, 1.0, iso_geometry_factor(g, f.roll_parameter), 1.0, w_bt, v_t,
                                              g.center_distance);
@@ -368,7 +369,7 @@ TEST(IsoFilm, HyIsDowsonHiggins1966AtTheBulkTemperature) {
   // With no flash temperature (S_GF = 1) and W = 2 pi p^2/E'^2 = w/(E' R) for a Hertz line contact,
   // h_Y = 1.6 R G^0.6 U^0.7 W^-0.13 (Dowson & Higginson 1966).
   const double e = 226.4e9, rho = 7.7e-3, w = 1.5e5, u = 3.0;
-  const double p_h = std::sqrt(w * e / (2.0 * std::numbers::pi * rho));
+  const double p_h = reference::hertz_line_peak(w, rho, e / 2.0);  // E* = E'/2
   OilState oil;
   oil.dynamic_viscosity = 0.04;
   oil.pressure_viscosity = 2e-8;

@@ -2,6 +2,7 @@
 #include "contact/mesh_contact.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "gear/gear_mesh.hpp"
+#include "reference_solutions.hpp"
 #include "runs/mesh_cycle.hpp"
 #include "solvers/kinsol_solver.hpp"
 #include "test_support.hpp"
@@ -125,7 +126,7 @@ TEST(RoughLineContact, UncoupledCarriesTheLoad) {
   const RoughLineContact strip(gw, 113.19e9, 0.08, {}, nullptr);
   const StripResult r = strip.solve(1.5e5, 0.0154);
   EXPECT_NEAR(r.line_load / 1.5e5, 1.0, 1e-6);
-  EXPECT_NEAR(r.max_nominal_pressure, std::sqrt(1.5e5 * 113.19e9 / (kPi * 0.0154)), 1.0);  // Hertz p0
+  EXPECT_NEAR(r.max_nominal_pressure, reference::hertz_line_peak(1.5e5, 0.0154, 113.19e9), 1.0);
   EXPECT_GT(r.real_area_ratio, 0.0);
   EXPECT_LT(r.real_area_ratio, 1.0);
   // The highest asperity: with eta 2b L = 0.05/(sigma beta) x 2b x 80 mm ~ 6.6e5 summits, the
@@ -146,7 +147,7 @@ TEST(RoughLineContact, CoupledCarriesTheLoadAndSpreadsIt) {
   const SeedCoupledStrip seed;
   const StripResult r = seed.strip.solve(1.5e5, 0.0154);
   EXPECT_NEAR(r.line_load / 1.5e5, 1.0, 1e-6);
-  const double p0 = std::sqrt(1.5e5 * 113.19e9 / (kPi * 0.0154));
+  const double p0 = reference::hertz_line_peak(1.5e5, 0.0154, 113.19e9);
   EXPECT_LT(r.max_nominal_pressure, p0);                // roughness lowers the peak ...
   EXPECT_GT(r.contact_half_width, r.hertz_half_width);  // ... and widens the contact (Greenwood-Tripp)
 }
@@ -157,7 +158,7 @@ TEST(RoughLineContact, CoupledTendsToHertzAsRoughnessVanishes) {
   StripOptions opt = coupled_options();
   opt.coupled_nodes = 256;
   const double w = 1.5e5, r = 0.0154, e = 113.19e9;
-  const double p0 = std::sqrt(w * e / (kPi * r)), b = std::sqrt(4.0 * w * r / (kPi * e));
+  const double p0 = reference::hertz_line_peak(w, r, e), b = reference::hertz_line_half_width(w, r, e);
   double prev_error = 1.0;
   for (double sigma : {1e-7, 1e-8, 1e-9}) {
     const GreenwoodWilliamson gw(make_surface(sigma, 50e-6, 0.05), *model, test::seed_pair(), 2e9, {});
@@ -226,8 +227,8 @@ TEST(EquivalentSurface, FromRaAndSummitRadii) {
   EXPECT_NEAR(s.summit_radius, 1.65e-6 * 1.75e-6 / 3.4e-6, 1e-18);
   EXPECT_NEAR(s.eta_sigma_beta(), 0.05, 1e-15);
   const double alpha = 768.0 * kPi * 0.0025 + 0.8968;
-  EXPECT_NEAR(s.summit_sigma / s.surface_sigma, std::sqrt(1.0 - 0.8968 / alpha), 1e-12);
-  EXPECT_NEAR(s.summit_mean_height / s.surface_sigma, 4.0 / std::sqrt(kPi * alpha), 1e-12);
+  EXPECT_NEAR(s.summit_sigma / s.surface_sigma, reference::mccool_summit_sigma_ratio(alpha), 1e-12);
+  EXPECT_NEAR(s.summit_mean_height / s.surface_sigma, reference::mccool_summit_mean_height_ratio(alpha), 1e-12);
   // The same surface through the summits form gives back the same statistics (one description).
   surface::FlankRoughness c, d;
   c.form = d.form = surface::FlankRoughness::Form::summits;
@@ -250,9 +251,9 @@ TEST(EquivalentSurface, McCoolRelationsFromSpectralMoments) {
   b.m0 = 0.3e-12, b.m2 = 1e-3, b.m4 = 2e8;
   const auto s = surface::equivalent_surface(a, b, surface::HeightDistribution::gaussian);
   const double m0 = 0.8e-12, m2 = 3e-3, m4 = 3e8, alpha = m0 * m4 / (m2 * m2);
-  EXPECT_NEAR(s.summit_density / (m4 / (6.0 * kPi * std::sqrt(3.0) * m2)), 1.0, 1e-14);
-  EXPECT_NEAR(s.summit_radius / (0.375 * std::sqrt(kPi / m4)), 1.0, 1e-14);
-  EXPECT_NEAR(s.summit_sigma / std::sqrt((1.0 - 0.8968 / alpha) * m0), 1.0, 1e-14);
+  EXPECT_NEAR(s.summit_density / reference::mccool_summit_density(m2, m4), 1.0, 1e-14);
+  EXPECT_NEAR(s.summit_radius / reference::mccool_summit_radius(m4), 1.0, 1e-14);
+  EXPECT_NEAR(s.summit_sigma / (reference::mccool_summit_sigma_ratio(alpha) * std::sqrt(m0)), 1.0, 1e-14);
   EXPECT_NEAR(s.surface_sigma / std::sqrt(m0), 1.0, 1e-14);
   // Too narrow a band (alpha <= 0.8968) has no summit statistics.
   a.m4 = b.m4 = 1.0;

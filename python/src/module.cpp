@@ -13,6 +13,7 @@
 #include "contact/fidelity_registry.hpp"
 #include "contact/half_plane_bem.hpp"
 #include "contact/mesh_contact.hpp"
+#include "contact/run_summary.hpp"
 #include "io/case_file.hpp"
 #include "io/case_parameters.hpp"
 #include "io/column_table.hpp"
@@ -85,7 +86,14 @@ py::list series_list(const std::vector<contact::Series>& group) {
   return out;
 }
 
-// The mesh cycle's result: its series by group and its scalar findings.
+// A summary's texts and values into `d` by the names of the HDF5 attributes, each after `prefix`.
+void add_summary(py::dict& d, const contact::Summary& s, const std::string& prefix = "") {
+  for (const auto& t : s.texts) d[py::str(prefix + t.name)] = t.value;
+  for (const auto& v : s.values) d[py::str(prefix + v.name)] = v.value;
+}
+
+// The mesh cycle's result: its series by group and its summaries (contact/run_summary.hpp: the
+// HDF5 file's attributes by the same names; /meta's and /contact/validity's at the top).
 py::dict result_dict(const contact::MeshContactResult& r) {
   py::dict d;
   d["mesh"] = series_list(r.mesh);
@@ -109,73 +117,35 @@ py::dict result_dict(const contact::MeshContactResult& r) {
   if (r.running_in) {
     const auto& ri = *r.running_in;
     py::dict q;
-    q["teeth"] = ri.teeth;
-    q["meshes"] = ri.meshes;
-    q["shakedown_mesh"] = ri.shakedown_mesh;
-    q["tolerance_m"] = ri.tolerance;
+    add_summary(q, contact::running_in_summary(ri));
     q["history"] = series_list(ri.history);
     const char* gear[2] = {"pinion", "wheel"};
     for (int g = 0; g < 2; ++g) {
       const std::string name = gear[g];
       q[py::str(name + "_profile_initial_m")] = to_array(ri.initial[g]);
       q[py::str(name + "_profile_final_m")] = to_array(ri.final[g]);
-      q[py::str(name + "_profile_spacing_m")] = ri.spacing[g];
     }
     d["running_in"] = q;
   }
   if (!r.synthesis.empty()) {
     // Flanks synthesised from a measured patch: the file's /synthesis/<gear> attributes as "<gear>.<name>".
     py::dict q;
-    for (const auto& f : r.synthesis) {
-      const std::string g = f.gear + ".";
-      q[py::str(g + "patch")] = f.patch;
-      q[py::str(g + "method")] = f.method;
-      q[py::str(g + "seed")] = f.seed;
-      q[py::str(g + "teeth")] = f.teeth;
-      q[py::str(g + "patch_lines")] = f.patch_lines;
-      q[py::str(g + "patch_points")] = f.patch_points;
-      q[py::str(g + "patch_spacing_m")] = f.patch_spacing;
-      q[py::str(g + "patch_rq_m")] = f.patch_rq;
-      q[py::str(g + "rolled_off_fraction")] = f.rolled_off_fraction;
-      q[py::str(g + "profile_length_m")] = f.profile_length;
-      q[py::str(g + "profile_rq_m")] = f.profile_rq;
-      if (f.method == "iaaft") {
-        q[py::str(g + "iaaft_iterations")] = f.iterations;
-        q[py::str(g + "iaaft_spectrum_misfit")] = f.spectrum_misfit;
-        q[py::str(g + "iaaft_curvature_ratio")] = f.curvature_ratio;
-        q[py::str(g + "iaaft_converged")] = f.converged;
-      }
-    }
+    for (const auto& f : r.synthesis) add_summary(q, contact::synthesis_summary(f), f.gear + ".");
     d["synthesis"] = q;
   }
-  d["regime"] = r.regime;
-  d["verdict"] = r.verdict;
+  add_summary(d, contact::validity_summary(r));
   d["warnings"] = r.warnings;
-  py::dict flags;
-  for (const auto& f : r.flag_counts) flags[py::str(f.name)] = f.positions;
-  d["flag_counts"] = flags;
-  d["plasticity_index"] = r.plasticity_index;
-  d["asperity_model"] = r.asperity_model;
-  d["fidelity"] = r.fidelity;
+  add_summary(d, contact::surface_summary(r));
   py::dict path;
-  for (const auto& [name, value] :
-       {std::pair{"s_A_m", r.path.a}, std::pair{"s_B_m", r.path.b}, std::pair{"s_C_m", r.path.c},
-        std::pair{"s_D_m", r.path.d}, std::pair{"s_E_m", r.path.e}, std::pair{"base_pitch_m", r.path.base_pitch},
-        std::pair{"contact_ratio", r.path.contact_ratio}})
-    path[py::str(name)] = value;
+  add_summary(path, contact::path_summary(r.path));
   d["path"] = path;
-  d["summit_density_per_m2"] = r.surface.summit_density;
-  d["summit_radius_m"] = r.surface.summit_radius;
-  d["summit_sigma_m"] = r.surface.summit_sigma;
   py::dict stages;
   for (const auto& st : r.stages) stages[py::str(st.name)] = st.seconds;
   d["stages_s"] = stages;
   if (r.lubrication_summary) {
     const auto& l = *r.lubrication_summary;
     py::dict s;
-    // The same names as the HDF5 attributes of /lubrication (contact::summary_texts, summary_values).
-    for (const auto& t : contact::summary_texts(l)) s[py::str(t.name)] = t.value;
-    for (const auto& v : contact::summary_values(l)) s[py::str(v.name)] = v.value;
+    add_summary(s, contact::lubrication_summary(l));
     py::dict points;
     std::vector<std::string> names;
     for (const auto& p : l.points) names.push_back(p.name);
@@ -199,7 +169,7 @@ py::dict point_dict(const runs::SweepPoint& p) {
   d["regime"] = p.regime;
   d["verdict"] = p.verdict;
   py::list flags, summary, quantities;
-  for (const auto& f : p.flag_counts) flags.append(py::make_tuple(f.name, f.positions));
+  for (const auto& f : p.flag_counts) flags.append(py::make_tuple(f.name, f.unit, f.value));
   for (const auto& v : p.summary) summary.append(py::make_tuple(v.name, v.unit, v.value));
   for (const auto& q : p.quantities) quantities.append(py::make_tuple(q.name, q.unit, q.min, q.mean, q.max));
   d["flag_counts"] = flags;
@@ -218,14 +188,14 @@ runs::SweepPoint point_from(const py::dict& d) {
   p.plasticity_index = d["plasticity_index"].cast<double>();
   p.regime = d["regime"].cast<std::string>();
   p.verdict = d["verdict"].cast<std::string>();
-  for (const auto& f : d["flag_counts"].cast<py::list>()) {
-    const auto t = f.cast<py::tuple>();
-    p.flag_counts.push_back({t[0].cast<std::string>(), t[1].cast<int>()});
-  }
-  for (const auto& v : d["summary"].cast<py::list>()) {
-    const auto t = v.cast<py::tuple>();
-    p.summary.push_back({t[0].cast<std::string>(), t[1].cast<std::string>(), t[2].cast<double>()});
-  }
+  const auto summary_values = [&](const char* key, std::vector<contact::SummaryValue>& into) {
+    for (const auto& v : d[key].cast<py::list>()) {
+      const auto t = v.cast<py::tuple>();
+      into.push_back({t[0].cast<std::string>(), t[1].cast<std::string>(), t[2].cast<double>()});
+    }
+  };
+  summary_values("flag_counts", p.flag_counts);
+  summary_values("summary", p.summary);
   for (const auto& q : d["quantities"].cast<py::list>()) {
     const auto t = q.cast<py::tuple>();
     p.quantities.push_back({t[0].cast<std::string>(), t[1].cast<std::string>(), t[2].cast<double>(),

@@ -4,6 +4,7 @@
 #include "app/commands.hpp"
 
 #include "case/asperity_setup.hpp"
+#include "core/keyed_error.hpp"
 #include "fit/fit_files.hpp"
 #include "fit/model_fit.hpp"
 #include "io/input_error.hpp"
@@ -12,9 +13,10 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <iostream>
 #include <memory>
+#include <string_view>
+#include <utility>
 
 namespace geartrib::app {
 
@@ -47,6 +49,38 @@ void list_constants(const std::string& name) {
                specs[i].upper, specs[i].meaning);
 }
 
+// The fit's options from the command's, checked (FitOptions::validate): a refusal names the
+// command-line option that set the field.
+fit::FitOptions fit_options(const Options& o) {
+  fit::FitOptions opt;
+  opt.free = o.free;
+  for (const auto& name : o.observe) opt.observe.push_back(fit::parse_observable(name));
+  opt.observe_weight = o.weights;
+  for (const auto& b : o.bounds) {
+    const auto eq = b.find('='), colon = b.find(':', eq == std::string::npos ? 0 : eq);
+    if (eq == std::string::npos || colon == std::string::npos)
+      throw std::invalid_argument("--bound '" + b + "': expected NAME=LOWER:UPPER");
+    try {
+      opt.bounds.emplace_back(b.substr(0, eq), std::stod(b.substr(eq + 1, colon - eq - 1)),
+                              std::stod(b.substr(colon + 1)));
+    } catch (const std::logic_error&) {
+      throw std::invalid_argument("--bound '" + b + "': LOWER and UPPER must be numbers");
+    }
+  }
+  opt.loss = fit::parse_loss(o.loss);
+  opt.loss_scale = o.loss_scale;
+  try {
+    opt.validate();
+  } catch (const core::KeyedError& e) {
+    const std::pair<std::string_view, std::string_view> options[] = {
+        {"observe_weight", "--weight"}, {"loss_scale", "--loss-scale"}, {"bounds", "--bound"}};
+    for (const auto& [field, option] : options)
+      if (e.key() == field) throw std::invalid_argument(std::string(option) + (e.what() + field.size()));
+    throw;
+  }
+  return opt;
+}
+
 void run(const Options& o) {
   if (!o.list.empty()) return list_constants(o.list);
   if (o.model.empty() || o.data.empty())
@@ -56,9 +90,7 @@ void run(const Options& o) {
   for (const std::string* file : {&o.report, &o.output, &o.emit_cpp})
     if (!file->empty()) outputs.reserve(*file);
   const auto model = asperity::make_case_model(c, o.model);
-  fit::FitOptions opt;
-  opt.free = o.free;
-  for (const auto& name : o.observe) opt.observe.push_back(fit::parse_observable(name));
+  const fit::FitOptions opt = fit_options(o);
   // Each file is bounded (io::kMaxTableFileBytes), their number is not: the data's memory against the
   // budget, file by file, before the next is read.
   const io::ResourceBudget budget = io::resource_budget();
@@ -75,29 +107,6 @@ void run(const Options& o) {
                       io::format_bytes(bytes), data.size(), fit::kFitBytesPerRow, fit::kFitBytesPerObservation,
                       io::format_bytes(budget.bytes), io::kMemoryBudgetVariable));
   }
-  opt.observe_weight = o.weights;
-  if (!opt.observe_weight.empty() && opt.observe_weight.size() != opt.observe.size())
-    throw std::invalid_argument("--weight needs one weight per --observe column");
-  for (std::size_t j = 0; j < o.weights.size(); ++j)
-    if (!(std::isfinite(o.weights[j]) && o.weights[j] > 0.0 && o.weights[j] <= fit::kMaxRowWeight))
-      throw std::invalid_argument(
-          fmt::format("--weight {} (for {}): a weight must be finite, positive and at most {:g}", o.weights[j],
-                      j < o.observe.size() ? o.observe[j] : "?", fit::kMaxRowWeight));
-  if (!std::isfinite(o.loss_scale))
-    throw std::invalid_argument(fmt::format("--loss-scale {}: must be finite and positive", o.loss_scale));
-  for (const auto& b : o.bounds) {
-    const auto eq = b.find('='), colon = b.find(':', eq == std::string::npos ? 0 : eq);
-    if (eq == std::string::npos || colon == std::string::npos)
-      throw std::invalid_argument("--bound '" + b + "': expected NAME=LOWER:UPPER");
-    try {
-      opt.bounds.emplace_back(b.substr(0, eq), std::stod(b.substr(eq + 1, colon - eq - 1)),
-                              std::stod(b.substr(colon + 1)));
-    } catch (const std::logic_error&) {
-      throw std::invalid_argument("--bound '" + b + "': LOWER and UPPER must be numbers");
-    }
-  }
-  opt.loss = fit::parse_loss(o.loss);
-  opt.loss_scale = o.loss_scale;
   const fit::FitResult r = fit::fit_model(*model, asperity::contact_pair(c), data, opt);
 
   std::string provenance = fmt::format("model {}, data", r.model);

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -68,6 +69,15 @@ struct ConstantSpec {
   double upper;
   std::string_view meaning;
 };
+
+// The index of the constant named `name` in a law's `constants`, at compile time: each law's
+// Index names its constants' places (c[Index::fully_plastic]), a misspelt name does not compile.
+template <std::size_t N>
+consteval std::size_t constant_index(const std::array<ConstantSpec, N>& constants, std::string_view name) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (constants[i].name == name) return i;
+  throw std::invalid_argument("no constant of that name");  // not a constant expression: a compile error
+}
 
 // ---------------------------------------------------------------------------------------------
 // Hertz: purely elastic at any interference (Johnson ch. 4). delta_c is the CEB one.
@@ -142,11 +152,25 @@ struct KogutEtsionLaw {
       {"fully_plastic", 110.0, 2.0, 1000.0,
        "delta* of fully plastic contact (the end of the fitted range: the continuous switch to the fully plastic limit starts here)"},
   }};
+  struct Index {
+    static constexpr std::size_t load_coefficient_1 = constant_index(constants, "load_coefficient_1"),
+                                 load_exponent_1 = constant_index(constants, "load_exponent_1"),
+                                 area_coefficient_1 = constant_index(constants, "area_coefficient_1"),
+                                 area_exponent_1 = constant_index(constants, "area_exponent_1"),
+                                 load_coefficient_2 = constant_index(constants, "load_coefficient_2"),
+                                 load_exponent_2 = constant_index(constants, "load_exponent_2"),
+                                 area_coefficient_2 = constant_index(constants, "area_coefficient_2"),
+                                 area_exponent_2 = constant_index(constants, "area_exponent_2"),
+                                 surface_yield = constant_index(constants, "surface_yield"),
+                                 fully_plastic = constant_index(constants, "fully_plastic");
+  };
   // Fitted 1 <= delta* <= 110 (the constant fully_plastic); the model switches to the fully
   // plastic limit there.
-  static LawRange range(const double* c) { return {c[9], 0.5, true, "continuous switch to the fully plastic limit"}; }
+  static LawRange range(const double* c) {
+    return {c[Index::fully_plastic], 0.5, true, "continuous switch to the fully plastic limit"};
+  }
   static void breakpoints(const double* c, std::vector<double>& out) {
-    out.insert(out.end(), {1.0, c[8], c[9], fitted::continuous_plastic_onset});
+    out.insert(out.end(), {1.0, c[Index::surface_yield], c[Index::fully_plastic], fitted::continuous_plastic_onset});
   }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
@@ -157,8 +181,13 @@ struct KogutEtsionLaw {
     using std::pow;
     if (d <= 1.0) return {pow(d, 1.5), d, T(0.0)};
     const T share = published_surface_yield_share(d);
-    if (d <= c[8]) return {c[0] * pow(d, c[1]), c[2] * pow(d, c[3]), share};
-    if (d <= c[9]) return {c[4] * pow(d, c[5]), c[6] * pow(d, c[7]), share};
+    using I = Index;
+    if (d <= c[I::surface_yield])
+      return {c[I::load_coefficient_1] * pow(d, c[I::load_exponent_1]),
+              c[I::area_coefficient_1] * pow(d, c[I::area_exponent_1]), share};
+    if (d <= c[I::fully_plastic])
+      return {c[I::load_coefficient_2] * pow(d, c[I::load_exponent_2]),
+              c[I::area_coefficient_2] * pow(d, c[I::area_exponent_2]), share};
     return {3.0 * d / ceb_pressure_factor(p.poisson_ratio), 2.0 * d, share};
   }
 };
@@ -180,12 +209,20 @@ struct JacksonGreenLaw {
       {"area_coefficient", 0.14, 0.01, 1.0, "B = coefficient exp(slope S_y/E)"},
       {"area_slope", 23.0, 0.0, 100.0, "B = coefficient exp(slope S_y/E)"},
   }};
+  struct Index {
+    static constexpr std::size_t elastic_limit = constant_index(constants, "elastic_limit"),
+                                 hardness_limit = constant_index(constants, "hardness_limit"),
+                                 hardness_coefficient = constant_index(constants, "hardness_coefficient"),
+                                 hardness_exponent = constant_index(constants, "hardness_exponent"),
+                                 area_coefficient = constant_index(constants, "area_coefficient"),
+                                 area_slope = constant_index(constants, "area_slope");
+  };
   // Jackson & Green's finite-element runs and fits cover 0 < delta* <= 110; beyond it the area
   // law, extrapolated, outgrows the fully plastic 2 pi R delta and the mean pressure falls far
   // below the hardness, so the model switches to the fully plastic limit there.
   static LawRange range(const double*) { return {110.0, 0.5, true, "continuous switch to the fully plastic limit"}; }
   static void breakpoints(const double* c, std::vector<double>& out) {
-    out.insert(out.end(), {c[0], fitted::continuous_plastic_onset});
+    out.insert(out.end(), {c[Index::elastic_limit], fitted::continuous_plastic_onset});
   }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
@@ -194,13 +231,15 @@ struct JacksonGreenLaw {
   template <class T>
   static Star<T> star(const T& d, const T* c, const ContactPair& p) {
     using std::exp, std::pow, std::sqrt;
-    if (d <= c[0]) return {pow(d, 1.5), d, published_surface_yield_share(d)};
+    using I = Index;
+    if (d <= c[I::elastic_limit]) return {pow(d, 1.5), d, published_surface_yield_share(d)};
     const double cy = jackson_green_yield_factor(p.poisson_ratio);
     const double sqrt_dc_over_r = std::numbers::pi * cy * p.yield_strength / (2.0 * p.modulus);
-    const T b = c[4] * exp(c[5] * (p.yield_strength / p.youngs_modulus));
-    const T area = d * pow(d / c[0], b);
+    const T b = c[I::area_coefficient] * exp(c[I::area_slope] * (p.yield_strength / p.youngs_modulus));
+    const T area = d * pow(d / c[I::elastic_limit], b);
     const T a_over_r = sqrt(area) * sqrt_dc_over_r;  // a/R = sqrt(A*/pi * pi delta_c / R) / 1
-    const T hg = c[1] * (1.0 - exp(-c[2] * pow(a_over_r, -c[3])));
+    const T hg =
+        c[I::hardness_limit] * (1.0 - exp(-c[I::hardness_coefficient] * pow(a_over_r, -c[I::hardness_exponent])));
     const T load =
         exp(-0.25 * pow(d, 5.0 / 12.0)) * pow(d, 1.5) + 4.0 * hg / cy * (1.0 - exp(-pow(d, 5.0 / 9.0) / 25.0)) * d;
     return {load, area, published_surface_yield_share(d)};
@@ -219,28 +258,33 @@ struct ZmcLaw {
       {"mean_pressure_factor", 0.6, 0.1, 1.0, "K: Hertz mean pressure K H at first yield"},
       {"fully_plastic", 54.0, 2.0, 1000.0, "delta_2/delta_1, onset of fully plastic flow"},
   }};
+  struct Index {
+    static constexpr std::size_t mean_pressure_factor = constant_index(constants, "mean_pressure_factor"),
+                                 fully_plastic = constant_index(constants, "fully_plastic");
+  };
   // Defined at every interference: fully plastic (p = H, A = 2 pi R delta) from delta_2 on.
   static LawRange range(const double*) {
     return {std::numeric_limits<double>::infinity(), 0.5, false,
             "defined at every interference (fully plastic from delta_2)"};
   }
   static void breakpoints(const double* c, std::vector<double>& out) {
-    out.insert(out.end(), {1.0, c[1], fitted::continuous_plastic_onset});
+    out.insert(out.end(), {1.0, c[Index::fully_plastic], fitted::continuous_plastic_onset});
   }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T* c) {
-    return 1.5 * c[0] * p.hardness;
+    return 1.5 * c[Index::mean_pressure_factor] * p.hardness;
   }
   template <class T>
   static Star<T> star(const T& d, const T* c, const ContactPair&) {
     using std::log, std::pow;
     if (d <= 1.0) return {pow(d, 1.5), d, T(0.0)};
-    const T& k = c[0];
+    const T& k = c[Index::mean_pressure_factor];
+    const T& d2 = c[Index::fully_plastic];  // delta_2/delta_1
     const T share = published_surface_yield_share(d);
-    if (d >= c[1]) return {2.0 * d / k, 2.0 * d, share};  // F_c = K H A_c
-    const T x = (d - 1.0) / (c[1] - 1.0);
+    if (d >= d2) return {2.0 * d / k, 2.0 * d, share};  // F_c = K H A_c
+    const T x = (d - 1.0) / (d2 - 1.0);
     const T area = d * (1.0 + 3.0 * x * x - 2.0 * x * x * x);
-    const T pm_over_h = 1.0 - (1.0 - k) * log(c[1] / d) / log(c[1]);
+    const T pm_over_h = 1.0 - (1.0 - k) * log(d2 / d) / log(d2);
     return {area * pm_over_h / k, area, share};
   }
 };
@@ -277,12 +321,23 @@ struct ContinuousLaw {
       {"pressure_exponent", fitted::continuous_pressure_exponent, 0.2, 5.0,
        "ns: steepness of the mean-pressure growth"},
   }};
+  struct Index {
+    static constexpr std::size_t area_scale = constant_index(constants, "area_scale"),
+                                 area_exponent = constant_index(constants, "area_exponent"),
+                                 plastic_onset = constant_index(constants, "plastic_onset"),
+                                 plastic_scale = constant_index(constants, "plastic_scale"),
+                                 plastic_exponent = constant_index(constants, "plastic_exponent"),
+                                 pressure_scale = constant_index(constants, "pressure_scale"),
+                                 pressure_exponent = constant_index(constants, "pressure_exponent");
+  };
   // Fitted to the KE/JG curves up to delta* = 110 (and KE's fully plastic branch beyond); the
   // closure reaches the fully plastic limit by itself (g -> 2, m -> 1, phi -> 1), so no switch.
   static LawRange range(const double*) {
     return {110.0, 0.5, false, "flagged only: the closure reaches the fully plastic limit itself"};
   }
-  static void breakpoints(const double* c, std::vector<double>& out) { out.insert(out.end(), {1.0, c[2]}); }
+  static void breakpoints(const double* c, std::vector<double>& out) {
+    out.insert(out.end(), {1.0, c[Index::plastic_onset]});
+  }
   template <class T>
   static T yield_peak_pressure(const ContactPair& p, const T*) {
     return T(ceb_pressure_factor(p.poisson_ratio) * p.hardness);
@@ -303,8 +358,10 @@ struct ContinuousLaw {
   static Closure<T> closure(const T& d, const T* c, double k) {
     const T x = d - 1.0;                 // > 0: callers handle d <= 1 as Hertz
     const double hertz = 2.0 * k / 3.0;  // Hertz mean pressure at first yield over H
-    return {1.0 + rise(x, c[0], c[1]), surface_yield_share(d, c[2], c[3], c[4]),
-            hertz + (1.0 - hertz) * rise(x, c[5], c[6])};
+    using I = Index;
+    return {1.0 + rise(x, c[I::area_scale], c[I::area_exponent]),
+            surface_yield_share(d, c[I::plastic_onset], c[I::plastic_scale], c[I::plastic_exponent]),
+            hertz + (1.0 - hertz) * rise(x, c[I::pressure_scale], c[I::pressure_exponent])};
   }
   template <class T>
   static Star<T> star(const T& d, const T* c, const ContactPair& p) {

@@ -18,7 +18,6 @@
 #include "contact/mesh_path.hpp"
 #include "contact/surface_model.hpp"
 #include "core/nonlinear_solver.hpp"
-#include "core/stopwatch.hpp"
 #include "gear/gear_mesh.hpp"
 
 #include <functional>
@@ -27,12 +26,8 @@
 
 namespace geartrib::contact {
 
-// The stages' timings, lap by lap.
-struct StageClock {
-  std::vector<StageTiming>& stages;
-  Stopwatch watch;
-  void lap(std::string name) { stages.push_back({std::move(name), watch.lap()}); }
-};
+// The stages' timings, lap by lap (contact/stage_clock.hpp, internal).
+struct StageClock;
 
 // A fidelity's typed inputs: the path stage's state and the options that concern the contact.
 struct FidelityInputs {

@@ -4,6 +4,7 @@
 #include "contact/fidelity.hpp"
 #include "contact/mesh_lubrication.hpp"
 #include "contact/series_columns.hpp"
+#include "contact/stage_clock.hpp"
 
 #include <fmt/format.h>
 
@@ -25,77 +26,6 @@ double path_mean(const std::vector<double>& v) {
   double sum = 0.5 * (v.front() + v.back());
   for (std::size_t i = 1; i + 1 < v.size(); ++i) sum += v[i];
   return sum / static_cast<double>(v.size() - 1);
-}
-
-std::vector<SummaryText> summary_texts(const LubricationSummary& l) {
-  return {{"lubricant", l.lubricant},
-          {"film_formula", l.film_formula},
-          {"inlet_heating", l.inlet_heating},
-          {"film_gap", l.film_gap},
-          {"asperity_pressure", l.asperity_pressure},
-          {"traction", l.traction},
-          {"bulk_friction_law", l.bulk_friction_law},
-          {"roughness_source", l.roughness_source}};
-}
-
-std::vector<SummaryValue> summary_values(const LubricationSummary& l) {
-  std::vector<SummaryValue> v = {{"oil_temperature_K", "K", l.oil_temperature},
-                                 {"bulk_temperature_K", "K", l.bulk_temperature},
-                                 {"bulk_temperature_estimated", "1", l.bulk_estimated ? 1.0 : 0.0},
-                                 {"dynamic_viscosity_at_bulk_Pa_s", "Pa s", l.dynamic_viscosity},
-                                 {"pressure_viscosity_at_bulk_per_Pa", "1/Pa", l.pressure_viscosity},
-                                 {"composite_rq_m", "m", l.composite_rq},
-                                 {"mean_ra_m", "m", l.mean_ra},
-                                 {"summit_model_sigma_m", "m", l.summit_model_sigma},
-                                 {"bearing_area_weight", "1", l.bearing_area_weight}};
-  for (const auto& m : l.mean_friction) {
-    std::string name = "mean_friction_" + m.law;
-    std::replace(name.begin(), name.end(), '-', '_');
-    v.push_back({name, "1", m.coefficient});
-  }
-  const std::vector<SummaryValue> rest = {
-      {"mesh_mean_friction", "1", l.mesh_mean_friction},
-      {"mesh_power_loss_W", "W", l.mesh_power_loss},
-      {"input_power_W", "W", l.input_power},
-      {"tooth_friction_efficiency", "1", l.efficiency},
-      {"gear_loss_factor_path", "1", l.loss_factor_path},
-      {"gear_loss_factor_ohlendorf", "1", l.loss_factor_ohlendorf},
-      {"max_contact_temperature_K", "K", l.max_contact_temperature},
-      {"max_iso_contact_temperature_K", "K", l.max_iso_contact_temperature},
-      {"min_iso_lambda_gf", "1", l.min_iso_lambda},
-      {"min_lambda_smooth_film", "1", l.min_lambda_film},
-      {"max_asperity_share_closure_spread", "1", l.max_share_spread},
-      {"positions_share_depends_on_closure", "1", static_cast<double>(l.closure_dependent_positions)},
-      {"positions_oil_temperature_clamped", "1", static_cast<double>(l.oil_clamped_positions)},
-      {"iso_effective_tip_relief_m", "m", l.iso_effective_relief}};
-  v.insert(v.end(), rest.begin(), rest.end());
-  if (l.iso_scuffing_safety > 0.0) {
-    v.push_back({"iso_scuffing_safety", "1", l.iso_scuffing_safety});
-    v.push_back({"scuffing_safety", "1", l.scuffing_safety});
-  }
-  return v;
-}
-
-std::vector<Series> named_point_series(const LubricationSummary& l) {
-  using P = LubricationSummary::NamedPoint;
-  std::vector<Series> out;
-  add_columns<P>(out, l.points,
-                 {{"s_m", "m", [](const P& q) { return q.s; }},
-                  {"line_load_N_per_m", "N/m", [](const P& q) { return q.line_load; }},
-                  {"film_m", "m", [](const P& q) { return q.film; }},
-                  {"lambda_smooth_film", "1", [](const P& q) { return q.lambda_film; }},
-                  {"mean_gap_m", "m", [](const P& q) { return q.mean_gap; }},
-                  {"lambda_mean_gap", "1", [](const P& q) { return q.lambda_gap; }},
-                  {"iso_film_hy_m", "m", [](const P& q) { return q.iso_film; }},
-                  {"iso_lambda_gf", "1", [](const P& q) { return q.iso_lambda; }},
-                  {"asperity_load_share", "1", [](const P& q) { return q.asperity_share; }},
-                  {"asperity_share_closure_spread", "1", [](const P& q) { return q.share_spread; }},
-                  {"friction_coefficient", "1", [](const P& q) { return q.friction; }},
-                  {"flash_temperature_K", "K", [](const P& q) { return q.flash; }},
-                  {"iso_flash_temperature_K", "K", [](const P& q) { return q.iso_flash; }},
-                  {"contact_temperature_K", "K", [](const P& q) { return q.contact_temperature; }},
-                  {"iso_contact_temperature_K", "K", [](const P& q) { return q.iso_contact_temperature; }}});
-  return out;
 }
 
 namespace {

@@ -79,22 +79,6 @@ struct LubricationSummary {
   std::vector<NamedPoint> points;  // ISO/TS 6336-22's points, each evaluated where it stands
 };
 
-// A summary's numbers by name and unit, in one order: the HDF5 attributes of /lubrication, the
-// Python module's dict and the sweep table's columns all come from here.
-struct SummaryValue {
-  std::string name, unit;
-  double value = 0.0;
-};
-std::vector<SummaryValue> summary_values(const LubricationSummary& s);
-// Its texts by name (the lubricant and the models chosen), in one order, for the same readers.
-struct SummaryText {
-  std::string name, value;
-};
-std::vector<SummaryText> summary_texts(const LubricationSummary& s);
-// The named points' values as series over the points (in the order of s.points; the names are
-// s.points[i].name): /lubrication/points in HDF5, the Python module's table.
-std::vector<Series> named_point_series(const LubricationSummary& s);
-
 // A deterministic run's pressure across the strip at one position.
 struct PressureProfile {
   int position = 0;                 // index along the path (0 at A)

@@ -1,6 +1,7 @@
 #include "fit/model_fit.hpp"
 
 #include "asperity/laws.hpp"
+#include "core/keyed_error.hpp"
 
 #include <ceres/ceres.h>
 #include <fmt/format.h>
@@ -140,18 +141,6 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
                   const std::vector<FitData>& data, const FitOptions& options) {
   constexpr std::size_t n = Law::constants.size();
   if (n == 0) throw std::invalid_argument("model '" + std::string(Law::name) + "' has no constants to fit");
-  for (std::size_t j = 0; j < options.observe_weight.size(); ++j) {
-    const double w = options.observe_weight[j];
-    if (!(std::isfinite(w) && w > 0.0 && w <= kMaxRowWeight))
-      throw std::invalid_argument(fmt::format(
-          "weight {} of observed column {}{}: must be finite, positive and at most "
-          "{:g}",
-          w, j + 1,
-          j < options.observe.size() ? " (" + std::string(to_string(options.observe[j])) + ")" : std::string(),
-          kMaxRowWeight));
-  }
-  if (!(std::isfinite(options.loss_scale) && options.loss_scale > 0.0))
-    throw std::invalid_argument(fmt::format("loss scale {}: must be finite and positive", options.loss_scale));
   FitResult result;
   result.model = std::string(Law::name);
   std::array<double, n> values{};
@@ -406,8 +395,32 @@ FitResult fit_law(const asperity::AsperityModel& model, const asperity::ContactP
 
 }  // namespace
 
+void FitOptions::validate() const {
+  if (!observe_weight.empty() && observe_weight.size() != observe.size())
+    throw core::KeyedError("observe_weight",
+                           fmt::format("observe_weight: needs one weight per observed column, {} for {}",
+                                       observe_weight.size(), observe.size()));
+  for (std::size_t j = 0; j < observe_weight.size(); ++j) {
+    const double w = observe_weight[j];
+    if (!(std::isfinite(w) && w > 0.0 && w <= kMaxRowWeight))
+      throw core::KeyedError(
+          "observe_weight",
+          fmt::format("observe_weight {} (for {}): a weight must be finite, positive and at most {:g}", w,
+                      to_string(observe[j]), kMaxRowWeight));
+  }
+  if (!(std::isfinite(loss_scale) && loss_scale > 0.0))
+    throw core::KeyedError("loss_scale", fmt::format("loss_scale {}: must be finite and positive", loss_scale));
+  if (max_iterations < 1)
+    throw core::KeyedError("max_iterations", fmt::format("max_iterations {}: must be at least 1", max_iterations));
+  for (const auto& [name, lo, hi] : bounds)
+    if (!(std::isfinite(lo) && std::isfinite(hi) && lo <= hi))
+      throw core::KeyedError("bounds",
+                             fmt::format("bounds {}={}:{}: must be finite with lower <= upper", name, lo, hi));
+}
+
 FitResult fit_model(const asperity::AsperityModel& model, const asperity::ContactPair& pair,
                     const std::vector<FitData>& data, const FitOptions& options) {
+  options.validate();
   if (data.empty()) throw std::invalid_argument("no reference data to fit");
   return asperity::visit_law(
       model.name(), [&](auto tag) { return fit_law<typename decltype(tag)::type>(model, pair, data, options); });

@@ -25,6 +25,10 @@ struct FitOptions {
   Loss loss = Loss::squared;
   double loss_scale = 0.1;  // residual scale of the robust losses (a relative 10%)
   int max_iterations = 500;
+  // Each field within its range: throws core::KeyedError whose key is the field (observe_weight,
+  // loss_scale, max_iterations, bounds) and whose message starts with it, then the value and the
+  // rule. The constants' names and ranges are the model's: fit_model checks those.
+  void validate() const;
 };
 
 struct FittedConstant {

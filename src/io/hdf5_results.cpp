@@ -1,6 +1,7 @@
 #include "io/hdf5_results.hpp"
 
 #include "contact/fidelity_registry.hpp"
+#include "contact/run_summary.hpp"
 #include "io/hdf5_handles.hpp"
 #include "io/table_writer.hpp"
 
@@ -17,19 +18,19 @@ using hdf5::Handle;
 using hdf5::number_attribute;
 using hdf5::string_attribute;
 
+// A summary as its group's attributes: its texts, then its values.
+void summary_attributes(hid_t group, const contact::Summary& s) {
+  for (const auto& t : s.texts) string_attribute(group, t.name, t.value);
+  for (const auto& v : s.values) number_attribute(group, v.name, v.value);
+}
+
 void write_file(const std::string& path, const contact::MeshContactResult& r, const std::string& case_file,
                 const Case& c) {
   hdf5::NewFile file(path);
   {
     Handle mesh(H5Gcreate2(file, "/mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /mesh");
     for (const auto& s : r.mesh) hdf5::number_dataset(mesh, s.name, s.values, s.unit);
-    number_attribute(mesh, "s_A_m", r.path.a);
-    number_attribute(mesh, "s_B_m", r.path.b);
-    number_attribute(mesh, "s_C_m", r.path.c);
-    number_attribute(mesh, "s_D_m", r.path.d);
-    number_attribute(mesh, "s_E_m", r.path.e);
-    number_attribute(mesh, "base_pitch_m", r.path.base_pitch);
-    number_attribute(mesh, "contact_ratio", r.path.contact_ratio);
+    summary_attributes(mesh, contact::path_summary(r.path));
   }
   {
     Handle contact(H5Gcreate2(file, "/contact", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /contact");
@@ -38,9 +39,7 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
       Handle validity(H5Gcreate2(contact, "validity", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                       "group /contact/validity");
       for (const auto& s : r.validity) hdf5::number_dataset(validity, s.name, s.values, s.unit);
-      string_attribute(validity, "regime", r.regime);
-      string_attribute(validity, "verdict", r.verdict);
-      for (const auto& f : r.flag_counts) number_attribute(validity, "positions_" + f.name, f.positions);
+      summary_attributes(validity, contact::validity_summary(r));
     }
   }
   if (!r.pressure_profiles.empty()) {
@@ -67,15 +66,11 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
     const auto& ri = *r.running_in;
     Handle group(H5Gcreate2(file, "/running_in", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /running_in");
     for (const auto& s : ri.history) hdf5::number_dataset(group, s.name, s.values, s.unit);
-    string_attribute(group, "teeth", ri.teeth);
-    number_attribute(group, "meshes", ri.meshes);
-    number_attribute(group, "shakedown_mesh", ri.shakedown_mesh);
-    number_attribute(group, "tolerance_m", ri.tolerance);
+    summary_attributes(group, contact::running_in_summary(ri));
     const char* gear[2] = {"pinion", "wheel"};
     for (int g = 0; g < 2; ++g) {
       hdf5::number_dataset(group, std::string(gear[g]) + "_profile_initial_m", ri.initial[g], "m");
       hdf5::number_dataset(group, std::string(gear[g]) + "_profile_final_m", ri.final[g], "m");
-      number_attribute(group, std::string(gear[g]) + "_profile_spacing_m", ri.spacing[g]);
     }
   }
   if (!r.synthesis.empty()) {
@@ -87,33 +82,14 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
     for (const auto& f : r.synthesis) {
       Handle g(H5Gcreate2(group, f.gear.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                "group /synthesis/" + f.gear);
-      string_attribute(g, "patch", f.patch);
-      string_attribute(g, "method", f.method);
-      number_attribute(g, "seed", f.seed);
-      number_attribute(g, "teeth", f.teeth);
-      number_attribute(g, "patch_lines", f.patch_lines);
-      number_attribute(g, "patch_points", f.patch_points);
-      number_attribute(g, "patch_spacing_m", f.patch_spacing);
-      number_attribute(g, "patch_rq_m", f.patch_rq);
-      number_attribute(g, "rolled_off_fraction", f.rolled_off_fraction);
-      number_attribute(g, "profile_length_m", f.profile_length);
-      number_attribute(g, "profile_rq_m", f.profile_rq);
-      if (f.method == "iaaft") {
-        number_attribute(g, "iaaft_iterations", f.iterations);
-        number_attribute(g, "iaaft_spectrum_misfit", f.spectrum_misfit);
-        number_attribute(g, "iaaft_curvature_ratio", f.curvature_ratio);
-        number_attribute(g, "iaaft_converged", f.converged ? 1.0 : 0.0);
-      }
+      summary_attributes(g, contact::synthesis_summary(f));
     }
   }
   if (r.lubrication_summary) {
     const auto& l = *r.lubrication_summary;
     Handle lub(H5Gcreate2(file, "/lubrication", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /lubrication");
     for (const auto& s : r.lubrication) hdf5::number_dataset(lub, s.name, s.values, s.unit);
-    for (const auto& t : contact::summary_texts(l)) string_attribute(lub, t.name, t.value);
-    string_attribute(lub, "ehl_regime_codes",
-                     "0 rigid-isoviscous, 1 rigid-piezoviscous, 2 elastic-isoviscous, 3 elastic-piezoviscous");
-    for (const auto& v : contact::summary_values(l)) number_attribute(lub, v.name, v.value);
+    summary_attributes(lub, contact::lubrication_summary(l));
     // The named points, each evaluated where it stands (B and D on the single pair's side).
     Handle points(H5Gcreate2(lub, "points", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                   "group /lubrication/points");
@@ -142,14 +118,7 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
   {
     Handle meta(H5Gcreate2(file, "/meta", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /meta");
     string_attribute(meta, "version", GEARTRIB_VERSION);
-    string_attribute(meta, "asperity_model", r.asperity_model);
-    string_attribute(meta, "fidelity", r.fidelity);
-    number_attribute(meta, "summit_density_per_m2", r.surface.summit_density);
-    number_attribute(meta, "summit_radius_m", r.surface.summit_radius);
-    number_attribute(meta, "summit_sigma_m", r.surface.summit_sigma);
-    number_attribute(meta, "surface_sigma_m", r.surface.surface_sigma);
-    number_attribute(meta, "summit_mean_height_m", r.surface.summit_mean_height);
-    number_attribute(meta, "plasticity_index", r.plasticity_index);
+    summary_attributes(meta, contact::surface_summary(r));
     std::vector<double> seconds;
     std::vector<std::string> names;
     for (const auto& s : r.stages) {

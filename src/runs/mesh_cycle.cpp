@@ -6,6 +6,7 @@
 #include "contact/fidelity_registry.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
+#include "contact/run_summary.hpp"
 #include "core/keyed_error.hpp"
 #include "gear/gear_mesh.hpp"
 #include "gear/mesh_dynamics.hpp"
@@ -559,19 +560,15 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
   group("/contact/validity/", r.validity, true);
   group("/lubrication/", r.lubrication, true);
   group("/statistical/", r.statistical, true);
-  for (const auto& [name, v] :
-       {std::pair{"s_A_m", r.path.a}, std::pair{"s_B_m", r.path.b}, std::pair{"s_C_m", r.path.c},
-        std::pair{"s_D_m", r.path.d}, std::pair{"s_E_m", r.path.e}, std::pair{"base_pitch_m", r.path.base_pitch},
-        std::pair{"contact_ratio", r.path.contact_ratio}})
-    scalar(std::string("/mesh attribute ") + name, v);
-  scalar("the plasticity index", r.plasticity_index);
-  for (const auto& [name, v] :
-       {std::pair{"summit density", r.surface.summit_density}, std::pair{"summit radius", r.surface.summit_radius},
-        std::pair{"summit sigma", r.surface.summit_sigma}, std::pair{"surface sigma", r.surface.surface_sigma}})
-    scalar(std::string("the equivalent surface's ") + name, v);
+  // Every summary's values, named as the file names them (contact/run_summary.hpp).
+  auto summary = [&](const std::string& group, const contact::Summary& sum) {
+    for (const auto& v : sum.values) scalar(group + " attribute " + v.name, v.value);
+  };
+  summary("/mesh", contact::path_summary(r.path));
+  summary("/meta", contact::surface_summary(r));
+  summary("/contact/validity", contact::validity_summary(r));
   if (r.lubrication_summary) {
-    for (const auto& v : contact::summary_values(*r.lubrication_summary))
-      scalar("/lubrication attribute " + v.name, v.value);
+    summary("/lubrication", contact::lubrication_summary(*r.lubrication_summary));
     const auto& points = r.lubrication_summary->points;
     for (const auto& q : contact::named_point_series(*r.lubrication_summary))
       for (std::size_t i = 0; i < q.values.size(); ++i)
@@ -583,6 +580,7 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
     values("/contact/pressure/position_" + std::to_string(p.position), p.pressure, false);
   }
   if (r.running_in) {
+    summary("/running_in", contact::running_in_summary(*r.running_in));
     // Row 0 of the history is the new flanks, before any mesh: its per-mesh values are NaN by
     // design (docs/reference/hdf5-layout.md), the rows after it and the flanks' statistics numbers.
     for (const auto& q : r.running_in->history) {
@@ -598,13 +596,7 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
       values("/running_in/" + gear + "_profile_final_m", r.running_in->final[g], false);
     }
   }
-  for (const auto& f : r.synthesis)
-    for (const auto& [name, v] :
-         {std::pair{"patch_spacing_m", f.patch_spacing}, std::pair{"patch_rq_m", f.patch_rq},
-          std::pair{"rolled_off_fraction", f.rolled_off_fraction}, std::pair{"profile_length_m", f.profile_length},
-          std::pair{"profile_rq_m", f.profile_rq}, std::pair{"iaaft_spectrum_misfit", f.spectrum_misfit},
-          std::pair{"iaaft_curvature_ratio", f.curvature_ratio}})
-      scalar("/synthesis/" + f.gear + " attribute " + name, v);
+  for (const auto& f : r.synthesis) summary("/synthesis/" + f.gear, contact::synthesis_summary(f));
 }
 
 contact::MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,

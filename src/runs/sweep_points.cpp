@@ -22,8 +22,8 @@ SweepPoint run_sweep_point(const CaseLoader& load, const std::vector<io::CaseCha
     p.plasticity_index = r.plasticity_index;
     p.regime = r.regime;
     p.verdict = r.verdict;
-    p.flag_counts = r.flag_counts;
-    if (r.lubrication_summary) p.summary = contact::summary_values(*r.lubrication_summary);
+    p.flag_counts = contact::validity_summary(r).values;
+    if (r.lubrication_summary) p.summary = contact::lubrication_summary(*r.lubrication_summary).values;
     for (const auto* group : r.groups())
       for (const auto& q : *group) {
         if (q.name == "s_m" || q.name == "roll_angle_rad") continue;                  // the path itself
@@ -110,23 +110,16 @@ io::ColumnTable sweep_table(const io::SweepPlan& plan, const std::vector<SweepPo
   t.columns.push_back(std::move(verdict));
   // Per point lists by name, one column per name (NaN where a point lacks it): positions per
   // validity flag, the lubricated runs' mesh-level values, the quantities' _min, _mean, _max.
-  const auto flags = first_appearance(points, &SweepPoint::flag_counts);
-  for (std::size_t k = 0; k < flags.size(); ++k) {
-    io::Column col{"positions_" + flags[k]->name, "1", false, {}, {}};
-    for (const auto& p : points) {
-      const auto* f = p.ok ? item_named(p.flag_counts, k, flags[k]->name) : nullptr;
-      col.numbers.push_back(f ? f->positions : std::nan(""));
+  for (auto list : {&SweepPoint::flag_counts, &SweepPoint::summary}) {
+    const auto items = first_appearance(points, list);
+    for (std::size_t k = 0; k < items.size(); ++k) {
+      io::Column col{items[k]->name, items[k]->unit, false, {}, {}};
+      for (const auto& p : points) {
+        const auto* v = p.ok ? item_named(p.*list, k, items[k]->name) : nullptr;
+        col.numbers.push_back(v ? v->value : std::nan(""));
+      }
+      t.columns.push_back(std::move(col));
     }
-    t.columns.push_back(std::move(col));
-  }
-  const auto values = first_appearance(points, &SweepPoint::summary);
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    io::Column col{values[k]->name, values[k]->unit, false, {}, {}};
-    for (const auto& p : points) {
-      const auto* v = item_named(p.summary, k, values[k]->name);
-      col.numbers.push_back(v ? v->value : std::nan(""));
-    }
-    t.columns.push_back(std::move(col));
   }
   const auto quantities = first_appearance(points, &SweepPoint::quantities);
   for (std::size_t k = 0; k < quantities.size(); ++k) {

@@ -4,6 +4,7 @@
 
 #include "case/case.hpp"
 #include "contact/mesh_contact.hpp"
+#include "contact/run_summary.hpp"
 #include "io/case_file.hpp"
 #include "io/column_table.hpp"
 #include "io/sweep_plan.hpp"
@@ -30,10 +31,10 @@ struct SweepPoint {
   double seconds = 0.0;
   double contact_ratio = 0.0;
   double plasticity_index = 0.0;
-  std::string regime;                                              // the run's validity verdict, in one word
-  std::string verdict;                                             // and in full
-  std::vector<contact::MeshContactResult::FlagCount> flag_counts;  // positions per validity flag
-  std::vector<contact::SummaryValue> summary;  // a lubricated run's mesh-level values (summary_values); dry: none
+  std::string regime;                              // the run's validity verdict, in one word
+  std::string verdict;                             // and in full
+  std::vector<contact::SummaryValue> flag_counts;  // positions_<flag>: the validity summary's values
+  std::vector<contact::SummaryValue> summary;      // a lubricated run's mesh-level values; dry: none
   std::vector<QuantitySummary> quantities;
 };
 
@@ -46,8 +47,8 @@ SweepPoint run_sweep_point(const CaseLoader& load, const std::vector<io::CaseCha
 // The table: point index, the swept values (numeric with their SI unit when every value of the
 // axis is a quantity of one unit, else text), status, message, seconds, contact ratio, plasticity
 // index, regime and verdict, positions per validity flag, the lubricated runs' mesh-level values
-// (one column each, by their summary_values names), then each quantity's _min, _mean, _max. A
-// point without a flag, value or quantity that others have (a failed or dry one) has NaN there.
+// (one column each, named as contact::validity_summary and lubrication_summary name them), then each quantity's _min,
+// _mean, _max. A point without a flag, value or quantity that others have (a failed or dry one) has NaN there.
 io::ColumnTable sweep_table(const io::SweepPlan& plan, const std::vector<SweepPoint>& points);
 
 }  // namespace geartrib::runs

@@ -1,6 +1,7 @@
 #include "contact/deterministic/mesh_deterministic.hpp"
 
 #include "contact/series_columns.hpp"
+#include "contact/stage_clock.hpp"
 #include "core/keyed_error.hpp"
 #include "core/stopwatch.hpp"
 #include "surface/rough_surface.hpp"

@@ -3,6 +3,7 @@
 #include "asperity/side_contact.hpp"
 #include "asperity/von_mises_table.hpp"
 #include "contact/series_columns.hpp"
+#include "contact/stage_clock.hpp"
 
 #include <fmt/format.h>
 

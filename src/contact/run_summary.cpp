@@ -1,0 +1,144 @@
+#include "contact/run_summary.hpp"
+
+#include "contact/series_columns.hpp"
+
+#include <algorithm>
+
+namespace geartrib::contact {
+
+namespace {
+
+double flag(bool b) { return b ? 1.0 : 0.0; }
+
+}  // namespace
+
+Summary path_summary(const gear::PathOfContact& p) {
+  return {{},
+          {{"s_A_m", "m", p.a},
+           {"s_B_m", "m", p.b},
+           {"s_C_m", "m", p.c},
+           {"s_D_m", "m", p.d},
+           {"s_E_m", "m", p.e},
+           {"base_pitch_m", "m", p.base_pitch},
+           {"contact_ratio", "1", p.contact_ratio}}};
+}
+
+Summary surface_summary(const MeshContactResult& r) {
+  return {{{"asperity_model", r.asperity_model}, {"fidelity", r.fidelity}},
+          {{"summit_density_per_m2", "1/m^2", r.surface.summit_density},
+           {"summit_radius_m", "m", r.surface.summit_radius},
+           {"summit_sigma_m", "m", r.surface.summit_sigma},
+           {"surface_sigma_m", "m", r.surface.surface_sigma},
+           {"summit_mean_height_m", "m", r.surface.summit_mean_height},
+           {"plasticity_index", "1", r.plasticity_index}}};
+}
+
+Summary validity_summary(const MeshContactResult& r) {
+  Summary s{{{"regime", r.regime}, {"verdict", r.verdict}}, {}};
+  for (const auto& f : r.flag_counts)
+    s.values.push_back({"positions_" + f.name, "1", static_cast<double>(f.positions)});
+  return s;
+}
+
+Summary running_in_summary(const RunningInResult& ri) {
+  return {{{"teeth", ri.teeth}},
+          {{"meshes", "1", static_cast<double>(ri.meshes)},
+           {"shakedown_mesh", "1", static_cast<double>(ri.shakedown_mesh)},
+           {"tolerance_m", "m", ri.tolerance},
+           {"pinion_profile_spacing_m", "m", ri.spacing[0]},
+           {"wheel_profile_spacing_m", "m", ri.spacing[1]}}};
+}
+
+Summary synthesis_summary(const FlankSynthesis& f) {
+  Summary s{{{"patch", f.patch}, {"method", f.method}},
+            {{"seed", "1", f.seed},
+             {"teeth", "1", static_cast<double>(f.teeth)},
+             {"patch_lines", "1", f.patch_lines},
+             {"patch_points", "1", f.patch_points},
+             {"patch_spacing_m", "m", f.patch_spacing},
+             {"patch_rq_m", "m", f.patch_rq},
+             {"rolled_off_fraction", "1", f.rolled_off_fraction},
+             {"profile_length_m", "m", f.profile_length},
+             {"profile_rq_m", "m", f.profile_rq}}};
+  if (f.method == "iaaft") {
+    const std::vector<SummaryValue> iaaft = {{"iaaft_iterations", "1", static_cast<double>(f.iterations)},
+                                             {"iaaft_spectrum_misfit", "1", f.spectrum_misfit},
+                                             {"iaaft_curvature_ratio", "1", f.curvature_ratio},
+                                             {"iaaft_converged", "1", flag(f.converged)}};
+    s.values.insert(s.values.end(), iaaft.begin(), iaaft.end());
+  }
+  return s;
+}
+
+Summary lubrication_summary(const LubricationSummary& l) {
+  Summary s;
+  s.texts = {
+      {"lubricant", l.lubricant},
+      {"film_formula", l.film_formula},
+      {"inlet_heating", l.inlet_heating},
+      {"film_gap", l.film_gap},
+      {"asperity_pressure", l.asperity_pressure},
+      {"traction", l.traction},
+      {"bulk_friction_law", l.bulk_friction_law},
+      {"roughness_source", l.roughness_source},
+      {"ehl_regime_codes", "0 rigid-isoviscous, 1 rigid-piezoviscous, 2 elastic-isoviscous, 3 elastic-piezoviscous"}};
+  s.values = {{"oil_temperature_K", "K", l.oil_temperature},
+              {"bulk_temperature_K", "K", l.bulk_temperature},
+              {"bulk_temperature_estimated", "1", flag(l.bulk_estimated)},
+              {"dynamic_viscosity_at_bulk_Pa_s", "Pa s", l.dynamic_viscosity},
+              {"pressure_viscosity_at_bulk_per_Pa", "1/Pa", l.pressure_viscosity},
+              {"composite_rq_m", "m", l.composite_rq},
+              {"mean_ra_m", "m", l.mean_ra},
+              {"summit_model_sigma_m", "m", l.summit_model_sigma},
+              {"bearing_area_weight", "1", l.bearing_area_weight}};
+  for (const auto& m : l.mean_friction) {
+    std::string name = "mean_friction_" + m.law;
+    std::replace(name.begin(), name.end(), '-', '_');
+    s.values.push_back({name, "1", m.coefficient});
+  }
+  const std::vector<SummaryValue> rest = {
+      {"mesh_mean_friction", "1", l.mesh_mean_friction},
+      {"mesh_power_loss_W", "W", l.mesh_power_loss},
+      {"input_power_W", "W", l.input_power},
+      {"tooth_friction_efficiency", "1", l.efficiency},
+      {"gear_loss_factor_path", "1", l.loss_factor_path},
+      {"gear_loss_factor_ohlendorf", "1", l.loss_factor_ohlendorf},
+      {"max_contact_temperature_K", "K", l.max_contact_temperature},
+      {"max_iso_contact_temperature_K", "K", l.max_iso_contact_temperature},
+      {"min_iso_lambda_gf", "1", l.min_iso_lambda},
+      {"min_lambda_smooth_film", "1", l.min_lambda_film},
+      {"max_asperity_share_closure_spread", "1", l.max_share_spread},
+      {"positions_share_depends_on_closure", "1", static_cast<double>(l.closure_dependent_positions)},
+      {"positions_oil_temperature_clamped", "1", static_cast<double>(l.oil_clamped_positions)},
+      {"iso_effective_tip_relief_m", "m", l.iso_effective_relief}};
+  s.values.insert(s.values.end(), rest.begin(), rest.end());
+  if (l.iso_scuffing_safety > 0.0) {
+    s.values.push_back({"iso_scuffing_safety", "1", l.iso_scuffing_safety});
+    s.values.push_back({"scuffing_safety", "1", l.scuffing_safety});
+  }
+  return s;
+}
+
+std::vector<Series> named_point_series(const LubricationSummary& l) {
+  using P = LubricationSummary::NamedPoint;
+  std::vector<Series> out;
+  add_columns<P>(out, l.points,
+                 {{"s_m", "m", [](const P& q) { return q.s; }},
+                  {"line_load_N_per_m", "N/m", [](const P& q) { return q.line_load; }},
+                  {"film_m", "m", [](const P& q) { return q.film; }},
+                  {"lambda_smooth_film", "1", [](const P& q) { return q.lambda_film; }},
+                  {"mean_gap_m", "m", [](const P& q) { return q.mean_gap; }},
+                  {"lambda_mean_gap", "1", [](const P& q) { return q.lambda_gap; }},
+                  {"iso_film_hy_m", "m", [](const P& q) { return q.iso_film; }},
+                  {"iso_lambda_gf", "1", [](const P& q) { return q.iso_lambda; }},
+                  {"asperity_load_share", "1", [](const P& q) { return q.asperity_share; }},
+                  {"asperity_share_closure_spread", "1", [](const P& q) { return q.share_spread; }},
+                  {"friction_coefficient", "1", [](const P& q) { return q.friction; }},
+                  {"flash_temperature_K", "K", [](const P& q) { return q.flash; }},
+                  {"iso_flash_temperature_K", "K", [](const P& q) { return q.iso_flash; }},
+                  {"contact_temperature_K", "K", [](const P& q) { return q.contact_temperature; }},
+                  {"iso_contact_temperature_K", "K", [](const P& q) { return q.iso_contact_temperature; }}});
+  return out;
+}
+
+}  // namespace geartrib::contact

@@ -1,0 +1,51 @@
+// The summaries of a mesh cycle's result: named texts and named scalars with their units, each
+// defined once here beside the results they summarise (mesh_contact.hpp). Every sink iterates
+// them and copies no name: the HDF5 attributes (io/hdf5_results.cpp; its names are the reference),
+// the Python module's dicts, the sweep's columns and the finite-output check (runs/).
+#pragma once
+
+#include "contact/mesh_contact.hpp"
+
+#include <string>
+#include <vector>
+
+namespace geartrib::contact {
+
+// One scalar of a summary, with its unit ("1": a number or a count).
+struct SummaryValue {
+  std::string name, unit;
+  double value = 0.0;
+};
+// One text of a summary.
+struct SummaryText {
+  std::string name, value;
+};
+// A summary: its texts, then its values, each in one order.
+struct Summary {
+  std::vector<SummaryText> texts;
+  std::vector<SummaryValue> values;
+};
+
+// The path of contact: s_A_m .. s_E_m, base_pitch_m, contact_ratio (/mesh's attributes).
+Summary path_summary(const gear::PathOfContact& p);
+// The models run and the equivalent surface: asperity_model, fidelity; the summits' density,
+// radius and sigma, the surface's sigma, the summits' mean height, the plasticity index (/meta's).
+Summary surface_summary(const MeshContactResult& r);
+// Where the models hold: regime, verdict; positions_<flag>, the positions where each validity flag
+// is set (/contact/validity's).
+Summary validity_summary(const MeshContactResult& r);
+// The running-in's record: teeth; meshes, shakedown_mesh, tolerance_m, <gear>_profile_spacing_m
+// (/running_in's).
+Summary running_in_summary(const RunningInResult& ri);
+// A synthesised flank's record: patch, method; seed, teeth, the patch's and the profile's figures,
+// and with IAAFT its convergence (/synthesis/<gear>'s).
+Summary synthesis_summary(const FlankSynthesis& f);
+// The lubricated cycle's findings: the lubricant and the models chosen, the meaning of the
+// ehl_regime codes; the oil, the roughness, friction, losses, temperatures, lambda, safeties
+// (/lubrication's; the safeties only with a scuffing temperature).
+Summary lubrication_summary(const LubricationSummary& l);
+// The named points' values as series over the points (in the order of l.points; the names are
+// l.points[i].name): /lubrication/points in HDF5, the Python module's table.
+std::vector<Series> named_point_series(const LubricationSummary& l);
+
+}  // namespace geartrib::contact
