@@ -8,7 +8,7 @@
 // For every (torque, Ra) we
 //   1. copy the loaded case and change its operating point and both flanks' roughness,
 //   2. assemble the gear mesh for that operating point,
-//   3. run the rough contact at every position from A to E (contact::run_mesh_contact, the same
+//   3. run the rough contact at every position from A to E (runs::run_mesh_contact, the same
 //      call `geartrib run` makes),
 //   4. pick a few numbers out of the result's named series and print one table row.
 //
@@ -16,6 +16,7 @@
 #include "case/gear_setup.hpp"
 #include "contact/mesh_contact.hpp"
 #include "io/case_file.hpp"
+#include "runs/mesh_cycle.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -45,7 +46,7 @@ int main(int argc, char** argv) {
       // Step 3: the contact along A -> E. No solver is needed for the uncoupled fidelity the case
       // asks for, and no integrator since the case's dynamics are "none". 41 positions are
       // plenty for a table (the case file asks for 201).
-      const contact::MeshContactResult r = contact::run_mesh_contact(c, mesh, nullptr, {}, 41);
+      const contact::MeshContactResult r = runs::run_mesh_contact(c, mesh, nullptr, {}, 41);
 
       // Step 4: results are series over the positions, found by name (the names of the HDF5
       // file's /mesh and /contact groups: README.md, "The main job"), plus a few scalars.

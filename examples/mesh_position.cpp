@@ -12,7 +12,7 @@
 //   2. assemble the gear mesh and read off the load, curvature and Hertz pressure at C,
 //   3. build the equivalent rough surface and the Greenwood-Williamson summation over its summits,
 //   4. solve the rough line contact across the strip at C.
-// `geartrib run` does the same at every position from A to E (contact::run_mesh_contact).
+// `geartrib run` does the same at every position from A to E (runs::run_mesh_contact).
 //
 // Usage: mesh_position [gears/m6z30.toml]
 #include "case/asperity_setup.hpp"
@@ -22,6 +22,7 @@
 #include "contact/mesh_contact.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "io/case_file.hpp"
+#include "runs/mesh_cycle.hpp"
 
 #include <cstdio>
 #include <string>

@@ -2,11 +2,12 @@
 // profile's exact element means, smooth flanks against Hertz (pressure, width, subsurface von
 // Mises), the rolling frame of the gap, the hardness cap, a mesh pass on one and two threads and
 // its shakedown, and the main job's deterministic fidelity on the seed's pair.
+#include "contact/deterministic/mesh_deterministic.hpp"
 #include "contact/deterministic_contact.hpp"
 #include "contact/mesh_contact.hpp"
-#include "contact/mesh_deterministic.hpp"
 #include "gear/gear_mesh.hpp"
 #include "reference_solutions.hpp"
+#include "runs/mesh_cycle.hpp"
 #include "surface/flank_profile.hpp"
 #include "test_support.hpp"
 
@@ -426,8 +427,8 @@ TEST(DeterministicMeshContact, SmoothFlanksGiveHertzAlongThePath) {
   const double e = 2e-6;
   const Case c = deterministic_case(11, e);
   const gear::GearMesh mesh = gear::case_mesh(c);
-  const MeshContactResult r = run_mesh_contact(c, mesh, nullptr, {}, 0, nullptr,
-                                               source([e](int, int, double length) { return smooth(e, length); }));
+  const MeshContactResult r = runs::run_mesh_contact(
+      c, mesh, nullptr, {}, 0, nullptr, source([e](int, int, double length) { return smooth(e, length); }));
   EXPECT_EQ(r.fidelity, "deterministic");
   const auto& p0 = values(r, "hertz_p0_Pa");
   const auto& b = values(r, "hertz_halfwidth_m");
@@ -459,14 +460,14 @@ TEST(DeterministicMeshContact, RefusesMissingOrWrongFlanks) {
   const double e = 2e-6;
   const Case c = deterministic_case(3, e);
   const gear::GearMesh mesh = gear::case_mesh(c);
-  EXPECT_THROW(run_mesh_contact(c, mesh, nullptr, {}, 0, nullptr, {}), std::invalid_argument);
+  EXPECT_THROW(runs::run_mesh_contact(c, mesh, nullptr, {}, 0, nullptr, {}), std::invalid_argument);
   // A pair (one tooth each): one pinion track too many, or no wheel track.
   auto flat_source = [e](std::array<int, 2> extra) {
     return source([e](int, int, double length) { return smooth(e, length); }, extra);
   };
-  EXPECT_THROW(run_mesh_contact(c, mesh, nullptr, {}, 0, nullptr, flat_source({1, 0})), std::logic_error);
-  EXPECT_THROW(run_mesh_contact(c, mesh, nullptr, {}, 0, nullptr, flat_source({0, -1})), std::logic_error);
-  EXPECT_NO_THROW(run_mesh_contact(c, mesh, nullptr, {}, 0, nullptr, flat_source({0, 0})));
+  EXPECT_THROW(runs::run_mesh_contact(c, mesh, nullptr, {}, 0, nullptr, flat_source({1, 0})), std::logic_error);
+  EXPECT_THROW(runs::run_mesh_contact(c, mesh, nullptr, {}, 0, nullptr, flat_source({0, -1})), std::logic_error);
+  EXPECT_NO_THROW(runs::run_mesh_contact(c, mesh, nullptr, {}, 0, nullptr, flat_source({0, 0})));
 }
 
 TEST(DeterministicMeshContact, RoughFlanksRunTheStatisticalModelAndRunIn) {
@@ -476,9 +477,9 @@ TEST(DeterministicMeshContact, RoughFlanksRunTheStatisticalModelAndRunIn) {
   c.running_in.meshes = 3;
   const gear::GearMesh mesh = gear::case_mesh(c);
   const MeshContactResult r =
-      run_mesh_contact(c, mesh, nullptr, {}, 0, nullptr, source([](int g, int t, double length) {
-                         return ground(static_cast<std::uint64_t>(1 + g + 2 * t), 0.5e-6, length);
-                       }));
+      runs::run_mesh_contact(c, mesh, nullptr, {}, 0, nullptr, source([](int g, int t, double length) {
+                               return ground(static_cast<std::uint64_t>(1 + g + 2 * t), 0.5e-6, length);
+                             }));
   ASSERT_FALSE(r.statistical.empty());
   for (const Series& s : r.statistical) {
     EXPECT_EQ(s.name.rfind("statistical_", 0), 0u) << s.name;

@@ -5,6 +5,7 @@
 // impossible. The single-asperity models over delta* 1e-9 to 1e6 are in test_model_ranges.cpp,
 // also in this label.
 #include "asperity/side_contact.hpp"
+#include "case/contact_setup.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
 #include "contact/rough_line_contact.hpp"
@@ -12,6 +13,7 @@
 #include "gear/mesh_dynamics.hpp"
 #include "io/input_error.hpp"
 #include "reference_solutions.hpp"
+#include "runs/mesh_cycle.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/kinsol_solver.hpp"
 #include "test_support.hpp"
@@ -49,7 +51,8 @@ double min_of(const contact::MeshContactResult& r, const std::string& name) {
 contact::MeshContactResult cycle(const Case& c, int positions = 21) {
   const gear::GearMesh mesh = gear::case_mesh(c);
   const solvers::KinsolSolver kinsol;
-  return contact::run_mesh_contact(c, mesh, c.contact.coupled() ? &kinsol : nullptr, {}, positions);
+  return runs::run_mesh_contact(c, mesh, c.contact.fidelity == ContactFidelity::coupled ? &kinsol : nullptr, {},
+                                positions);
 }
 
 // The seed's rough surface and pair with the table sized for `max_pressure`.

@@ -3,6 +3,7 @@
 // measured traction curves, and, through the mesh cycle, the named points where they stand and the
 // roughness lambda is computed with.
 #include "case/asperity_setup.hpp"
+#include "case/contact_setup.hpp"
 #include "contact/asperity_pressure.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
@@ -12,6 +13,7 @@
 #include "io/input_error.hpp"
 #include "lubrication/film_closure.hpp"
 #include "lubrication/lubricant.hpp"
+#include "runs/mesh_cycle.hpp"
 #include "solvers/integrators.hpp"
 #include "test_support.hpp"
 
@@ -179,7 +181,7 @@ TEST(TractionCurves, InterpolatesAlongAndBetweenCurvesAndFlagsBeyond) {
 
 contact::MeshContactResult run(const Case& c, int positions = 41) {
   const gear::GearMesh mesh = gear::case_mesh(c);
-  return contact::run_mesh_contact(c, mesh, nullptr, {}, positions);
+  return runs::run_mesh_contact(c, mesh, nullptr, {}, positions);
 }
 Case with(const std::vector<io::CaseChange>& changes) {
   return io::load_case(test::source_dir() / "gears/m6z30.toml", changes);
@@ -222,7 +224,7 @@ TEST(LubricatedSummary, WithDynamicsBAndDStillCarryTheSinglePairsLoad) {
   const Case c = with({{"mesh.dynamics", "odeint"}, {"speed", "300 rpm"}});
   const gear::GearMesh mesh = gear::case_mesh(c);
   const auto integrator = solvers::make_integrator(gear::DynamicsEngine::odeint);
-  const auto r = contact::run_mesh_contact(c, mesh, nullptr, {}, 201, integrator.get());
+  const auto r = runs::run_mesh_contact(c, mesh, nullptr, {}, 201, integrator.get());
   ASSERT_NE(r.find("dynamic_load_factor"), nullptr);
   const auto& s = r.find("s_m")->values;
   const auto& w = r.find("line_load_N_per_m")->values;

@@ -10,6 +10,7 @@
 #include "lubrication/lubricant.hpp"
 #include "lubrication/mixed_lubrication.hpp"
 #include "reference_solutions.hpp"
+#include "runs/mesh_cycle.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -422,7 +423,7 @@ TEST(IsoFriction, MeanCoefficientsInTheStandardsUnits) {
 // The lubricated default case through the whole mesh cycle.
 contact::MeshContactResult run(const Case& c) {
   const gear::GearMesh mesh = gear::case_mesh(c);
-  return contact::run_mesh_contact(c, mesh, nullptr, {}, 41);
+  return runs::run_mesh_contact(c, mesh, nullptr, {}, 41);
 }
 Case with(const std::vector<io::CaseChange>& changes) {
   return io::load_case(test::source_dir() / "gears/m6z30.toml", changes);

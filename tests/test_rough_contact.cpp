@@ -3,6 +3,7 @@
 #include "contact/rough_line_contact.hpp"
 #include "gear/gear_mesh.hpp"
 #include "reference_solutions.hpp"
+#include "runs/mesh_cycle.hpp"
 #include "solvers/kinsol_solver.hpp"
 #include "test_support.hpp"
 
@@ -346,8 +347,8 @@ TEST(MeshContact, FastPathsEqualTheExactPathOnTheDefaultCase) {
       c->wheel.flank.roughness.ra = ra;
     }
     const gear::GearMesh mesh_f = gear::case_mesh(f), mesh_e = gear::case_mesh(e);
-    const MeshContactResult rf = run_mesh_contact(f, mesh_f, nullptr, {}, 201);
-    const MeshContactResult re = run_mesh_contact(e, mesh_e, nullptr, {}, 201);
+    const MeshContactResult rf = runs::run_mesh_contact(f, mesh_f, nullptr, {}, 201);
+    const MeshContactResult re = runs::run_mesh_contact(e, mesh_e, nullptr, {}, 201);
     int compared = 0;
     for (const auto* group : re.groups())
       for (const auto& s : *group) {
@@ -370,9 +371,9 @@ TEST(MeshContact, ToothPairStiffnessOnlyWhenAskedOrUsed) {
   c.contact.real_area = c.contact.plastic_fraction = c.contact.asperity_stress = false;
   const gear::GearMesh mesh = gear::case_mesh(c);
   ASSERT_EQ(mesh.analysis().method(), gear::LoadSharing::iso);
-  EXPECT_EQ(run_mesh_contact(c, mesh, nullptr, {}, 11).find("mesh_stiffness_N_per_m"), nullptr);
+  EXPECT_EQ(runs::run_mesh_contact(c, mesh, nullptr, {}, 11).find("mesh_stiffness_N_per_m"), nullptr);
   c.contact.mesh_stiffness = true;
-  const MeshContactResult r = run_mesh_contact(c, mesh, nullptr, {}, 11);
+  const MeshContactResult r = runs::run_mesh_contact(c, mesh, nullptr, {}, 11);
   const Series* k = r.find("mesh_stiffness_N_per_m");
   ASSERT_NE(k, nullptr);
   const auto& s = r.find("s_m")->values;

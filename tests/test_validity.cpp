@@ -3,12 +3,14 @@
 // yield, the quadrature's panels at the laws' breakpoints, the validity figures and verdict
 // of a mesh cycle, and one equivalent surface per run.
 #include "asperity/model.hpp"
+#include "case/contact_setup.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
 #include "gear/gear_mesh.hpp"
 #include "io/case_file.hpp"
 #include "io/input_error.hpp"
 #include "reference_solutions.hpp"
+#include "runs/mesh_cycle.hpp"
 #include "surface/rough_surface.hpp"
 #include "test_support.hpp"
 
@@ -148,8 +150,8 @@ TEST(Quadrature, JacksonGreenPlasticFractionConvergedAtTheDefault) {
   Case fine = c;
   fine.contact.height_points = 2048;
   const gear::GearMesh mesh = gear::case_mesh(c);
-  const auto a = contact::run_mesh_contact(c, mesh, nullptr, {}, 11);
-  const auto b = contact::run_mesh_contact(fine, mesh, nullptr, {}, 11);
+  const auto a = runs::run_mesh_contact(c, mesh, nullptr, {}, 11);
+  const auto b = runs::run_mesh_contact(fine, mesh, nullptr, {}, 11);
   const auto& x = a.find("plastic_area_fraction")->values;
   const auto& y = b.find("plastic_area_fraction")->values;
   for (std::size_t i = 0; i < x.size(); ++i) EXPECT_NEAR(x[i], y[i], 1e-5) << i;
@@ -160,7 +162,7 @@ TEST(Validity, SeedCaseIsFullyPlasticAndOutsideTheRanges) {
   // summits interacting; the verdict says so once, with the counts.
   const Case& c = test::seed_case();
   const gear::GearMesh mesh = gear::case_mesh(c);
-  const auto r = contact::run_mesh_contact(c, mesh, nullptr, {}, 21);
+  const auto r = runs::run_mesh_contact(c, mesh, nullptr, {}, 21);
   EXPECT_EQ(r.regime, "fully plastic");
   for (const char* q : {"flag_beyond_fitted_range", "flag_summits_interact"})
     for (double f : r.find(q)->values) EXPECT_EQ(f, 1.0) << q;
@@ -185,7 +187,7 @@ TEST(Validity, SmoothLightlyLoadedCaseIsElasticAndWithinRange) {
   const Case c = io::load_case(test::source_dir() / "gears/m6z30-dry.toml",
                                {{"ra", "0.005 um"}, {"summit_radius", "1000 um"}, {"torque", "5 N m"}});
   const gear::GearMesh mesh = gear::case_mesh(c);
-  const auto r = contact::run_mesh_contact(c, mesh, nullptr, {}, 11);
+  const auto r = runs::run_mesh_contact(c, mesh, nullptr, {}, 11);
   EXPECT_EQ(r.regime, "elastic") << r.verdict;
   for (const auto& f : r.flag_counts) EXPECT_EQ(f.positions, 0) << f.name << ": " << r.verdict;
   EXPECT_NE(r.verdict.find("within the models' ranges"), std::string::npos);

@@ -10,6 +10,7 @@
 // failures a RuntimeError.
 #include "case/asperity_setup.hpp"
 #include "case/gear_setup.hpp"
+#include "contact/fidelity_registry.hpp"
 #include "contact/half_plane_bem.hpp"
 #include "contact/mesh_contact.hpp"
 #include "contact/run_summary.hpp"
@@ -397,6 +398,28 @@ PYBIND11_MODULE(_geartrib, m) {
       },
       py::arg("case"), py::arg("points"), py::arg("positions"),
       "The `geartrib kinematics` table: (column names with units, row labels, rows).");
+
+  m.def(
+      "fidelities",
+      [] {
+        std::vector<py::dict> out;
+        for (const contact::FidelityEntry& f : contact::fidelities()) {
+          py::dict d;
+          d["name"] = std::string(f.name);
+          d["description"] = std::string(f.description);
+          std::vector<std::string> keys(f.traits.keys.begin(), f.traits.keys.end());
+          d["keys"] = keys;
+          d["needs_nonlinear_solver"] = f.traits.needs.nonlinear_solver;
+          d["needs_flank_profiles"] = f.traits.needs.flank_profiles;
+          std::vector<std::string> groups;
+          for (const auto& g : f.traits.groups) groups.emplace_back(g.path);
+          d["groups"] = groups;
+          out.push_back(d);
+        }
+        return out;
+      },
+      "The registered contact fidelities (contact.fidelity's choices): name, description, the case keys a run "
+      "of it reads, what it needs and the result groups it writes.");
 
   m.def("asperity_models", [] {
     std::vector<std::string> names;

@@ -5,6 +5,7 @@
 #include "app/progress_bar.hpp"
 #include "runs/mesh_cycle.hpp"
 
+#include "contact/fidelity_registry.hpp"
 #include "contact/mesh_contact.hpp"
 #include "io/hdf5_results.hpp"
 #include "io/table_writer.hpp"
@@ -204,9 +205,12 @@ void add_run_command(CLI::App& app) {
                  "standard output in place of the summary");
   cmd->add_option("--positions", o->positions, "N: shorthand for --set contact.positions=N (default 201)")
       ->check(CLI::Range(2, 100000));
-  cmd->add_option("--fidelity", o->fidelity,
-                  "uncoupled, coupled or deterministic: shorthand for --set contact.fidelity=...")
-      ->check(CLI::IsMember({"uncoupled", "coupled", "deterministic"}));
+  const std::vector<std::string> fidelities = contact::fidelity_names();
+  std::string names;  // "a, b or c"
+  for (std::size_t i = 0; i < fidelities.size(); ++i)
+    names += (i == 0 ? "" : i + 1 == fidelities.size() ? " or " : ", ") + fidelities[i];
+  cmd->add_option("--fidelity", o->fidelity, names + ": shorthand for --set contact.fidelity=...")
+      ->check(CLI::IsMember(fidelities));
   add_quiet_flag(cmd, o->quiet);
   cmd->callback([o] { run(*o); });
 }

@@ -9,6 +9,8 @@
 #include "app/progress_bar.hpp"
 #include "runs/sweep_points.hpp"
 
+#include "contact/fidelity_registry.hpp"
+
 #include "io/column_table.hpp"
 #include "io/hdf5_results.hpp"
 #include "io/input_error.hpp"
@@ -144,10 +146,12 @@ void run(const Options& o) {
                              plan.describe(), mine.size(), shard.index, shard.count, threads, threads == 1 ? "" : "s");
   const auto start = std::chrono::steady_clock::now();
   std::vector<runs::SweepPoint> results(mine.size());
-  // Points already run on every thread: a deterministic point's positions then take one each
-  // (contact.threads = 1, unless the sweep sets it).
+  // Points already run on every thread: the positions of a point whose fidelity solves them on
+  // threads of its own (it reads contact.threads) then take one each (unless the sweep sets it).
+  const auto& keys = contact::find_fidelity(base.contact.fidelity).traits.keys;
+  const bool threaded = std::find(keys.begin(), keys.end(), "contact.threads") != keys.end();
   const runs::CaseLoader load = [&](const std::vector<io::CaseChange>& changes) {
-    if (threads == 1 || !base.contact.deterministic()) return io::load_case(case_file, changes);
+    if (threads == 1 || !threaded) return io::load_case(case_file, changes);
     std::vector<io::CaseChange> one = {{"contact.threads", "1"}};
     one.insert(one.end(), changes.begin(), changes.end());
     return io::load_case(case_file, one);

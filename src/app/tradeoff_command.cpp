@@ -6,6 +6,7 @@
 // within the tolerance of its reference) are compared with all knobs at their highest settings.
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
+#include "contact/fidelity_registry.hpp"
 #include "contact/mesh_contact.hpp"
 #include "runs/mesh_cycle.hpp"
 
@@ -52,57 +53,56 @@ struct Knob {
   bool physics = false;
 };
 
-// The knobs and their settings come from the parameter table: each resolution's ladder, the
-// choices of fidelity, dynamics and asperity model.
-std::vector<Knob> knobs_of(const Case& c) {
-  auto row = [](const std::string& key) -> const io::Parameter& { return *io::find_parameter(key).parameter; };
-  auto ladder = [&](const std::string& name, const std::string& key) {
-    Knob k{name, {}, false};
-    for (const auto& v : row(key).ladder) k.settings.push_back({v, {{key, v}}});
-    return k;
-  };
-  std::vector<Knob> out;
-  if (c.contact.deterministic()) {
-    // The boundary elements' resolution and reach, and the positions (statistical knobs are moot).
-    out.push_back(ladder("positions", "contact.positions"));
-    // Elements not finer than the flanks' profile spacing (the case's own rule): the ladder's settings
-    // that respect it, and the spacing itself as the finest (the reference) when it falls between them.
-    Knob elements = ladder("element_size", "contact.element_size");
-    if (const double finest = runs::finest_element_size(c); finest > 0.0) {
-      std::erase_if(elements.settings, [&](const Setting& s) {
-        return io::parse_quantity(s.label, io::Dimension::length) < finest * (1.0 - 1e-9);
-      });
-      const bool on_ladder =
-          !elements.settings.empty() &&
-          io::parse_quantity(elements.settings.back().label, io::Dimension::length) <= finest * (1.0 + 1e-9);
-      if (!on_ladder) {
-        // Written to 1e-6 um, rounded up: the setting is never finer than the spacing.
-        const std::string v = fmt::format("{:.12g} um", std::ceil(finest * 1e12 * (1.0 - 1e-12)) * 1e-6);
-        elements.settings.push_back({v, {{"contact.element_size", v}}});
-      }
-    }
-    out.push_back(elements);
-    out.push_back(ladder("strip_halfwidths", "contact.strip_halfwidths"));
-    return out;
+const io::Parameter& row(const std::string& key) { return *io::find_parameter(key).parameter; }
+
+// A resolution's ladder from the parameter table.
+Knob ladder(std::string_view name, std::string_view key) {
+  Knob k{std::string(name), {}, false};
+  for (const auto& v : row(std::string(key)).ladder) k.settings.push_back({v, {{std::string(key), v}}});
+  return k;
+}
+
+// Elements not finer than the flanks' profile spacing (the case's own rule): the ladder's settings
+// that respect it, and the spacing itself as the finest (the reference) when it falls between them.
+void limit_to_profile_spacing(const Case& c, Knob& elements) {
+  const double finest = runs::finest_element_size(c);
+  if (!(finest > 0.0)) return;
+  std::erase_if(elements.settings, [&](const Setting& s) {
+    return io::parse_quantity(s.label, io::Dimension::length) < finest * (1.0 - 1e-9);
+  });
+  const bool on_ladder =
+      !elements.settings.empty() &&
+      io::parse_quantity(elements.settings.back().label, io::Dimension::length) <= finest * (1.0 + 1e-9);
+  if (!on_ladder) {
+    // Written to 1e-6 um, rounded up: the setting is never finer than the spacing.
+    const std::string v = fmt::format("{:.12g} um", std::ceil(finest * 1e12 * (1.0 - 1e-12)) * 1e-6);
+    elements.settings.push_back({v, {{"contact.element_size", v}}});
   }
-  out.push_back(ladder("positions", "contact.positions"));
-  out.push_back(ladder("height_points", "contact.height_points"));
-  out.push_back(ladder("table_points", "contact.table_points"));
-  out.push_back(ladder("strip_points", "contact.strip_points"));
-  if (!c.contact.coupled()) out.push_back(ladder("strip_lookup", "contact.strip_lookup"));
-  if (c.contact.asperity_stress) out.push_back(ladder("stress_table", "contact.stress_table"));
-  Knob fidelity{"fidelity", {{"uncoupled", {{"contact.fidelity", "uncoupled"}}}}, false};
-  for (const auto& n : row("contact.coupled_nodes").ladder)
-    fidelity.settings.push_back({"coupled " + n, {{"contact.fidelity", "coupled"}, {"contact.coupled_nodes", n}}});
-  out.push_back(fidelity);
+}
+
+// The fidelities of the case's family (contact/fidelities.hpp), each with its settings.
+Knob fidelity_knob(const contact::FidelityEntry& own) {
+  Knob fidelity{"fidelity", {}, false};
+  for (const contact::FidelityEntry& f : contact::fidelities()) {
+    if (f.traits.family != own.traits.family) continue;
+    const std::string name(f.name), key(f.traits.setting_key);
+    if (key.empty()) fidelity.settings.push_back({name, {{"contact.fidelity", name}}});
+    else
+      for (const auto& n : row(key).ladder)
+        fidelity.settings.push_back({name + " " + n, {{"contact.fidelity", name}, {key, n}}});
+  }
+  return fidelity;
+}
+
+// The dynamic cycle: static load sharing against the steady dynamic cycle (a physics choice,
+// reported), and the integrators and their tolerances (recommended when the case asks for dynamics).
+Knob dynamics_knob(const Case& c, bool integrators) {
   // The reference of the dynamic cycle: CVODE (BDF) at the finest tolerance of the ladder.
   const std::vector<std::string>& rtols = row("dynamics.relative_tolerance").ladder;
   const std::vector<io::CaseChange> finest = {{"mesh.dynamics", "cvode"},
                                               {"dynamics.relative_tolerance", rtols.back()}};
-  // Static load sharing against the steady dynamic cycle: a physics choice, reported.
-  out.push_back(
-      {"dynamics", {{"none (static)", {{"mesh.dynamics", "none"}}}, {"cvode " + rtols.back(), finest}}, true});
-  // The integrators and their tolerances (recommended when the case asks for dynamics).
+  if (!integrators)
+    return {"dynamics", {{"none (static)", {{"mesh.dynamics", "none"}}}, {"cvode " + rtols.back(), finest}}, true};
   Knob integrator{"integrator", {}, c.dynamics.engine == gear::DynamicsEngine::none};
   std::vector<std::string> engines = row("mesh.dynamics").choices;
   std::erase(engines, "none");
@@ -112,34 +112,51 @@ std::vector<Knob> knobs_of(const Case& c) {
       integrator.settings.push_back(
           {engine + " " + rtols[i], {{"mesh.dynamics", engine}, {"dynamics.relative_tolerance", rtols[i]}}});
   integrator.settings.push_back({"cvode " + rtols.back(), finest});
-  out.push_back(integrator);
-  // The asperity models, the case's own last (the reference).
-  Knob model{"asperity_model", {}, true};
-  for (const auto& m : row("asperity.model").choices)
-    if (m != c.asperity.model) model.settings.push_back({m, {{"asperity.model", m}}});
-  model.settings.push_back({c.asperity.model, {{"asperity.model", c.asperity.model}}});
-  out.push_back(model);
-  // Lubricated: the film formulas and inlet-heating corrections (physics choices; the case's own
-  // last, the reference), through the asperities' share of the load they leave.
-  if (c.lubrication.lubricated)
-    for (const auto& [name, key] : {std::pair{"film_formula", "lubrication.film_formula"},
-                                    std::pair{"inlet_heating", "lubrication.inlet_heating"}}) {
-      const std::string own = row(key).get(c, -1).text;  // the case's choice by name
-      Knob k{name, {}, true};
-      for (const auto& v : row(key).choices)
-        if (v != own) k.settings.push_back({v, {{key, v}}});
-      k.settings.push_back({own, {{key, own}}});
-      out.push_back(k);
+  return integrator;
+}
+
+// A model choice (a physics knob): the table's choices, the case's own last (the reference).
+Knob choice_knob(std::string_view name, const std::string& key, const std::string& own) {
+  Knob k{std::string(name), {}, true};
+  for (const auto& v : row(key).choices)
+    if (v != own) k.settings.push_back({v, {{key, v}}});
+  k.settings.push_back({own, {{key, own}}});
+  return k;
+}
+
+// The knobs of the case's fidelity, as it registers them (contact/fidelity_registry.hpp): each
+// resolution's ladder from the parameter table, and the trade tool's own knobs by name.
+std::vector<Knob> knobs_of(const Case& c) {
+  const contact::FidelityEntry& entry = contact::find_fidelity(c.contact.fidelity);
+  std::vector<Knob> out;
+  for (const contact::TradeKnob& k : entry.traits.knobs) {
+    if (k.key == "contact.stress_table" && !c.contact.asperity_stress) continue;
+    if (!k.key.empty()) {
+      out.push_back(ladder(k.name, k.key));
+      if (k.key == "contact.element_size") limit_to_profile_spacing(c, out.back());
+    } else if (k.name == "fidelity") {
+      out.push_back(fidelity_knob(entry));
+    } else if (k.name == "dynamics" || k.name == "integrator") {
+      out.push_back(dynamics_knob(c, k.name == "integrator"));
+    } else if (k.name == "asperity_model") {
+      out.push_back(choice_knob(k.name, "asperity.model", c.asperity.model));
+    } else if (k.name == "film_formula" && c.lubrication.lubricated) {
+      // Lubricated: the film formulas and inlet-heating corrections, through the asperities' share
+      // of the load they leave.
+      out.push_back(choice_knob(k.name, "lubrication.film_formula", row("lubrication.film_formula").get(c, -1).text));
+    } else if (k.name == "inlet_heating" && c.lubrication.lubricated) {
+      out.push_back(choice_knob(k.name, "lubrication.inlet_heating", row("lubrication.inlet_heating").get(c, -1).text));
     }
+  }
   return out;
 }
 
 // The outputs compared, as named in the mesh-cycle result: the real-area ratio, the plastic area
-// fraction and the peak stress (statistical: the highest asperity's von Mises stress;
+// fraction and the fidelity's peak stress (statistical: the highest asperity's von Mises stress;
 // deterministic: the von Mises maximum below the strip).
-std::array<const char*, 3> outputs_of(const Case& c) {
+std::array<std::string, 3> outputs_of(const Case& c) {
   return {"real_area_ratio", "plastic_area_fraction",
-          c.contact.deterministic() ? "max_von_mises_Pa" : "max_asperity_von_mises_Pa"};
+          std::string(contact::find_fidelity(c.contact.fidelity).traits.peak_stress)};
 }
 
 struct Curves {
@@ -169,7 +186,7 @@ Timed run_timed(const std::filesystem::path& case_file, const std::vector<io::Ca
     total += dt;
     if (repeat == 0) {
       t.curves.s = r.find("s_m")->values;
-      for (const char* name : outputs_of(c)) {
+      for (const std::string& name : outputs_of(c)) {
         const contact::Series* q = r.find(name);
         if (!q)
           throw std::invalid_argument(std::string("tradeoff needs the case's contact outputs to include ") + name);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "asperity/asperity_settings.hpp"
+#include "contact/contact_options.hpp"
 #include "gear/gear_mesh.hpp"
 #include "gear/mesh_dynamics.hpp"
 #include "gear/spur_pair.hpp"
@@ -36,49 +37,6 @@ struct OperatingPoint {
   double pinion_speed = 0.0;      // [rad/s]
   double oil_temperature = 0.0;   // theta_oil, the inlet (sump or spray) oil [K]; lubricated runs only
   double bulk_temperature = 0.0;  // theta_M of the flanks [K]; 0: the ISO/TS 6336-20 estimate
-};
-
-// How the rough contact across the strip is solved: the statistical model with the Hertz pressure
-// imposed (uncoupled) or solved with the bulk (coupled, Greenwood-Tripp), or the flanks' profiles
-// in contact through boundary elements (deterministic).
-enum class ContactFidelity { uncoupled, coupled, deterministic };
-
-// Which pressure profiles a deterministic run keeps: at the path's points A, B, C, D, E, at
-// every position, or none.
-enum class PressureProfiles { points, all, none };
-
-// The mesh-cycle contact run: fidelity, the outputs asked for, and the resolution knobs.
-struct ContactSettings {
-  ContactFidelity fidelity = ContactFidelity::uncoupled;
-  bool coupled() const { return fidelity == ContactFidelity::coupled; }
-  bool deterministic() const { return fidelity == ContactFidelity::deterministic; }
-  bool real_area = true;  // outputs asked for
-  bool plastic_fraction = true;
-  bool asperity_stress = true;
-  bool mesh_stiffness = false;      // the tooth-pair stiffness along the path (needed anyway by stiffness load sharing)
-  int positions = 201;              // along A -> E of one tooth pair
-  int strip_points = 64;            // uncoupled quadrature across the strip
-  int height_points = 128;          // GW quadrature over summit heights
-  int table_points = 32;            // GW pressure-separation table points per summit sigma
-  int coupled_nodes = 128;          // coupled pressure elements
-  bool exact_strip_lookup = false;  // "cubic" cells in the pressure (false) or "exact": the table's inversion
-  int stress_table = 64;  // von Mises table intervals over sqrt(plastic share); 0: exact maximisation each time
-  // Deterministic: boundary-element size, the strip's half-length in the path's largest Hertz
-  // half-widths, the pressure profiles kept and the threads (0: all cores).
-  double element_size = 0.5e-6;  // [m]
-  double strip_halfwidths = 2.0;
-  PressureProfiles pressure_profiles = PressureProfiles::points;
-  int threads = 0;
-};
-
-// Running-in (deterministic fidelity): the plastic deformation of each flank point carried from
-// one mesh of the same teeth to the next, until shakedown or `meshes` meshes.
-struct RunningInSettings {
-  int meshes = 0;  // 0: one mesh, no running-in
-  // Plastic deformation below this counts as none [m]: the plastic area's threshold, and
-  // shakedown: a mesh that deforms no flank point by more.
-  double tolerance = 1e-9;
-  std::string teeth = "pair";  // "pair": one pinion and one wheel tooth; "hunting": every tooth, in mesh order
 };
 
 // What a declared key resolved to: its value with the SI unit and where it came from

@@ -3,9 +3,9 @@
 #pragma once
 
 #include "case/case.hpp"
-#include "contact/deterministic_contact.hpp"
-#include "contact/greenwood_williamson.hpp"
-#include "contact/rough_line_contact.hpp"
+#include "contact/deterministic/mesh_deterministic.hpp"
+#include "contact/statistical/strip_fidelities.hpp"
+#include "contact/surface_model.hpp"
 #include "surface/rough_surface.hpp"
 
 namespace geartrib::contact {

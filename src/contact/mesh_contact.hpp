@@ -1,11 +1,17 @@
 // The main job: rough-surface contact at every position of one tooth pair's path A -> E,
-// evaluating only what the case asks for, with the time each stage took.
+// evaluating only what the case asks for, with the time each stage took. The cycle's stages, each
+// from typed inputs to typed results: the path (contact/mesh_path.hpp), the contact fidelity's
+// preparation and solve (contact/fidelity.hpp; the registered ones in contact/fidelities.hpp), the
+// lubrication around it (contact/mesh_lubrication.hpp), and the output series built once at the end.
 #pragma once
 
-#include "case/case.hpp"
+#include "contact/contact_options.hpp"
+#include "contact/surface_model.hpp"
 #include "core/nonlinear_solver.hpp"
 #include "core/ode_integrator.hpp"
 #include "gear/gear_mesh.hpp"
+#include "gear/mesh_dynamics.hpp"
+#include "lubrication/lubrication_settings.hpp"
 #include "surface/rough_surface.hpp"
 
 #include <array>
@@ -150,14 +156,37 @@ struct MeshContactResult {
 
 struct RollingFlanks;
 struct FlankSpan;
+// The flanks a fidelity that rolls their profiles reads: one track per tooth (teeth[g] of gear g)
+// over the span it reads (contact/deterministic/mesh_deterministic.hpp).
+using FlankSource = std::function<RollingFlanks(const FlankSpan& span, const int teeth[2])>;
 
-// progress(done, total) is called after each position. positions <= 0: the case's number.
-// flanks: the deterministic fidelity's flank profiles for the span it reads (mesh_deterministic.hpp).
-// dynamics: when the case asks for dynamics (mesh.dynamics = cvode | odeint), the integrator that
-// computes the steady mesh cycle; each pair then carries its dynamic load instead of the static share.
-MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
-                                   const std::function<void(int, int)>& progress = {}, int positions = 0,
-                                   const OdeIntegrator* dynamics = nullptr,
-                                   const std::function<RollingFlanks(const FlankSpan&, const int[2])>& flanks = {});
+// The operating point as the lubricated stage takes it.
+struct LubricatedOperatingPoint {
+  double oil_temperature = 0.0;   // theta_oil, the inlet oil [K]
+  double bulk_temperature = 0.0;  // theta_M of the flanks [K]; 0: the ISO/TS 6336-20 estimate
+  double pinion_torque = 0.0;     // [N m]
+};
+
+// The mesh cycle's typed inputs.
+struct MeshCycleInputs {
+  const gear::GearMesh& mesh;
+  ContactSettings contact;  // contact.positions: the positions along A -> E
+  RunningInSettings running_in;
+  StatisticalFlanks flanks;
+  // Lubricated: the oil and its models, and the operating point's temperatures; nullptr: dry.
+  const lubrication::LubricationSettings* lubrication = nullptr;
+  LubricatedOperatingPoint operating;
+  // Dynamics: the integrator of the steady mesh cycle and the model's settings; each pair then
+  // carries its dynamic load instead of the static share. nullptr: static load sharing.
+  const OdeIntegrator* dynamics = nullptr;
+  gear::DynamicsSettings dynamics_settings;
+  const NonlinearSolver* solver = nullptr;  // for a fidelity that needs one (coupled)
+  FlankSource flank_source;                 // for a fidelity that rolls the flanks' profiles
+  std::function<void(int, int)> progress;   // (done, total) after each position
+};
+
+// The stages in order: path, the fidelity's preparation, the film (lubricated), its solve,
+// friction/temperatures/wear, the outputs.
+MeshContactResult run_mesh_contact(const MeshCycleInputs& in);
 
 }  // namespace geartrib::contact

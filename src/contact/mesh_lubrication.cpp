@@ -18,9 +18,10 @@ namespace geartrib::contact {
 
 namespace lub = lubrication;
 
-CompositeRoughness composite_roughness(const Case& c, const surface::EquivalentSurface& s) {
-  const surface::HeightRoughness a = surface::height_roughness(c.pinion.flank.roughness);
-  const surface::HeightRoughness b = surface::height_roughness(c.wheel.flank.roughness);
+CompositeRoughness composite_roughness(const std::array<surface::FlankRoughness, 2>& flanks,
+                                       const surface::EquivalentSurface& s) {
+  const surface::HeightRoughness a = surface::height_roughness(flanks[0]);
+  const surface::HeightRoughness b = surface::height_roughness(flanks[1]);
   CompositeRoughness r;
   if (a.known && b.known) {
     r.rq = std::hypot(a.rq, b.rq);
@@ -37,6 +38,7 @@ CompositeRoughness composite_roughness(const Case& c, const surface::EquivalentS
 }
 
 namespace {
+constexpr double kC = 273.15;  // [K] at 0 degC
 using Position = MeshLubrication::Position;
 double largest(const std::vector<Position>& v, double Position::*field) {
   double m = -std::numeric_limits<double>::infinity();
@@ -56,26 +58,41 @@ std::vector<double> series(const std::vector<Position>& v, double Position::*fie
 }
 }  // namespace
 
-MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, const PathState& p,
-                                 const GreenwoodWilliamson& gw)
-    : case_(c),
+MeshLubrication::MeshLubrication(const LubricationInputs& in, const gear::GearMesh& mesh, const PathState& p,
+                                 const SurfaceModel& model)
+    : lubrication_(in.lubrication),
+      operating_(in.operating),
+      model_(model),
       mesh_(mesh),
       path_(p),
-      formula_(c.lubrication.film_formula),
-      inlet_(c.lubrication.inlet_heating),
-      film_gap_(c.lubrication.film_gap),
-      traction_(c.lubrication.traction),
-      bulk_law_(c.lubrication.mean_friction) {
-  const auto& lubricant = c.lubrication.lubricant;
+      formula_(in.lubrication.film_formula),
+      inlet_(in.lubrication.inlet_heating),
+      film_gap_(in.lubrication.film_gap),
+      traction_(in.lubrication.traction),
+      bulk_law_(in.lubrication.mean_friction) {
   reduced_modulus_ = 2.0 * mesh.composite_modulus();
   for (int g = 0; g < 2; ++g) {
-    const Material& m = (g == 0 ? c.pinion : c.wheel).material;
+    const Material& m = *model.flanks.materials[static_cast<std::size_t>(g)];
     thermal_coefficient_[g] = lub::thermal_contact_coefficient(m.thermal_conductivity, m.density, m.specific_heat);
   }
-  roughness_ = composite_roughness(c, gw.surface());
-  oil_range_ = lub::law_range(lubricant);
-  oil_at_inlet_ = lub::oil_state(lubricant, c.operating.oil_temperature);  // inside the range (io::load_case)
+  roughness_ = composite_roughness(model.flanks.roughness, model.surface);
+  oil_range_ = lub::law_range(lubrication_.lubricant);
+  // inside the range (io::load_case)
+  oil_at_inlet_ = lub::oil_state(lubrication_.lubricant, operating_.oil_temperature);
+  pitch_and_iso();
+  const std::size_t n = p.s.size();
+  positions_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) iso_temperatures(p.point(i), positions_[i]);
+  bulk_temperature();
+  asperity_pressure();
+  ShareGuesses guesses;  // ln(film share) at the last position, per film gap
+  guesses.fill(std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t i = 0; i < n; ++i) film(p.point(i), guesses, positions_[i]);
+}
 
+void MeshLubrication::pitch_and_iso() {
+  const auto& lubricant = lubrication_.lubricant;
+  const gear::GearMesh& mesh = mesh_;
   // The pitch point as the ISO mean-friction formulas take it, and every gear-mean law there.
   const gear::SpurPair& pair = mesh.pair();
   const gear::PathOfContact& path = pair.path();
@@ -100,6 +117,7 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
   };
   iso_mu_ = law_value(lub::MeanFrictionLaw::iso);
   iso_flash_mu_ = law_value(lub::MeanFrictionLaw::iso_flash);
+  bulk_law_mu_ = law_value(bulk_law_);
 
   // ISO/TS 6336-20's flash-temperature method: its factors fixed by the pair.
   iso_geometry_.gear_ratio = double(pair.gear(1).teeth) / double(pair.gear(0).teeth);
@@ -114,18 +132,19 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
   const gear::IsoMeshStiffness c_gamma = gear::iso6336_mesh_stiffness(pair, pitch_.tangential_load);
   iso_effective_relief_ =
       c_gamma.mesh > 0.0 ? pitch_.tangential_load / (std::cos(iso_geometry_.reference_angle) * c_gamma.mesh) : 0.0;
+}
 
-  const std::size_t n = p.s.size();
-  positions_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) iso_temperatures(p.point(i), positions_[i]);
+void MeshLubrication::bulk_temperature() {
+  const auto& lubricant = lubrication_.lubricant;
+  const LubricatedOperatingPoint& op = operating_;
   // ISO/TS 6336-20 eq. 22: theta_M = theta_oil + 0.47 X_S X_mp theta_fl,m; the flash temperature is
   // linear in mu_m, so another law's estimate scales the method's by its coefficient.
-  bulk_estimated_ = !(c.operating.bulk_temperature > 0.0);
-  const double law_scale = iso_flash_mu_ > 0.0 ? law_value(bulk_law_) / iso_flash_mu_ : 0.0;
+  bulk_estimated_ = !(op.bulk_temperature > 0.0);
+  const double law_scale = iso_flash_mu_ > 0.0 ? bulk_law_mu_ / iso_flash_mu_ : 0.0;
   bulk_temperature_ = bulk_estimated_
-                          ? lub::iso_bulk_temperature(c.operating.oil_temperature,
+                          ? lub::iso_bulk_temperature(op.oil_temperature,
                                                       law_scale * path_mean(series(positions_, &Position::iso_flash)))
-                          : c.operating.bulk_temperature;
+                          : op.bulk_temperature;
   // The film, its share and its traction all rest on the oil at the bulk temperature: an estimate
   // beyond the lubricant's laws leaves them without a viscosity, and the run fails naming it (a
   // given one is refused with the case). Per position, hotter surfaces are clamped (oil_at).
@@ -134,28 +153,36 @@ MeshLubrication::MeshLubrication(const Case& c, const gear::GearMesh& mesh, cons
         "the flanks' bulk temperature (/lubrication bulk_temperature_K), estimated by ISO/TS 6336-20 with the {} "
         "friction law's flash temperature, is {:.1f} degC, beyond {:.1f} degC, the hottest at which {}'s laws hold "
         "(its data reach {:.1f} degC): the film, the load sharing and the friction have no viscosity there",
-        lub::mean_friction_law_name(c.lubrication.mean_friction), bulk_temperature_ - 273.15, oil_range_.hi - 273.15,
+        lub::mean_friction_law_name(lubrication_.mean_friction), bulk_temperature_ - 273.15, oil_range_.hi - 273.15,
         lubricant.name, lubricant.max_temperature - 273.15));
   bulk_extrapolated_ = !lubricant.fixed() && !lub::data_range(lubricant).contains(bulk_temperature_);
   oil_at_bulk_ = lub::oil_state(lubricant, bulk_temperature_);
+}
 
-  // The asperities' pressure against the mean-plane separation, and the film and shares.
+void MeshLubrication::asperity_pressure() {
+  // The asperities' pressure against the mean-plane separation.
+  const GreenwoodWilliamson& gw = model_.table;
   plasticity_index_ = surface::plasticity_index(gw.surface(), gw.pair().modulus, gw.pair().hardness);
-  const lub::AsperityPressureModel model = c.lubrication.asperity_pressure;
-  plastic_fraction_ = model == lub::AsperityPressureModel::automatic ? smallest_plastic_fraction(gw, p.hertz_p0) : 0.0;
+  const lub::AsperityPressureModel model = lubrication_.asperity_pressure;
+  plastic_fraction_ =
+      model == lub::AsperityPressureModel::automatic ? smallest_plastic_fraction(gw, path_.hertz_p0) : 0.0;
   const double weight = bearing_area_weight(model, plastic_fraction_);
   // The closure's heights are the summit model's surface (its composite sigma): the gap the film
   // fills and the asperities' pressure then describe one surface. (lambda and the ISO formulas take
   // the flanks' own Rq and Ra; for flanks given by Ra or Rq the two are the same.)
-  asperity_.emplace(gw, lub::CompositeHeights{gw.surface().surface_sigma, c.roughness.distribution}, gw.pair().hardness,
-                    weight);
-  ShareGuesses guesses;  // ln(film share) at the last position, per film gap
-  guesses.fill(std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t i = 0; i < n; ++i) film(p.point(i), guesses, positions_[i]);
+  asperity_.emplace(gw, lub::CompositeHeights{gw.surface().surface_sigma, model_.flanks.distribution},
+                    gw.pair().hardness, weight);
+}
+
+std::vector<double> MeshLubrication::asperity_shares() const {
+  std::vector<double> out;
+  out.reserve(positions_.size());
+  for (const Position& q : positions_) out.push_back(q.asperity_share);
+  return out;
 }
 
 lub::OilState MeshLubrication::oil_at(double t, bool& extrapolated, bool& clamped) const {
-  const auto& lubricant = case_.lubrication.lubricant;
+  const auto& lubricant = lubrication_.lubricant;
   if (lubricant.fixed()) return lub::oil_state(lubricant, t);
   if (!lub::data_range(lubricant).contains(t)) extrapolated = true;
   if (!oil_range_.contains(t)) {
@@ -234,35 +261,28 @@ void MeshLubrication::film(const PathPoint& p, ShareGuesses& guesses, Position& 
   q.share_spread = hi - lo;
 }
 
-void MeshLubrication::rest(const PathPoint& p, Position& q) const {
-  const Case& c = case_;
-  const auto& lubricant = c.lubrication.lubricant;
-  const double face = mesh_.pair().spec().face_width;
-  const double mu_b = c.friction_coefficient, k_wear = c.lubrication.wear_coefficient;
+MeshLubrication::FilmFriction MeshLubrication::film_friction(const PathPoint& p, const Position& q) const {
+  const auto& lubricant = lubrication_.lubricant;
+  const double mu_b = model_.flanks.friction;
   const double vs = p.v1 - p.v2, u = 0.5 * (p.v1 + p.v2);
   const double film_share = 1.0 - q.asperity_share;
   const double p_f = p.half_width > 0.0 ? film_share * p.line_load / (2.0 * p.half_width) : 0.0;
-  auto blok = [&](double mu) {
-    return lub::blok_flash_temperature(mu, p.line_load, p.half_width, p.v1, p.v2, thermal_coefficient_[0],
-                                       thermal_coefficient_[1]);
-  };
+  FilmFriction out;
   // The film's traction coefficient at a friction mu: the surfaces at the bulk temperature plus the
   // mean flash temperature over the band that mu makes (Eyring models); the curve at the bulk.
-  double rise = 0.0;
-  bool curve_outside = false, surface_extrapolated = false, surface_clamped = false;
   auto film_coefficient = [&](double mu) {
     if (!(film_share > 0.0) || !(p_f > 0.0) || vs == 0.0) return 0.0;
     if (traction_ == lub::FilmTraction::curve) {
       const lub::TractionValue t =
           lubricant.traction.at(u > 0.0 ? std::abs(vs) / u : 0.0, p.hertz_p0, bulk_temperature_);
-      curve_outside = t.outside;
+      out.curve_outside = t.outside;
       return t.coefficient;
     }
-    surface_extrapolated = surface_clamped = false;
+    out.surface_extrapolated = out.surface_clamped = false;
     const lub::OilState surface =
-        oil_at(bulk_temperature_ + lub::kBlokMeanOverPeak * blok(mu), surface_extrapolated, surface_clamped);
+        oil_at(bulk_temperature_ + lub::kBlokMeanOverPeak * blok(p, mu), out.surface_extrapolated, out.surface_clamped);
     const lub::FilmShear shear = lub::film_shear_stress(traction_, surface, p_f, vs, q.mean_gap);
-    rise = shear.midfilm_rise;
+    out.rise = shear.midfilm_rise;
     return shear.shear_stress / p_f;
   };
   // The mixed friction coefficient: mu = share_a mu_b + share_f tau_f/p_f, with p_f the film's mean
@@ -283,12 +303,26 @@ void MeshLubrication::rest(const PathPoint& p, Position& q) const {
       mu = top;
     }
   }
-  const double film_coef = film_coefficient(mu);  // also sets rise, curve_outside and surface_* at the answer
-  q.friction = mix(film_coef);
-  q.film_traction = film_coef;
-  q.midfilm_rise = rise;
-  q.curve_outside = curve_outside ? 1.0 : 0.0;
-  q.flash = blok(q.friction);
+  out.film_coefficient = film_coefficient(mu);  // also sets rise, curve_outside and surface_* at the answer
+  out.friction = mix(out.film_coefficient);
+  return out;
+}
+
+double MeshLubrication::blok(const PathPoint& p, double mu) const {
+  return lub::blok_flash_temperature(mu, p.line_load, p.half_width, p.v1, p.v2, thermal_coefficient_[0],
+                                     thermal_coefficient_[1]);
+}
+
+void MeshLubrication::rest(const PathPoint& p, Position& q) const {
+  const double face = mesh_.pair().spec().face_width;
+  const double k_wear = lubrication_.wear_coefficient;
+  const double vs = p.v1 - p.v2;
+  const FilmFriction f = film_friction(p, q);
+  q.friction = f.friction;
+  q.film_traction = f.film_coefficient;
+  q.midfilm_rise = f.rise;
+  q.curve_outside = f.curve_outside ? 1.0 : 0.0;
+  q.flash = blok(p, q.friction);
   q.contact_temperature = bulk_temperature_ + q.flash;
   q.iso_contact_temperature = bulk_temperature_ + q.iso_flash;
   q.power_loss = q.friction * p.line_load * face * std::abs(vs);
@@ -300,31 +334,37 @@ void MeshLubrication::rest(const PathPoint& p, Position& q) const {
   // ISO/TS 6336-22: the oil at theta_B = theta_M + theta_fl(mu_mC) (Blok's form with its mu).
   bool contact_extrapolated = false, contact_clamped = false;
   const lub::OilState local = oil_at(bulk_temperature_ + q.blok_iso_flash, contact_extrapolated, contact_clamped);
-  q.oil_extrapolated = bulk_extrapolated_ || surface_extrapolated || contact_extrapolated ? 1.0 : 0.0;
-  q.oil_clamped = surface_clamped || contact_clamped ? 1.0 : 0.0;
+  q.oil_extrapolated = bulk_extrapolated_ || f.surface_extrapolated || contact_extrapolated ? 1.0 : 0.0;
+  q.oil_clamped = f.surface_clamped || contact_clamped ? 1.0 : 0.0;
   q.iso_film = lub::iso_film_hy(p.radius, reduced_modulus_, p.hertz_p0, p.v1 + p.v2, oil_at_bulk_, local);
   q.iso_lambda = q.iso_film / roughness_.mean_ra;
   q.lambda_film = q.film / roughness_.rq;
   q.lambda_gap = q.mean_gap / roughness_.rq;
   bool low = false;
-  for (int g = 0; g < 2; ++g) {
-    const Material& m = (g == 0 ? c.pinion : c.wheel).material;
+  for (std::size_t g = 0; g < 2; ++g) {
+    const Material& m = *model_.flanks.materials[g];
     low = low || lub::peclet_number(g == 0 ? p.v1 : p.v2, p.half_width, m.thermal_conductivity, m.density,
                                     m.specific_heat) < lub::kMinBlokPeclet;
   }
   q.low_peclet = low ? 1.0 : 0.0;
 }
 
-void MeshLubrication::finish(MeshContactResult& r) {
-  constexpr double kC = 273.15;  // [K] at 0 degC
-  const Case& c = case_;
-  const auto& p = path_;
-  const std::size_t n = p.s.size();
-  for (std::size_t i = 0; i < n; ++i) rest(p.point(i), positions_[i]);
+LubricationResult MeshLubrication::finish() {
+  for (std::size_t i = 0; i < path_.s.size(); ++i) rest(path_.point(i), positions_[i]);
+  LubricationResult out;
+  out.summary = summary();
+  out.verdict = verdict_text(out.summary);
+  out.warnings = warnings(out.summary);
+  out.bearing_saturated_column = asperity_->bearing_weight() >= 1.0;
+  out.traction_curve_column = traction_ == lub::FilmTraction::curve;
+  out.positions = positions_;
+  return out;
+}
 
+void add_lubrication_series(const LubricationResult& l, std::vector<Series>& g) {
   using C = Column<Position>;
   add_columns<Position>(
-      r.lubrication, positions_,
+      g, l.positions,
       {C{"film_isothermal_m", "m", [](const Position& q) { return q.film_isothermal; }},
        C{"inlet_heating_factor", "1", [](const Position& q) { return q.heating_factor; }},
        C{"film_m", "m", [](const Position& q) { return q.film; }},
@@ -354,25 +394,27 @@ void MeshLubrication::finish(MeshContactResult& r) {
        C{"flag_oil_temperature_clamped", "1", [](const Position& q) { return q.oil_clamped; }},
        C{"flag_share_depends_on_closure", "1",
          [](const Position& q) { return q.share_spread > kClosureSpreadFlag ? 1.0 : 0.0; }}});
-  if (asperity_->bearing_weight() >= 1.0)
+  if (l.bearing_saturated_column)
     add_columns<Position>(
-        r.lubrication, positions_,
-        {C{"flag_bearing_area_saturated", "1", [](const Position& q) { return q.bearing_saturated; }}});
-  if (traction_ == lub::FilmTraction::curve)
+        g, l.positions, {C{"flag_bearing_area_saturated", "1", [](const Position& q) { return q.bearing_saturated; }}});
+  if (l.traction_curve_column)
     add_columns<Position>(
-        r.lubrication, positions_,
+        g, l.positions,
         {C{"flag_traction_curve_extrapolated", "1", [](const Position& q) { return q.curve_outside; }}});
+}
 
+LubricationSummary MeshLubrication::summary() const {
+  const lub::LubricationSettings& lc = lubrication_;
   LubricationSummary sum;
-  sum.lubricant = c.lubrication.lubricant.name;
-  sum.film_formula = lub::film_formula_name(c.lubrication.film_formula);
-  sum.inlet_heating = lub::inlet_heating_name(c.lubrication.inlet_heating);
-  sum.film_gap = lub::film_gap_name(c.lubrication.film_gap);
-  sum.asperity_pressure = lub::asperity_pressure_model_name(c.lubrication.asperity_pressure);
+  sum.lubricant = lc.lubricant.name;
+  sum.film_formula = lub::film_formula_name(lc.film_formula);
+  sum.inlet_heating = lub::inlet_heating_name(lc.inlet_heating);
+  sum.film_gap = lub::film_gap_name(lc.film_gap);
+  sum.asperity_pressure = lub::asperity_pressure_model_name(lc.asperity_pressure);
   sum.bearing_area_weight = asperity_->bearing_weight();
-  sum.traction = lub::film_traction_name(c.lubrication.traction);
-  sum.bulk_friction_law = lub::mean_friction_law_name(c.lubrication.mean_friction);
-  sum.oil_temperature = c.operating.oil_temperature;
+  sum.traction = lub::film_traction_name(lc.traction);
+  sum.bulk_friction_law = lub::mean_friction_law_name(lc.mean_friction);
+  sum.oil_temperature = operating_.oil_temperature;
   sum.bulk_temperature = bulk_temperature_;
   sum.bulk_estimated = bulk_estimated_;
   sum.dynamic_viscosity = oil_at_bulk_.dynamic_viscosity;
@@ -380,35 +422,11 @@ void MeshLubrication::finish(MeshContactResult& r) {
   sum.composite_rq = roughness_.rq;
   sum.mean_ra = roughness_.mean_ra;
   sum.roughness_source = roughness_.source;
-  sum.summit_model_sigma = r.surface.surface_sigma;
+  sum.summit_model_sigma = model_.surface.surface_sigma;
   sum.iso_effective_relief = iso_effective_relief_;
   for (const auto& [law, f] : mean_laws_)
     sum.mean_friction.push_back({lub::mean_friction_law_name(law), f.coefficient});
-  const gear::SpurPair& pair = mesh_.pair();
-  const gear::PathOfContact& path = pair.path();
-  // Time average over one mesh cycle of all pairs in contact: each pair sweeps A -> E at the
-  // base speed, so the mean is (1/p_b) int_A^E P ds.
-  sum.mesh_power_loss = path_mean(series(positions_, &Position::power_loss)) * path.length / path.base_pitch;
-  const double omega = mesh_.pinion_speed();
-  sum.input_power = c.operating.pinion_torque * omega;
-  sum.efficiency = sum.input_power > 0.0 ? 1.0 - sum.mesh_power_loss / sum.input_power : 1.0;
-  {
-    const double base_load = pitch_.normal_load;  // F_bn/b [N/m]
-    const double base_speed = omega * pair.gear(0).base_radius;
-    std::vector<double> integrand;
-    for (std::size_t i = 0; i < n; ++i)
-      integrand.push_back(p.line_load[i] / base_load * std::abs(p.v1[i] - p.v2[i]) / base_speed);
-    sum.loss_factor_path = path_mean(integrand) * path.length / path.base_pitch;
-    const double z1 = pair.gear(0).teeth, u = double(pair.gear(1).teeth) / z1;
-    const double e1 = (path.e - path.c) / path.base_pitch, e2 = (path.c - path.a) / path.base_pitch;
-    sum.loss_factor_ohlendorf =
-        std::numbers::pi * (u + 1.0) / (z1 * u) * (1.0 - path.contact_ratio + e1 * e1 + e2 * e2);
-    // The gear-mean friction the FZG power-loss test measures: P = mu_mz P_in H_V (Ohlendorf's
-    // definition), with the path's H_V.
-    sum.mesh_mean_friction = sum.loss_factor_path > 0.0 && sum.input_power > 0.0
-                                 ? sum.mesh_power_loss / (sum.input_power * sum.loss_factor_path)
-                                 : 0.0;
-  }
+  losses(sum);
   sum.max_contact_temperature = largest(positions_, &Position::contact_temperature);
   sum.max_iso_contact_temperature = largest(positions_, &Position::iso_contact_temperature);
   sum.min_iso_lambda = smallest(positions_, &Position::iso_lambda);
@@ -418,13 +436,46 @@ void MeshLubrication::finish(MeshContactResult& r) {
       std::count_if(positions_.begin(), positions_.end(), [](const Position& q) { return q.oil_clamped > 0.0; }));
   sum.closure_dependent_positions = static_cast<int>(std::count_if(
       positions_.begin(), positions_.end(), [](const Position& q) { return q.share_spread > kClosureSpreadFlag; }));
-  if (c.lubrication.scuffing_temperature > 0.0) {
-    const double t_s = c.lubrication.scuffing_temperature, t_oil = c.operating.oil_temperature;
+  if (lc.scuffing_temperature > 0.0) {
+    const double t_s = lc.scuffing_temperature, t_oil = operating_.oil_temperature;
     sum.iso_scuffing_safety = lub::iso_scuffing_safety(t_s, t_oil, sum.max_iso_contact_temperature);
     sum.scuffing_safety = lub::iso_scuffing_safety(t_s, t_oil, sum.max_contact_temperature);
   }
+  sum.points = named_points();
+  return sum;
+}
+
+void MeshLubrication::losses(LubricationSummary& sum) const {
+  const auto& p = path_;
+  const std::size_t n = p.s.size();
+  const gear::SpurPair& pair = mesh_.pair();
+  const gear::PathOfContact& path = pair.path();
+  // Time average over one mesh cycle of all pairs in contact: each pair sweeps A -> E at the
+  // base speed, so the mean is (1/p_b) int_A^E P ds.
+  sum.mesh_power_loss = path_mean(series(positions_, &Position::power_loss)) * path.length / path.base_pitch;
+  const double omega = mesh_.pinion_speed();
+  sum.input_power = operating_.pinion_torque * omega;
+  sum.efficiency = sum.input_power > 0.0 ? 1.0 - sum.mesh_power_loss / sum.input_power : 1.0;
+  const double base_load = pitch_.normal_load;  // F_bn/b [N/m]
+  const double base_speed = omega * pair.gear(0).base_radius;
+  std::vector<double> integrand;
+  for (std::size_t i = 0; i < n; ++i)
+    integrand.push_back(p.line_load[i] / base_load * std::abs(p.v1[i] - p.v2[i]) / base_speed);
+  sum.loss_factor_path = path_mean(integrand) * path.length / path.base_pitch;
+  const double z1 = pair.gear(0).teeth, u = double(pair.gear(1).teeth) / z1;
+  const double e1 = (path.e - path.c) / path.base_pitch, e2 = (path.c - path.a) / path.base_pitch;
+  sum.loss_factor_ohlendorf = std::numbers::pi * (u + 1.0) / (z1 * u) * (1.0 - path.contact_ratio + e1 * e1 + e2 * e2);
+  // The gear-mean friction the FZG power-loss test measures: P = mu_mz P_in H_V (Ohlendorf's
+  // definition), with the path's H_V.
+  sum.mesh_mean_friction = sum.loss_factor_path > 0.0 && sum.input_power > 0.0
+                               ? sum.mesh_power_loss / (sum.input_power * sum.loss_factor_path)
+                               : 0.0;
+}
+
+std::vector<LubricationSummary::NamedPoint> MeshLubrication::named_points() const {
   // The named points, each evaluated where it stands (B and D with the single pair's load).
-  for (const auto& [name, point] : p.named) {
+  std::vector<LubricationSummary::NamedPoint> out;
+  for (const auto& [name, point] : path_.named) {
     ShareGuesses guesses;
     guesses.fill(std::numeric_limits<double>::quiet_NaN());
     Position q;
@@ -448,146 +499,166 @@ void MeshLubrication::finish(MeshContactResult& r) {
     np.iso_flash = q.iso_flash;
     np.contact_temperature = q.contact_temperature;
     np.iso_contact_temperature = q.iso_contact_temperature;
-    sum.points.push_back(np);
+    out.push_back(np);
   }
-  r.lubrication_summary = sum;
+  return out;
+}
 
+double MeshLubrication::sigma_ratio() const { return model_.surface.surface_sigma / roughness_.rq; }
+
+bool MeshLubrication::surfaces_disagree() const {
   // The summit model's sigma against the flanks' Rq: a measured surface can disagree.
-  const double sigma_ratio = r.surface.surface_sigma / roughness_.rq;
-  const bool surfaces_disagree = roughness_.from_heights && (sigma_ratio > kRoughnessDisagreementFactor ||
-                                                             sigma_ratio < 1.0 / kRoughnessDisagreementFactor);
-  // What produced the numbers and where they rest on a choice: said in the verdict.
-  {
-    const double w = sum.bearing_area_weight;
-    const std::string why =
-        c.lubrication.asperity_pressure == lub::AsperityPressureModel::automatic
-            ? fmt::format(" (its plastic area fraction under the whole load at least {:.3g}; plasticity index {:.3g})",
-                          plastic_fraction_, plasticity_index_)
-            : fmt::format(" (lubrication.asperity_pressure = {})",
-                          lub::asperity_pressure_model_name(c.lubrication.asperity_pressure));
-    std::string pressure = w >= 1.0   ? "by their bearing area at the hardness, the flanks fully plastic" + why
-                           : w <= 0.0 ? fmt::format("by the {} model{}", r.asperity_model, why)
-                                      : fmt::format("by a blend, {:.2f} bearing area and {:.2f} {} model{}", w, 1.0 - w,
-                                                    r.asperity_model, why);
-    std::string text = fmt::format(
-        " Lubricated ({}): the film fills the {} between the rough flanks and the asperities press {}", sum.lubricant,
-        film_gap_ == lub::FilmGap::mean_gap     ? "mean gap"
-        : film_gap_ == lub::FilmGap::mean_plane ? "separation of the mean planes"
-                                                : "gap counted from the dry contact",
-        pressure);
-    if (sum.closure_dependent_positions > 0) {
-      const auto worst =
-          std::max_element(positions_.begin(), positions_.end(),
-                           [](const Position& a, const Position& b) { return a.share_spread < b.share_spread; });
-      text += fmt::format(
-          "; the asperity share depends on that choice at {} of {} positions (it moves by up to {:.3f} between the "
-          "mean gap, the mean plane and the dry-contact datum, at s = {:.3f} mm): there it is a model's estimate",
-          sum.closure_dependent_positions, n, worst->share_spread,
-          p.s[static_cast<std::size_t>(worst - positions_.begin())] * 1e3);
-    } else {
-      text += fmt::format("; the asperity share moves by at most {:.3f} between the film datums", sum.max_share_spread);
-    }
-    const auto& l = c.lubrication.lubricant;
-    text += traction_ == lub::FilmTraction::curve
-                ? fmt::format(". Friction: the film's traction from {}'s measured traction curves", l.name)
-                : fmt::format(". Friction: the film's {} traction (tau0 {:.3g} MPa, Lambda {:.3g}, from {})",
-                              traction_ == lub::FilmTraction::thermal_eyring ? "thermal Eyring" : "isothermal Eyring",
-                              l.eyring_stress * 1e-6, l.limiting_shear_coefficient,
-                              l.fixed() ? "the case's fixed oil" : "the lubricant file");
-    text += fmt::format(
-        " and the asperities' boundary coefficient {:g} (friction.mu); the model's gear-mean {:.4f} "
-        "against ISO/TS 6336-21/-22's {:.4f}.",
-        c.friction_coefficient, sum.mesh_mean_friction, iso_mu_);
-    if (sum.oil_clamped_positions > 0)
-      text += fmt::format(
-          " At {} of {} positions the surfaces pass {:.1f} degC, the hottest at which the oil's laws hold: its "
-          "traction and h_Y there are upper bounds (flag_oil_temperature_clamped).",
-          sum.oil_clamped_positions, n, oil_range_.hi - kC);
-    if (surfaces_disagree)
-      text += fmt::format(
-          " The asperity model's surface is not the measured one: its composite sigma is {:.3g} times the flanks' Rq "
-          "(lambda and the ISO formulas take the Rq; the sharing, the summit model).",
-          sigma_ratio);
-    r.verdict += text;
-  }
+  const double r = sigma_ratio();
+  return roughness_.from_heights && (r > kRoughnessDisagreementFactor || r < 1.0 / kRoughnessDisagreementFactor);
+}
 
-  // Where the lubricated models leave their ranges: said, not silent.
-  const auto& l = c.lubrication.lubricant;
-  if (!l.fixed()) {
-    if (bulk_temperature_ < l.min_temperature || bulk_temperature_ > l.max_temperature)
-      r.warnings.push_back(
-          fmt::format("bulk temperature {:.1f} degC{} lies outside {}'s data range [{:.0f}, {:.0f}] "
-                      "degC: the film's viscosity is extrapolated (Walther; flag_oil_extrapolated everywhere)",
-                      bulk_temperature_ - kC, bulk_estimated_ ? " (ISO estimate)" : "", l.name, l.min_temperature - kC,
-                      l.max_temperature - kC));
-    const double hottest = bulk_temperature_ + largest(positions_, &Position::blok_iso_flash);
-    const double hottest_surface = bulk_temperature_ + lub::kBlokMeanOverPeak * largest(positions_, &Position::flash);
-    if (sum.oil_clamped_positions > 0)
-      r.warnings.push_back(fmt::format(
-          "{} of {} positions (flag_oil_temperature_clamped) where the film's surfaces or ISO/TS 6336-22's contact "
-          "temperature (up to {:.1f} degC) pass {:.1f} degC, the hottest at which {}'s laws hold: the oil's viscosity "
-          "and alpha are taken at {:.1f} degC there, a thicker oil than it is: the film's traction and h_Y there are "
-          "upper bounds, not values",
-          sum.oil_clamped_positions, n, std::max(hottest, hottest_surface) - kC, oil_range_.hi - kC, l.name,
-          oil_range_.hi - kC));
-    if (hottest > l.max_temperature)
-      r.warnings.push_back(
-          fmt::format("ISO/TS 6336-22 h_Y evaluates the oil at contact temperatures up to {:.1f} degC, "
-                      "beyond {}'s data ({:.0f} degC): its sliding parameter S_GF is extrapolated "
-                      "(flag_oil_extrapolated)",
-                      hottest - kC, l.name, l.max_temperature - kC));
-    if (hottest_surface > l.max_temperature)
-      r.warnings.push_back(
-          fmt::format("the film's traction takes the oil at the surfaces' temperature, up to {:.1f} degC, beyond "
-                      "{}'s data ({:.0f} degC): its viscosity there is extrapolated (flag_oil_extrapolated)",
-                      hottest_surface - kC, l.name, l.max_temperature - kC));
+std::string MeshLubrication::verdict_text(const LubricationSummary& sum) const {
+  // What produced the numbers and where they rest on a choice: said in the verdict.
+  const std::size_t n = positions_.size();
+  const std::string asperity_model(model_.table.model().name());
+  const double w = sum.bearing_area_weight;
+  const std::string why =
+      lubrication_.asperity_pressure == lub::AsperityPressureModel::automatic
+          ? fmt::format(" (its plastic area fraction under the whole load at least {:.3g}; plasticity index {:.3g})",
+                        plastic_fraction_, plasticity_index_)
+          : fmt::format(" (lubrication.asperity_pressure = {})",
+                        lub::asperity_pressure_model_name(lubrication_.asperity_pressure));
+  std::string pressure = w >= 1.0   ? "by their bearing area at the hardness, the flanks fully plastic" + why
+                         : w <= 0.0 ? fmt::format("by the {} model{}", asperity_model, why)
+                                    : fmt::format("by a blend, {:.2f} bearing area and {:.2f} {} model{}", w, 1.0 - w,
+                                                  asperity_model, why);
+  std::string text = fmt::format(
+      " Lubricated ({}): the film fills the {} between the rough flanks and the asperities press {}", sum.lubricant,
+      film_gap_ == lub::FilmGap::mean_gap     ? "mean gap"
+      : film_gap_ == lub::FilmGap::mean_plane ? "separation of the mean planes"
+                                              : "gap counted from the dry contact",
+      pressure);
+  if (sum.closure_dependent_positions > 0) {
+    const auto worst = std::max_element(positions_.begin(), positions_.end(), [](const Position& a, const Position& b) {
+      return a.share_spread < b.share_spread;
+    });
+    text += fmt::format(
+        "; the asperity share depends on that choice at {} of {} positions (it moves by up to {:.3f} between the "
+        "mean gap, the mean plane and the dry-contact datum, at s = {:.3f} mm): there it is a model's estimate",
+        sum.closure_dependent_positions, n, worst->share_spread,
+        path_.s[static_cast<std::size_t>(worst - positions_.begin())] * 1e3);
+  } else {
+    text += fmt::format("; the asperity share moves by at most {:.3f} between the film datums", sum.max_share_spread);
   }
+  const auto& l = lubrication_.lubricant;
+  text += traction_ == lub::FilmTraction::curve
+              ? fmt::format(". Friction: the film's traction from {}'s measured traction curves", l.name)
+              : fmt::format(". Friction: the film's {} traction (tau0 {:.3g} MPa, Lambda {:.3g}, from {})",
+                            traction_ == lub::FilmTraction::thermal_eyring ? "thermal Eyring" : "isothermal Eyring",
+                            l.eyring_stress * 1e-6, l.limiting_shear_coefficient,
+                            l.fixed() ? "the case's fixed oil" : "the lubricant file");
+  text += fmt::format(
+      " and the asperities' boundary coefficient {:g} (friction.mu); the model's gear-mean {:.4f} "
+      "against ISO/TS 6336-21/-22's {:.4f}.",
+      model_.flanks.friction, sum.mesh_mean_friction, iso_mu_);
+  if (sum.oil_clamped_positions > 0)
+    text += fmt::format(
+        " At {} of {} positions the surfaces pass {:.1f} degC, the hottest at which the oil's laws hold: its "
+        "traction and h_Y there are upper bounds (flag_oil_temperature_clamped).",
+        sum.oil_clamped_positions, n, oil_range_.hi - kC);
+  if (surfaces_disagree())
+    text += fmt::format(
+        " The asperity model's surface is not the measured one: its composite sigma is {:.3g} times the flanks' Rq "
+        "(lambda and the ISO formulas take the Rq; the sharing, the summit model).",
+        sigma_ratio());
+  return text;
+}
+
+// Where the oil's laws are left behind: the bulk, the surfaces and ISO's contact temperature.
+void MeshLubrication::oil_warnings(const LubricationSummary& sum, std::vector<std::string>& out) const {
+  const auto& l = lubrication_.lubricant;
+  const std::size_t n = positions_.size();
+  if (l.fixed()) return;
+  if (bulk_temperature_ < l.min_temperature || bulk_temperature_ > l.max_temperature)
+    out.push_back(
+        fmt::format("bulk temperature {:.1f} degC{} lies outside {}'s data range [{:.0f}, {:.0f}] "
+                    "degC: the film's viscosity is extrapolated (Walther; flag_oil_extrapolated everywhere)",
+                    bulk_temperature_ - kC, bulk_estimated_ ? " (ISO estimate)" : "", l.name, l.min_temperature - kC,
+                    l.max_temperature - kC));
+  const double hottest = bulk_temperature_ + largest(positions_, &Position::blok_iso_flash);
+  const double hottest_surface = bulk_temperature_ + lub::kBlokMeanOverPeak * largest(positions_, &Position::flash);
+  if (sum.oil_clamped_positions > 0)
+    out.push_back(fmt::format(
+        "{} of {} positions (flag_oil_temperature_clamped) where the film's surfaces or ISO/TS 6336-22's contact "
+        "temperature (up to {:.1f} degC) pass {:.1f} degC, the hottest at which {}'s laws hold: the oil's viscosity "
+        "and alpha are taken at {:.1f} degC there, a thicker oil than it is: the film's traction and h_Y there are "
+        "upper bounds, not values",
+        sum.oil_clamped_positions, n, std::max(hottest, hottest_surface) - kC, oil_range_.hi - kC, l.name,
+        oil_range_.hi - kC));
+  if (hottest > l.max_temperature)
+    out.push_back(
+        fmt::format("ISO/TS 6336-22 h_Y evaluates the oil at contact temperatures up to {:.1f} degC, "
+                    "beyond {}'s data ({:.0f} degC): its sliding parameter S_GF is extrapolated "
+                    "(flag_oil_extrapolated)",
+                    hottest - kC, l.name, l.max_temperature - kC));
+  if (hottest_surface > l.max_temperature)
+    out.push_back(
+        fmt::format("the film's traction takes the oil at the surfaces' temperature, up to {:.1f} degC, beyond "
+                    "{}'s data ({:.0f} degC): its viscosity there is extrapolated (flag_oil_extrapolated)",
+                    hottest_surface - kC, l.name, l.max_temperature - kC));
+}
+
+// The traction curves used beyond where they were measured.
+void MeshLubrication::curve_warnings(std::vector<std::string>& out) const {
+  if (traction_ != lub::FilmTraction::curve) return;
+  if (largest(positions_, &Position::curve_outside) > 0.0)
+    out.push_back(fmt::format(
+        "{} of {} positions beyond the traction curves' measured SRR, pressure or "
+        "temperature (flag_traction_curve_extrapolated): the nearest values are used",
+        std::count_if(positions_.begin(), positions_.end(), [](const Position& q) { return q.curve_outside > 0.0; }),
+        positions_.size()));
+  for (const auto& curve : lubrication_.lubricant.traction.curves()) {
+    const double u = 0.5 * pitch_.sum_speed;
+    if (u > 2.0 * curve.entrainment_speed || u < 0.5 * curve.entrainment_speed) {
+      out.push_back(
+          fmt::format("traction curve '{}' was measured at {:.3g} m/s entrainment speed; the "
+                      "pitch point runs at {:.3g} m/s (the curves are used as measured)",
+                      curve.name, curve.entrainment_speed, u));
+      break;
+    }
+  }
+}
+
+std::vector<std::string> MeshLubrication::warnings(const LubricationSummary& sum) const {
+  // Where the lubricated models leave their ranges: said, not silent.
+  std::vector<std::string> out;
+  const std::size_t n = positions_.size();
+  oil_warnings(sum, out);
   const auto low = std::count_if(positions_.begin(), positions_.end(), [](const Position& q) { return q.low_peclet; });
   if (low > 0)
-    r.warnings.push_back(
+    out.push_back(
         fmt::format("{} of {} positions with a Peclet number below {:g} (flag_low_peclet): Blok's "
                     "flash temperature assumes fast-moving surfaces and overestimates there",
                     low, n, lub::kMinBlokPeclet));
   for (const auto& [law, f] : mean_laws_)
     if (f.below_speed_range) {
-      r.warnings.push_back(fmt::format(
+      out.push_back(fmt::format(
           "the ISO and gear-mean friction formulas are fitted above 1 m/s pitch-line speed; here {:.3g} m/s: their "
           "mean coefficients ({} {:.4f}) are extrapolations (the standards expect more friction at such speeds)",
           pitch_.pitch_line_speed, lub::mean_friction_law_name(law), f.coefficient));
       break;
     }
   if (!roughness_.from_heights)
-    r.warnings.push_back(
+    out.emplace_back(
         "the flanks are given by summit statistics alone: lambda and the ISO formulas take the summit model's "
         "composite sigma, not a measured Rq and Ra");
-  else if (surfaces_disagree)
-    r.warnings.push_back(fmt::format(
+  else if (surfaces_disagree())
+    out.push_back(fmt::format(
         "the summit model's composite sigma {:.4g} um differs from the flanks' Rq {:.4g} um ({}) by a factor {:.3g}: "
         "the Greenwood-Williamson parameters describe another surface than the one measured; lambda and the ISO "
         "formulas take the flanks' Rq and Ra, the asperity contact and the sharing the summit model",
-        r.surface.surface_sigma * 1e6, roughness_.rq * 1e6, roughness_.source, sigma_ratio));
+        model_.surface.surface_sigma * 1e6, roughness_.rq * 1e6, roughness_.source, sigma_ratio()));
   if (largest(positions_, &Position::bearing_saturated) > 0.0)
-    r.warnings.push_back(
+    out.emplace_back(
         "the Hertz pressure reaches the hardness at some positions (flag_bearing_area_saturated): the bearing-area "
         "model has flattened the flanks completely there");
-  if (traction_ == lub::FilmTraction::curve) {
-    if (largest(positions_, &Position::curve_outside) > 0.0)
-      r.warnings.push_back(fmt::format(
-          "{} of {} positions beyond the traction curves' measured SRR, pressure or "
-          "temperature (flag_traction_curve_extrapolated): the nearest values are used",
-          std::count_if(positions_.begin(), positions_.end(), [](const Position& q) { return q.curve_outside > 0.0; }),
-          n));
-    for (const auto& curve : l.traction.curves()) {
-      const double u = 0.5 * pitch_.sum_speed;
-      if (u > 2.0 * curve.entrainment_speed || u < 0.5 * curve.entrainment_speed) {
-        r.warnings.push_back(
-            fmt::format("traction curve '{}' was measured at {:.3g} m/s entrainment speed; the "
-                        "pitch point runs at {:.3g} m/s (the curves are used as measured)",
-                        curve.name, curve.entrainment_speed, u));
-        break;
-      }
-    }
-  }
+  curve_warnings(out);
+  return out;
 }
 
 }  // namespace geartrib::contact

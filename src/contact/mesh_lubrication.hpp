@@ -3,18 +3,19 @@
 // the asperities pressing by the run's Greenwood-Williamson table or, where the flanks are fully
 // plastic, by their bearing area), friction (thermal Eyring traction of the film), flash and
 // contact temperature, Archard wear, power loss and the ISO/TS 6336-20/-22 rating quantities
-// beside them. Used by run_mesh_contact.
+// beside them: the mesh cycle's lubrication stage.
 #pragma once
 
-#include "case/case.hpp"
 #include "contact/asperity_pressure.hpp"
-#include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
+#include "contact/mesh_path.hpp"
+#include "contact/surface_model.hpp"
 #include "gear/gear_mesh.hpp"
 #include "lubrication/ehl_film.hpp"
 #include "lubrication/film_closure.hpp"
 #include "lubrication/flank_temperature.hpp"
 #include "lubrication/lubricant.hpp"
+#include "lubrication/lubrication_settings.hpp"
 #include "lubrication/mixed_lubrication.hpp"
 
 #include <array>
@@ -25,23 +26,6 @@
 
 namespace geartrib::contact {
 
-// One position's loading and kinematics.
-struct PathPoint {
-  double s = 0.0, line_load = 0.0, half_width = 0.0, hertz_p0 = 0.0, radius = 0.0, v1 = 0.0, v2 = 0.0;
-  double load_sharing_factor = 0.0;  // the pair's share of the normal load (ISO X_Gamma for ISO sharing)
-};
-
-// The path's loading and kinematics, one value per position (the run's /mesh series), and
-// ISO/TS 6336-22's named points A, AB, B, C, D, DE, E computed at their exact places (B and D on
-// the single-pair side of the load's jump).
-struct PathState {
-  std::vector<double> s, line_load, half_width, hertz_p0, radius, v1, v2, share;
-  std::vector<std::pair<std::string, PathPoint>> named;
-  PathPoint point(std::size_t i) const {
-    return {s[i], line_load[i], half_width[i], hertz_p0[i], radius[i], v1[i], v2[i], share[i]};
-  }
-};
-
 // A flank pair's height roughness as lambda and the ISO formulas use it.
 struct CompositeRoughness {
   double rq = 0.0;           // sqrt(Rq1^2 + Rq2^2) [m]
@@ -49,17 +33,28 @@ struct CompositeRoughness {
   bool from_heights = true;  // false: the summit model's sigma (flanks given by summit statistics only)
   std::string source;        // of each flank's values ("measured surface", "given Ra", ...)
 };
-CompositeRoughness composite_roughness(const Case& c, const surface::EquivalentSurface& s);
+CompositeRoughness composite_roughness(const std::array<surface::FlankRoughness, 2>& flanks,
+                                       const surface::EquivalentSurface& s);
 
+// What the lubricated cycle takes beyond the path and the flanks' statistical model.
+struct LubricationInputs {
+  const lubrication::LubricationSettings& lubrication;  // the oil and the models along the path
+  LubricatedOperatingPoint operating;
+};
+
+struct LubricationResult;
+
+// The lubricated stage over the typed path: the film and the load shares (constructed before the
+// contact), then friction, temperatures, wear and losses (finish(), after it).
 class MeshLubrication {
  public:
-  // Film, regime and load shares at every position (before the strips are solved).
-  MeshLubrication(const Case& c, const gear::GearMesh& mesh, const PathState& path, const GreenwoodWilliamson& gw);
-  // The asperities' share of the load at position i, for the strip contact.
-  double asperity_share(std::size_t i) const { return positions_[i].asperity_share; }
-  // Friction, temperatures, wear and losses; fills r.lubrication and r.lubrication_summary and adds
-  // the lubricated models' findings to r.verdict and r.warnings.
-  void finish(MeshContactResult& r);
+  // Film, regime and load shares at every position, the film sharing the load with `model`'s asperities.
+  MeshLubrication(const LubricationInputs& in, const gear::GearMesh& mesh, const PathState& path,
+                  const SurfaceModel& model);
+  // The asperities' share of the load at every position, for the contact.
+  std::vector<double> asperity_shares() const;
+  // Friction, temperatures, wear and losses, the summary, the verdict's text and the warnings.
+  LubricationResult finish();
 
   // One position's lubricated state (SI); film() fills the film and the shares, rest() the rest.
   // Each field is one /lubrication series.
@@ -82,16 +77,37 @@ class MeshLubrication {
  private:
   // ln(film share) of the last solution per film gap (lubrication::FilmGap), the next one's start.
   using ShareGuesses = std::array<double, 3>;
+  // The mixed friction at a position and what the film's traction found on the way.
+  struct FilmFriction {
+    double friction = 0.0, film_coefficient = 0.0, rise = 0.0;
+    bool curve_outside = false, surface_extrapolated = false, surface_clamped = false;
+  };
+  void pitch_and_iso();      // the pitch point, the gear-mean laws, ISO/TS 6336-20's factors
+  void bulk_temperature();   // given, or ISO/TS 6336-20's estimate; the oil there
+  void asperity_pressure();  // the asperities' pressure against the separation
   void film(const PathPoint& p, ShareGuesses& guesses, Position& q) const;
   void rest(const PathPoint& p, Position& q) const;
+  FilmFriction film_friction(const PathPoint& p, const Position& q) const;
+  double blok(const PathPoint& p, double mu) const;  // Blok's flash temperature at friction mu [K]
   double iso_flash(const PathPoint& p) const;
   // The oil at a temperature a position reaches: beyond the lubricant's data range `extrapolated`
   // set; beyond its law range taken at the range's end and `clamped` set. The fixed form's
   // constants hold at any temperature.
   lubrication::OilState oil_at(double temperature, bool& extrapolated, bool& clamped) const;
   void iso_temperatures(const PathPoint& p, Position& q) const;  // the ISO method's and Blok's with mu_mC
+  LubricationSummary summary() const;
+  void losses(LubricationSummary& sum) const;  // power loss, efficiency, loss factors, the gear-mean friction
+  std::vector<LubricationSummary::NamedPoint> named_points() const;
+  double sigma_ratio() const;  // the summit model's composite sigma over the flanks' Rq
+  bool surfaces_disagree() const;
+  std::string verdict_text(const LubricationSummary& sum) const;
+  std::vector<std::string> warnings(const LubricationSummary& sum) const;
+  void oil_warnings(const LubricationSummary& sum, std::vector<std::string>& out) const;
+  void curve_warnings(std::vector<std::string>& out) const;
 
-  const Case& case_;
+  const lubrication::LubricationSettings& lubrication_;
+  const LubricatedOperatingPoint operating_;
+  const SurfaceModel& model_;
   const gear::GearMesh& mesh_;
   const PathState& path_;
   lubrication::FilmFormula formula_;
@@ -106,6 +122,7 @@ class MeshLubrication {
   std::vector<std::pair<lubrication::MeanFrictionLaw, lubrication::MeanFriction>> mean_laws_;
   double iso_mu_ = 0.0;        // ISO/TS 6336-22 mu_mC (h_Y's contact temperature)
   double iso_flash_mu_ = 0.0;  // ISO/TS 6336-20 mu_m (its flash-temperature method)
+  double bulk_law_mu_ = 0.0;   // the bulk estimate's law's
   double iso_x_m_ = 0.0, iso_effective_relief_ = 0.0;
   lubrication::IsoFlashGeometry iso_geometry_;
   lubrication::TemperatureRange oil_range_;  // where the lubricant's laws hold
@@ -118,6 +135,17 @@ class MeshLubrication {
   std::optional<AsperityPressure> asperity_;
   std::vector<Position> positions_;
 };
+
+// The lubricated stage's typed results.
+struct LubricationResult {
+  std::vector<MeshLubrication::Position> positions;
+  LubricationSummary summary;
+  std::string verdict;                // what the run's verdict gains
+  std::vector<std::string> warnings;  // in order
+  bool bearing_saturated_column = false, traction_curve_column = false;
+};
+// Its /lubrication series.
+void add_lubrication_series(const LubricationResult& l, std::vector<Series>& group);
 
 // Roughness: the summit model's composite sigma against the heights' differs by more than this
 // factor: the GW parameters describe another surface than the one lambda is measured on.

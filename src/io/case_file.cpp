@@ -3,6 +3,7 @@
 #include "asperity/critical.hpp"
 #include "asperity/model.hpp"
 #include "case/asperity_setup.hpp"
+#include "contact/fidelity_registry.hpp"
 #include "core/keyed_error.hpp"
 #include "gear/spur_pair.hpp"
 #include "io/fzg_load_stages.hpp"
@@ -20,6 +21,11 @@
 namespace geartrib::io {
 
 namespace {
+
+// The case's fidelity rolls the flanks' profiles (the deterministic one): it reads their lines.
+bool rolls_flank_profiles(const Case& c) {
+  return contact::find_fidelity(c.contact.fidelity).traits.needs.flank_profiles;
+}
 
 void require(TomlReader& r, std::string_view key, bool ok, const std::string& rule) {
   if (!ok) r.fail(key, rule);
@@ -378,7 +384,7 @@ void read_flank(TomlReader& r, Case& c, int gear) {
     const bool trace = grid.nx < 3 || grid.ny < 3;
     // The line along the involute: what the deterministic fidelity rolls, and a profile trace's
     // roughness. A statistical run of an areal surface takes its summits only, not this line.
-    if (trace || c.contact.deterministic()) {
+    if (trace || rolls_flank_profiles(c)) {
       try {
         g.flank.measured_profile = surface::profile_from_grid(grid, spec.profile_along_x, spec.profile_at);
       } catch (const std::invalid_argument& e) {
@@ -435,7 +441,7 @@ void read_flank(TomlReader& r, Case& c, int gear) {
       spec.validate();
       rough.form = Form::spectral;
       if (spec.kind == surface::ProfileKind::smooth) {
-        if (!c.contact.deterministic())
+        if (!rolls_flank_profiles(c))
           throw std::invalid_argument(
               "a smooth profile has no roughness for the statistical model: only contact.fidelity = "
               "\"deterministic\" takes it");
@@ -483,7 +489,7 @@ void warn_shared_synthesis_seeds(const TomlReader& r, Case& c) {
   const auto& t1 = c.pinion.flank.topography;
   const auto& t2 = c.wheel.flank.topography;
   using surface::SynthesisMethod;
-  if (!c.contact.deterministic() || !t1 || !t2 || t1->synthesis == SynthesisMethod::none ||
+  if (!rolls_flank_profiles(c) || !t1 || !t2 || t1->synthesis == SynthesisMethod::none ||
       t2->synthesis == SynthesisMethod::none)
     return;
   const bool hunting = c.running_in.teeth == "hunting" && c.running_in.meshes > 0;

@@ -2,6 +2,7 @@
 
 #include "asperity/model.hpp"
 #include "contact/deterministic_contact.hpp"
+#include "contact/fidelity_registry.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "io/fzg_load_stages.hpp"
@@ -670,23 +671,11 @@ std::vector<Parameter> build_table() {
 
   // [contact]: the mesh cycle's fidelity, outputs and resolutions.
   add(mapped_choice(
-          "contact.fidelity", {"uncoupled", "coupled", "deterministic"},
-          [](auto& c, int) -> auto& { return c.contact.fidelity; },
-          [](const std::string& t) {
-            return t == "coupled"         ? ContactFidelity::coupled
-                   : t == "deterministic" ? ContactFidelity::deterministic
-                                          : ContactFidelity::uncoupled;
-          },
-          [](ContactFidelity f) {
-            return std::string(f == ContactFidelity::coupled         ? "coupled"
-                               : f == ContactFidelity::deterministic ? "deterministic"
-                                                                     : "uncoupled");
-          }))
+          "contact.fidelity", contact::fidelity_names(), [](auto& c, int) -> auto& { return c.contact.fidelity; },
+          [](const std::string& t) { return contact::find_fidelity(t).id(); },
+          [](ContactFidelity f) { return std::string(f.name()); }))
       .alias({"fidelity"})
-      .doc(
-          "uncoupled: Hertz pressure imposed on the rough surface; coupled: Greenwood-Tripp, bulk and asperities "
-          "solved together; deterministic: the flanks' profiles in contact through boundary elements, sliding past "
-          "each other along the path");
+      .doc(contact::fidelity_descriptions());
   {
     Parameter outputs;
     outputs.key = "contact.outputs";

@@ -1,5 +1,6 @@
 #include "io/hdf5_results.hpp"
 
+#include "contact/fidelity_registry.hpp"
 #include "contact/run_summary.hpp"
 #include "io/hdf5_handles.hpp"
 #include "io/table_writer.hpp"
@@ -58,8 +59,7 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
   if (!r.statistical.empty()) {
     Handle group(H5Gcreate2(file, "/statistical", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                  "group /statistical");
-    string_attribute(group, "meaning",
-                     "the statistical model (uncoupled) on the same flanks: their spectral moments from the profiles");
+    string_attribute(group, "meaning", std::string(contact::group_description(r.fidelity, "/statistical")));
     for (const auto& s : r.statistical) hdf5::number_dataset(group, s.name, s.values, s.unit);
   }
   if (r.running_in) {

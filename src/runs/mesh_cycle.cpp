@@ -1,9 +1,11 @@
 #include "runs/mesh_cycle.hpp"
 
+#include "case/asperity_setup.hpp"
 #include "case/gear_setup.hpp"
+#include "contact/deterministic/mesh_deterministic.hpp"
+#include "contact/fidelity_registry.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
-#include "contact/mesh_deterministic.hpp"
 #include "contact/run_summary.hpp"
 #include "core/keyed_error.hpp"
 #include "gear/gear_mesh.hpp"
@@ -198,6 +200,179 @@ double profile_spacing(const surface::FlankSpec& flank) {
   return 0.0;
 }
 
+// Running-in carries each flank point's deformation from position to position: every point must
+// pass through the strip at two positions or more (a step of at most the strip's half-length).
+void check_running_in_step(const Case& c, const contact::FlankSpan& span, PathHalfWidths& half_widths) {
+  const double step = std::max(span.max_step[0], span.max_step[1]);
+  if (!span.running_in || step <= span.strip_half_length) return;
+  const auto [file, line] = location_of(c, "contact.positions");
+  const long most = static_cast<long>(io::find_parameter("contact.positions").parameter->max);
+  const long needed = running_in_positions(c, span, half_widths, most);
+  throw io::InputError(
+      file, line, "contact.positions", std::to_string(span.positions),
+      fmt::format("running-in needs every flank point in the strip at two positions or more: the "
+                  "contact point moves up to {} along a flank between positions, more than the "
+                  "strip's half-length {}; {}",
+                  mm(step), mm(span.strip_half_length),
+                  needed <= most ? fmt::format("use {} positions (checked at the Hertz "
+                                               "half-widths they sample: the strip follows the "
+                                               "largest, so another number may fall short)",
+                                               needed)
+                                 : fmt::format("no number of positions within the key's range (up to {}) "
+                                               "does: run without running-in (running_in.meshes = "
+                                               "0)",
+                                               most)));
+}
+
+// One gear's flank as the deterministic run reads it: the stretch it needs and why.
+struct FlankRead {
+  const Case& c;
+  const contact::FlankSpan& span;
+  int g = 0;
+  int teeth = 1;
+  std::string gear;
+  const surface::FlankSpec& flank;
+  double needed = 0.0;
+  std::string why_needed;
+};
+
+// The elements average the profile: finer elements than its spacing resolve only the
+// interpolation between its points.
+void check_spacing(const FlankRead& f, double spacing, const std::string& where) {
+  if (f.span.element_size >= spacing * (1.0 - 1e-9)) return;
+  const auto [file, line] = location_of(f.c, "contact.element_size");
+  throw io::InputError(file, line, "contact.element_size", um(f.span.element_size),
+                       fmt::format("finer than the {} spacing of {} ({}): the elements would resolve the "
+                                   "interpolation between its points; use elements of at least {}",
+                                   um(spacing), where, f.gear, um(spacing)));
+}
+
+// The generated stretch (a module below the base circle to a module beyond the tip) must hold the
+// strip's reach.
+void check_generated_stretch(const FlankRead& f, const std::string& what) {
+  const contact::FlankSpan& span = f.span;
+  if (span.first[f.g] >= span.generated_first[f.g] && span.last[f.g] <= span.generated_last[f.g]) return;
+  const auto [where, line] = location_of(f.c, "contact.strip_halfwidths");
+  throw io::InputError(where, line, "contact.strip_halfwidths", fmt::format("{:g}", f.c.contact.strip_halfwidths),
+                       fmt::format("the strip reaches {} beyond the {}'s active flank, past the {}'s end a "
+                                   "module beyond its tip: narrow the strip",
+                                   mm(span.strip_half_length), f.gear, what));
+}
+
+// What a synthesis came from, before its teeth are made.
+contact::FlankSynthesis synthesis_record(const FlankRead& f) {
+  const surface::TopographySpec& topo = *f.flank.topography;
+  const surface::ProfileSpectrum& patch = *f.flank.patch_spectrum;
+  contact::FlankSynthesis record;
+  record.gear = f.gear, record.patch = topo.file, record.method = surface::synthesis_method_name(topo.synthesis);
+  record.seed = static_cast<double>(topo.synthesis_seed), record.teeth = f.teeth;
+  record.patch_lines = static_cast<double>(patch.lines), record.patch_points = static_cast<double>(patch.points);
+  record.patch_spacing = patch.spacing, record.patch_rq = patch.rq();
+  record.rolled_off_fraction = patch.rolled_off_fraction();
+  return record;
+}
+
+// A flank-long profile synthesised from the patch's spectrum: over the generated stretch, or the
+// given length centred on the active part.
+void synthesised_tracks(const FlankRead& f, std::vector<contact::FlankTrack>& tracks,
+                        std::vector<contact::FlankSynthesis>& synthesis) {
+  const contact::FlankSpan& span = f.span;
+  const int g = f.g;
+  const surface::TopographySpec& topo = *f.flank.topography;
+  if (!f.flank.patch_spectrum) throw std::logic_error(f.gear + ": a synthesis asked for without the patch's spectrum");
+  const std::string t = f.gear + ".flank.topography.";
+  check_spacing(f, profile_spacing(f.flank), "the profile synthesised from " + topo.file);
+  const bool given = topo.synthesis_length > 0.0;
+  const double length = given ? topo.synthesis_length : span.generated_last[g] - span.generated_first[g];
+  if (!given) check_generated_stretch(f, "synthesised profile");
+  contact::FlankSynthesis record = synthesis_record(f);
+  for (int tooth = 0; tooth < f.teeth; ++tooth) {
+    surface::SynthesisOptions options;
+    options.method = topo.synthesis;
+    options.seed = topo.synthesis_seed + static_cast<std::uint64_t>(tooth);
+    surface::SynthesisedProfile s;
+    try {
+      s = surface::synthesise_profile(*f.flank.patch_spectrum, options, length);
+    } catch (const std::invalid_argument& e) {
+      refuse_at(f.c, t + (given ? "synthesis_length" : "synthesis"), e.what());
+    }
+    const double start = given ? span.centred_start(g, s.profile.length()) : span.generated_first[g];
+    if (given && (start > span.first[g] || start + s.profile.length() < span.last[g])) {
+      const auto [where, line] = location_of(f.c, t + "synthesis_length");
+      throw io::InputError(where, line, t + "synthesis_length", mm(topo.synthesis_length),
+                           fmt::format("the synthesised profile, centred on the {}'s active flank, must cover the "
+                                       "{} the deterministic contact reads ({}); give at least that, or 0 (a "
+                                       "module below the base circle to a module beyond the tip)",
+                                       f.gear, mm(f.needed), f.why_needed));
+    }
+    if (tooth == 0) {
+      record.profile_length = s.profile.length();
+      record.profile_rq = surface::profile_statistics(s.profile.z, s.profile.spacing).rq;
+    }
+    record.iterations = std::max(record.iterations, s.iterations);
+    record.spectrum_misfit = std::max(record.spectrum_misfit, s.spectrum_misfit);
+    if (std::abs(s.curvature_ratio - 1.0) > std::abs(record.curvature_ratio - 1.0))
+      record.curvature_ratio = s.curvature_ratio;
+    record.converged = record.converged && s.converged;
+    tracks.push_back({std::move(s.profile), start});
+  }
+  synthesis.push_back(std::move(record));
+}
+
+// The topography's line along the involute, centred on the active part (a knob that widens the
+// strip does not move it); every tooth's.
+void measured_tracks(const FlankRead& f, std::vector<contact::FlankTrack>& tracks) {
+  const contact::FlankSpan& span = f.span;
+  const int g = f.g;
+  const surface::FlankProfile& p = *f.flank.measured_profile;
+  const std::string key = f.gear + ".flank.topography.file";
+  const std::string file = f.flank.topography ? f.flank.topography->file : std::string();
+  const char* axis = f.flank.topography && !f.flank.topography->profile_along_x ? "y" : "x";
+  check_spacing(f, profile_spacing(f.flank), "the profile of " + file);
+  if (p.length() < f.needed) {
+    const auto [where, line] = location_of(f.c, key);
+    throw io::InputError(where, line, key, file,
+                         fmt::format("its profile along {} is {} long; the deterministic contact reads {} of it "
+                                     "({}): give a trace of the whole flank (profile_axis, resample), "
+                                     "synthesise one from its spectrum (synthesis = \"psd\" or \"iaaft\" in "
+                                     "[{}.flank.topography]) or give a generated [{}.flank.profile]",
+                                     axis, mm(p.length()), mm(f.needed), f.why_needed, f.gear, f.gear));
+  }
+  const double start = span.centred_start(g, p.length());
+  if (start > span.first[g] || start + p.length() < span.last[g]) {
+    const auto [where, line] = location_of(f.c, key);
+    throw io::InputError(
+        where, line, key, file,
+        fmt::format("its profile along {} ({} long), centred on the {}'s active flank, does not "
+                    "reach {} beyond it either side ({})",
+                    axis, mm(p.length()), f.gear, mm(0.5 * (f.needed - (span.active_last[g] - span.active_first[g]))),
+                    f.why_needed));
+  }
+  for (int t = 0; t < f.teeth; ++t) tracks.push_back({p, start});
+}
+
+// Generated over a fixed stretch of the involute (a module either side of base circle to tip):
+// the same flank whatever the strip, elements or load; tooth t with seed + t.
+void generated_tracks(const FlankRead& f, std::vector<contact::FlankTrack>& tracks) {
+  const contact::FlankSpan& span = f.span;
+  const int g = f.g;
+  check_spacing(f, profile_spacing(f.flank), f.gear + ".flank.profile.spacing");
+  check_generated_stretch(f, "generated profile");
+  for (int t = 0; t < f.teeth; ++t) {
+    surface::GeneratedProfileSpec spec = *f.flank.profile;
+    spec.seed += static_cast<std::uint64_t>(t);
+    try {
+      tracks.push_back(
+          {surface::generate_profile(spec, span.generated_last[g] - span.generated_first[g]), span.generated_first[g]});
+    } catch (const core::KeyedError& e) {
+      refuse_at(f.c, f.gear + ".flank.profile." + e.key(), e.what());
+    } catch (const std::invalid_argument& e) {
+      const auto [where, line] = location_of(f.c, f.gear + ".flank.profile.kind");
+      throw io::InputError(where, line, f.gear + ".flank.profile", "", e.what());
+    }
+  }
+}
+
 // The deterministic fidelity's flanks: each gear's measured profile (its topography's line along
 // the involute), one synthesised from the topography's spectrum, or a generated one, checked against
 // the stretch of flank the run reads and the element size. Hunting order: a generated or synthesised
@@ -206,151 +381,28 @@ double profile_spacing(const surface::FlankSpec& flank) {
 contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& span, const int teeth[2],
                                       std::vector<contact::FlankSynthesis>& synthesis, PathHalfWidths& half_widths) {
   contact::RollingFlanks out;
-  // Running-in carries each flank point's deformation from position to position: every point must
-  // pass through the strip at two positions or more (a step of at most the strip's half-length).
-  const double step = std::max(span.max_step[0], span.max_step[1]);
-  if (span.running_in && step > span.strip_half_length) {
-    const auto [file, line] = location_of(c, "contact.positions");
-    const long most = static_cast<long>(io::find_parameter("contact.positions").parameter->max);
-    const long needed = running_in_positions(c, span, half_widths, most);
-    throw io::InputError(
-        file, line, "contact.positions", std::to_string(span.positions),
-        fmt::format("running-in needs every flank point in the strip at two positions or more: the "
-                    "contact point moves up to {} along a flank between positions, more than the "
-                    "strip's half-length {}; {}",
-                    mm(step), mm(span.strip_half_length),
-                    needed <= most ? fmt::format("use {} positions (checked at the Hertz "
-                                                 "half-widths they sample: the strip follows the "
-                                                 "largest, so another number may fall short)",
-                                                 needed)
-                                   : fmt::format("no number of positions within the key's range (up to {}) "
-                                                 "does: run without running-in (running_in.meshes = "
-                                                 "0)",
-                                                 most)));
-  }
+  check_running_in_step(c, span, half_widths);
   for (int g = 0; g < 2; ++g) {
     const std::string gear = g == 0 ? "pinion" : "wheel";
-    const surface::FlankSpec& flank = (g == 0 ? c.pinion : c.wheel).flank;
+    const FlankRead f{c,
+                      span,
+                      g,
+                      teeth[g],
+                      gear,
+                      (g == 0 ? c.pinion : c.wheel).flank,
+                      span.length(g),
+                      fmt::format("the contact point rolls {} along the {}'s active flank and the strip reaches {} "
+                                  "either side",
+                                  mm(span.active_last[g] - span.active_first[g]), gear,
+                                  mm(span.strip_half_length + 2.0 * span.element_size))};
     auto& tracks = g == 0 ? out.pinion : out.wheel;
-    const double needed = span.length(g);
-    const std::string why_needed = fmt::format(
-        "the contact point rolls {} along the {}'s active flank and the strip reaches {} either side",
-        mm(span.active_last[g] - span.active_first[g]), gear, mm(span.strip_half_length + 2.0 * span.element_size));
-    // The elements average the profile: finer elements than its spacing resolve only the
-    // interpolation between its points.
-    auto check_spacing = [&](double spacing, const std::string& where) {
-      if (span.element_size < spacing * (1.0 - 1e-9)) {
-        const auto [file, line] = location_of(c, "contact.element_size");
-        throw io::InputError(file, line, "contact.element_size", um(span.element_size),
-                             fmt::format("finer than the {} spacing of {} ({}): the elements would resolve the "
-                                         "interpolation between its points; use elements of at least {}",
-                                         um(spacing), where, gear, um(spacing)));
-      }
-    };
-    // The generated stretch (a module below the base circle to a module beyond the tip) must hold the
-    // strip's reach.
-    auto check_generated_stretch = [&](const std::string& what) {
-      if (span.first[g] < span.generated_first[g] || span.last[g] > span.generated_last[g]) {
-        const auto [where, line] = location_of(c, "contact.strip_halfwidths");
-        throw io::InputError(where, line, "contact.strip_halfwidths", fmt::format("{:g}", c.contact.strip_halfwidths),
-                             fmt::format("the strip reaches {} beyond the {}'s active flank, past the {}'s end a "
-                                         "module beyond its tip: narrow the strip",
-                                         mm(span.strip_half_length), gear, what));
-      }
-    };
-    const surface::TopographySpec* topo = flank.topography ? &*flank.topography : nullptr;
+    const surface::TopographySpec* topo = f.flank.topography ? &*f.flank.topography : nullptr;
     if (topo && topo->synthesis != surface::SynthesisMethod::none) {
-      // A flank-long profile synthesised from the patch's spectrum: over the generated stretch, or
-      // the given length centred on the active part.
-      if (!flank.patch_spectrum) throw std::logic_error(gear + ": a synthesis asked for without the patch's spectrum");
-      const surface::ProfileSpectrum& patch = *flank.patch_spectrum;
-      const std::string t = gear + ".flank.topography.";
-      check_spacing(profile_spacing(flank), "the profile synthesised from " + topo->file);
-      const bool given = topo->synthesis_length > 0.0;
-      const double length = given ? topo->synthesis_length : span.generated_last[g] - span.generated_first[g];
-      if (!given) check_generated_stretch("synthesised profile");
-      contact::FlankSynthesis record;
-      record.gear = gear, record.patch = topo->file, record.method = surface::synthesis_method_name(topo->synthesis);
-      record.seed = static_cast<double>(topo->synthesis_seed), record.teeth = teeth[g];
-      record.patch_lines = static_cast<double>(patch.lines), record.patch_points = static_cast<double>(patch.points);
-      record.patch_spacing = patch.spacing, record.patch_rq = patch.rq();
-      record.rolled_off_fraction = patch.rolled_off_fraction();
-      for (int tooth = 0; tooth < teeth[g]; ++tooth) {
-        surface::SynthesisOptions options;
-        options.method = topo->synthesis;
-        options.seed = topo->synthesis_seed + static_cast<std::uint64_t>(tooth);
-        surface::SynthesisedProfile s;
-        try {
-          s = surface::synthesise_profile(patch, options, length);
-        } catch (const std::invalid_argument& e) {
-          refuse_at(c, t + (given ? "synthesis_length" : "synthesis"), e.what());
-        }
-        const double start = given ? span.centred_start(g, s.profile.length()) : span.generated_first[g];
-        if (given && (start > span.first[g] || start + s.profile.length() < span.last[g])) {
-          const auto [where, line] = location_of(c, t + "synthesis_length");
-          throw io::InputError(where, line, t + "synthesis_length", mm(topo->synthesis_length),
-                               fmt::format("the synthesised profile, centred on the {}'s active flank, must cover the "
-                                           "{} the deterministic contact reads ({}); give at least that, or 0 (a "
-                                           "module below the base circle to a module beyond the tip)",
-                                           gear, mm(needed), why_needed));
-        }
-        if (tooth == 0) {
-          record.profile_length = s.profile.length();
-          record.profile_rq = surface::profile_statistics(s.profile.z, s.profile.spacing).rq;
-        }
-        record.iterations = std::max(record.iterations, s.iterations);
-        record.spectrum_misfit = std::max(record.spectrum_misfit, s.spectrum_misfit);
-        if (std::abs(s.curvature_ratio - 1.0) > std::abs(record.curvature_ratio - 1.0))
-          record.curvature_ratio = s.curvature_ratio;
-        record.converged = record.converged && s.converged;
-        tracks.push_back({std::move(s.profile), start});
-      }
-      synthesis.push_back(std::move(record));
-    } else if (flank.measured_profile) {
-      const surface::FlankProfile& p = *flank.measured_profile;
-      const std::string key = gear + ".flank.topography.file";
-      const std::string file = flank.topography ? flank.topography->file : std::string();
-      check_spacing(profile_spacing(flank), "the profile of " + file);
-      if (p.length() < needed) {
-        const auto [where, line] = location_of(c, key);
-        throw io::InputError(where, line, key, file,
-                             fmt::format("its profile along {} is {} long; the deterministic contact reads {} of it "
-                                         "({}): give a trace of the whole flank (profile_axis, resample), "
-                                         "synthesise one from its spectrum (synthesis = \"psd\" or \"iaaft\" in "
-                                         "[{}.flank.topography]) or give a generated [{}.flank.profile]",
-                                         flank.topography && !flank.topography->profile_along_x ? "y" : "x",
-                                         mm(p.length()), mm(needed), why_needed, gear, gear));
-      }
-      // The trace centred on the active part (a knob that widens the strip does not move it).
-      const double start = span.centred_start(g, p.length());
-      if (start > span.first[g] || start + p.length() < span.last[g]) {
-        const auto [where, line] = location_of(c, key);
-        throw io::InputError(
-            where, line, key, file,
-            fmt::format("its profile along {} ({} long), centred on the {}'s active flank, does not "
-                        "reach {} beyond it either side ({})",
-                        flank.topography && !flank.topography->profile_along_x ? "y" : "x", mm(p.length()), gear,
-                        mm(0.5 * (needed - (span.active_last[g] - span.active_first[g]))), why_needed));
-      }
-      for (int t = 0; t < teeth[g]; ++t) tracks.push_back({p, start});
-    } else if (flank.profile) {
-      check_spacing(profile_spacing(flank), gear + ".flank.profile.spacing");
-      // Generated over a fixed stretch of the involute (a module either side of base circle to
-      // tip): the same flank whatever the strip, elements or load.
-      check_generated_stretch("generated profile");
-      for (int t = 0; t < teeth[g]; ++t) {
-        surface::GeneratedProfileSpec spec = *flank.profile;
-        spec.seed += static_cast<std::uint64_t>(t);
-        try {
-          tracks.push_back({surface::generate_profile(spec, span.generated_last[g] - span.generated_first[g]),
-                            span.generated_first[g]});
-        } catch (const core::KeyedError& e) {
-          refuse_at(c, gear + ".flank.profile." + e.key(), e.what());
-        } catch (const std::invalid_argument& e) {
-          const auto [where, line] = location_of(c, gear + ".flank.profile.kind");
-          throw io::InputError(where, line, gear + ".flank.profile", "", e.what());
-        }
-      }
+      synthesised_tracks(f, tracks, synthesis);
+    } else if (f.flank.measured_profile) {
+      measured_tracks(f, tracks);
+    } else if (f.flank.profile) {
+      generated_tracks(f, tracks);
     } else {
       const auto [where, line] = location_of(c, "contact.fidelity");
       throw io::InputError(where, line, gear + ".flank", "",
@@ -377,6 +429,91 @@ double flank_points(const Case& c, const contact::FlankSpan& span, int g) {
 // A deterministic run's memory and time from its sizes (contact::deterministic_cost) against the
 // budget (io::resource_budget), before any flank is made or strip solved: refused at the key that
 // sets the largest part, with the estimate and what fits.
+// The memory budget exceeded: refused at the key of the largest part.
+void refuse_memory(const Case& c, const contact::FlankSpan& span, const int teeth[2],
+                   const contact::DeterministicWork& w, const contact::DeterministicCost& cost,
+                   const io::ResourceBudget& budget) {
+  const std::string what = fmt::format(
+      "the run would hold about {} (flanks {}: {} profiles of {:.3g} and {} of {:.3g} points; pressure profiles "
+      "{}: {} of {} elements; strip solvers {} on {} threads; per-position results {}), more than the memory "
+      "budget of {} ({})",
+      io::format_bytes(cost.bytes()), io::format_bytes(cost.flank_bytes), teeth[0], w.flank_points[0], teeth[1],
+      w.flank_points[1], io::format_bytes(cost.profile_bytes), w.kept_profiles, span.elements,
+      io::format_bytes(cost.solver_bytes), w.threads, io::format_bytes(cost.position_bytes),
+      io::format_bytes(budget.bytes), io::kMemoryBudgetVariable);
+  const double largest = std::max({cost.flank_bytes, cost.profile_bytes, cost.solver_bytes, cost.position_bytes});
+  const std::string raise = ", or raise the budget";
+  auto refuse = [&](const std::string& key, const std::string& value, const std::string& rule) {
+    const auto [file, line] = location_of(c, key);
+    throw io::InputError(file, line, key, value, rule);
+  };
+  if (largest == cost.profile_bytes)
+    refuse("contact.pressure_profiles", value_of(c, "contact.pressure_profiles", "all"),
+           what +
+               ": keep the profiles at the named points (\"points\") or none, or fewer positions "
+               "(contact.positions)" +
+               raise);
+  if (largest == cost.solver_bytes)
+    refuse("contact.threads", std::to_string(w.threads),
+           what + ": fewer threads, or coarser elements (contact.element_size)" + raise);
+  if (largest == cost.flank_bytes && (teeth[0] > 1 || teeth[1] > 1))
+    refuse("running_in.teeth", value_of(c, "running_in.teeth", "hunting"),
+           what +
+               ": the hunting order holds every tooth's flank; run the pair (running_in.teeth = \"pair\") or "
+               "give the flanks a coarser profile spacing" +
+               raise);
+  if (largest == cost.flank_bytes) {  // one pair's flanks: the longer profile's own key
+    const int g = w.flank_points[1] > w.flank_points[0] ? 1 : 0;
+    const std::string gear = g == 0 ? "pinion" : "wheel";
+    const std::string key =
+        (g == 0 ? c.pinion : c.wheel).flank.profile ? gear + ".flank.profile.spacing" : gear + ".flank.topography.file";
+    refuse(key, value_of(c, key, ""), what + ": a coarser or shorter flank profile" + raise);
+  }
+  refuse("contact.positions", std::to_string(span.positions), what + ": fewer positions" + raise);
+}
+
+// The time budget exceeded: refused at the key with the largest share, with what fits.
+void refuse_time(const Case& c, const contact::FlankSpan& span, const int teeth[2], const contact::DeterministicWork& w,
+                 const contact::DeterministicCost& cost, const io::ResourceBudget& budget) {
+  const bool hunting = teeth[0] > 1 || teeth[1] > 1;
+  const std::string what = fmt::format(
+      "the run would take about {} on {} cores ({:.4g} strip solves: {} positions{}{}, each about {} on one core "
+      "for {} elements, from measured costs: docs/reference/performance.md#budgets), more than the time budget "
+      "of {} ({})",
+      io::format_duration(cost.seconds), w.cores, cost.solves, span.positions,
+      w.meshes > 1 ? fmt::format(" x {} meshes at most", w.meshes) : std::string(),
+      hunting ? fmt::format(" x {} tooth pairs of the hunting order", teeth[0]) : std::string(),
+      io::format_duration(cost.solve_seconds), span.elements, io::format_duration(budget.seconds),
+      io::kTimeBudgetVariable);
+  const std::string raise = ", or raise the budget";
+  // The key with the largest share: the meshes, the hunting order's pairs, the elements (against the
+  // shipped case's 1280) or the positions (against its 201).
+  const double meshes = w.meshes, pairs = teeth[0], elements = cost.solve_seconds / contact::strip_solve_seconds(1280),
+               positions = span.positions / 201.0;
+  const double largest = std::max({meshes, pairs, elements, positions});
+  const double over = cost.seconds / budget.seconds;  // how many times over
+  // How many of a count fit the budget (the time is in proportion to it), or that none does.
+  auto fits_in = [&](double count, double least, const char* what_fits) {
+    const double fits = std::floor(count / over);
+    return fits >= least ? fmt::format(": at most {:.0f} {} fit it", fits, what_fits)
+                         : fmt::format(": not even {:.0f} {} fit it", least, what_fits);
+  };
+  auto refuse = [&](const std::string& key, const std::string& value, const std::string& rule) {
+    const auto [file, line] = location_of(c, key);
+    throw io::InputError(file, line, key, value, rule);
+  };
+  if (largest == meshes)
+    refuse("running_in.meshes", std::to_string(c.running_in.meshes),
+           what + fits_in(w.meshes, 1, "meshes") + " (a run stops earlier at shakedown)" + raise);
+  if (largest == pairs)
+    refuse("running_in.teeth", value_of(c, "running_in.teeth", "hunting"),
+           what + ": the hunting order solves every tooth pair; run the pair (running_in.teeth = \"pair\")" + raise);
+  if (largest == elements)
+    refuse("contact.element_size", value_of(c, "contact.element_size", ""),
+           what + ": coarser elements, or a shorter strip (contact.strip_halfwidths)" + raise);
+  refuse("contact.positions", std::to_string(span.positions), what + fits_in(span.positions, 2, "positions") + raise);
+}
+
 void check_budget(const Case& c, const contact::FlankSpan& span, const int teeth[2]) {
   const ContactSettings& cs = c.contact;
   contact::DeterministicWork w;
@@ -389,80 +526,8 @@ void check_budget(const Case& c, const contact::FlankSpan& span, const int teeth
   w.cores = std::min(w.threads, std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
   const contact::DeterministicCost cost = contact::deterministic_cost(span, w);
   const io::ResourceBudget budget = io::resource_budget();
-  auto refuse = [&](const std::string& key, const std::string& value, const std::string& rule) {
-    const auto [file, line] = location_of(c, key);
-    throw io::InputError(file, line, key, value, rule);
-  };
-  const bool hunting = teeth[0] > 1 || teeth[1] > 1;
-  if (cost.bytes() > budget.bytes) {
-    const std::string what = fmt::format(
-        "the run would hold about {} (flanks {}: {} profiles of {:.3g} and {} of {:.3g} points; pressure profiles "
-        "{}: {} of {} elements; strip solvers {} on {} threads; per-position results {}), more than the memory "
-        "budget of {} ({})",
-        io::format_bytes(cost.bytes()), io::format_bytes(cost.flank_bytes), teeth[0], w.flank_points[0], teeth[1],
-        w.flank_points[1], io::format_bytes(cost.profile_bytes), w.kept_profiles, span.elements,
-        io::format_bytes(cost.solver_bytes), w.threads, io::format_bytes(cost.position_bytes),
-        io::format_bytes(budget.bytes), io::kMemoryBudgetVariable);
-    const double largest = std::max({cost.flank_bytes, cost.profile_bytes, cost.solver_bytes, cost.position_bytes});
-    const std::string raise = ", or raise the budget";
-    if (largest == cost.profile_bytes)
-      refuse("contact.pressure_profiles", value_of(c, "contact.pressure_profiles", "all"),
-             what +
-                 ": keep the profiles at the named points (\"points\") or none, or fewer positions "
-                 "(contact.positions)" +
-                 raise);
-    if (largest == cost.solver_bytes)
-      refuse("contact.threads", std::to_string(w.threads),
-             what + ": fewer threads, or coarser elements (contact.element_size)" + raise);
-    if (largest == cost.flank_bytes && hunting)
-      refuse("running_in.teeth", value_of(c, "running_in.teeth", "hunting"),
-             what +
-                 ": the hunting order holds every tooth's flank; run the pair (running_in.teeth = \"pair\") or "
-                 "give the flanks a coarser profile spacing" +
-                 raise);
-    if (largest == cost.flank_bytes) {  // one pair's flanks: the longer profile's own key
-      const int g = w.flank_points[1] > w.flank_points[0] ? 1 : 0;
-      const std::string gear = g == 0 ? "pinion" : "wheel";
-      const std::string key = (g == 0 ? c.pinion : c.wheel).flank.profile ? gear + ".flank.profile.spacing"
-                                                                          : gear + ".flank.topography.file";
-      refuse(key, value_of(c, key, ""), what + ": a coarser or shorter flank profile" + raise);
-    }
-    refuse("contact.positions", std::to_string(span.positions), what + ": fewer positions" + raise);
-  }
-  if (cost.seconds > budget.seconds) {
-    const std::string what = fmt::format(
-        "the run would take about {} on {} cores ({:.4g} strip solves: {} positions{}{}, each about {} on one core "
-        "for {} elements, from measured costs: docs/reference/performance.md#budgets), more than the time budget "
-        "of {} ({})",
-        io::format_duration(cost.seconds), w.cores, cost.solves, span.positions,
-        w.meshes > 1 ? fmt::format(" x {} meshes at most", w.meshes) : std::string(),
-        hunting ? fmt::format(" x {} tooth pairs of the hunting order", teeth[0]) : std::string(),
-        io::format_duration(cost.solve_seconds), span.elements, io::format_duration(budget.seconds),
-        io::kTimeBudgetVariable);
-    const std::string raise = ", or raise the budget";
-    // The key with the largest share: the meshes, the hunting order's pairs, the elements (against the
-    // shipped case's 1280) or the positions (against its 201).
-    const double meshes = w.meshes, pairs = teeth[0],
-                 elements = cost.solve_seconds / contact::strip_solve_seconds(1280), positions = span.positions / 201.0;
-    const double largest = std::max({meshes, pairs, elements, positions});
-    const double over = cost.seconds / budget.seconds;  // how many times over
-    // How many of a count fit the budget (the time is in proportion to it), or that none does.
-    auto fits_in = [&](double count, double least, const char* what_fits) {
-      const double fits = std::floor(count / over);
-      return fits >= least ? fmt::format(": at most {:.0f} {} fit it", fits, what_fits)
-                           : fmt::format(": not even {:.0f} {} fit it", least, what_fits);
-    };
-    if (largest == meshes)
-      refuse("running_in.meshes", std::to_string(c.running_in.meshes),
-             what + fits_in(w.meshes, 1, "meshes") + " (a run stops earlier at shakedown)" + raise);
-    if (largest == pairs)
-      refuse("running_in.teeth", value_of(c, "running_in.teeth", "hunting"),
-             what + ": the hunting order solves every tooth pair; run the pair (running_in.teeth = \"pair\")" + raise);
-    if (largest == elements)
-      refuse("contact.element_size", value_of(c, "contact.element_size", ""),
-             what + ": coarser elements, or a shorter strip (contact.strip_halfwidths)" + raise);
-    refuse("contact.positions", std::to_string(span.positions), what + fits_in(span.positions, 2, "positions") + raise);
-  }
+  if (cost.bytes() > budget.bytes) refuse_memory(c, span, teeth, w, cost, budget);
+  if (cost.seconds > budget.seconds) refuse_time(c, span, teeth, w, cost, budget);
 }
 
 }  // namespace
@@ -534,6 +599,35 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
   for (const auto& f : r.synthesis) summary("/synthesis/" + f.gear, contact::synthesis_summary(f));
 }
 
+contact::MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
+                                            const std::function<void(int, int)>& progress, int positions,
+                                            const OdeIntegrator* dynamics, const contact::FlankSource& flanks_source) {
+  const std::unique_ptr<asperity::AsperityModel> model = asperity::make_case_model(c, c.asperity.model);
+  contact::StatisticalFlanks flanks;
+  flanks.materials = {&c.pinion.material, &c.wheel.material};
+  flanks.roughness = {c.pinion.flank.roughness, c.wheel.flank.roughness};
+  flanks.distribution = c.roughness.distribution;
+  flanks.eta_sigma_beta = c.roughness.eta_sigma_beta;
+  flanks.model = model.get();
+  flanks.friction = c.friction_coefficient;
+  const bool dynamic = c.dynamics.engine != gear::DynamicsEngine::none;
+  if (dynamic && !dynamics) throw std::invalid_argument("the case asks for dynamics but no integrator was given");
+  contact::MeshCycleInputs in{
+      .mesh = mesh,
+      .contact = c.contact,
+      .running_in = c.running_in,
+      .flanks = flanks,
+      .lubrication = c.lubrication.lubricated ? &c.lubrication : nullptr,
+      .operating = {c.operating.oil_temperature, c.operating.bulk_temperature, c.operating.pinion_torque},
+      .dynamics = dynamic ? dynamics : nullptr,
+      .dynamics_settings = dynamic ? gear::dynamics_settings(c) : gear::DynamicsSettings{},
+      .solver = solver,
+      .flank_source = flanks_source,
+      .progress = progress};
+  if (positions > 0) in.contact.positions = positions;
+  return contact::run_mesh_contact(in);
+}
+
 double finest_element_size(const Case& c) {
   return std::max(profile_spacing(c.pinion.flank), profile_spacing(c.wheel.flank));
 }
@@ -547,11 +641,12 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
   std::vector<contact::FlankSynthesis> synthesis;
   PathHalfWidths half_widths(c, mesh, integrator.get());
   try {
-    r = contact::run_mesh_contact(c, mesh, c.contact.coupled() ? &kinsol : nullptr, progress, 0, integrator.get(),
-                                  [&](const contact::FlankSpan& span, const int teeth[2]) {
-                                    check_budget(c, span, teeth);
-                                    return rolling_flanks(c, span, teeth, synthesis, half_widths);
-                                  });
+    const contact::FidelityNeeds needs = contact::find_fidelity(c.contact.fidelity).traits.needs;
+    r = run_mesh_contact(c, mesh, needs.nonlinear_solver ? &kinsol : nullptr, progress, 0, integrator.get(),
+                         [&](const contact::FlankSpan& span, const int teeth[2]) {
+                           check_budget(c, span, teeth);
+                           return rolling_flanks(c, span, teeth, synthesis, half_widths);
+                         });
   } catch (const contact::RoughSurfaceOverload& e) {
     throw_overload(c, e.what());  // at the torque, naming the roughness and where each came from
   } catch (const core::KeyedError& e) {

@@ -5,6 +5,7 @@
 
 #include "case/case.hpp"
 #include "contact/mesh_contact.hpp"
+#include "gear/gear_mesh.hpp"
 
 #include <functional>
 
@@ -22,6 +23,15 @@ namespace geartrib::runs {
 void check_finite_outputs(const contact::MeshContactResult& r);
 
 contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress = {});
+
+// The mesh cycle of a case on `mesh`, its inputs translated from the case (contact::MeshCycleInputs),
+// without run_mesh_cycle's located errors and checks. solver: for a fidelity that needs one;
+// positions <= 0: the case's number; dynamics: the integrator, when the case asks for dynamics
+// (mesh.dynamics = cvode | odeint); flanks: the flanks' profiles, for a fidelity that rolls them.
+contact::MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh& mesh, const NonlinearSolver* solver,
+                                            const std::function<void(int, int)>& progress = {}, int positions = 0,
+                                            const OdeIntegrator* dynamics = nullptr,
+                                            const contact::FlankSource& flanks = {});
 
 // The finest boundary elements a deterministic case's flanks allow [m]: the coarser of its two flank
 // profiles' spacings (generated, measured or synthesised: the elements average a profile, finer ones

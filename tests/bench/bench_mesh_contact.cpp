@@ -87,7 +87,7 @@ void strip_coupled_path(benchmark::State& state) {
   static const contact::MeshContactResult path = [&] {
     Case c = s.c;
     c.lubrication.lubricated = false;
-    return contact::run_mesh_contact(c, s.mesh, nullptr, {}, 201);
+    return runs::run_mesh_contact(c, s.mesh, nullptr, {}, 201);
   }();
   const auto& line_load = path.find("line_load_N_per_m")->values;
   const auto& radius = path.find("r_eq_m")->values;
@@ -124,7 +124,8 @@ void cycle(benchmark::State& state) {
   c.contact.fidelity = state.range(0) == 1 ? ContactFidelity::coupled : ContactFidelity::uncoupled;
   const solvers::KinsolSolver kinsol;
   for (auto _ : state)
-    benchmark::DoNotOptimize(contact::run_mesh_contact(c, setup().mesh, c.contact.coupled() ? &kinsol : nullptr));
+    benchmark::DoNotOptimize(
+        runs::run_mesh_contact(c, setup().mesh, c.contact.fidelity == ContactFidelity::coupled ? &kinsol : nullptr));
 }
 // The lubricated cycle against the dry one at the same positions (issue 16: at most twice the
 // dry cycle's time): the default case with and without its [lubricant].
@@ -132,7 +133,7 @@ void cycle_lubricated(benchmark::State& state) {
   Case c = setup().c;
   c.lubrication.lubricated = state.range(0) == 1;
   const int positions = static_cast<int>(state.range(1));
-  for (auto _ : state) benchmark::DoNotOptimize(contact::run_mesh_contact(c, setup().mesh, nullptr, {}, positions));
+  for (auto _ : state) benchmark::DoNotOptimize(runs::run_mesh_contact(c, setup().mesh, nullptr, {}, positions));
 }
 // The deterministic cycle (issue 20: the default 201 positions in at most 5 s on one core):
 // gears/m6z30-deterministic.toml on one thread at element sizes 2, 1, 0.5 (its default) and

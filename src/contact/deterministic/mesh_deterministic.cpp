@@ -1,7 +1,7 @@
-#include "contact/mesh_deterministic.hpp"
+#include "contact/deterministic/mesh_deterministic.hpp"
 
-#include "case/contact_setup.hpp"
 #include "contact/series_columns.hpp"
+#include "contact/stage_clock.hpp"
 #include "core/keyed_error.hpp"
 #include "core/stopwatch.hpp"
 #include "surface/rough_surface.hpp"
@@ -18,44 +18,21 @@ namespace geartrib::contact {
 
 namespace {
 
+using deterministic::HistoryRow;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Fewer elements than this across a contact spot on average: the spots are not resolved
 // (a Hertzian spot's peak pressure is within ~5% from four elements across; tests/test_deterministic_contact.cpp).
 constexpr double kMinElementsPerSpot = 4.0;
-
-const std::vector<double>& series(const MeshContactResult& r, const char* name) {
-  const Series* s = r.find(name);
-  if (!s) throw std::logic_error(std::string("mesh cycle: no series ") + name);
-  return s->values;
-}
-
-// The statistical model (uncoupled) on the same flanks: each flank's spectral moments from its
-// profile over the active part (McCool's summits), the rest of the case as it is.
-MeshContactResult statistical_on_profiles(const Case& c, const gear::GearMesh& mesh, const RollingFlanks& f,
-                                          const FlankSpan& span, int positions, const OdeIntegrator* dynamics) {
-  Case sc = c;
-  sc.contact.fidelity = ContactFidelity::uncoupled;
-  const FlankTrack* tracks[2] = {&f.pinion.front(), &f.wheel.front()};
-  GearSpec* gears[2] = {&sc.pinion, &sc.wheel};
-  for (int g = 0; g < 2; ++g) {
-    gears[g]->flank.roughness =
-        surface::spectral_roughness(active_statistics(*tracks[g], span.active_first[g], span.active_last[g]));
-  }
-  const auto [r1, r2] = surface::flank_summit_radii(sc.pinion.flank.roughness, sc.wheel.flank.roughness);
-  sc.pinion.flank.roughness.summit_radius = r1;
-  sc.wheel.flank.roughness.summit_radius = r2;
-  return run_mesh_contact(sc, mesh, nullptr, {}, positions, dynamics);
-}
 
 bool rough(const FlankTrack& t) {
   return std::any_of(t.profile.z.begin(), t.profile.z.end(), [](double z) { return z != 0.0; });
 }
 
 // The per-position outputs of one mesh, as the case asks for them.
-void add_contact_series(const Case& c, const std::vector<DeterministicStrip>& strips, MeshContactResult& r) {
+void add_contact_series(const ContactSettings& cs, const std::vector<DeterministicStrip>& strips,
+                        MeshContactResult& r) {
   using S = DeterministicStrip;
   using C = Column<S>;
-  const ContactSettings& cs = c.contact;
   if (cs.real_area)
     add_columns<S>(r.contact, strips,
                    {C{"real_area_ratio", "1", [](const S& s) { return s.real_area_ratio; }},
@@ -82,16 +59,15 @@ void add_contact_series(const Case& c, const std::vector<DeterministicStrip>& st
   auto per_spot = [e](const S& s) {
     return s.contact_spots > 0 ? s.real_area_per_width / (s.contact_spots * e) : kNaN;
   };
-  std::vector<double>& eps = add_series(r.validity, "elements_per_spot", "1");
-  std::vector<double>& edge = add_series(r.validity, "flag_strip_edge_loaded", "1");
-  std::vector<double>& coarse = add_series(r.validity, "flag_spots_unresolved", "1");
+  Series eps{"elements_per_spot", "1", {}}, edge{"flag_strip_edge_loaded", "1", {}},
+      coarse{"flag_spots_unresolved", "1", {}};
   int n_edge = 0, n_coarse = 0, loaded = 0, elastic = 0, plastic = 0;
   for (const S& s : strips) {
     const double k = per_spot(s);
-    eps.push_back(std::isnan(k) ? 0.0 : k);
-    edge.push_back(s.edge_loaded ? 1.0 : 0.0);
+    eps.values.push_back(std::isnan(k) ? 0.0 : k);
+    edge.values.push_back(s.edge_loaded ? 1.0 : 0.0);
     const bool unresolved = !std::isnan(k) && k < kMinElementsPerSpot;
-    coarse.push_back(unresolved ? 1.0 : 0.0);
+    coarse.values.push_back(unresolved ? 1.0 : 0.0);
     n_edge += s.edge_loaded, n_coarse += unresolved;
     if (s.real_area_per_width > 0.0) {
       ++loaded;
@@ -99,6 +75,9 @@ void add_contact_series(const Case& c, const std::vector<DeterministicStrip>& st
       plastic += s.plastic_area_fraction > 0.99;
     }
   }
+  r.validity.push_back(std::move(eps));
+  r.validity.push_back(std::move(edge));
+  r.validity.push_back(std::move(coarse));
   r.regime = elastic == loaded ? "elastic" : plastic == loaded ? "fully plastic" : "elastic-plastic";
   r.verdict = fmt::format(
       "Deterministic rough contact of the flanks' profiles (boundary elements of {:.3g} um over +-{:.3g} Hertz "
@@ -116,12 +95,6 @@ void add_contact_series(const Case& c, const std::vector<DeterministicStrip>& st
         n_coarse, kMinElementsPerSpot);
   r.flag_counts = {{"strip_edge_loaded", n_edge}, {"spots_unresolved", n_coarse}};
 }
-
-// Rows of the running-in history.
-struct HistoryRow {
-  double mesh = 0.0, new_plastic = kNaN, real_area = kNaN, plastic_fraction = kNaN, peak_pressure = kNaN;
-  surface::ProfileStatistics flank[2];
-};
 
 // A flank's statistics over its active part as the elements see it: the profile averaged over
 // element-sized cells (the summit curvature of the finer profile would count the kinks a plastic
@@ -219,6 +192,19 @@ core::KeyedError strip_overload(const ContactSettings& cs, const DeterministicOp
 
 }  // namespace
 
+DeterministicOptions deterministic_options(const ContactSettings& cs, const RunningInSettings& running_in,
+                                           const Material& m1, const Material& m2) {
+  DeterministicOptions o;
+  o.element_size = cs.element_size;
+  o.strip_halfwidths = cs.strip_halfwidths;
+  o.pressure_cap = std::min(m1.hardness, m2.hardness);
+  o.poisson_ratio = m1.hardness <= m2.hardness ? m1.poisson_ratio : m2.poisson_ratio;
+  o.pinion_plastic_share = m1.hardness < 0.99 * m2.hardness ? 1.0 : m2.hardness < 0.99 * m1.hardness ? 0.0 : 0.5;
+  o.subsurface_stress = cs.asperity_stress;
+  o.plastic_overlap = running_in.tolerance;
+  return o;
+}
+
 double strip_solve_seconds(int elements) {
   // Measured on the shipped case (gears/m6z30-deterministic.toml, 201 positions, one thread):
   // 1.18 s for 1280 elements of 0.5 um (docs/reference/timings.md, cycle_deterministic/element_nm:500),
@@ -255,110 +241,109 @@ DeterministicCost deterministic_cost(const FlankSpan& span, const DeterministicW
   return c;
 }
 
-void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactResult& r, const FlankSource& source,
-                       const std::function<void(int, int)>& progress, const OdeIntegrator* dynamics) {
-  const ContactSettings& cs = c.contact;
-  const auto& s_m = series(r, "s_m");
-  const auto& load = series(r, "line_load_N_per_m");
-  const auto& r_eq = series(r, "r_eq_m");
-  const auto& b_h = series(r, "hertz_halfwidth_m");
-  const auto& rho1 = series(r, "rho1_m");
-  const auto& rho2 = series(r, "rho2_m");
-  const int n = static_cast<int>(s_m.size());
-  Stopwatch clock;
+namespace deterministic {
 
-  // The strip, the span of each flank it reads, and the flanks.
-  const double rb[2] = {mesh.pair().pinion().base_radius, mesh.pair().wheel().base_radius};
-  const double b_max = *std::max_element(b_h.begin(), b_h.end());
-  FlankSpan span;
+namespace {
+
+// The strip, its boundary elements and the span of each flank it reads. The softer flank's
+// hardness caps the pressure and takes the plastic deformation (equal hardness: half each).
+void plan_strip(const FidelityInputs& in, BoundaryElements::State& st) {
+  const ContactSettings& cs = in.contact;
+  const PathState& p = in.path;
+  const gear::SpurPair& pair = in.mesh.pair();
+  const int n = static_cast<int>(p.size());
+  const double rb[2] = {pair.pinion().base_radius, pair.wheel().base_radius};
+  const double b_max = *std::max_element(p.half_width.begin(), p.half_width.end());
+  FlankSpan& span = st.span;
   span.element_size = cs.element_size;
   span.strip_half_length = cs.strip_halfwidths * b_max;
-  std::vector<double> sigma[2];
-  for (int i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    sigma[0].push_back(rho1[k] * rho1[k] / (2.0 * rb[0]));  // involute arc length from the base circle
-    sigma[1].push_back(rho2[k] * rho2[k] / (2.0 * rb[1]));
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    st.sigma[0].push_back(p.rho1[k] * p.rho1[k] / (2.0 * rb[0]));  // involute arc length from the base circle
+    st.sigma[1].push_back(p.rho2[k] * p.rho2[k] / (2.0 * rb[1]));
   }
-  // The boundary elements: the softer flank's hardness caps the pressure and takes the plastic
-  // deformation (equal hardness: half each).
-  const DeterministicOptions o = deterministic_options(c);
+  st.options = deterministic_options(cs, in.running_in, *in.flanks.materials[0], *in.flanks.materials[1]);
+  const DeterministicOptions& o = st.options;
   // The flanks are read over the grid's whole reach (at least 8 elements) and two elements more.
-  const HalfPlaneGrid grid = strip_grid(span.strip_half_length, o);
-  span.elements = grid.size;
-  const double margin = 0.5 * grid.size * grid.spacing + 2.0 * cs.element_size;
+  st.grid = strip_grid(span.strip_half_length, o);
+  span.elements = st.grid.size;
+  const double margin = 0.5 * st.grid.size * st.grid.spacing + 2.0 * cs.element_size;
   span.positions = n;
-  span.running_in = c.running_in.meshes > 0;
+  span.running_in = in.running_in.meshes > 0;
   for (int g = 0; g < 2; ++g) {
-    for (int i = 0; i + 1 < n; ++i)
-      span.max_step[g] = std::max(span.max_step[g], std::abs(sigma[g][static_cast<std::size_t>(i + 1)] -
-                                                             sigma[g][static_cast<std::size_t>(i)]));
-    span.active_first[g] = *std::min_element(sigma[g].begin(), sigma[g].end());
-    span.active_last[g] = *std::max_element(sigma[g].begin(), sigma[g].end());
+    const auto& sigma = st.sigma[static_cast<std::size_t>(g)];
+    for (std::size_t i = 0; i + 1 < sigma.size(); ++i)
+      span.max_step[g] = std::max(span.max_step[g], std::abs(sigma[i + 1] - sigma[i]));
+    span.active_first[g] = *std::min_element(sigma.begin(), sigma.end());
+    span.active_last[g] = *std::max_element(sigma.begin(), sigma.end());
     span.first[g] = span.active_first[g] - margin;
     span.last[g] = span.active_last[g] + margin;
-    const gear::GearBody& body = mesh.pair().gear(g);
+    const gear::GearBody& body = pair.gear(g);
     const double tip =
         (body.tip_radius * body.tip_radius - body.base_radius * body.base_radius) / (2.0 * body.base_radius);
-    span.generated_first[g] = -c.gear_pair.module;
-    span.generated_last[g] = tip + c.gear_pair.module;
+    span.generated_first[g] = -pair.spec().module;
+    span.generated_last[g] = tip + pair.spec().module;
   }
-  const bool hunting = c.running_in.teeth == "hunting" && c.running_in.meshes > 0;
-  const int teeth[2] = {hunting ? c.gear_pair.teeth[0] : 1, hunting ? c.gear_pair.teeth[1] : 1};
-  RollingFlanks flanks = source(span, teeth);
-  if (static_cast<int>(flanks.pinion.size()) != teeth[0] || static_cast<int>(flanks.wheel.size()) != teeth[1])
-    throw std::logic_error("deterministic run: the flank source gave the wrong number of teeth");
-  r.stages.push_back({"flank_profiles", clock.lap()});
+}
 
-  // The statistical model on the same flanks (both rough), and in lubricated runs the film's share.
-  const bool statistics = rough(flanks.pinion.front()) && rough(flanks.wheel.front());
-  std::vector<double> share(static_cast<std::size_t>(n), 1.0);
-  if (c.lubrication.lubricated && !statistics)
-    throw core::KeyedError(
-        rough(flanks.pinion.front()) ? "wheel.flank" : "pinion.flank",
-        "a lubricated deterministic run takes the film's share of the load from the flanks' statistics, and this "
-        "flank's profile is flat: give both flanks a rough profile (or run the case dry)");
-  if (statistics) {
-    MeshContactResult st = statistical_on_profiles(c, mesh, flanks, span, n, dynamics);
-    for (const auto* group : {&st.contact, &st.validity})
-      for (const Series& q : *group) r.statistical.push_back({"statistical_" + q.name, q.unit, q.values});
-    r.lubrication = std::move(st.lubrication);
-    r.lubrication_summary = std::move(st.lubrication_summary);
-    r.surface = st.surface;
-    r.plasticity_index = st.plasticity_index;
-    r.asperity_model = st.asperity_model;
-    for (const auto& w : st.warnings) r.warnings.push_back("statistical model: " + w);
-    if (const Series* a = r.find("asperity_load_share")) share = a->values;
-    r.stages.push_back({"statistical_model", clock.lap()});
-  }
+// The statistical model's flanks: each flank's spectral moments from its profile over the active
+// part (McCool's summits), the rest as the case gives them.
+StatisticalFlanks profile_statistics(const FidelityInputs& in, const BoundaryElements::State& st) {
+  StatisticalFlanks f = in.flanks;
+  const FlankTrack* tracks[2] = {&st.flanks.pinion.front(), &st.flanks.wheel.front()};
+  for (std::size_t g = 0; g < 2; ++g)
+    f.roughness[g] =
+        surface::spectral_roughness(active_statistics(*tracks[g], st.span.active_first[g], st.span.active_last[g]));
+  const auto [r1, r2] = surface::flank_summit_radii(f.roughness[0], f.roughness[1]);
+  f.roughness[0].summit_radius = r1;
+  f.roughness[1].summit_radius = r2;
+  return f;
+}
 
+// The positions' strips, at the load the asperities carry, and which pressure profiles are kept.
+std::vector<StripPosition> strip_positions(const PathState& p, const BoundaryElements::State& st,
+                                           const std::vector<double>& share) {
   std::vector<StripPosition> positions;
-  for (int i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    positions.push_back({load[k] * share[k], r_eq[k], b_h[k], sigma[0][k], sigma[1][k], s_m[k]});
-  }
-  std::vector<bool> keep(static_cast<std::size_t>(n), cs.pressure_profiles == PressureProfiles::all);
-  const auto& path = r.path;
+  for (std::size_t k = 0; k < p.size(); ++k)
+    positions.push_back(
+        {p.line_load[k] * share[k], p.radius[k], p.half_width[k], st.sigma[0][k], st.sigma[1][k], p.s[k]});
+  return positions;
+}
+
+// The path's points A, B, C, D, E at their nearest positions.
+std::vector<std::string> point_names(const PathState& p) {
+  const auto& path = p.path;
   const std::pair<const char*, double> named[] = {
       {"A", path.a}, {"B", path.b}, {"C", path.c}, {"D", path.d}, {"E", path.e}};
-  std::vector<std::string> point_name(static_cast<std::size_t>(n));
+  std::vector<std::string> point_name(p.size());
   for (const auto& [name, s] : named) {
     std::size_t best = 0;
-    for (std::size_t k = 0; k < s_m.size(); ++k)
-      if (std::abs(s_m[k] - s) < std::abs(s_m[best] - s)) best = k;
+    for (std::size_t k = 0; k < p.s.size(); ++k)
+      if (std::abs(p.s[k] - s) < std::abs(p.s[best] - s)) best = k;
     point_name[best] = name;
-    if (cs.pressure_profiles == PressureProfiles::points) keep[best] = true;
   }
-  // The strip carries at most 2 L H (every element at the cap): beyond it the contact is plastic
-  // across the whole strip and would spread beyond it.
-  const double capacity = grid.size * grid.spacing * o.pressure_cap;
-  const double w_max = *std::max_element(load.begin(), load.end());
-  if (w_max > 0.9 * capacity) throw strip_overload(cs, o, span, flanks, w_max, b_max, capacity, grid);
-  const int threads = strip_threads(cs, n);
-  const double modulus = mesh.composite_modulus();
+  return point_name;
+}
 
-  // The meshes: one (no running-in), or until shakedown.
-  const int planned = std::max(1, c.running_in.meshes);
-  const int per_round = hunting ? teeth[0] : 1;
+// The running-in record before the first mesh: the flanks as made.
+std::optional<RunningInResult> running_in_start(const FidelityInputs& in, const BoundaryElements::State& st) {
+  if (in.running_in.meshes <= 0) return std::nullopt;
+  RunningInResult ri;
+  ri.teeth = st.hunting ? "hunting" : "pair";
+  ri.tolerance = in.running_in.tolerance;
+  for (int g = 0; g < 2; ++g) {
+    const FlankTrack& t = g == 0 ? st.flanks.pinion.front() : st.flanks.wheel.front();
+    ri.spacing[static_cast<std::size_t>(g)] = t.profile.spacing;
+    ri.initial[static_cast<std::size_t>(g)] = active_part(t, st.span, g);
+  }
+  return ri;
+}
+
+// The meshes: one (no running-in), or until shakedown, each flank lowered by its plastic deformation.
+void run_meshes(const FidelityInputs& in, BoundaryElements::State& st, const std::vector<StripPosition>& positions,
+                const std::vector<bool>& keep, BoundaryElements::Solution& out) {
+  const int n = static_cast<int>(positions.size());
+  const int planned = std::max(1, in.running_in.meshes);
+  const int per_round = st.hunting ? st.teeth[0] : 1;
   const long long all_solves = static_cast<long long>(planned) * per_round * n;
   if (all_solves > std::numeric_limits<int>::max())
     throw std::invalid_argument(
@@ -366,97 +351,158 @@ void run_deterministic(const Case& c, const gear::GearMesh& mesh, MeshContactRes
                     "than a run can count ({})",
                     planned, per_round, n, std::numeric_limits<int>::max()));
   const int total_solves = static_cast<int>(all_solves);
+  const int threads = strip_threads(in.contact, n);
   int solved = 0;
   auto pass = [&](const FlankTrack& p, const FlankTrack& w, bool first) {
-    MeshPass out = mesh_pass(p, w, positions, modulus, span.strip_half_length, o, first ? keep : std::vector<bool>{},
-                             threads, [&](int done, int) {
-                               if (progress) progress(solved + done, total_solves);
-                             });
+    MeshPass m = mesh_pass(p, w, positions, in.mesh.composite_modulus(), st.span.strip_half_length, st.options,
+                           first ? keep : std::vector<bool>{}, threads, [&](int done, int) {
+                             if (in.progress) in.progress(solved + done, total_solves);
+                           });
     solved += n;
-    return out;
+    return m;
   };
   auto lower = [](FlankTrack& t, const std::vector<double>& d) {
     for (std::size_t k = 0; k < d.size(); ++k) t.profile.z[k] -= d[k];
   };
   std::vector<const FlankTrack*> all[2];
-  for (const auto& t : flanks.pinion) all[0].push_back(&t);
-  for (const auto& t : flanks.wheel) all[1].push_back(&t);
-  std::optional<RunningInResult> ri;
-  std::vector<HistoryRow> rows;
-  if (c.running_in.meshes > 0) {
-    ri.emplace();
-    ri->teeth = hunting ? "hunting" : "pair";
-    ri->tolerance = c.running_in.tolerance;
-    for (int g = 0; g < 2; ++g) {
-      const FlankTrack& t = g == 0 ? flanks.pinion.front() : flanks.wheel.front();
-      ri->spacing[g] = t.profile.spacing;
-      ri->initial[g] = active_part(t, span, g);
-    }
-    rows.push_back(history_row(0, {}, all, span));
-  }
-  MeshPass first;
+  for (const auto& t : st.flanks.pinion) all[0].push_back(&t);
+  for (const auto& t : st.flanks.wheel) all[1].push_back(&t);
+  std::optional<RunningInResult>& ri = out.running_in;
+  if (ri) out.history.push_back(history_row(0, {}, all, st.span));
   for (int round = 1; round <= planned; ++round) {
     std::vector<MeshPass> passes;
     for (int k = 0; k < per_round; ++k) {
       // Hunting order: pinion tooth k meets wheel tooth (mesh number) mod z2.
       const long mesh_number = static_cast<long>(round - 1) * per_round + k;
-      FlankTrack& p = flanks.pinion[static_cast<std::size_t>(k)];
-      FlankTrack& w = flanks.wheel[static_cast<std::size_t>(mesh_number % teeth[1])];
+      FlankTrack& p = st.flanks.pinion[static_cast<std::size_t>(k)];
+      FlankTrack& w = st.flanks.wheel[static_cast<std::size_t>(mesh_number % st.teeth[1])];
       passes.push_back(pass(p, w, round == 1 && k == 0));
-      if (ri) {
-        lower(p, passes.back().plastic_pinion);
-        lower(w, passes.back().plastic_wheel);
-      }
+      if (ri) lower(p, passes.back().plastic_pinion), lower(w, passes.back().plastic_wheel);
     }
     if (ri) {
       std::vector<const MeshPass*> views;
+      views.reserve(passes.size());
       for (const auto& q : passes) views.push_back(&q);
-      rows.push_back(history_row(round, views, all, span));
+      out.history.push_back(history_row(round, views, all, st.span));
     }
     double new_plastic = 0.0;
     for (const auto& q : passes) new_plastic = std::max(new_plastic, q.max_new_plastic);
-    if (round == 1) first = std::move(passes.front());  // its pressure profiles moved, not copied
+    if (round == 1) out.first = std::move(passes.front());  // its pressure profiles moved, not copied
     if (!ri) break;
     ri->meshes = round;
-    if (new_plastic <= c.running_in.tolerance) {
+    if (new_plastic <= in.running_in.tolerance) {
       ri->shakedown_mesh = round;
       break;
     }
   }
-  if (progress) progress(total_solves, total_solves);
-  r.stages.push_back({"deterministic_contact", clock.lap()});
-
-  add_contact_series(c, first.strips, r);
-  {  // the pressure profiles kept (first mesh), on the strip's grid (the one every solver has)
-    std::vector<double> x(static_cast<std::size_t>(grid.size));
-    for (std::size_t j = 0; j < x.size(); ++j) x[j] = grid.x(static_cast<int>(j));
-    for (int i = 0; i < n; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      if (first.strips[k].pressure.empty()) continue;
-      r.pressure_profiles.push_back({i, point_name[k], s_m[k], x, std::move(first.strips[k].pressure)});
-    }
-  }
-  if (ri) {
-    for (int g = 0; g < 2; ++g)
-      ri->final[g] = active_part(g == 0 ? flanks.pinion.front() : flanks.wheel.front(), span, g);
-    using H = HistoryRow;
-    using C = Column<H>;
-    add_columns<H>(ri->history, rows,
-                   {C{"mesh", "1", [](const H& h) { return h.mesh; }},
-                    C{"new_plastic_deformation_m", "m", [](const H& h) { return h.new_plastic; }},
-                    C{"real_area_ratio_mean", "1", [](const H& h) { return h.real_area; }},
-                    C{"plastic_area_fraction_mean", "1", [](const H& h) { return h.plastic_fraction; }},
-                    C{"max_pressure_Pa", "Pa", [](const H& h) { return h.peak_pressure; }},
-                    C{"pinion_rq_m", "m", [](const H& h) { return h.flank[0].rq; }},
-                    C{"pinion_peak_height_m", "m", [](const H& h) { return h.flank[0].peak_height; }},
-                    C{"pinion_rsk", "1", [](const H& h) { return h.flank[0].rsk; }},
-                    C{"pinion_summit_radius_m", "m", [](const H& h) { return h.flank[0].summit_radius; }},
-                    C{"wheel_rq_m", "m", [](const H& h) { return h.flank[1].rq; }},
-                    C{"wheel_peak_height_m", "m", [](const H& h) { return h.flank[1].peak_height; }},
-                    C{"wheel_rsk", "1", [](const H& h) { return h.flank[1].rsk; }},
-                    C{"wheel_summit_radius_m", "m", [](const H& h) { return h.flank[1].summit_radius; }}});
-    r.running_in = std::move(ri);
-  }
+  if (in.progress) in.progress(total_solves, total_solves);
 }
+
+}  // namespace
+
+BoundaryElements::State BoundaryElements::prepare(const FidelityInputs& in, StageClock& clock) {
+  if (!in.flank_source) throw std::invalid_argument("the deterministic fidelity needs the flanks' profiles");
+  State st;
+  plan_strip(in, st);
+  st.hunting = in.running_in.teeth == "hunting" && in.running_in.meshes > 0;
+  const int* z = in.mesh.pair().spec().teeth;
+  st.teeth[0] = st.hunting ? z[0] : 1;
+  st.teeth[1] = st.hunting ? z[1] : 1;
+  st.flanks = in.flank_source(st.span, st.teeth);
+  if (static_cast<int>(st.flanks.pinion.size()) != st.teeth[0] ||
+      static_cast<int>(st.flanks.wheel.size()) != st.teeth[1])
+    throw std::logic_error("deterministic run: the flank source gave the wrong number of teeth");
+  clock.lap("flank_profiles");
+  // The statistical model on the same flanks (both rough), and in lubricated runs the film's share.
+  const bool statistics = rough(st.flanks.pinion.front()) && rough(st.flanks.wheel.front());
+  if (in.lubricated && !statistics)
+    throw core::KeyedError(
+        rough(st.flanks.pinion.front()) ? "wheel.flank" : "pinion.flank",
+        "a lubricated deterministic run takes the film's share of the load from the flanks' statistics, and this "
+        "flank's profile is flat: give both flanks a rough profile (or run the case dry)");
+  if (statistics) {
+    double p_max = 0.0;
+    for (double p : in.path.hertz_p0) p_max = std::max(p_max, p);
+    st.model.emplace(profile_statistics(in, st), in.contact, p_max);
+    clock.lap("statistical_surface_table");
+  }
+  return st;
+}
+
+BoundaryElements::Solution BoundaryElements::solve(const FidelityInputs& in, State& st,
+                                                   const std::vector<double>& share, StageClock& clock) {
+  Solution out;
+  if (st.model) {
+    out.statistical = solve_statistical(in, *st.model, StripFidelity::uncoupled, share, nullptr, {});
+    clock.lap("statistical_model");
+  }
+  const ContactSettings& cs = in.contact;
+  const PathState& p = in.path;
+  const std::vector<StripPosition> positions = strip_positions(p, st, share);
+  std::vector<bool> keep(p.size(), cs.pressure_profiles == PressureProfiles::all);
+  if (cs.pressure_profiles == PressureProfiles::points) {
+    const std::vector<std::string> names = point_names(p);
+    for (std::size_t k = 0; k < names.size(); ++k)
+      if (!names[k].empty()) keep[k] = true;
+  }
+  // The strip carries at most 2 L H (every element at the cap): beyond it the contact is plastic
+  // across the whole strip and would spread beyond it.
+  const double capacity = st.grid.size * st.grid.spacing * st.options.pressure_cap;
+  const double w_max = *std::max_element(p.line_load.begin(), p.line_load.end());
+  const double b_max = *std::max_element(p.half_width.begin(), p.half_width.end());
+  if (w_max > 0.9 * capacity) throw strip_overload(cs, st.options, st.span, st.flanks, w_max, b_max, capacity, st.grid);
+  out.running_in = running_in_start(in, st);
+  run_meshes(in, st, positions, keep, out);
+  clock.lap("deterministic_contact");
+  if (out.running_in)
+    for (int g = 0; g < 2; ++g)
+      out.running_in->final[static_cast<std::size_t>(g)] =
+          active_part(g == 0 ? st.flanks.pinion.front() : st.flanks.wheel.front(), st.span, g);
+  return out;
+}
+
+void BoundaryElements::write(const FidelityInputs& in, State& st, Solution& s, MeshContactResult& r) {
+  if (s.statistical) {  // the statistical model beside, its series prefixed statistical_
+    const SurfaceModel& m = *st.model;
+    std::vector<Series> contact, validity;
+    add_statistical_series(*s.statistical, m, in.contact, contact, validity);
+    for (const auto* group : {&contact, &validity})
+      for (const Series& q : *group) r.statistical.push_back({"statistical_" + q.name, q.unit, q.values});
+    r.surface = m.surface;
+    r.plasticity_index = m.plasticity_index;
+    r.asperity_model = std::string(m.table.model().name());
+    for (const auto& w : s.statistical->warnings) r.warnings.push_back("statistical model: " + w);
+  }
+  add_contact_series(in.contact, s.first.strips, r);
+  // The pressure profiles kept (first mesh), on the strip's grid (the one every solver has).
+  std::vector<double> x(static_cast<std::size_t>(st.grid.size));
+  for (std::size_t j = 0; j < x.size(); ++j) x[j] = st.grid.x(static_cast<int>(j));
+  const std::vector<std::string> names = point_names(in.path);
+  for (std::size_t k = 0; k < s.first.strips.size(); ++k) {
+    if (s.first.strips[k].pressure.empty()) continue;
+    r.pressure_profiles.push_back(
+        {static_cast<int>(k), names[k], in.path.s[k], x, std::move(s.first.strips[k].pressure)});
+  }
+  if (!s.running_in) return;
+  using H = HistoryRow;
+  using C = Column<H>;
+  add_columns<H>(s.running_in->history, s.history,
+                 {C{"mesh", "1", [](const H& h) { return h.mesh; }},
+                  C{"new_plastic_deformation_m", "m", [](const H& h) { return h.new_plastic; }},
+                  C{"real_area_ratio_mean", "1", [](const H& h) { return h.real_area; }},
+                  C{"plastic_area_fraction_mean", "1", [](const H& h) { return h.plastic_fraction; }},
+                  C{"max_pressure_Pa", "Pa", [](const H& h) { return h.peak_pressure; }},
+                  C{"pinion_rq_m", "m", [](const H& h) { return h.flank[0].rq; }},
+                  C{"pinion_peak_height_m", "m", [](const H& h) { return h.flank[0].peak_height; }},
+                  C{"pinion_rsk", "1", [](const H& h) { return h.flank[0].rsk; }},
+                  C{"pinion_summit_radius_m", "m", [](const H& h) { return h.flank[0].summit_radius; }},
+                  C{"wheel_rq_m", "m", [](const H& h) { return h.flank[1].rq; }},
+                  C{"wheel_peak_height_m", "m", [](const H& h) { return h.flank[1].peak_height; }},
+                  C{"wheel_rsk", "1", [](const H& h) { return h.flank[1].rsk; }},
+                  C{"wheel_summit_radius_m", "m", [](const H& h) { return h.flank[1].summit_radius; }}});
+  r.running_in = std::move(s.running_in);
+}
+
+}  // namespace deterministic
 
 }  // namespace geartrib::contact

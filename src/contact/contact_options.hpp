@@ -1,0 +1,65 @@
+// The mesh cycle's contact options: the fidelity (one of the registered ones,
+// contact/fidelity_registry.hpp), the outputs asked for, the resolution knobs and running-in.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace geartrib {
+
+// A contact fidelity, by the name it is registered under (contact/fidelities.hpp lists them):
+// uncoupled, coupled, deterministic, ... The case table's choices are the registry's names, so
+// a value always names a registered fidelity (its name points into the registry's entry).
+class ContactFidelity {
+ public:
+  constexpr ContactFidelity() = default;
+  constexpr explicit ContactFidelity(std::string_view name) : name_(name) {}
+  constexpr std::string_view name() const { return name_; }
+  friend constexpr bool operator==(ContactFidelity a, ContactFidelity b) { return a.name_ == b.name_; }
+  // The built-in ones, for code and tests that name them.
+  static const ContactFidelity uncoupled, coupled, deterministic;
+
+ private:
+  std::string_view name_ = "uncoupled";
+};
+inline constexpr ContactFidelity ContactFidelity::uncoupled{"uncoupled"};
+inline constexpr ContactFidelity ContactFidelity::coupled{"coupled"};
+inline constexpr ContactFidelity ContactFidelity::deterministic{"deterministic"};
+
+// Which pressure profiles a deterministic run keeps: at the path's points A, B, C, D, E, at
+// every position, or none.
+enum class PressureProfiles { points, all, none };
+
+// The mesh-cycle contact run: fidelity, the outputs asked for, and the resolution knobs.
+struct ContactSettings {
+  ContactFidelity fidelity;
+  bool real_area = true;  // outputs asked for
+  bool plastic_fraction = true;
+  bool asperity_stress = true;
+  bool mesh_stiffness = false;      // the tooth-pair stiffness along the path (needed anyway by stiffness load sharing)
+  int positions = 201;              // along A -> E of one tooth pair
+  int strip_points = 64;            // uncoupled quadrature across the strip
+  int height_points = 128;          // GW quadrature over summit heights
+  int table_points = 32;            // GW pressure-separation table points per summit sigma
+  int coupled_nodes = 128;          // coupled pressure elements
+  bool exact_strip_lookup = false;  // "cubic" cells in the pressure (false) or "exact": the table's inversion
+  int stress_table = 64;  // von Mises table intervals over sqrt(plastic share); 0: exact maximisation each time
+  // Deterministic: boundary-element size, the strip's half-length in the path's largest Hertz
+  // half-widths, the pressure profiles kept and the threads (0: all cores).
+  double element_size = 0.5e-6;  // [m]
+  double strip_halfwidths = 2.0;
+  PressureProfiles pressure_profiles = PressureProfiles::points;
+  int threads = 0;
+};
+
+// Running-in (deterministic fidelity): the plastic deformation of each flank point carried from
+// one mesh of the same teeth to the next, until shakedown or `meshes` meshes.
+struct RunningInSettings {
+  int meshes = 0;  // 0: one mesh, no running-in
+  // Plastic deformation below this counts as none [m]: the plastic area's threshold, and
+  // shakedown: a mesh that deforms no flank point by more.
+  double tolerance = 1e-9;
+  std::string teeth = "pair";  // "pair": one pinion and one wheel tooth; "hunting": every tooth, in mesh order
+};
+
+}  // namespace geartrib

@@ -1,0 +1,133 @@
+// The deterministic fidelity of the main job (contact.fidelity = "deterministic"): the flanks'
+// profiles rolled through the strip at every position of the path (deterministic_contact.hpp),
+// the statistical model on the same flanks beside it, and running-in over successive meshes.
+#pragma once
+
+#include "contact/contact_options.hpp"
+#include "contact/deterministic_contact.hpp"
+#include "contact/fidelity.hpp"
+#include "contact/half_plane_bem.hpp"
+#include "contact/statistical/strip_fidelities.hpp"
+
+#include <array>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace geartrib::contact {
+
+// The stretch of each flank's involute the run reads (arc coordinates sigma = rho^2/(2 r_b)):
+// the contact point's range on the path widened by the strip's half-length and one element.
+struct FlankSpan {
+  double first[2] = {0.0, 0.0};  // pinion, wheel [m]
+  double last[2] = {0.0, 0.0};
+  double active_first[2] = {0.0, 0.0};  // the contact point's range alone [m]
+  double active_last[2] = {0.0, 0.0};
+  double strip_half_length = 0.0;   // [m]
+  double max_step[2] = {0.0, 0.0};  // the largest move of the contact point along each flank between positions [m]
+  int positions = 0;
+  bool running_in = false;
+  double element_size = 0.0;  // [m]
+  int elements = 0;           // the strip's boundary elements
+  // Where a generated flank lies, whatever the strip, elements and load: from a module below the
+  // base circle to a module beyond the tip (so that changing a knob does not change the flank).
+  double generated_first[2] = {0.0, 0.0};
+  double generated_last[2] = {0.0, 0.0};
+  double length(int g) const { return last[g] - first[g]; }
+  // A measured trace of `length` centred on the flank's active part: where its first point lies.
+  double centred_start(int g, double length) const { return 0.5 * (active_first[g] + active_last[g]) - 0.5 * length; }
+};
+
+// The flanks a run rolls, supplied by the caller for the span: one track per tooth (`teeth[g]`
+// of them: 1 for a pair, z for the hunting order), each covering [first, last] of its gear.
+struct RollingFlanks {
+  std::vector<FlankTrack> pinion, wheel;
+};
+
+// What a deterministic run will take, estimated from its sizes alone (before any flank is made or
+// strip solved), from measured per-unit costs (docs/reference/performance.md#budgets).
+struct DeterministicWork {
+  double flank_points[2] = {0.0, 0.0};  // points of one flank profile of each gear
+  int teeth[2] = {1, 1};                // flank profiles held per gear (the hunting order: every tooth's)
+  int meshes = 1;                       // meshes planned (running-in may stop earlier, at shakedown)
+  int kept_profiles = 0;                // pressure profiles kept
+  int threads = 1;                      // solving threads (each with its own strip solver)
+  int cores = 1;                        // of them, running at once
+};
+struct DeterministicCost {
+  double flank_bytes = 0.0, profile_bytes = 0.0, solver_bytes = 0.0, position_bytes = 0.0;
+  double solves = 0.0;         // strip solves, every planned mesh
+  double solve_seconds = 0.0;  // one strip solve on one core [s]
+  double seconds = 0.0;        // the whole run's wall time [s]
+  double bytes() const { return flank_bytes + profile_bytes + solver_bytes + position_bytes; }
+};
+// The strip's boundary elements: contact.element_size and strip_halfwidths, the softer flank's
+// hardness capping the pressure and taking the plastic deformation (equal hardness: half each), the
+// subsurface stress when asked for, running_in.tolerance as the plastic overlap.
+DeterministicOptions deterministic_options(const ContactSettings& cs, const RunningInSettings& running_in,
+                                           const Material& pinion, const Material& wheel);
+// One strip solve's time on one core [s] for `elements` boundary elements.
+double strip_solve_seconds(int elements);
+DeterministicCost deterministic_cost(const FlankSpan& span, const DeterministicWork& work);
+// The threads a deterministic run solves its strips on: contact.threads, or the hardware's when 0,
+// at least 1 and at most one a position.
+int strip_threads(const ContactSettings& cs, int positions);
+
+namespace deterministic {
+
+inline constexpr std::array<std::string_view, 10> kKeys = {
+    "contact.positions",         "contact.outputs", "contact.element_size", "contact.strip_halfwidths",
+    "contact.pressure_profiles", "contact.threads", "running_in.meshes",    "running_in.tolerance",
+    "running_in.teeth",          "asperity.model"};
+inline constexpr std::array<TradeKnob, 3> kKnobs = {TradeKnob{"positions", "contact.positions"},
+                                                    {"element_size", "contact.element_size"},
+                                                    {"strip_halfwidths", "contact.strip_halfwidths"}};
+inline constexpr std::array<OutputGroup, 4> kGroups = {
+    OutputGroup{"/contact", "the flanks' profiles in contact across the strip, by boundary elements"},
+    OutputGroup{"/contact/pressure", "the pressure across the strip at the positions kept"},
+    OutputGroup{"/statistical",
+                "the statistical model (uncoupled) on the same flanks: their spectral moments from the profiles"},
+    OutputGroup{"/running_in", "the flanks' plastic deformation carried from mesh to mesh"}};
+
+// A row of the running-in history.
+struct HistoryRow {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();  // row 0: before any mesh
+  double mesh = 0.0, new_plastic = kNaN, real_area = kNaN, plastic_fraction = kNaN, peak_pressure = kNaN;
+  surface::ProfileStatistics flank[2];
+};
+
+// The flanks' profiles rolled through the strip by boundary elements, with the statistical model
+// on the same flanks beside it and running-in over successive meshes.
+struct BoundaryElements {
+  static constexpr std::string_view name = "deterministic";
+  static constexpr std::string_view description =
+      "the flanks' profiles in contact through boundary elements, sliding past each other along the path";
+  static constexpr FidelityTraits traits{kKeys,   kKnobs, {false, true}, "deterministic", "", "max_von_mises_Pa",
+                                         kGroups, true};
+
+  struct State {
+    FlankSpan span;
+    DeterministicOptions options;
+    HalfPlaneGrid grid;
+    std::array<std::vector<double>, 2> sigma;  // the contact point's arc coordinate on each flank [m]
+    int teeth[2] = {1, 1};
+    bool hunting = false;
+    RollingFlanks flanks;
+    std::optional<SurfaceModel> model;  // the statistical model of the flanks' profiles (both rough)
+    const SurfaceModel* surface() const { return model ? &*model : nullptr; }
+  };
+  struct Solution {
+    std::optional<StatisticalSolution> statistical;
+    MeshPass first;  // the first mesh's strips and pressure profiles
+    std::vector<HistoryRow> history;
+    std::optional<RunningInResult> running_in;
+  };
+  static State prepare(const FidelityInputs& in, StageClock& clock);
+  static Solution solve(const FidelityInputs& in, State& state, const std::vector<double>& share, StageClock& clock);
+  static void write(const FidelityInputs& in, State& state, Solution& s, MeshContactResult& r);
+};
+
+}  // namespace deterministic
+
+}  // namespace geartrib::contact
