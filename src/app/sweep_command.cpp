@@ -147,10 +147,10 @@ void run(const Options& o) {
   // Points already run on every thread: a deterministic point's positions then take one each
   // (contact.threads = 1, unless the sweep sets it).
   const runs::CaseLoader load = [&](const std::vector<io::CaseChange>& changes) {
-    if (threads == 1 || !base.contact.deterministic()) return io::load_case(case_file, changes);
+    if (threads == 1 || !base.contact.deterministic()) return io::prepare_case(io::load_case(case_file, changes));
     std::vector<io::CaseChange> one = {{"contact.threads", "1"}};
     one.insert(one.end(), changes.begin(), changes.end());
-    return io::load_case(case_file, one);
+    return io::prepare_case(io::load_case(case_file, one));
   };
   // Dynamic scheduling: each thread takes the next point when done with its last, so points of
   // unequal cost (fidelity, positions, failing early) balance over the threads.
