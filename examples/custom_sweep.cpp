@@ -16,6 +16,7 @@
 #include "case/gear_setup.hpp"
 #include "contact/mesh_contact.hpp"
 #include "io/case_file.hpp"
+#include "io/case_prepare.hpp"
 #include "runs/mesh_cycle.hpp"
 
 #include <algorithm>
@@ -26,7 +27,7 @@ using namespace geartrib;
 
 int main(int argc, char** argv) {
   const std::string file = argc > 1 ? argv[1] : GEARTRIB_DATA_DIR "/gears/m6z30-dry.toml";
-  const Case base = io::load_case(file);
+  const Case base = io::prepare_case(io::load_case(file));
 
   std::printf("%10s %8s %8s %11s %11s %10s %14s\n", "torque Nm", "Ra um", "psi", "max p0 MPa", "mean Ar/An",
               "max Ar/An", "real p GPa");
@@ -38,6 +39,7 @@ int main(int argc, char** argv) {
       c.operating.pinion_torque = torque;
       c.pinion.flank.roughness.ra = ra;
       c.wheel.flank.roughness.ra = ra;
+      io::prepare_case(c);  // its derived data (summit radii, the pair's findings) for the variant
 
       // Step 2: the mesh depends on the torque (load sharing, Hertz pressures), so it is built
       // for each variant.

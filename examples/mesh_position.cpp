@@ -22,6 +22,7 @@
 #include "contact/mesh_contact.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "io/case_file.hpp"
+#include "io/case_prepare.hpp"
 #include "runs/mesh_cycle.hpp"
 
 #include <cstdio>
@@ -32,7 +33,7 @@ using namespace geartrib;
 int main(int argc, char** argv) {
   // Step 1: the case. Paths inside it (the materials) are relative to the case file.
   const std::string file = argc > 1 ? argv[1] : GEARTRIB_DATA_DIR "/gears/m6z30.toml";
-  const Case c = io::load_case(file);
+  const Case c = io::prepare_case(io::load_case(file));
 
   // Step 2: the gear mesh: geometry, tooth stiffness and load sharing at the operating point.
   // Positions are distances s from T1 along the line of action; path().c is the pitch point.

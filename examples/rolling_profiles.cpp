@@ -15,6 +15,7 @@
 #include "case/gear_setup.hpp"
 #include "contact/deterministic_contact.hpp"
 #include "io/case_file.hpp"
+#include "io/case_prepare.hpp"
 #include "surface/flank_profile.hpp"
 
 #include <algorithm>
@@ -26,7 +27,7 @@ using namespace geartrib;
 
 int main(int argc, char** argv) {
   const std::string file = argc > 1 ? argv[1] : std::string(GEARTRIB_DATA_DIR) + "/gears/m6z30-dry.toml";
-  const Case c = io::load_case(file);
+  const Case c = io::prepare_case(io::load_case(file));
   const gear::GearMesh mesh = gear::case_mesh(c);
   const gear::PathOfContact& path = mesh.pair().path();
   const double rb1 = mesh.pair().pinion().base_radius, rb2 = mesh.pair().wheel().base_radius;

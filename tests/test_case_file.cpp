@@ -3,6 +3,7 @@
 #include "contact/rough_line_contact.hpp"
 #include "gear/mesh_dynamics.hpp"
 #include "io/case_file.hpp"
+#include "io/case_prepare.hpp"
 #include "io/input_error.hpp"
 #include "io/text_lines.hpp"
 #include "io/topography_files.hpp"
@@ -52,7 +53,7 @@ class BadInput : public ::testing::Test {
   }
   io::InputError load_error() {
     try {
-      io::load_case(dir_ / "gears/m6z30.toml");
+      io::prepare_case(io::load_case(dir_ / "gears/m6z30.toml"));
     } catch (const io::InputError& e) {
       return e;
     }
@@ -117,7 +118,7 @@ TEST(InputErrorMessage, ControlCharactersEscaped) {
   EXPECT_EQ(e.value(), std::string("1\0 Nm", 5));
   // A --set value with one is refused whole, before any unit is read from it.
   try {
-    io::load_case(test::source_dir() / "gears/m6z30.toml", {{"torque", std::string("1000\0 Nm", 8)}});
+    io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30.toml", {{"torque", std::string("1000\0 Nm", 8)}}));
     ADD_FAILURE() << "accepted";
   } catch (const io::InputError& err) {
     EXPECT_EQ(err.rule(), "a --set key or value may not hold control characters (shown as \\xNN)");
@@ -184,7 +185,7 @@ TEST_F(BadInput, ModelConstantOutOfRange) {
 TEST_F(BadInput, ModelConstantOverrideIsApplied) {
   edit("gears/m6z30.toml", "# [asperity.constants.continuous]\n# plastic_scale = 3.27",
        "[asperity.constants.continuous]\nplastic_scale = 5.0");
-  const Case c = io::load_case(dir_ / "gears/m6z30.toml");
+  const Case c = io::prepare_case(io::load_case(dir_ / "gears/m6z30.toml"));
   EXPECT_DOUBLE_EQ(asperity::make_case_model(c, "continuous")->constant("plastic_scale"), 5.0);
   EXPECT_DOUBLE_EQ(asperity::make_case_model(c, "continuous")->constant("area_scale"),
                    asperity::fitted::continuous_area_scale);
@@ -206,7 +207,7 @@ TEST_F(BadInput, FlowCurveMustStartAtYield) {
 
 TEST_F(BadInput, GreenCylinderConstantByName) {
   edit("gears/m6z30.toml", "yield_constant = 1.64", "yield_constant = \"green-2005\"");
-  const Case c = io::load_case(dir_ / "gears/m6z30.toml");
+  const Case c = io::prepare_case(io::load_case(dir_ / "gears/m6z30.toml"));
   EXPECT_NEAR(c.asperity.cylinder_yield_constant, 1.795, 5e-4);  // Green 2005 at nu = 0.3, 4 digits
 }
 
@@ -236,7 +237,7 @@ TEST_F(BadInput, MeasuredFlanksGiveTheirSummitStatistics) {
   replace_line(toml, "ra = \"0.8 um\"", "topography = { file = \"pinion.h5\", form = 1, outliers = 5.0 }");
   replace_line(toml, "summit_radius = \"1.75 um\"", "summit_radius = \"2 um\"");
   replace_line(toml, "ra = \"0.8 um\"", "topography = { file = \"wheel.csv\", fill = true }");
-  const Case c = io::load_case(toml);
+  const Case c = io::prepare_case(io::load_case(toml));
   ASSERT_TRUE(c.pinion.flank.measured.has_value());
   surface::HeightGrid g = io::read_topography(dir_ / "gears/pinion.h5");
   surface::CleanupOptions o;
@@ -256,7 +257,7 @@ TEST(CaseFile, MeasuredPatchSynthesisKeys) {
   // The shipped measured case synthesises both flanks (psd, seeds 1 and 1001, the default length):
   // the loader keeps each patch's profile spectrum along x, that of the cleaned surface (every line).
   const auto path = test::source_dir() / "gears/m6z30-measured.toml";
-  const Case c = io::load_case(path);
+  const Case c = io::prepare_case(io::load_case(path));
   ASSERT_TRUE(c.pinion.flank.topography.has_value());
   const surface::TopographySpec& t = *c.pinion.flank.topography;
   EXPECT_EQ(t.synthesis, surface::SynthesisMethod::psd);
@@ -275,15 +276,15 @@ TEST(CaseFile, MeasuredPatchSynthesisKeys) {
   EXPECT_EQ(got.psd, want.psd);
   EXPECT_EQ(got.heights, want.heights);
   // Changed on the command line; none keeps no spectrum (a case without the keys loads as before).
-  const Case d = io::load_case(path, {{"pinion.flank.topography.synthesis", "iaaft"},
-                                      {"pinion.flank.topography.synthesis_length", "12 mm"},
-                                      {"wheel.flank.topography.synthesis", "none"}});
+  const Case d = io::prepare_case(io::load_case(path, {{"pinion.flank.topography.synthesis", "iaaft"},
+                                                       {"pinion.flank.topography.synthesis_length", "12 mm"},
+                                                       {"wheel.flank.topography.synthesis", "none"}}));
   EXPECT_EQ(d.pinion.flank.topography->synthesis, surface::SynthesisMethod::iaaft);
   EXPECT_DOUBLE_EQ(d.pinion.flank.topography->synthesis_length, 12e-3);
   EXPECT_FALSE(d.wheel.flank.patch_spectrum.has_value());
   // The same seed on both flanks is warned about at the wheel's key (the same phases), not refused.
-  const Case e =
-      io::load_case(path, {{"contact.fidelity", "deterministic"}, {"wheel.flank.topography.synthesis_seed", "1"}});
+  const Case e = io::prepare_case(
+      io::load_case(path, {{"contact.fidelity", "deterministic"}, {"wheel.flank.topography.synthesis_seed", "1"}}));
   bool warned = false;
   for (const auto& w : e.warnings)
     warned = warned || w.find("wheel.flank.topography.synthesis_seed") != std::string::npos;
@@ -313,15 +314,16 @@ TEST_F(BadInput, MeasuredFlankErrorsNameTheFile) {
 TEST_F(BadInput, PartsRequireOnlyTheKeysTheyUse) {
   edit("gears/m6z30.toml", "[friction]\nmu = 0.1", "[friction]");
   edit("gears/m6z30.toml", "tip_radius = \"6.6 um\"", "");
-  const Case c = io::load_case(dir_ / "gears/m6z30.toml", {}, io::kGeometryPart | io::kRoughnessPart);
+  const Case c = io::prepare_case(io::load_case(dir_ / "gears/m6z30.toml", {}, io::kGeometryPart | io::kRoughnessPart));
   EXPECT_EQ(c.friction_coefficient, 0.0);
   EXPECT_EQ(c.asperity.cylinder_tip_radius, 0.0);
   const io::InputError e = load_error();
   EXPECT_EQ(e.key(), "friction.mu");
   EXPECT_NE(e.rule().find("missing required key"), std::string::npos) << e.rule();
-  EXPECT_EQ(io::load_case(dir_ / "gears/m6z30.toml", {{"mu", "0.1"}}).asperity.cylinder_tip_radius, 0.0);
+  EXPECT_EQ(io::prepare_case(io::load_case(dir_ / "gears/m6z30.toml", {{"mu", "0.1"}})).asperity.cylinder_tip_radius,
+            0.0);
   try {
-    io::load_case(dir_ / "gears/m6z30.toml", {{"mu", "0.1"}}, io::kAllParts);
+    io::prepare_case(io::load_case(dir_ / "gears/m6z30.toml", {{"mu", "0.1"}}, io::kAllParts));
     ADD_FAILURE() << "no InputError for the cylinder radius";
   } catch (const io::InputError& ce) {
     EXPECT_EQ(ce.key(), "asperity.cylinder.tip_radius");
@@ -330,7 +332,8 @@ TEST_F(BadInput, PartsRequireOnlyTheKeysTheyUse) {
 
 // What ran is what the case records: every key with its value in SI and its origin.
 TEST(CaseParameters, RecordsEveryKeyWithItsOrigin) {
-  const Case c = io::load_case(test::source_dir() / "gears/m6z30.toml", {{"module", "5mm"}, {"positions", "21"}});
+  const Case c = io::prepare_case(
+      io::load_case(test::source_dir() / "gears/m6z30.toml", {{"module", "5mm"}, {"positions", "21"}}));
   auto find = [&](const std::string& key) -> const ResolvedParameter& {
     for (const auto& p : c.parameters)
       if (p.key == key) return p;
@@ -339,11 +342,11 @@ TEST(CaseParameters, RecordsEveryKeyWithItsOrigin) {
     return none;
   };
   EXPECT_EQ(find("gear_pair.module").value, "0.005 m");
-  EXPECT_EQ(find("gear_pair.module").origin, "--set");
+  EXPECT_EQ(find("gear_pair.module").origin.text(), "--set");
   EXPECT_EQ(find("contact.positions").value, "21");
   EXPECT_EQ(find("gear_pair.face_width").value, "0.08 m");
-  EXPECT_NE(find("gear_pair.face_width").origin.find("m6z30.toml:"), std::string::npos);
-  EXPECT_EQ(find("gear_pair.center_distance").origin, "default");
+  EXPECT_NE(find("gear_pair.face_width").origin.text().find("m6z30.toml:"), std::string::npos);
+  EXPECT_EQ(find("gear_pair.center_distance").origin.text(), "default");
   EXPECT_EQ(find("pinion.teeth").value, "30");
   EXPECT_EQ(c.gear_pair.module, 5e-3);
   EXPECT_EQ(c.contact.positions, 21);
@@ -403,7 +406,7 @@ namespace {
 // The InputError a load with these changes throws (a failed expectation when none).
 io::InputError change_error(const std::vector<io::CaseChange>& changes) {
   try {
-    io::load_case(test::source_dir() / "gears/m6z30.toml", changes);
+    io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30.toml", changes));
   } catch (const io::InputError& e) {
     return e;
   }
@@ -451,14 +454,16 @@ TEST(CaseLimits, IntegersAreRangeCheckedBeforeNarrowing) {
   EXPECT_NE(e.file().find("--set"), std::string::npos) << e.what();
   EXPECT_NE(e.rule().find("[5, 1000]"), std::string::npos) << e.rule();
   EXPECT_EQ(change_error(solid({{"teeth", "1001"}})).key(), "pinion.teeth");
-  EXPECT_EQ(io::load_case(test::source_dir() / "gears/m6z30.toml", solid({{"teeth", "1000"}})).gear_pair.teeth[1],
+  EXPECT_EQ(io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30.toml", solid({{"teeth", "1000"}})))
+                .gear_pair.teeth[1],
             1000);
   // A later change of the same key does not hide a value out of range (--set ... --positions 11).
   e = change_error({{"contact.positions", "4294967298"}, {"positions", "11"}});
   EXPECT_EQ(e.key(), "contact.positions");
   EXPECT_NE(e.rule().find("100000"), std::string::npos) << e.rule();
   EXPECT_EQ(change_error({{"positions", "100001"}}).key(), "contact.positions");
-  EXPECT_EQ(io::load_case(test::source_dir() / "gears/m6z30.toml", {{"positions", "100000"}}).contact.positions,
+  EXPECT_EQ(io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30.toml", {{"positions", "100000"}}))
+                .contact.positions,
             100000);
 }
 
@@ -470,7 +475,7 @@ TEST_F(BadInput, InfiniteAfterTheUnitIsRefused) {
   EXPECT_EQ(e.key(), "youngs_modulus");
   EXPECT_NE(e.rule().find("finite"), std::string::npos) << e.rule();
   edit("materials/steel-45.toml", "\"1e308 GPa\"", "\"1e4 GPa\"");  // 1e13 Pa: at the limit
-  EXPECT_NO_THROW(io::load_case(dir_ / "gears/m6z30.toml"));
+  EXPECT_NO_THROW(io::prepare_case(io::load_case(dir_ / "gears/m6z30.toml")));
   edit("materials/steel-45.toml", "\"1e4 GPa\"", "\"1.0001e4 GPa\"");
   EXPECT_NE(load_error().rule().find("must lie in"), std::string::npos);
 }
@@ -484,11 +489,12 @@ TEST(CaseLimits, QuantitiesAreRangeCheckedInSi) {
   EXPECT_EQ(change_error({{"ra", "0.8e300 um"}}).key(), "pinion.flank.ra");
   EXPECT_EQ(change_error({{"module", "9007199254740993"}}).key(), "gear_pair.module");
   // The limit itself is accepted and warned about; one past it is refused.
-  const Case at = io::load_case(test::source_dir() / "gears/m6z30.toml", solid({{"module", "10 m"}}));
+  const Case at = io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30.toml", solid({{"module", "10 m"}})));
   EXPECT_EQ(at.gear_pair.module, 10.0);
   EXPECT_TRUE(warned(at, "gear_pair.module"));
   EXPECT_EQ(change_error(solid({{"module", "10.0001 m"}})).key(), "gear_pair.module");
-  EXPECT_EQ(io::load_case(test::source_dir() / "gears/m6z30.toml", {{"torque", "1e10 N m"}}).operating.pinion_torque,
+  EXPECT_EQ(io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30.toml", {{"torque", "1e10 N m"}}))
+                .operating.pinion_torque,
             1e10);
   EXPECT_EQ(change_error({{"torque", "1.0001e10 N m"}}).key(), "operating.pinion_torque");
 }
@@ -496,17 +502,18 @@ TEST(CaseLimits, QuantitiesAreRangeCheckedInSi) {
 // A gear value inside its range but outside the plausible band is read and warned about, naming the key.
 TEST(CaseLimits, ImplausibleGearValuesAreWarned) {
   const auto path = test::source_dir() / "gears/m6z30.toml";
-  EXPECT_TRUE(io::load_case(path).warnings.empty());
-  const Case c = io::load_case(path, solid({{"module", "6 m"}, {"torque", "1e8 N m"}, {"speed", "1e6 rpm"}}));
+  EXPECT_TRUE(io::prepare_case(io::load_case(path)).warnings.empty());
+  const Case c =
+      io::prepare_case(io::load_case(path, solid({{"module", "6 m"}, {"torque", "1e8 N m"}, {"speed", "1e6 rpm"}})));
   EXPECT_TRUE(warned(c, "gear_pair.module"));
   EXPECT_TRUE(warned(c, "operating.pinion_torque"));
   EXPECT_TRUE(warned(c, "operating.pinion_speed"));
   for (const auto& w : c.warnings) EXPECT_NE(w.find("--set"), std::string::npos) << w;
   // The band's edge is plausible, one past it is not.
-  EXPECT_FALSE(warned(io::load_case(path, {{"torque", "1e7 N m"}}), "operating.pinion_torque"));
-  EXPECT_TRUE(warned(io::load_case(path, {{"torque", "1.0001e7 N m"}}), "operating.pinion_torque"));
-  EXPECT_FALSE(warned(io::load_case(path, {{"ra", "25 um"}}), "pinion.flank.ra"));
-  EXPECT_TRUE(warned(io::load_case(path, {{"ra", "26 um"}}), "pinion.flank.ra"));
+  EXPECT_FALSE(warned(io::prepare_case(io::load_case(path, {{"torque", "1e7 N m"}})), "operating.pinion_torque"));
+  EXPECT_TRUE(warned(io::prepare_case(io::load_case(path, {{"torque", "1.0001e7 N m"}})), "operating.pinion_torque"));
+  EXPECT_FALSE(warned(io::prepare_case(io::load_case(path, {{"ra", "25 um"}})), "pinion.flank.ra"));
+  EXPECT_TRUE(warned(io::prepare_case(io::load_case(path, {{"ra", "26 um"}})), "pinion.flank.ra"));
 }
 
 // A bare number is SI: one that is implausible (or out of range) as SI but plausible in another
@@ -521,7 +528,7 @@ TEST(CaseLimits, BareNumbersAUnitWouldMakePlausibleAreRefused) {
       << e.rule();
   EXPECT_NE(e.rule().find("did you mean \"4.5 mm\"? Give the unit (\"4.5 m\" if that is meant)"), std::string::npos)
       << e.rule();
-  EXPECT_TRUE(warned(io::load_case(path, solid({{"module", "4.5 m"}})), "gear_pair.module"));
+  EXPECT_TRUE(warned(io::prepare_case(io::load_case(path, solid({{"module", "4.5 m"}}))), "gear_pair.module"));
   // Out of range as SI: the unit probably meant (no "if that is meant": it would be refused).
   e = change_error({{"pressure_angle", "20"}});
   EXPECT_EQ(e.key(), "gear_pair.pressure_angle");
@@ -534,8 +541,8 @@ TEST(CaseLimits, BareNumbersAUnitWouldMakePlausibleAreRefused) {
   e = change_error({{"summit_radius", "5"}});
   EXPECT_NE(e.rule().find("did you mean \"5 mm\" or \"5 um\"?"), std::string::npos) << e.rule();
   // A bare number plausible as SI is read; one no unit makes plausible is warned about, as before.
-  EXPECT_TRUE(io::load_case(path, {{"module", "0.006"}}).warnings.empty());
-  const Case heavy = io::load_case(path, {{"torque", "1e8"}});  // 1e8 kN m would be out of range
+  EXPECT_TRUE(io::prepare_case(io::load_case(path, {{"module", "0.006"}})).warnings.empty());
+  const Case heavy = io::prepare_case(io::load_case(path, {{"torque", "1e8"}}));  // 1e8 kN m would be out of range
   EXPECT_TRUE(warned(heavy, "operating.pinion_torque"));
   // A sweep axis is checked the same way before any point runs.
   const io::Parameter& module = *io::find_parameter("gear_pair.module").parameter;
@@ -551,7 +558,7 @@ TEST(CaseParameters, SetListsTakeBareWords) {
   const auto path = test::source_dir() / "gears/m6z30.toml";
   for (const char* typed : {"[real_area, plastic_fraction]", "[\"real_area\", \"plastic_fraction\"]",
                             " [ real_area ,plastic_fraction ] ", "[real_area, \"plastic_fraction\"]"}) {
-    const Case c = io::load_case(path, {{"contact.outputs", typed}});
+    const Case c = io::prepare_case(io::load_case(path, {{"contact.outputs", typed}}));
     EXPECT_TRUE(c.contact.real_area) << typed;
     EXPECT_TRUE(c.contact.plastic_fraction) << typed;
     EXPECT_FALSE(c.contact.asperity_stress) << typed;
@@ -574,7 +581,7 @@ TEST(CaseParameters, SetListsTakeBareWords) {
 TEST(CaseLimits, ImplausibleGeometryIsBlamedBeforeThePairItGives) {
   const auto fzg = test::source_dir() / "validation/fzg-type-c/fzg-c.toml";
   try {
-    io::load_case(fzg, {{"module", "4.5 m"}});
+    io::prepare_case(io::load_case(fzg, {{"module", "4.5 m"}}));
     ADD_FAILURE() << "no InputError";
   } catch (const io::InputError& e) {
     EXPECT_EQ(e.key(), "gear_pair.module");
@@ -585,7 +592,7 @@ TEST(CaseLimits, ImplausibleGeometryIsBlamedBeforeThePairItGives) {
   }
   // A plausible module with an impossible centre distance still blames the centre distance.
   try {
-    io::load_case(fzg, {{"center_distance", "80 mm"}});
+    io::prepare_case(io::load_case(fzg, {{"center_distance", "80 mm"}}));
     ADD_FAILURE() << "no InputError";
   } catch (const io::InputError& e) {
     EXPECT_EQ(e.key(), "gear_pair.center_distance");
@@ -599,11 +606,11 @@ TEST(CaseLimits, TinyBoreIsRefusedAtTheBore) {
   io::InputError e = change_error({{"pinion.bore_diameter", "60e-300 mm"}});
   EXPECT_EQ(e.key(), "pinion.bore_diameter");
   EXPECT_NE(e.rule().find("1/50"), std::string::npos) << e.rule();
-  const Case c = io::load_case(path);
+  const Case c = io::prepare_case(io::load_case(path));
   const double root_diameter = c.gear_pair.module * (c.gear_pair.teeth[0] - 2.0 * c.gear_pair.dedendum_coefficient);
   const std::string at = fmt::format("{:.17g} m", root_diameter / 50.0 * (1.0 + 1e-12));
   const std::string past = fmt::format("{:.17g} m", root_diameter / 50.0 * (1.0 - 1e-9));
-  EXPECT_NO_THROW(io::load_case(path, {{"pinion.bore_diameter", at}}));
+  EXPECT_NO_THROW(io::prepare_case(io::load_case(path, {{"pinion.bore_diameter", at}})));
   EXPECT_EQ(change_error({{"pinion.bore_diameter", past}}).key(), "pinion.bore_diameter");
 }
 
@@ -613,7 +620,7 @@ TEST_F(BadInput, MaterialPathMustBeABoundedRegularFile) {
   const auto toml = dir_ / "gears/m6z30.toml";
   auto material_error = [&](const std::string& path) {
     try {
-      io::load_case(toml, {{"pinion.material", path}});
+      io::prepare_case(io::load_case(toml, {{"pinion.material", path}}));
     } catch (const io::InputError& e) {
       return e;
     }
@@ -631,11 +638,11 @@ TEST_F(BadInput, MaterialPathMustBeABoundedRegularFile) {
   text += std::string(io::kMaxTomlFileBytes - text.size(), 'x');
   std::ofstream(dir_ / "materials/big.toml") << text;
   ASSERT_EQ(std::filesystem::file_size(dir_ / "materials/big.toml"), io::kMaxTomlFileBytes);
-  EXPECT_NO_THROW(io::load_case(toml, {{"pinion.material", "../materials/big.toml"}}));
+  EXPECT_NO_THROW(io::prepare_case(io::load_case(toml, {{"pinion.material", "../materials/big.toml"}})));
   std::ofstream(dir_ / "materials/big.toml", std::ios::app) << 'x';
   e = material_error("../materials/big.toml");
   EXPECT_EQ(e.key(), "pinion.material");
   EXPECT_NE(e.rule().find("1 MiB"), std::string::npos) << e.rule();
   // The case file itself.
-  EXPECT_THROW(io::load_case("/dev/zero"), io::InputError);
+  EXPECT_THROW(io::prepare_case(io::load_case("/dev/zero")), io::InputError);
 }

@@ -11,6 +11,7 @@
 #include "contact/rough_line_contact.hpp"
 #include "gear/gear_mesh.hpp"
 #include "gear/mesh_dynamics.hpp"
+#include "io/case_prepare.hpp"
 #include "io/input_error.hpp"
 #include "reference_solutions.hpp"
 #include "runs/mesh_cycle.hpp"
@@ -28,7 +29,7 @@ using namespace geartrib;
 namespace {
 
 Case changed(std::vector<io::CaseChange> changes) {
-  return io::load_case(test::source_dir() / "gears/m6z30-dry.toml", changes);
+  return io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30-dry.toml", changes));
 }
 
 // Every value of every series finite.

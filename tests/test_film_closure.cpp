@@ -10,6 +10,7 @@
 #include "contact/mesh_lubrication.hpp"
 #include "gear/gear_mesh.hpp"
 #include "io/case_file.hpp"
+#include "io/case_prepare.hpp"
 #include "io/input_error.hpp"
 #include "lubrication/film_closure.hpp"
 #include "lubrication/lubricant.hpp"
@@ -184,7 +185,7 @@ contact::MeshContactResult run(const Case& c, int positions = 41) {
   return runs::run_mesh_contact(c, mesh, nullptr, {}, positions);
 }
 Case with(const std::vector<io::CaseChange>& changes) {
-  return io::load_case(test::source_dir() / "gears/m6z30.toml", changes);
+  return io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30.toml", changes));
 }
 
 TEST(LubricatedSummary, NamedPointsStandWhereTheyAreBAndDOnTheSinglePairSide) {
@@ -247,8 +248,9 @@ TEST(LubricatedSummary, LambdaAndIsoTakeTheFlanksRoughness) {
   EXPECT_NEAR(sum.summit_model_sigma / sum.composite_rq, 1.0, 1e-12);
   // Measured flanks (the shipped dry case run lubricated): their own Rq and Ra, whatever the summit
   // model rebuilds (1.87 um here against the measured 1.41 um).
-  const Case m = io::load_case(test::source_dir() / "gears/m6z30-measured.toml",
-                               {{"lubricant", "../lubricants/mineral-vg220.toml"}, {"oil_temperature", "70 degC"}});
+  const Case m = io::prepare_case(
+      io::load_case(test::source_dir() / "gears/m6z30-measured.toml",
+                    {{"lubricant", "../lubricants/mineral-vg220.toml"}, {"oil_temperature", "70 degC"}}));
   const auto rm = run(m);
   ASSERT_TRUE(rm.lubrication_summary.has_value());
   const auto& ms = *rm.lubrication_summary;
@@ -296,7 +298,8 @@ TEST(LubricatedCycle, TractionCurveIsTheFilmsTraction) {
 }
 
 TEST(LubricatedSummary, NoLubricantRunsALubricatedCaseDry) {
-  const auto dry = run(io::load_case(test::source_dir() / "gears/m6z30.toml", {{"lubricant", "none"}}));
+  const auto dry =
+      run(io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30.toml", {{"lubricant", "none"}})));
   EXPECT_FALSE(dry.lubrication_summary.has_value());
   EXPECT_TRUE(dry.lubrication.empty());
   const auto seed = run(test::seed_case());

@@ -1,6 +1,7 @@
 // The FZG load stages: the compiled table against its data file (gears/fzg/load-stages.csv), the
 // two lever arms against each other, the torques a case resolves from a stage, and the refusals.
 #include "io/case_file.hpp"
+#include "io/case_prepare.hpp"
 #include "io/fzg_load_stages.hpp"
 #include "io/input_error.hpp"
 #include "test_support.hpp"
@@ -180,29 +181,31 @@ TEST(FzgLoadStages, RefusesWhatTheTableDoesNotHold) {
 // table as its origin; a --set torque replaces the stage, a --set stage the torque.
 TEST(FzgLoadStages, CaseResolvesTheStagesTorque) {
   const auto file = test::source_dir() / "gears/fzg-c.toml";
-  const Case c = io::load_case(file);
+  const Case c = io::prepare_case(io::load_case(file));
   EXPECT_EQ(c.operating.pinion_torque, 265.0);
   ASSERT_NE(recorded(c, "operating.pinion_torque"), nullptr);
   EXPECT_EQ(recorded(c, "operating.pinion_torque")->value, "265 N m");
-  EXPECT_EQ(recorded(c, "operating.pinion_torque")->origin,
+  EXPECT_EQ(recorded(c, "operating.pinion_torque")->origin.text(),
             "FZG load stage 10 of GF-C/8.3/90, 0.35 m arm (gears/fzg/load-stages.csv)");
   for (std::size_t i = 0; i + 1 < c.parameters.size(); ++i) {  // the torque's place in the table's order
     if (c.parameters[i].key == "operating.pinion_torque") {
       EXPECT_EQ(c.parameters[i + 1].key, "operating.fzg_load_stage");
     }
   }
-  EXPECT_EQ(io::load_case(file, {{"fzg_load_stage", "8"}}).operating.pinion_torque, 171.585);
-  EXPECT_EQ(io::load_case(file, {{"fzg_test", "PT-C"}}).operating.pinion_torque, 372.6);
-  const Case given = io::load_case(file, {{"torque", "300Nm"}});
+  EXPECT_EQ(io::prepare_case(io::load_case(file, {{"fzg_load_stage", "8"}})).operating.pinion_torque, 171.585);
+  EXPECT_EQ(io::prepare_case(io::load_case(file, {{"fzg_test", "PT-C"}})).operating.pinion_torque, 372.6);
+  const Case given = io::prepare_case(io::load_case(file, {{"torque", "300Nm"}}));
   EXPECT_EQ(given.operating.pinion_torque, 300.0);
   EXPECT_EQ(recorded(given, "operating.fzg_load_stage"), nullptr);
-  EXPECT_EQ(recorded(given, "operating.pinion_torque")->origin, "--set");
-  EXPECT_EQ(io::load_case(test::source_dir() / "gears/fzg-a.toml").operating.pinion_torque, 534.5);
+  EXPECT_EQ(recorded(given, "operating.pinion_torque")->origin.text(), "--set");
+  EXPECT_EQ(io::prepare_case(io::load_case(test::source_dir() / "gears/fzg-a.toml")).operating.pinion_torque, 534.5);
   // The relabelled validation case runs the torque it always ran.
+  EXPECT_EQ(io::prepare_case(io::load_case(test::source_dir() / "validation/fzg-c-lubricated/fzg-c-lubricated.toml"))
+                .operating.pinion_torque,
+            372.6);
   EXPECT_EQ(
-      io::load_case(test::source_dir() / "validation/fzg-c-lubricated/fzg-c-lubricated.toml").operating.pinion_torque,
-      372.6);
-  EXPECT_EQ(io::load_case(test::source_dir() / "validation/fzg-type-c/fzg-c.toml").operating.pinion_torque, 302.0);
+      io::prepare_case(io::load_case(test::source_dir() / "validation/fzg-type-c/fzg-c.toml")).operating.pinion_torque,
+      302.0);
 }
 
 // Each refusal names the file, line, key, value and rule.
@@ -215,7 +218,7 @@ TEST(FzgLoadStages, CaseRefusals) {
     EXPECT_NE(pos, std::string::npos) << from;
     if (pos != std::string::npos) t.replace(pos, from.size(), to);
     try {
-      io::load_case_text(t, file, {}, io::kMeshCycleParts);  // what a run asks of a case
+      io::prepare_case(io::load_case_text(t, file, {}, io::kMeshCycleParts));  // what a run asks of a case
     } catch (const io::InputError& e) {
       return e;
     }

@@ -5,6 +5,7 @@
 // and never returning a NaN (the last check on every output names the dataset and the position).
 #include "contact/mesh_contact.hpp"
 #include "io/case_file.hpp"
+#include "io/case_prepare.hpp"
 #include "lubrication/flank_temperature.hpp"
 #include "lubrication/lubricant.hpp"
 #include "runs/mesh_cycle.hpp"
@@ -188,7 +189,7 @@ TEST(LubricantRanges, DataLeavingALawsRangeIsRefusedAtItsKey) {
 }
 
 Case stock(const std::vector<io::CaseChange>& changes) {
-  return io::load_case(test::source_dir() / "gears/m6z30.toml", changes);
+  return io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30.toml", changes));
 }
 
 TEST(LubricantRanges, HotSurfacesAreClampedAndFlaggedNeverNaN) {

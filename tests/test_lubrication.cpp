@@ -4,6 +4,7 @@
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
 #include "gear/gear_mesh.hpp"
+#include "io/case_prepare.hpp"
 #include "io/units.hpp"
 #include "lubrication/ehl_film.hpp"
 #include "lubrication/flank_temperature.hpp"
@@ -333,7 +334,8 @@ TEST(FlashTemperature, IsoMethodsFactorsAndItsClosedFormIsBlok) {
   EXPECT_NEAR(iso_thermo_elastic_factor(e_r, b_m, b_m), 50.0, 0.2);  // the standard rounds to 50
   // The standard's closed form (A.5) with X_J = X_Gamma = 1 against Blok's band formula with the
   // same mu at the same point of a profile-shifted pair (the FZG C gear, a_w 91.5 mm).
-  const Case c = io::load_case(test::source_dir() / "validation/fzg-c-lubricated/fzg-c-lubricated.toml");
+  const Case c =
+      io::prepare_case(io::load_case(test::source_dir() / "validation/fzg-c-lubricated/fzg-c-lubricated.toml"));
   const gear::GearMesh mesh = gear::case_mesh(c);
   const auto& pair = mesh.pair();
   IsoFlashGeometry g;
@@ -426,7 +428,7 @@ contact::MeshContactResult run(const Case& c) {
   return runs::run_mesh_contact(c, mesh, nullptr, {}, 41);
 }
 Case with(const std::vector<io::CaseChange>& changes) {
-  return io::load_case(test::source_dir() / "gears/m6z30.toml", changes);
+  return io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30.toml", changes));
 }
 
 TEST(LubricatedCycle, VanishingViscosityGivesTheDryResult) {

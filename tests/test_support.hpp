@@ -6,6 +6,7 @@
 #include "case/contact_setup.hpp"
 #include "case/gear_setup.hpp"
 #include "io/case_file.hpp"
+#include "io/case_prepare.hpp"
 
 #include <filesystem>
 
@@ -14,12 +15,12 @@ namespace geartrib::test {
 inline std::filesystem::path source_dir() { return GEARTRIB_SOURCE_DIR; }
 // The seed's own scene: its pair dry, the whole Hertz load on the asperities.
 inline const Case& seed_case() {
-  static const Case c = io::load_case(source_dir() / "gears/m6z30-dry.toml");
+  static const Case c = io::prepare_case(io::load_case(source_dir() / "gears/m6z30-dry.toml"));
   return c;
 }
 // The default case: the same pair lubricated (ISO VG 220 at 70 degC, assumed).
 inline const Case& lubricated_case() {
-  static const Case c = io::load_case(source_dir() / "gears/m6z30.toml");
+  static const Case c = io::prepare_case(io::load_case(source_dir() / "gears/m6z30.toml"));
   return c;
 }
 inline asperity::ContactPair seed_pair() { return asperity::contact_pair(seed_case()); }

@@ -2,6 +2,7 @@
 // zipping, shards that partition the points, SI values of swept text, and changes to a case
 // (aliases, roughness forms replaced, errors naming the --set).
 #include "contact/mesh_contact.hpp"
+#include "io/case_prepare.hpp"
 #include "io/column_table.hpp"
 #include "io/input_error.hpp"
 #include "io/sweep_merge.hpp"
@@ -119,7 +120,8 @@ TEST(SweepPlan, SiValuesOfSweptText) {
 
 TEST(CaseChanges, AliasesSetKeysAndReplaceRoughnessForms) {
   const auto file = test::source_dir() / "gears/m6z30.toml";
-  const Case c = io::load_case(file, {{"module", "5mm"}, {"rq", "0.4um"}, {"z1", "25"}, {"model", "kogut-etsion"}});
+  const Case c = io::prepare_case(
+      io::load_case(file, {{"module", "5mm"}, {"rq", "0.4um"}, {"z1", "25"}, {"model", "kogut-etsion"}}));
   EXPECT_DOUBLE_EQ(c.gear_pair.module, 0.005);
   EXPECT_EQ(c.gear_pair.teeth[0], 25);
   EXPECT_EQ(c.gear_pair.teeth[1], 30);
@@ -128,7 +130,7 @@ TEST(CaseChanges, AliasesSetKeysAndReplaceRoughnessForms) {
   EXPECT_EQ(c.pinion.flank.roughness.form, surface::FlankRoughness::Form::rq);
   EXPECT_EQ(c.wheel.flank.roughness.form, surface::FlankRoughness::Form::rq);
   EXPECT_NE(c.source_text.find("# --set rq=0.4um"), std::string::npos);  // provenance kept with the results
-  const Case same = io::load_case(file, {{"gear_pair.module", "5 mm"}});
+  const Case same = io::prepare_case(io::load_case(file, {{"gear_pair.module", "5 mm"}}));
   EXPECT_DOUBLE_EQ(same.gear_pair.module, 0.005);
 }
 
@@ -136,7 +138,7 @@ TEST(CaseChanges, ErrorsNameTheSet) {
   const auto file = test::source_dir() / "gears/m6z30.toml";
   auto message = [&](std::vector<io::CaseChange> changes) {
     try {
-      io::load_case(file, changes);
+      io::prepare_case(io::load_case(file, changes));
     } catch (const io::InputError& e) {
       return std::string(e.what());
     }

@@ -3,6 +3,7 @@
 // the mesh stiffness against ISO 6336-1.
 #include "gear/gear_mesh.hpp"
 #include "gear/iso6336_stiffness.hpp"
+#include "io/case_prepare.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -105,12 +106,13 @@ Case with_rim_ratio(Case c, double h) {
   return c;
 }
 const Case& fzg_c() {
-  static const Case c = io::load_case(test::source_dir() / "validation/fzg-type-c/fzg-c.toml", {}, io::kGeometryPart);
+  static const Case c =
+      io::prepare_case(io::load_case(test::source_dir() / "validation/fzg-type-c/fzg-c.toml", {}, io::kGeometryPart));
   return c;
 }
 const Case& z20_z60() {
-  static const Case c =
-      io::load_case(test::source_dir() / "validation/textbook-z20-z60/z20-z60.toml", {}, io::kGeometryPart);
+  static const Case c = io::prepare_case(
+      io::load_case(test::source_dir() / "validation/textbook-z20-z60/z20-z60.toml", {}, io::kGeometryPart));
   return c;
 }
 }  // namespace

@@ -8,6 +8,7 @@
 #include "contact/mesh_contact.hpp"
 #include "gear/gear_mesh.hpp"
 #include "io/case_file.hpp"
+#include "io/case_prepare.hpp"
 #include "io/input_error.hpp"
 #include "reference_solutions.hpp"
 #include "runs/mesh_cycle.hpp"
@@ -146,7 +147,8 @@ TEST(Quadrature, PanelsAtBreakpointsConverge) {
 TEST(Quadrature, JacksonGreenPlasticFractionConvergedAtTheDefault) {
   // Issue 14: on the default case Jackson-Green's plastic area fraction at the default 128 height
   // points within 1e-5 of 2048 points, at every position.
-  const Case c = io::load_case(test::source_dir() / "gears/m6z30-dry.toml", {{"model", "jackson-green"}});
+  const Case c =
+      io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30-dry.toml", {{"model", "jackson-green"}}));
   Case fine = c;
   fine.contact.height_points = 2048;
   const gear::GearMesh mesh = gear::case_mesh(c);
@@ -184,8 +186,9 @@ TEST(Validity, SeedCaseIsFullyPlasticAndOutsideTheRanges) {
 
 TEST(Validity, SmoothLightlyLoadedCaseIsElasticAndWithinRange) {
   // A mirror-like surface (psi 0.39) at a light load: no flag, no position beyond delta_c, regime elastic.
-  const Case c = io::load_case(test::source_dir() / "gears/m6z30-dry.toml",
-                               {{"ra", "0.005 um"}, {"summit_radius", "1000 um"}, {"torque", "5 N m"}});
+  const Case c =
+      io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30-dry.toml",
+                                     {{"ra", "0.005 um"}, {"summit_radius", "1000 um"}, {"torque", "5 N m"}}));
   const gear::GearMesh mesh = gear::case_mesh(c);
   const auto r = runs::run_mesh_contact(c, mesh, nullptr, {}, 11);
   EXPECT_EQ(r.regime, "elastic") << r.verdict;
@@ -208,7 +211,7 @@ TEST(EquivalentSurface, SpectralFlanksUseOneRadius) {
   replace("ra = \"0.8 um\"                    # seed section 4", "# ");
   replace("ra = \"0.8 um\"                    # as for", "# ");
   std::ofstream(dir / "gears/case.toml") << text;
-  const Case c = io::load_case(dir / "gears/case.toml");
+  const Case c = io::prepare_case(io::load_case(dir / "gears/case.toml"));
   const auto s = contact::case_equivalent_surface(c);
   const double r1 = c.pinion.flank.roughness.summit_radius, r2 = c.wheel.flank.roughness.summit_radius;
   EXPECT_NEAR(r1 * r2 / (r1 + r2) / s.summit_radius, 1.0, 1e-12);
@@ -219,7 +222,7 @@ TEST(EquivalentSurface, SpectralFlanksUseOneRadius) {
   replace("m0 = \"0.3 um^2\"", "summit_radius = \"1 um\"\nm0 = \"0.3 um^2\"");
   std::ofstream(dir / "gears/case.toml") << text;
   try {
-    io::load_case(dir / "gears/case.toml");
+    io::prepare_case(io::load_case(dir / "gears/case.toml"));
     ADD_FAILURE() << "no error";
   } catch (const io::InputError& e) {
     EXPECT_EQ(e.key(), "wheel.flank.summit_radius");

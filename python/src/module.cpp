@@ -16,6 +16,8 @@
 #include "contact/run_summary.hpp"
 #include "io/case_file.hpp"
 #include "io/case_parameters.hpp"
+#include "io/case_prepare.hpp"
+#include "io/case_records.hpp"
 #include "io/column_table.hpp"
 #include "io/input_error.hpp"
 #include "io/sweep_plan.hpp"
@@ -65,7 +67,8 @@ struct CaseSource {
   std::string name;
   std::string directory;
   Case load(const std::vector<io::CaseChange>& changes, unsigned parts = io::kMeshCycleParts) const {
-    return text ? io::load_case_text(*text, name, changes, parts, directory) : io::load_case(file, changes, parts);
+    return io::prepare_case(text ? io::load_case_text(*text, name, changes, parts, directory)
+                                 : io::load_case(file, changes, parts));
   }
 };
 
@@ -363,7 +366,7 @@ PYBIND11_MODULE(_geartrib, m) {
       .def_readonly("warnings", &Case::warnings)
       .def_property_readonly("parameters", [](const Case& c) {
         py::list out;
-        for (const auto& p : c.parameters) out.append(py::make_tuple(p.key, p.value, p.origin));
+        for (const auto& p : io::current_parameters(c)) out.append(py::make_tuple(p.key, p.value, p.origin.text()));
         return out;
       });
 

@@ -4,6 +4,7 @@
 #include "app/commands.hpp"
 
 #include "io/case_parameters.hpp"
+#include "io/case_records.hpp"
 #include "io/table_writer.hpp"
 
 #include <fmt/format.h>
@@ -37,9 +38,10 @@ void run(const Options& o) {
   // Only the geometry is required here: the listing says what the other parts would need.
   const Case c = load_case_reporting(o.case_options, io::kGeometryPart);
   std::size_t width = 0;
-  for (const auto& p : c.parameters) width = std::max(width, p.key.size());
+  const std::vector<ResolvedParameter> parameters = io::current_parameters(c);
+  for (const auto& p : parameters) width = std::max(width, p.key.size());
   std::string text = fmt::format("# {}\n", c.title);
-  for (const auto& p : c.parameters) text += fmt::format("{:<{}}  {:<24}  {}\n", p.key, width, p.value, p.origin);
+  for (const auto& p : parameters) text += fmt::format("{:<{}}  {:<24}  {}\n", p.key, width, p.value, p.origin.text());
   for (const io::Parameter& p : io::case_parameters()) {
     if (p.required_by == 0 || (p.required_by & io::kGeometryPart)) continue;
     const std::string key = p.key_for(0);

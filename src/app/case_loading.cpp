@@ -32,7 +32,7 @@ std::vector<io::CaseChange> case_changes(const CaseOptions& o) {
 }
 
 Case load_case_reporting(const CaseOptions& o, unsigned parts) {
-  Case c = io::load_case(case_path(o), case_changes(o), parts);
+  Case c = io::prepare_case(io::load_case(case_path(o), case_changes(o), parts));
   for (const auto& w : c.warnings) std::cerr << w << '\n';
   return c;
 }

@@ -6,6 +6,7 @@
 #include "case/case.hpp"
 #include "io/case_file.hpp"
 #include "io/case_parameters.hpp"
+#include "io/case_prepare.hpp"
 
 #include <filesystem>
 #include <string>
@@ -21,7 +22,7 @@ std::filesystem::path case_path(const CaseOptions& o);
 std::vector<io::CaseChange> case_changes(const CaseOptions& o);
 // Loads the case (the default one when the file is empty) with the command line's key=value
 // changes, requiring the keys of `parts` (io::CasePart; default: what the mesh cycle uses),
-// printing its warnings to stderr.
+// prepares its derived data (io::prepare_case), printing its warnings to stderr.
 Case load_case_reporting(const CaseOptions& o, unsigned parts = io::kMeshCycleParts);
 
 }  // namespace geartrib::app

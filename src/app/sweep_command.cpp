@@ -151,10 +151,10 @@ void run(const Options& o) {
   const auto& keys = contact::find_fidelity(base.contact.fidelity).traits.keys;
   const bool threaded = std::find(keys.begin(), keys.end(), "contact.threads") != keys.end();
   const runs::CaseLoader load = [&](const std::vector<io::CaseChange>& changes) {
-    if (threads == 1 || !threaded) return io::load_case(case_file, changes);
+    if (threads == 1 || !threaded) return io::prepare_case(io::load_case(case_file, changes));
     std::vector<io::CaseChange> one = {{"contact.threads", "1"}};
     one.insert(one.end(), changes.begin(), changes.end());
-    return io::load_case(case_file, one);
+    return io::prepare_case(io::load_case(case_file, one));
   };
   // Dynamic scheduling: each thread takes the next point when done with its last, so points of
   // unequal cost (fidelity, positions, failing early) balance over the threads.

@@ -12,6 +12,7 @@
 
 #include "fem/ccx_results.hpp"
 #include "io/case_file.hpp"
+#include "io/case_prepare.hpp"
 #include "io/column_table.hpp"
 #include "io/table_writer.hpp"
 #include "io/units.hpp"
@@ -174,7 +175,7 @@ Timed run_timed(const std::filesystem::path& case_file, const std::vector<io::Ca
                 const std::vector<io::CaseChange>& setting, double min_time) {
   std::vector<io::CaseChange> changes = base;
   changes.insert(changes.end(), setting.begin(), setting.end());
-  const Case c = io::load_case(case_file, changes);
+  const Case c = io::prepare_case(io::load_case(case_file, changes));
   Timed t;
   t.seconds = 1e300;
   double total = 0.0;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "asperity/asperity_settings.hpp"
+#include "case/origin.hpp"
 #include "contact/contact_options.hpp"
 #include "gear/gear_mesh.hpp"
 #include "gear/mesh_dynamics.hpp"
@@ -39,12 +40,15 @@ struct OperatingPoint {
   double bulk_temperature = 0.0;  // theta_M of the flanks [K]; 0: the ISO/TS 6336-20 estimate
 };
 
-// What a declared key resolved to: its value with the SI unit and where it came from
-// ("file:line", "--set" or "default"); written to /scene and printed by `geartrib case`.
+// What a declared key resolved to at load: its value with the SI unit, where it came from, and the
+// value as the file or the --set wrote it (TOML text; empty for a default), which located
+// messages quote. /parameters and `geartrib case` show the Case's values as it runs with these
+// origins (io/case_records.hpp).
 struct ResolvedParameter {
   std::string key;
   std::string value;
-  std::string origin;
+  Origin origin;
+  std::string written;
 };
 
 struct Case {
@@ -62,6 +66,7 @@ struct Case {
   ContactSettings contact;
   RunningInSettings running_in;
   asperity::AsperitySettings asperity;
+  std::string directory;                      // the folder the case's relative file names are taken from
   std::string source_text;                    // the case file as read, with the --set changes (stored with the results)
   std::vector<ResolvedParameter> parameters;  // every key as it ran
   std::vector<std::string> warnings;          // non-fatal findings of the loader (e.g. undercut), located

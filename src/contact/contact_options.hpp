@@ -2,6 +2,10 @@
 // contact/fidelity_registry.hpp), the outputs asked for, the resolution knobs and running-in.
 #pragma once
 
+#include "contact/deterministic_contact.hpp"
+#include "contact/greenwood_williamson.hpp"
+#include "contact/rough_line_contact.hpp"
+
 #include <string>
 #include <string_view>
 
@@ -36,18 +40,19 @@ struct ContactSettings {
   bool real_area = true;  // outputs asked for
   bool plastic_fraction = true;
   bool asperity_stress = true;
-  bool mesh_stiffness = false;      // the tooth-pair stiffness along the path (needed anyway by stiffness load sharing)
-  int positions = 201;              // along A -> E of one tooth pair
-  int strip_points = 64;            // uncoupled quadrature across the strip
-  int height_points = 128;          // GW quadrature over summit heights
-  int table_points = 32;            // GW pressure-separation table points per summit sigma
-  int coupled_nodes = 128;          // coupled pressure elements
+  bool mesh_stiffness = false;  // the tooth-pair stiffness along the path (needed anyway by stiffness load sharing)
+  int positions = 201;          // along A -> E of one tooth pair
+  // The resolutions' defaults are the physics options' own (stated once, there).
+  int strip_points = contact::StripOptions{}.strip_points;                  // uncoupled quadrature across the strip
+  int height_points = contact::GreenwoodWilliamsonOptions{}.height_points;  // GW quadrature over summit heights
+  int table_points = contact::GreenwoodWilliamsonOptions{}.table_points_per_sigma;  // GW table points per summit sigma
+  int coupled_nodes = contact::StripOptions{}.coupled_nodes;                        // coupled pressure elements
   bool exact_strip_lookup = false;  // "cubic" cells in the pressure (false) or "exact": the table's inversion
   int stress_table = 64;  // von Mises table intervals over sqrt(plastic share); 0: exact maximisation each time
   // Deterministic: boundary-element size, the strip's half-length in the path's largest Hertz
   // half-widths, the pressure profiles kept and the threads (0: all cores).
-  double element_size = 0.5e-6;  // [m]
-  double strip_halfwidths = 2.0;
+  double element_size = contact::DeterministicOptions{}.element_size;  // [m]
+  double strip_halfwidths = contact::DeterministicOptions{}.strip_halfwidths;
   PressureProfiles pressure_profiles = PressureProfiles::points;
   int threads = 0;
 };
@@ -58,7 +63,7 @@ struct RunningInSettings {
   int meshes = 0;  // 0: one mesh, no running-in
   // Plastic deformation below this counts as none [m]: the plastic area's threshold, and
   // shakedown: a mesh that deforms no flank point by more.
-  double tolerance = 1e-9;
+  double tolerance = contact::DeterministicOptions{}.plastic_overlap;
   std::string teeth = "pair";  // "pair": one pinion and one wheel tooth; "hunting": every tooth, in mesh order
 };
 

@@ -54,6 +54,8 @@ const std::vector<FidelityEntry>& fidelities();
 // The one of that name; throws std::invalid_argument naming the known ones.
 const FidelityEntry& find_fidelity(std::string_view name);
 inline const FidelityEntry& find_fidelity(ContactFidelity f) { return find_fidelity(f.name()); }
+// The fidelity rolls the flanks' profiles (the deterministic one): a run of it reads their lines.
+inline bool rolls_flank_profiles(ContactFidelity f) { return find_fidelity(f).traits.needs.flank_profiles; }
 std::vector<std::string> fidelity_names();
 // "name: description; name: description; ..." (the case table's documentation).
 std::string fidelity_descriptions();

@@ -22,11 +22,6 @@ namespace geartrib::io {
 
 namespace {
 
-// The case's fidelity rolls the flanks' profiles (the deterministic one): it reads their lines.
-bool rolls_flank_profiles(const Case& c) {
-  return contact::find_fidelity(c.contact.fidelity).traits.needs.flank_profiles;
-}
-
 void require(TomlReader& r, std::string_view key, bool ok, const std::string& rule) {
   if (!ok) r.fail(key, rule);
 }
@@ -247,7 +242,7 @@ void read_parameter(TomlReader& r, const Parameter& p, int gear, Case& c, unsign
   if (!r.has(key)) {
     const bool fzg_torque = key == kTorqueKey && r.has(kFzgStageKey);  // the load stage gives it
     if ((p.required_by & parts) && !fzg_torque) r.fail(key, "missing required key (" + p.meaning + ")");
-    if (!flank_row && p.defaulted()) c.parameters.push_back({key, p.format(p.get(c, gear)), "default"});
+    if (!flank_row && p.defaulted()) c.parameters.push_back({key, p.format(p.get(c, gear)), r.origin(key), ""});
     return;
   }
   ParameterValue v;
@@ -296,7 +291,7 @@ void read_parameter(TomlReader& r, const Parameter& p, int gear, Case& c, unsign
     if (const std::string rule = value_rule(r, p, key, v.number); !rule.empty()) r.fail(key, rule);
   if (numeric && !p.plausible(v.number)) c.warnings.push_back(r.warning(key, implausible_text(p, v.number)));
   p.set(c, gear, v);
-  c.parameters.push_back({key, p.format(v), r.changed(key) ? "--set" : r.where(key)});
+  c.parameters.push_back({key, p.format(v), r.origin(key), r.value_text(key)});
 }
 
 // [asperity.constants.MODEL]: each constant checked by the model's own ranges.
@@ -318,36 +313,24 @@ void read_model_constants(TomlReader& r, Case& c) {
         r.fail(key, e.what());
       }
       c.asperity.constants[model_name].emplace_back(constant, v);
-      c.parameters.push_back({key, fmt::format("{:g}", v), r.changed(key) ? "--set" : r.where(key)});
+      c.parameters.push_back({key, fmt::format("{:g}", v), r.origin(key), r.value_text(key)});
     }
   }
 }
 
-constexpr std::size_t kFewSummits = 100;           // below this a summit statistic scatters by more than 10%
-constexpr double kReferenceProfilePoints = 65536;  // a generated profile's sample for its statistics
-
 // A component's validate(): its refusal (core::KeyedError naming the field) failed at the case key
-// `prefix` + field, or at the key the parameter table gives that field another name under.
+// of the Case member `prefix` + field (the table's field-to-key map, io::case_key_of_field).
 template <class Validate>
 void check_rules(TomlReader& r, const std::string& prefix, Validate validate) {
-  static const std::pair<const char*, const char*> kRenamed[] = {
-      {"dynamics.tolerances.relative", "dynamics.relative_tolerance"},
-      {"asperity.measured_axis_offset", "asperity.side_contact.measured_offset"},
-      {"asperity.measured_tip_gap", "asperity.side_contact.measured_tip_gap"},
-      {"asperity.cylinder_tip_radius", "asperity.cylinder.tip_radius"},
-      {"asperity.cylinder_yield_constant", "asperity.cylinder.yield_constant"}};
   try {
     validate();
   } catch (const core::KeyedError& e) {
-    std::string key = prefix + e.key();
-    for (const auto& [field, case_key] : kRenamed)
-      if (key == field) key = case_key;
-    r.fail(key, e.what());
+    r.fail(case_key_of_field(prefix + e.key()), e.what());
   }
 }
 
 // The flank's roughness form: exactly one of ra, rq, summits, spectral moments or a measured
-// topography (loaded and reduced to its summit statistics here).
+// topography (loaded and reduced to its summit statistics by io::prepare_case).
 void read_flank(TomlReader& r, Case& c, int gear) {
   GearSpec& g = gear == 0 ? c.pinion : c.wheel;
   const std::string p = gear == 0 ? "pinion." : "wheel.";
@@ -365,74 +348,18 @@ void read_flank(TomlReader& r, Case& c, int gear) {
       r.fail(f + leaf, "missing required key (" + find_parameter(f + leaf).parameter->meaning + ")");
   };
   if (g.flank.topography) {
-    // A measured flank: the cleaned surface's summits give density, height sigma and radius
-    // (summit_radius, if given, overrides the measured radius: grid sampling biases it).
+    // A measured flank: its file is read and reduced to its summits by io::prepare_case.
     const std::string t = f + "topography.";
     need("topography.file");
     const surface::TopographySpec& spec = *g.flank.topography;
     check_rules(r, t, [&] { spec.validate(); });
     const auto path = r.directory() / spec.file;
     if (const std::string why = data_file_problem(path, kNoSizeLimit); !why.empty()) r.fail(t + "file", why);
-    TopographyReadOptions read;
-    read.unit = spec.unit;
-    read.spacing = spec.spacing / spec.unit;
-    read.resample = spec.resample;
-    const double given_radius = rough.summit_radius;
-    const LoadedSurface loaded = load_surface(path, read, spec.clean);
-    for (const auto& w : loaded.warnings) c.warnings.push_back(w);  // units implausible for a flank
-    const surface::HeightGrid& grid = loaded.grid;
-    const bool trace = grid.nx < 3 || grid.ny < 3;
-    // The line along the involute: what the deterministic fidelity rolls, and a profile trace's
-    // roughness. A statistical run of an areal surface takes its summits only, not this line.
-    if (trace || rolls_flank_profiles(c)) {
-      try {
-        g.flank.measured_profile = surface::profile_from_grid(grid, spec.profile_along_x, spec.profile_at);
-      } catch (const std::invalid_argument& e) {
-        r.fail(t + "file", fmt::format("{}: {} along {}: {}{}", path.string(),
-                                       trace ? "the profile trace" : "the line the deterministic fidelity rolls",
-                                       spec.profile_along_x ? "x" : "y", e.what(),
-                                       trace ? ""
-                                             : " (" + t + "fill = true fills missing points; " + t +
-                                                   "profile_axis and " + t + "profile_at choose the line)"));
-      }
-    }
-    if (spec.synthesis != surface::SynthesisMethod::none) {
-      try {  // the spectrum a flank-long profile is synthesised from (every line along the involute)
-        g.flank.patch_spectrum = surface::profile_spectrum(grid, spec.profile_along_x);
-      } catch (const std::invalid_argument& e) {
-        r.fail(t + "synthesis", path.string() + ": " + e.what());
-      }
-    }
-    if (trace) {
-      // A profile trace (a stylus's line along the involute): its spectral moments give the
-      // roughness (McCool's summits), as for a generated profile.
-      if (r.has(f + "summit_radius"))
-        r.fail(f + "summit_radius", "a profile trace gives the summit radius (its spectral moments); remove it");
-      try {
-        const surface::FlankProfile& line = *g.flank.measured_profile;
-        rough = surface::spectral_roughness(surface::profile_statistics(line.z, line.spacing));
-      } catch (const std::invalid_argument& e) {
-        r.fail(t + "file", path.string() + ": " + e.what());
-      }
-      return;
-    }
-    try {
-      g.flank.measured = surface::surface_statistics(grid);
-      rough = surface::measured_roughness(*g.flank.measured);
-    } catch (const std::invalid_argument& e) {
-      r.fail(t + "file", path.string() + ": " + e.what());
-    }
-    if (r.has(f + "summit_radius")) rough.summit_radius = given_radius;
-    if (g.flank.measured->summits < kFewSummits)
-      c.warnings.push_back(
-          fmt::format("{}: warning: key '{}': only {} summits on the measured surface (statistics scatter "
-                      "by ~1/sqrt(n)); measure a larger area",
-                      r.where(t + "file"), t + "file", g.flank.measured->summits));
     return;
   }
   if (g.flank.profile) {
-    // A generated profile: its spectral moments (McCool's route to the summits) from a sample of
-    // kReferenceProfilePoints points; a deterministic run takes those of the profile it rolls.
+    // A generated profile: its spectral moments (McCool's route to the summits) come from a
+    // sample of it (io::prepare_case); a deterministic run takes those of the profile it rolls.
     if (r.has(f + "summit_radius"))
       r.fail(f + "summit_radius", "a generated profile gives the summit radius (its spectral moments); remove it");
     need("profile.kind");
@@ -441,7 +368,7 @@ void read_flank(TomlReader& r, Case& c, int gear) {
       spec.validate();
       rough.form = Form::spectral;
       if (spec.kind == surface::ProfileKind::smooth) {
-        if (!rolls_flank_profiles(c))
+        if (!contact::rolls_flank_profiles(c.contact.fidelity))
           throw std::invalid_argument(
               "a smooth profile has no roughness for the statistical model: only contact.fidelity = "
               "\"deterministic\" takes it");
@@ -451,10 +378,7 @@ void read_flank(TomlReader& r, Case& c, int gear) {
               "which a smooth profile has none of: give the flank a rough profile (ground or hobbed), or run the "
               "case dry (lubricant = none)");
         rough.m0 = rough.m2 = rough.m4 = 0.0;  // no statistics: the deterministic run skips the statistical model
-        return;
       }
-      const surface::FlankProfile sample = surface::generate_profile(spec, kReferenceProfilePoints * spec.spacing);
-      rough = surface::spectral_roughness(surface::profile_statistics(sample.z, sample.spacing));
     } catch (const core::KeyedError& e) {
       r.fail(f + "profile." + e.key(), e.what());  // the field the rule is about (rq, correlation_length, ...)
     } catch (const std::invalid_argument& e) {
@@ -489,7 +413,7 @@ void warn_shared_synthesis_seeds(const TomlReader& r, Case& c) {
   const auto& t1 = c.pinion.flank.topography;
   const auto& t2 = c.wheel.flank.topography;
   using surface::SynthesisMethod;
-  if (!rolls_flank_profiles(c) || !t1 || !t2 || t1->synthesis == SynthesisMethod::none ||
+  if (!contact::rolls_flank_profiles(c.contact.fidelity) || !t1 || !t2 || t1->synthesis == SynthesisMethod::none ||
       t2->synthesis == SynthesisMethod::none)
     return;
   const bool hunting = c.running_in.teeth == "hunting" && c.running_in.meshes > 0;
@@ -621,7 +545,7 @@ void read_fzg_load_stage(TomlReader& r, Case& c) {
   v.number = t.torque;
   const auto at = std::find_if(c.parameters.begin(), c.parameters.end(),
                                [](const ResolvedParameter& p) { return p.key == kFzgStageKey; });
-  c.parameters.insert(at, {std::string(kTorqueKey), row.format(v), t.origin});
+  c.parameters.insert(at, {std::string(kTorqueKey), row.format(v), Origin::data_file(t.origin), ""});
 }
 
 // [lubricant] given: the oil from its file or the fixed form, its temperatures checked against the
@@ -647,7 +571,8 @@ void read_lubrication(TomlReader& r, Case& c) {
       if (fixed_lubricant_key(p.key)) {
         const Parameter& row = *find_parameter(p.key).parameter;
         p.value = row.format(row.get(c, -1));
-        p.origin = path.string();
+        p.origin = Origin::data_file(path.string());
+        p.written.clear();
       }
   } else {
     for (const char* k : {"dynamic_viscosity", "pressure_viscosity_coefficient"})
@@ -760,46 +685,23 @@ Case load_case_from(TomlReader& r, const std::vector<CaseChange>& changes, unsig
   check_rules(r, "dynamics.", [&] { c.dynamics.validate(); });
   check_rules(r, "asperity.", [&] { c.asperity.validate(); });
 
-  // The flanks, when asked for (or given): one roughness form each, the same on both.
+  // The flanks, when asked for (or given): one roughness form each, the same on both (a measured
+  // flank's form, areal summits or a profile trace's moments, is its file's: io::prepare_case).
   const bool flanks = (parts & kRoughnessPart) || r.has("pinion.flank") || r.has("wheel.flank");
   if (flanks) {
     read_flank(r, c, 0);
     read_flank(r, c, 1);
-    if (c.pinion.flank.roughness.form != c.wheel.flank.roughness.form)
+    const bool measured = c.pinion.flank.topography || c.wheel.flank.topography;
+    if (!measured && c.pinion.flank.roughness.form != c.wheel.flank.roughness.form)
       r.fail("wheel.flank", "give both flanks' roughness in the same form as the pinion's");
     warn_shared_synthesis_seeds(r, c);
-    // One radius per run: the flanks' radii consistent with the equivalent surface (spectral: McCool's).
-    // (A smooth generated profile has none: the deterministic run alone takes it.)
-    if (c.pinion.flank.roughness.form != surface::FlankRoughness::Form::spectral ||
-        (c.pinion.flank.roughness.m4 > 0.0 && c.wheel.flank.roughness.m4 > 0.0)) {
-      const auto [r1, r2] = surface::flank_summit_radii(c.pinion.flank.roughness, c.wheel.flank.roughness);
-      c.pinion.flank.roughness.summit_radius = r1;
-      c.wheel.flank.roughness.summit_radius = r2;
-    }
   }
 
   r.check_all_used();
+  c.directory = r.directory().string();
   c.source_text = r.text();
   for (const CaseChange& ch : changes) c.source_text += "\n# --set " + ch.key + "=" + ch.value;
 
-  // The pair must exist: an impossible geometry is an error at the key to change; findings
-  // such as undercut are kept as located warnings. A pair built from an implausible value (a
-  // "4.5 m" module) is refused at that value first: it is the likely cause.
-  try {
-    const gear::SpurPair pair(c.gear_pair);
-    for (const auto& w : pair.warnings())
-      c.warnings.push_back(fmt::format("{}: warning: key '{}': {}", r.where(w.key), w.key, w.message));
-  } catch (const gear::GeometryError& e) {
-    for (const Parameter& p : case_parameters()) {
-      if (p.key.rfind("gear_pair.", 0) != 0 || !r.has(p.key)) continue;
-      const double v = p.get(c, -1).number;
-      if (!p.plausible(v))
-        r.fail(p.key, fmt::format("{} the plausible band {} of a spur gear, and the pair it gives cannot exist: {} "
-                                  "(key '{}')",
-                                  v < p.plausible_min ? "below" : "above", p.plausible_text(), e.what(), e.key()));
-    }
-    r.fail(e.key(), e.what());
-  }
   return c;
 }
 

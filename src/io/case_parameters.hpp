@@ -52,6 +52,10 @@ struct ParameterValue {
 
 struct Parameter {
   std::string key;  // dotted case-file key; "{gear}." rows stand for "pinion." and "wheel."
+  // The Case member it fills, by its path ("dynamics.tolerances.relative"), where that differs
+  // from the key; empty: the key. A component's refusal names the field (core::KeyedError), and
+  // case_key_of_field() maps it to the key.
+  std::string field;
   ParameterKind kind = ParameterKind::number;
   Dimension dimension = Dimension::dimensionless;
   unsigned required_by = 0;  // parts that need it given; 0: optional
@@ -100,6 +104,12 @@ struct ParameterLookup {
   int gear = -1;
 };
 ParameterLookup find_parameter(std::string_view key);
+
+// The case key of a Case member by its path: the row whose field (or key) it is, per gear for
+// "pinion."/"wheel." paths ("dynamics.tolerances.relative": dynamics.relative_tolerance;
+// "wheel.flank.topography.clean.outlier_limit": wheel.flank.topography.outliers); the path itself
+// when no row declares it.
+std::string case_key_of_field(std::string_view field);
 
 // A short name and the dotted keys it stands for (rq: both flanks' rq), from the table's aliases.
 struct CaseAlias {

@@ -2,6 +2,7 @@
 
 #include "contact/fidelity_registry.hpp"
 #include "contact/run_summary.hpp"
+#include "io/case_records.hpp"
 #include "io/hdf5_handles.hpp"
 #include "io/table_writer.hpp"
 
@@ -106,10 +107,10 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
     Handle parameters(H5Gcreate2(file, "/parameters", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                       "group /parameters");
     std::vector<std::string> keys, values, origins;
-    for (const auto& p : c.parameters) {
+    for (const auto& p : current_parameters(c)) {
       keys.push_back(p.key);
       values.push_back(p.value);
-      origins.push_back(p.origin);
+      origins.push_back(p.origin.text());
     }
     hdf5::strings_dataset(parameters, "key", keys);
     hdf5::strings_dataset(parameters, "value", values);

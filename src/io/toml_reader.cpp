@@ -203,6 +203,26 @@ std::string TomlReader::where(std::string_view key) const {
   return line > 0 ? file_ + ":" + std::to_string(line) : file_;
 }
 
+Origin TomlReader::origin(std::string_view key) const {
+  Origin o;
+  o.file = file_;
+  const toml::node* n = find(key);
+  if (!n) {
+    o.line = line_of(key);  // absent: the default, at its nearest enclosing table
+    return o;
+  }
+  if (const auto* ch = change_of(key)) {
+    o.kind = Origin::Kind::set;
+    o.set_key = ch->first;
+    o.set_value = ch->second;
+    return o;
+  }
+  o.kind = Origin::Kind::file;
+  o.line = static_cast<int>(n->source().begin.line);
+  o.column = static_cast<int>(n->source().begin.column);
+  return o;
+}
+
 std::string TomlReader::warning(std::string_view key, const std::string& message) const {
   const std::string value = value_text(key);
   return fmt::format("{}: warning: key '{}'{}: {}", where(key), key, value.empty() ? "" : " = " + value, message);

@@ -3,6 +3,7 @@
 // unknown (a misspelt key is an error, not a silent default).
 #pragma once
 
+#include "case/origin.hpp"
 #include "io/input_error.hpp"
 #include "io/units.hpp"
 
@@ -65,6 +66,12 @@ class TomlReader {
   // "file:line" of a key (or of its nearest enclosing table), or "file (--set key=value)" for a
   // key changed on the command line; for warnings and the parameters' origins.
   std::string where(std::string_view key) const;
+  // The same as a structure: the key's file, the line and column of its value, or the --set
+  // change naming it; an absent key's origin is the default, at its nearest enclosing table's line.
+  Origin origin(std::string_view key) const;
+  // The key's value as the file (or the --set) writes it: strings quoted, arrays item by item;
+  // empty when absent.
+  std::string value_text(std::string_view key) const;
   // "where: warning: key 'KEY' = VALUE: message", the form of every located warning.
   std::string warning(std::string_view key, const std::string& message) const;
   // Throws InputError for `key` with `rule`, pointing at the key's line and value.
@@ -79,7 +86,6 @@ class TomlReader {
   // absent and required (`what` names the expected value).
   const toml::node* take(std::string_view key, bool has_fallback, const std::string& what);
   int line_of(std::string_view key) const;
-  std::string value_text(std::string_view key) const;
   double to_quantity(const toml::node& n, std::string_view key, Dimension d) const;
   // A TOML integer or float as a double: finite, and an integer only within +-2^53 (exact).
   double node_number(const toml::node& n, std::string_view key) const;

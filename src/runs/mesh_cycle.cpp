@@ -11,6 +11,7 @@
 #include "gear/gear_mesh.hpp"
 #include "gear/mesh_dynamics.hpp"
 #include "io/case_parameters.hpp"
+#include "io/case_records.hpp"
 #include "io/input_error.hpp"
 #include "io/resource_budget.hpp"
 #include "solvers/integrators.hpp"
@@ -29,54 +30,6 @@ namespace geartrib::runs {
 
 namespace {
 
-const ResolvedParameter* recorded(const Case& c, const std::string& key) {
-  for (const auto& p : c.parameters)
-    if (p.key == key) return &p;
-  return nullptr;
-}
-
-// "file:line" into its parts; {origin, 0} for anything else ("--set", "default").
-std::pair<std::string, int> split_origin(const std::string& origin) {
-  const auto colon = origin.rfind(':');
-  if (colon == std::string::npos || colon + 1 == origin.size()) return {origin, 0};
-  int line = 0;
-  for (std::size_t i = colon + 1; i < origin.size(); ++i) {
-    if (origin[i] < '0' || origin[i] > '9') return {origin, 0};
-    line = line * 10 + (origin[i] - '0');
-  }
-  return {origin.substr(0, colon), line};
-}
-
-// The case file, from the origin of its required title (or any key read from a file).
-std::string case_file_of(const Case& c) {
-  if (const auto* t = recorded(c, "title"); t && split_origin(t->origin).second > 0)
-    return split_origin(t->origin).first;
-  for (const auto& p : c.parameters)
-    if (split_origin(p.origin).second > 0) return split_origin(p.origin).first;
-  return "the case";
-}
-
-// Where a key's value came from, for a located error: its file and line, or the case file and the --set.
-std::pair<std::string, int> location_of(const Case& c, const std::string& key) {
-  const ResolvedParameter* p = recorded(c, key);
-  if (!p) return {case_file_of(c), 0};
-  const auto [file, line] = split_origin(p->origin);
-  if (line > 0) return {file, line};
-  return {case_file_of(c) + " (" + p->origin + " " + key + "=" + p->value + ")", 0};
-}
-
-// A key's value as the case gave it, or `otherwise` when the case did not record it.
-std::string value_of(const Case& c, const std::string& key, const std::string& otherwise) {
-  const ResolvedParameter* p = recorded(c, key);
-  return p ? p->value : otherwise;
-}
-
-// A refusal of the value at `key`: located where it came from, with that value.
-[[noreturn]] void refuse_at(const Case& c, const std::string& key, const std::string& rule) {
-  const auto [file, line] = location_of(c, key);
-  throw io::InputError(file, line, key, value_of(c, key, ""), rule);
-}
-
 // The load the flanks cannot carry at any separation (the rough-surface table's search gives up):
 // an input error at the torque, naming the flanks' roughness and where each came from.
 [[noreturn]] void throw_overload(const Case& c, const std::string& what) {
@@ -86,26 +39,24 @@ std::string value_of(const Case& c, const std::string& key, const std::string& o
     const bool ra_or_rq = c.pinion.flank.roughness.form == surface::FlankRoughness::Form::ra ||
                           c.pinion.flank.roughness.form == surface::FlankRoughness::Form::rq;
     if (p.key == "roughness.eta_sigma_beta" && ra_or_rq)
-      roughness += fmt::format("{}{} = {} ({})", roughness.empty() ? "" : ", ", p.key, p.value, p.origin);
+      roughness += fmt::format("{}{} = {} ({})", roughness.empty() ? "" : ", ", p.key, p.value, p.origin.text());
     if (!flank) continue;
     const std::string leaf = p.key.substr(p.key.find(".flank.") + 7);
     if (leaf != "ra" && leaf != "rq" && leaf != "summit_sigma" && leaf != "summit_density" && leaf != "m0" &&
         leaf != "summit_radius" && leaf != "topography.file")
       continue;
-    roughness += fmt::format("{}{} = {} ({})", roughness.empty() ? "" : ", ", p.key, p.value, p.origin);
+    roughness += fmt::format("{}{} = {} ({})", roughness.empty() ? "" : ", ", p.key, p.value, p.origin.text());
   }
   // The torque as the case gave it: itself, or an FZG load stage (whose row names the table's torque).
-  const ResolvedParameter* torque = recorded(c, "operating.pinion_torque");
-  const bool stage = recorded(c, "operating.fzg_load_stage") != nullptr;
+  const ResolvedParameter* torque = io::find_record(c, "operating.pinion_torque");
+  const bool stage = io::find_record(c, "operating.fzg_load_stage") != nullptr;
   const std::string key = stage ? "operating.fzg_load_stage" : "operating.pinion_torque";
-  const auto [file, line] = location_of(c, key);
-  const ResolvedParameter* given = recorded(c, key);
-  throw io::InputError(file, line, key, given ? given->value : "",
-                       what +
-                           (stage && torque ? ": lower the load stage (its torque " + torque->value + ")"
-                                            : std::string(": lower the torque")) +
-                           ", or check the flanks' roughness" +
-                           (roughness.empty() ? std::string() : " (" + roughness + ")"));
+  throw io::located_error(c, key,
+                          what +
+                              (stage && torque ? ": lower the load stage (its torque " + torque->value + ")"
+                                               : std::string(": lower the torque")) +
+                              ", or check the flanks' roughness" +
+                              (roughness.empty() ? std::string() : " (" + roughness + ")"));
 }
 
 // A synthesised flank that leaves out more than this share of its patch's variance is warned about.
@@ -205,11 +156,10 @@ double profile_spacing(const surface::FlankSpec& flank) {
 void check_running_in_step(const Case& c, const contact::FlankSpan& span, PathHalfWidths& half_widths) {
   const double step = std::max(span.max_step[0], span.max_step[1]);
   if (!span.running_in || step <= span.strip_half_length) return;
-  const auto [file, line] = location_of(c, "contact.positions");
   const long most = static_cast<long>(io::find_parameter("contact.positions").parameter->max);
   const long needed = running_in_positions(c, span, half_widths, most);
-  throw io::InputError(
-      file, line, "contact.positions", std::to_string(span.positions),
+  throw io::located_error(
+      c, "contact.positions", std::to_string(span.positions),
       fmt::format("running-in needs every flank point in the strip at two positions or more: the "
                   "contact point moves up to {} along a flank between positions, more than the "
                   "strip's half-length {}; {}",
@@ -240,11 +190,10 @@ struct FlankRead {
 // interpolation between its points.
 void check_spacing(const FlankRead& f, double spacing, const std::string& where) {
   if (f.span.element_size >= spacing * (1.0 - 1e-9)) return;
-  const auto [file, line] = location_of(f.c, "contact.element_size");
-  throw io::InputError(file, line, "contact.element_size", um(f.span.element_size),
-                       fmt::format("finer than the {} spacing of {} ({}): the elements would resolve the "
-                                   "interpolation between its points; use elements of at least {}",
-                                   um(spacing), where, f.gear, um(spacing)));
+  throw io::located_error(f.c, "contact.element_size", um(f.span.element_size),
+                          fmt::format("finer than the {} spacing of {} ({}): the elements would resolve the "
+                                      "interpolation between its points; use elements of at least {}",
+                                      um(spacing), where, f.gear, um(spacing)));
 }
 
 // The generated stretch (a module below the base circle to a module beyond the tip) must hold the
@@ -252,11 +201,10 @@ void check_spacing(const FlankRead& f, double spacing, const std::string& where)
 void check_generated_stretch(const FlankRead& f, const std::string& what) {
   const contact::FlankSpan& span = f.span;
   if (span.first[f.g] >= span.generated_first[f.g] && span.last[f.g] <= span.generated_last[f.g]) return;
-  const auto [where, line] = location_of(f.c, "contact.strip_halfwidths");
-  throw io::InputError(where, line, "contact.strip_halfwidths", fmt::format("{:g}", f.c.contact.strip_halfwidths),
-                       fmt::format("the strip reaches {} beyond the {}'s active flank, past the {}'s end a "
-                                   "module beyond its tip: narrow the strip",
-                                   mm(span.strip_half_length), f.gear, what));
+  throw io::located_error(f.c, "contact.strip_halfwidths", fmt::format("{:g}", f.c.contact.strip_halfwidths),
+                          fmt::format("the strip reaches {} beyond the {}'s active flank, past the {}'s end a "
+                                      "module beyond its tip: narrow the strip",
+                                      mm(span.strip_half_length), f.gear, what));
 }
 
 // What a synthesis came from, before its teeth are made.
@@ -294,16 +242,15 @@ void synthesised_tracks(const FlankRead& f, std::vector<contact::FlankTrack>& tr
     try {
       s = surface::synthesise_profile(*f.flank.patch_spectrum, options, length);
     } catch (const std::invalid_argument& e) {
-      refuse_at(f.c, t + (given ? "synthesis_length" : "synthesis"), e.what());
+      throw io::located_error(f.c, t + (given ? "synthesis_length" : "synthesis"), e.what());
     }
     const double start = given ? span.centred_start(g, s.profile.length()) : span.generated_first[g];
     if (given && (start > span.first[g] || start + s.profile.length() < span.last[g])) {
-      const auto [where, line] = location_of(f.c, t + "synthesis_length");
-      throw io::InputError(where, line, t + "synthesis_length", mm(topo.synthesis_length),
-                           fmt::format("the synthesised profile, centred on the {}'s active flank, must cover the "
-                                       "{} the deterministic contact reads ({}); give at least that, or 0 (a "
-                                       "module below the base circle to a module beyond the tip)",
-                                       f.gear, mm(f.needed), f.why_needed));
+      throw io::located_error(f.c, t + "synthesis_length", mm(topo.synthesis_length),
+                              fmt::format("the synthesised profile, centred on the {}'s active flank, must cover the "
+                                          "{} the deterministic contact reads ({}); give at least that, or 0 (a "
+                                          "module below the base circle to a module beyond the tip)",
+                                          f.gear, mm(f.needed), f.why_needed));
     }
     if (tooth == 0) {
       record.profile_length = s.profile.length();
@@ -330,19 +277,17 @@ void measured_tracks(const FlankRead& f, std::vector<contact::FlankTrack>& track
   const char* axis = f.flank.topography && !f.flank.topography->profile_along_x ? "y" : "x";
   check_spacing(f, profile_spacing(f.flank), "the profile of " + file);
   if (p.length() < f.needed) {
-    const auto [where, line] = location_of(f.c, key);
-    throw io::InputError(where, line, key, file,
-                         fmt::format("its profile along {} is {} long; the deterministic contact reads {} of it "
-                                     "({}): give a trace of the whole flank (profile_axis, resample), "
-                                     "synthesise one from its spectrum (synthesis = \"psd\" or \"iaaft\" in "
-                                     "[{}.flank.topography]) or give a generated [{}.flank.profile]",
-                                     axis, mm(p.length()), mm(f.needed), f.why_needed, f.gear, f.gear));
+    throw io::located_error(f.c, key, file,
+                            fmt::format("its profile along {} is {} long; the deterministic contact reads {} of it "
+                                        "({}): give a trace of the whole flank (profile_axis, resample), "
+                                        "synthesise one from its spectrum (synthesis = \"psd\" or \"iaaft\" in "
+                                        "[{}.flank.topography]) or give a generated [{}.flank.profile]",
+                                        axis, mm(p.length()), mm(f.needed), f.why_needed, f.gear, f.gear));
   }
   const double start = span.centred_start(g, p.length());
   if (start > span.first[g] || start + p.length() < span.last[g]) {
-    const auto [where, line] = location_of(f.c, key);
-    throw io::InputError(
-        where, line, key, file,
+    throw io::located_error(
+        f.c, key, file,
         fmt::format("its profile along {} ({} long), centred on the {}'s active flank, does not "
                     "reach {} beyond it either side ({})",
                     axis, mm(p.length()), f.gear, mm(0.5 * (f.needed - (span.active_last[g] - span.active_first[g]))),
@@ -365,9 +310,9 @@ void generated_tracks(const FlankRead& f, std::vector<contact::FlankTrack>& trac
       tracks.push_back(
           {surface::generate_profile(spec, span.generated_last[g] - span.generated_first[g]), span.generated_first[g]});
     } catch (const core::KeyedError& e) {
-      refuse_at(f.c, f.gear + ".flank.profile." + e.key(), e.what());
+      throw io::located_error(f.c, f.gear + ".flank.profile." + e.key(), e.what());
     } catch (const std::invalid_argument& e) {
-      const auto [where, line] = location_of(f.c, f.gear + ".flank.profile.kind");
+      const auto [where, line] = io::location_of(f.c, f.gear + ".flank.profile.kind");
       throw io::InputError(where, line, f.gear + ".flank.profile", "", e.what());
     }
   }
@@ -404,7 +349,7 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
     } else if (f.flank.profile) {
       generated_tracks(f, tracks);
     } else {
-      const auto [where, line] = location_of(c, "contact.fidelity");
+      const auto [where, line] = io::location_of(c, "contact.fidelity");
       throw io::InputError(where, line, gear + ".flank", "",
                            "the deterministic fidelity rolls each flank's profile: give [" + gear +
                                ".flank.profile] (generated) or [" + gear +
@@ -444,11 +389,10 @@ void refuse_memory(const Case& c, const contact::FlankSpan& span, const int teet
   const double largest = std::max({cost.flank_bytes, cost.profile_bytes, cost.solver_bytes, cost.position_bytes});
   const std::string raise = ", or raise the budget";
   auto refuse = [&](const std::string& key, const std::string& value, const std::string& rule) {
-    const auto [file, line] = location_of(c, key);
-    throw io::InputError(file, line, key, value, rule);
+    throw io::located_error(c, key, value, rule);
   };
   if (largest == cost.profile_bytes)
-    refuse("contact.pressure_profiles", value_of(c, "contact.pressure_profiles", "all"),
+    refuse("contact.pressure_profiles", io::recorded_value(c, "contact.pressure_profiles", "all"),
            what +
                ": keep the profiles at the named points (\"points\") or none, or fewer positions "
                "(contact.positions)" +
@@ -457,7 +401,7 @@ void refuse_memory(const Case& c, const contact::FlankSpan& span, const int teet
     refuse("contact.threads", std::to_string(w.threads),
            what + ": fewer threads, or coarser elements (contact.element_size)" + raise);
   if (largest == cost.flank_bytes && (teeth[0] > 1 || teeth[1] > 1))
-    refuse("running_in.teeth", value_of(c, "running_in.teeth", "hunting"),
+    refuse("running_in.teeth", io::recorded_value(c, "running_in.teeth", "hunting"),
            what +
                ": the hunting order holds every tooth's flank; run the pair (running_in.teeth = \"pair\") or "
                "give the flanks a coarser profile spacing" +
@@ -467,7 +411,7 @@ void refuse_memory(const Case& c, const contact::FlankSpan& span, const int teet
     const std::string gear = g == 0 ? "pinion" : "wheel";
     const std::string key =
         (g == 0 ? c.pinion : c.wheel).flank.profile ? gear + ".flank.profile.spacing" : gear + ".flank.topography.file";
-    refuse(key, value_of(c, key, ""), what + ": a coarser or shorter flank profile" + raise);
+    refuse(key, io::recorded_value(c, key, ""), what + ": a coarser or shorter flank profile" + raise);
   }
   refuse("contact.positions", std::to_string(span.positions), what + ": fewer positions" + raise);
 }
@@ -499,17 +443,16 @@ void refuse_time(const Case& c, const contact::FlankSpan& span, const int teeth[
                          : fmt::format(": not even {:.0f} {} fit it", least, what_fits);
   };
   auto refuse = [&](const std::string& key, const std::string& value, const std::string& rule) {
-    const auto [file, line] = location_of(c, key);
-    throw io::InputError(file, line, key, value, rule);
+    throw io::located_error(c, key, value, rule);
   };
   if (largest == meshes)
     refuse("running_in.meshes", std::to_string(c.running_in.meshes),
            what + fits_in(w.meshes, 1, "meshes") + " (a run stops earlier at shakedown)" + raise);
   if (largest == pairs)
-    refuse("running_in.teeth", value_of(c, "running_in.teeth", "hunting"),
+    refuse("running_in.teeth", io::recorded_value(c, "running_in.teeth", "hunting"),
            what + ": the hunting order solves every tooth pair; run the pair (running_in.teeth = \"pair\")" + raise);
   if (largest == elements)
-    refuse("contact.element_size", value_of(c, "contact.element_size", ""),
+    refuse("contact.element_size", io::recorded_value(c, "contact.element_size", ""),
            what + ": coarser elements, or a shorter strip (contact.strip_halfwidths)" + raise);
   refuse("contact.positions", std::to_string(span.positions), what + fits_in(span.positions, 2, "positions") + raise);
 }
@@ -651,11 +594,11 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
     throw_overload(c, e.what());  // at the torque, naming the roughness and where each came from
   } catch (const core::KeyedError& e) {
     // A refusal the physics pins on one key: located where that key's value came from.
-    refuse_at(c, e.key(), e.what());
+    throw io::refusal_error(c, e);
   } catch (const std::invalid_argument& e) {
     // The case's values are what the physics refused: name the case file rather than leave the
     // message without a place.
-    throw io::InputError(case_file_of(c), 0, "", "", e.what());
+    throw io::InputError(io::case_file(c), 0, "", "", e.what());
   }
   for (const auto& f : synthesis) {
     if (!f.converged)

@@ -3,6 +3,7 @@
 #include "asperity/side_contact.hpp"
 #include "case/asperity_setup.hpp"
 #include "io/case_file.hpp"
+#include "io/case_prepare.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -11,7 +12,8 @@ using namespace geartrib::asperity;
 
 namespace {
 const Case& seed_case() {
-  static const Case c = io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30.toml");
+  static const Case c =
+      io::prepare_case(io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30.toml"));
   return c;
 }
 

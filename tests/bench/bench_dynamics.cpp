@@ -2,6 +2,7 @@
 // tolerances: time, steps, and the error of the mesh force against a CVODE reference at 1e-12.
 #include "case/gear_setup.hpp"
 #include "io/case_file.hpp"
+#include "io/case_prepare.hpp"
 #include "solvers/integrators.hpp"
 
 #include <benchmark/benchmark.h>
@@ -13,7 +14,8 @@ using namespace geartrib;
 
 namespace {
 const Case& reference_case() {
-  static const Case c = io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30.toml");
+  static const Case c =
+      io::prepare_case(io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30.toml"));
   return c;
 }
 constexpr double kSpeed = 1000.0 * 2.0 * std::numbers::pi / 60.0;

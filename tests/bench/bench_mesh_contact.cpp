@@ -10,6 +10,7 @@
 #include "contact/mesh_contact.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "io/case_file.hpp"
+#include "io/case_prepare.hpp"
 #include "runs/mesh_cycle.hpp"
 #include "solvers/kinsol_solver.hpp"
 
@@ -21,7 +22,7 @@ using namespace geartrib;
 
 namespace {
 struct Setup {
-  Case c = io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30.toml");
+  Case c = io::prepare_case(io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30.toml"));
   gear::GearMesh mesh = gear::case_mesh(c);
   surface::EquivalentSurface surface = contact::case_equivalent_surface(c);
   asperity::ContactPair pair = asperity::contact_pair(c);
@@ -139,7 +140,8 @@ void cycle_lubricated(benchmark::State& state) {
 // gears/m6z30-deterministic.toml on one thread at element sizes 2, 1, 0.5 (its default) and
 // 0.25 um [nm in the argument].
 void cycle_deterministic(benchmark::State& state) {
-  Case c = io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30-deterministic.toml");
+  Case c =
+      io::prepare_case(io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30-deterministic.toml"));
   c.contact.threads = 1;
   c.contact.element_size = static_cast<double>(state.range(0)) * 1e-9;
   for (auto _ : state) benchmark::DoNotOptimize(runs::run_mesh_cycle(c));

@@ -4,6 +4,7 @@
 // lubricants/, so that the shipped cases' relative paths resolve.
 #include "fuzz_support.hpp"
 #include "io/case_file.hpp"
+#include "io/case_prepare.hpp"
 
 #include <string>
 #include <vector>
@@ -40,7 +41,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fuzz::expect_accepted_or_refused([&] {
     std::vector<io::CaseChange> changes;
     for (const auto& l : lines) changes.push_back(io::parse_case_change(l));
-    const Case c = io::load_case(path, changes);
+    const Case c = io::prepare_case(io::load_case(path, changes));
     fuzz::expect_finite(c.gear_pair.module, "module");
     fuzz::expect_finite(c.gear_pair.face_width, "face width");
     fuzz::expect_finite(c.operating.pinion_torque, "torque");
