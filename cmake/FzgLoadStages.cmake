@@ -1,6 +1,6 @@
 # The FZG load-stage table compiled in from its data file (gears/fzg/load-stages.csv, the one source
 # of the numbers, with their provenance per row): each data row's first five fields become one
-# initialiser {stage, torque at 0.5 m, sourced, torque at 0.35 m, sourced} of io/fzg_load_stages.cpp,
+# initialiser {stage, torque at 0.5 m, sourced, torque at 0.35 m, sourced} of config/fzg_load_stages.cpp,
 # the numbers copied as written (the compiler reads them as strtod would: the test compares exactly).
 # Configure-time: a change of the file reruns CMake at the next build (CMAKE_CONFIGURE_DEPENDS).
 function(geartrib_fzg_load_stages csv output)

@@ -15,7 +15,7 @@ file(REMOVE_RECURSE ${WORK_DIR})
 
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix} OUTPUT_QUIET
                 COMMAND_ERROR_IS_FATAL ANY)
-foreach(f include/geartrib/gear/spur_pair.hpp include/geartrib/io/case_file.hpp
+foreach(f include/geartrib/gear/spur_pair.hpp include/geartrib/config/case_file.hpp
           share/geartrib/gears/m6z30.toml share/geartrib/materials/steel-45.toml share/geartrib/lubricants/mineral-vg220.toml
           lib/cmake/geartrib/geartribConfig.cmake lib/cmake/geartrib/geartribConfigVersion.cmake bin/geartrib
           lib/geartrib/geartrib-fit.so)

@@ -14,9 +14,9 @@
 //
 // Usage: custom_sweep [gears/m6z30-dry.toml]
 #include "case/gear_setup.hpp"
+#include "config/case_file.hpp"
+#include "config/case_prepare.hpp"
 #include "contact/mesh_contact.hpp"
-#include "io/case_file.hpp"
-#include "io/case_prepare.hpp"
 #include "runs/mesh_cycle.hpp"
 
 #include <algorithm>

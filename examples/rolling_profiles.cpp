@@ -13,9 +13,9 @@
 //
 // Usage: rolling_profiles [gears/m6z30-dry.toml]
 #include "case/gear_setup.hpp"
+#include "config/case_file.hpp"
+#include "config/case_prepare.hpp"
 #include "contact/deterministic_contact.hpp"
-#include "io/case_file.hpp"
-#include "io/case_prepare.hpp"
 #include "surface/flank_profile.hpp"
 
 #include <algorithm>

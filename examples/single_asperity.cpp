@@ -15,7 +15,7 @@
 // Usage: single_asperity [materials/steel-45.toml]
 #include "asperity/contact_pair.hpp"
 #include "asperity/model.hpp"
-#include "io/case_file.hpp"
+#include "config/case_file.hpp"
 
 #include <cstdio>
 #include <string>

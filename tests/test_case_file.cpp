@@ -1,15 +1,15 @@
 // Loading the data files, and the error each kind of bad input produces.
+#include "config/case_file.hpp"
+#include "config/case_prepare.hpp"
+#include "config/input_error.hpp"
+#include "config/text_lines.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "gear/mesh_dynamics.hpp"
-#include "io/case_file.hpp"
-#include "io/case_prepare.hpp"
-#include "io/input_error.hpp"
-#include "io/text_lines.hpp"
-#include "io/topography_files.hpp"
 #include "surface/surface_statistics.hpp"
 #include "surface/synthetic_surface.hpp"
 #include "test_support.hpp"
+#include "topography/topography_files.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

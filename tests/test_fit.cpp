@@ -2,9 +2,9 @@
 // continuous model's defaults as the fit's output, and the errors a fit must report.
 #include "asperity/continuous_defaults.hpp"
 #include "asperity/laws.hpp"
+#include "config/input_error.hpp"
 #include "fit/fit_files.hpp"
 #include "fit/model_fit.hpp"
-#include "io/input_error.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
 // The FZG load stages: the compiled table against its data file (gears/fzg/load-stages.csv), the
 // two lever arms against each other, the torques a case resolves from a stage, and the refusals.
-#include "io/case_file.hpp"
-#include "io/case_prepare.hpp"
-#include "io/fzg_load_stages.hpp"
-#include "io/input_error.hpp"
+#include "config/case_file.hpp"
+#include "config/case_prepare.hpp"
+#include "config/fzg_load_stages.hpp"
+#include "config/input_error.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -3,9 +3,9 @@
 // the key, with the edge itself accepted; the laws refusing a temperature outside their range; a
 // lubricated run clamping and flagging hot surfaces, failing on a bulk temperature beyond the laws,
 // and never returning a NaN (the last check on every output names the dataset and the position).
+#include "config/case_file.hpp"
+#include "config/case_prepare.hpp"
 #include "contact/mesh_contact.hpp"
-#include "io/case_file.hpp"
-#include "io/case_prepare.hpp"
 #include "lubrication/flank_temperature.hpp"
 #include "lubrication/lubricant.hpp"
 #include "runs/mesh_cycle.hpp"

@@ -1,11 +1,11 @@
 // The lubricated mesh cycle: lubricant properties, film formulas and corrections, the regime map,
 // mixed-lubrication load sharing, friction, flash temperature, ISO/TS 6336-22 film and wear,
 // against hand values, identities and the limits the physics must reach.
+#include "config/case_prepare.hpp"
+#include "config/units.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
 #include "gear/gear_mesh.hpp"
-#include "io/case_prepare.hpp"
-#include "io/units.hpp"
 #include "lubrication/ehl_film.hpp"
 #include "lubrication/flank_temperature.hpp"
 #include "lubrication/lubricant.hpp"

@@ -1,5 +1,5 @@
-#include "io/case_file.hpp"
-#include "io/input_error.hpp"
+#include "config/case_file.hpp"
+#include "config/input_error.hpp"
 #include "material/material.hpp"
 #include "test_support.hpp"
 

@@ -2,9 +2,9 @@
 // leave the targets as they were and no temporary behind; a write error (the file-size limit
 // standing in for a full disk) is an exception, never a crash; a device, a FIFO or a symbolic link
 // is written through, never replaced; temporaries never collide.
-#include "io/column_table.hpp"
-#include "io/input_error.hpp"
-#include "io/table_writer.hpp"
+#include "config/input_error.hpp"
+#include "output/column_table.hpp"
+#include "output/table_writer.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

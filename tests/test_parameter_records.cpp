@@ -1,11 +1,11 @@
 // /parameters is written from the Case as it runs (io::current_parameters: each recorded key read
 // through its row), with the origins recorded at load: a Case changed in code after loading, as
 // examples/custom_sweep.cpp teaches, records the values it ran with, not the file's.
-#include "io/case_file.hpp"
-#include "io/case_prepare.hpp"
-#include "io/case_records.hpp"
-#include "io/hdf5_handles.hpp"
-#include "io/hdf5_results.hpp"
+#include "config/case_file.hpp"
+#include "config/case_prepare.hpp"
+#include "config/case_records.hpp"
+#include "output/hdf5_handles.hpp"
+#include "output/hdf5_results.hpp"
 #include "runs/mesh_cycle.hpp"
 #include "test_support.hpp"
 

@@ -1,7 +1,7 @@
-// The memory and time budget a job is checked against before it starts (io/resource_budget.hpp):
+// The memory and time budget a job is checked against before it starts (config/resource_budget.hpp):
 // its two environment variables, their units and ranges, and every refusal naming the variable.
-#include "io/input_error.hpp"
-#include "io/resource_budget.hpp"
+#include "config/input_error.hpp"
+#include "config/resource_budget.hpp"
 
 #include <gtest/gtest.h>
 

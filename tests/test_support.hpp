@@ -5,8 +5,8 @@
 #include "case/case.hpp"
 #include "case/contact_setup.hpp"
 #include "case/gear_setup.hpp"
-#include "io/case_file.hpp"
-#include "io/case_prepare.hpp"
+#include "config/case_file.hpp"
+#include "config/case_prepare.hpp"
 
 #include <filesystem>
 

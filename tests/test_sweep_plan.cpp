@@ -1,12 +1,12 @@
 // Sweep plans and case changes: axis parsing (lists, ranges with units), the factorial's order,
 // zipping, shards that partition the points, SI values of swept text, and changes to a case
 // (aliases, roughness forms replaced, errors naming the --set).
+#include "config/case_prepare.hpp"
+#include "config/input_error.hpp"
 #include "contact/mesh_contact.hpp"
-#include "io/case_prepare.hpp"
-#include "io/column_table.hpp"
-#include "io/input_error.hpp"
-#include "io/sweep_merge.hpp"
-#include "io/sweep_plan.hpp"
+#include "output/column_table.hpp"
+#include "runs/sweep_merge.hpp"
+#include "runs/sweep_plan.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
 // Potential-energy tooth stiffness: the numerical beam integrals against Tian's (2004)
 // closed-form integrands, the Hertzian term, the fillet foundation of bored and solid bodies, and
 // the mesh stiffness against ISO 6336-1.
+#include "config/case_prepare.hpp"
 #include "gear/gear_mesh.hpp"
 #include "gear/iso6336_stiffness.hpp"
-#include "io/case_prepare.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,10 +1,10 @@
 // Measured topography: synthetic surfaces round-trip through every format and their statistics
 // come back; the cylinder reduction recovers a hobbed texture; malformed files are reported.
-#include "io/input_error.hpp"
-#include "io/topography_files.hpp"
+#include "config/input_error.hpp"
 #include "surface/cylinder_reduction.hpp"
 #include "surface/surface_statistics.hpp"
 #include "surface/synthetic_surface.hpp"
+#include "topography/topography_files.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

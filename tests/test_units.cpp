@@ -1,4 +1,4 @@
-#include "io/units.hpp"
+#include "config/units.hpp"
 
 #include <gtest/gtest.h>
 

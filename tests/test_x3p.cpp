@@ -1,9 +1,9 @@
 // ISO 25178-72 (X3P) topography: MD5 against RFC 1321, the writer and reader round trip bit for
 // bit, hand-built files of every height type, and the refusals (each an InputError naming the file
 // and the field). The hand-built files are made here with libzip.
-#include "io/input_error.hpp"
-#include "io/topography_files.hpp"
-#include "io/x3p_file.hpp"
+#include "config/input_error.hpp"
+#include "topography/topography_files.hpp"
+#include "topography/x3p_file.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

@@ -6,10 +6,10 @@
 
 #include "asperity/side_contact.hpp"
 #include "case/asperity_setup.hpp"
-#include "io/case_file.hpp"
-#include "io/input_error.hpp"
-#include "io/reference_table.hpp"
-#include "io/table_writer.hpp"
+#include "config/case_file.hpp"
+#include "config/input_error.hpp"
+#include "config/reference_table.hpp"
+#include "output/table_writer.hpp"
 
 #include <fmt/format.h>
 

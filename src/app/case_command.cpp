@@ -3,9 +3,9 @@
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
 
-#include "io/case_parameters.hpp"
-#include "io/case_records.hpp"
-#include "io/table_writer.hpp"
+#include "config/case_parameters.hpp"
+#include "config/case_records.hpp"
+#include "output/table_writer.hpp"
 
 #include <fmt/format.h>
 

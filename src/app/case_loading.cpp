@@ -1,6 +1,6 @@
 #include "app/case_loading.hpp"
 
-#include "io/case_file.hpp"
+#include "config/case_file.hpp"
 
 #include <iostream>
 #include <string>

@@ -4,9 +4,9 @@
 
 #include "app/cli_options.hpp"
 #include "case/case.hpp"
-#include "io/case_file.hpp"
-#include "io/case_parameters.hpp"
-#include "io/case_prepare.hpp"
+#include "config/case_file.hpp"
+#include "config/case_parameters.hpp"
+#include "config/case_prepare.hpp"
 
 #include <filesystem>
 #include <string>

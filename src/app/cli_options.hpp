@@ -7,8 +7,8 @@
 //   --threads N         worker threads
 #pragma once
 
-#include "io/table_writer.hpp"
-#include "io/units.hpp"
+#include "config/units.hpp"
+#include "output/table_writer.hpp"
 
 #include <CLI/CLI.hpp>
 

@@ -4,8 +4,8 @@
 #include "app/commands.hpp"
 
 #include "case/gear_setup.hpp"
-#include "io/table_writer.hpp"
-#include "io/units.hpp"
+#include "config/units.hpp"
+#include "output/table_writer.hpp"
 #include "solvers/integrators.hpp"
 
 #include <fmt/format.h>

@@ -8,7 +8,7 @@
 #include "case/asperity_setup.hpp"
 #include "fem/asperity_deck.hpp"
 #include "fem/ccx_results.hpp"
-#include "io/table_writer.hpp"
+#include "output/table_writer.hpp"
 
 #include <fmt/format.h>
 

@@ -4,12 +4,12 @@
 #include "app/commands.hpp"
 
 #include "case/asperity_setup.hpp"
+#include "config/input_error.hpp"
+#include "config/resource_budget.hpp"
 #include "core/keyed_error.hpp"
 #include "fit/fit_files.hpp"
 #include "fit/model_fit.hpp"
-#include "io/input_error.hpp"
-#include "io/resource_budget.hpp"
-#include "io/table_writer.hpp"
+#include "output/table_writer.hpp"
 
 #include <fmt/format.h>
 

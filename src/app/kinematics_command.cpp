@@ -5,7 +5,7 @@
 #include "runs/kinematics_table.hpp"
 
 #include "case/gear_setup.hpp"
-#include "io/table_writer.hpp"
+#include "output/table_writer.hpp"
 
 #include <fmt/format.h>
 

@@ -4,8 +4,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "io/input_error.hpp"
-#include "io/table_writer.hpp"
+#include "config/input_error.hpp"
+#include "output/table_writer.hpp"
 
 #include <dlfcn.h>
 

@@ -5,9 +5,9 @@
 #include "app/surface_input.hpp"
 
 #include "case/asperity_setup.hpp"
+#include "config/units.hpp"
 #include "contact/multi_asperity.hpp"
-#include "io/table_writer.hpp"
-#include "io/units.hpp"
+#include "output/table_writer.hpp"
 #include "surface/cylinder_reduction.hpp"
 #include "surface/surface_statistics.hpp"
 

@@ -7,8 +7,8 @@
 
 #include "contact/fidelity_registry.hpp"
 #include "contact/mesh_contact.hpp"
-#include "io/hdf5_results.hpp"
-#include "io/table_writer.hpp"
+#include "output/hdf5_results.hpp"
+#include "output/table_writer.hpp"
 
 #include <fmt/format.h>
 #include <chrono>

@@ -4,12 +4,12 @@
 #include "app/commands.hpp"
 #include "app/surface_input.hpp"
 
-#include "io/table_writer.hpp"
-#include "io/topography_files.hpp"
+#include "output/table_writer.hpp"
 #include "runs/surface_statistics_table.hpp"
 #include "surface/cylinder_reduction.hpp"
 #include "surface/surface_statistics.hpp"
 #include "surface/synthetic_surface.hpp"
+#include "topography/topography_files.hpp"
 
 #include <fmt/format.h>
 

@@ -1,8 +1,8 @@
 // Reading and cleaning a topography file from the command line (surface, multi-asperity).
 #pragma once
 
-#include "io/input_error.hpp"
-#include "io/topography_files.hpp"
+#include "config/input_error.hpp"
+#include "topography/topography_files.hpp"
 
 #include <stdexcept>
 

@@ -11,12 +11,12 @@
 
 #include "contact/fidelity_registry.hpp"
 
-#include "io/column_table.hpp"
-#include "io/hdf5_results.hpp"
-#include "io/input_error.hpp"
-#include "io/sweep_merge.hpp"
-#include "io/sweep_plan.hpp"
-#include "io/table_writer.hpp"
+#include "config/input_error.hpp"
+#include "output/column_table.hpp"
+#include "output/hdf5_results.hpp"
+#include "output/table_writer.hpp"
+#include "runs/sweep_merge.hpp"
+#include "runs/sweep_plan.hpp"
 
 #include <fmt/format.h>
 

@@ -10,12 +10,12 @@
 #include "contact/mesh_contact.hpp"
 #include "runs/mesh_cycle.hpp"
 
+#include "config/case_file.hpp"
+#include "config/case_prepare.hpp"
+#include "config/units.hpp"
 #include "fem/ccx_results.hpp"
-#include "io/case_file.hpp"
-#include "io/case_prepare.hpp"
-#include "io/column_table.hpp"
-#include "io/table_writer.hpp"
-#include "io/units.hpp"
+#include "output/column_table.hpp"
+#include "output/table_writer.hpp"
 
 #include <fmt/format.h>
 

@@ -2,7 +2,7 @@
 // materials and flanks, the mesh, its dynamics, the lubrication, the asperity model and the contact
 // run), all SI, with the operating point and the load-time records (title, source, the parameters
 // as resolved, warnings). Read from gears/*.toml by io::load_case through the declared parameter
-// table (io/case_parameters.hpp: each key's default, range and meaning). case/ sits above the
+// table (config/case_parameters.hpp: each key's default, range and meaning). case/ sits above the
 // physics: the physics never includes this header; case/*_setup.hpp translate a Case into the
 // physics' inputs, one translator per component.
 #pragma once
@@ -33,7 +33,7 @@ struct GearSpec {
 // (the lubricated cycle), the torque given or from the FZG load-stage table.
 struct OperatingPoint {
   double pinion_torque = 0.0;     // [N m]; given, or the FZG table's at fzg_load_stage
-  int fzg_load_stage = 0;         // FZG load stage 1..14 naming the torque (io/fzg_load_stages.hpp); 0: none
+  int fzg_load_stage = 0;         // FZG load stage 1..14 naming the torque (config/fzg_load_stages.hpp); 0: none
   std::string fzg_test;           // the FZG test whose lever arm the stage hangs on; empty: none
   double pinion_speed = 0.0;      // [rad/s]
   double oil_temperature = 0.0;   // theta_oil, the inlet (sump or spray) oil [K]; lubricated runs only
@@ -43,7 +43,7 @@ struct OperatingPoint {
 // What a declared key resolved to at load: its value with the SI unit, where it came from, and the
 // value as the file or the --set wrote it (TOML text; empty for a default), which located
 // messages quote. /parameters and `geartrib case` show the Case's values as it runs with these
-// origins (io/case_records.hpp).
+// origins (config/case_records.hpp).
 struct ResolvedParameter {
   std::string key;
   std::string value;

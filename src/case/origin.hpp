@@ -1,6 +1,6 @@
 // Where a case value came from, recorded by the loader (io::load_case) for every key it resolves:
 // a line of a file, a --set change, or the default. The located errors and warnings of the
-// configuration layer (io/case_records.hpp) and the parameters' records (/parameters, `geartrib
+// configuration layer (config/case_records.hpp) and the parameters' records (/parameters, `geartrib
 // case`, Python's Case.parameters) read it.
 #pragma once
 

@@ -1,6 +1,6 @@
 // The summaries of a mesh cycle's result: named texts and named scalars with their units, each
 // defined once here beside the results they summarise (mesh_contact.hpp). Every sink iterates
-// them and copies no name: the HDF5 attributes (io/hdf5_results.cpp; its names are the reference),
+// them and copies no name: the HDF5 attributes (output/hdf5_results.cpp; its names are the reference),
 // the Python module's dicts, the sweep's columns and the finite-output check (runs/).
 #pragma once
 

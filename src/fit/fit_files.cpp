@@ -1,7 +1,7 @@
 #include "fit/fit_files.hpp"
 
-#include "io/input_error.hpp"
-#include "io/text_lines.hpp"
+#include "config/input_error.hpp"
+#include "config/text_lines.hpp"
 
 #include <fmt/format.h>
 

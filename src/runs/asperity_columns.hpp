@@ -4,7 +4,7 @@
 #pragma once
 
 #include "asperity/model.hpp"
-#include "io/units.hpp"
+#include "config/units.hpp"
 
 #include <stdexcept>
 #include <string>

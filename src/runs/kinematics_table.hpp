@@ -4,7 +4,7 @@
 #pragma once
 
 #include "gear/gear_mesh.hpp"
-#include "io/table_writer.hpp"
+#include "output/table_writer.hpp"
 
 #include <string>
 #include <vector>

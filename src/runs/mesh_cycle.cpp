@@ -2,6 +2,10 @@
 
 #include "case/asperity_setup.hpp"
 #include "case/gear_setup.hpp"
+#include "config/case_parameters.hpp"
+#include "config/case_records.hpp"
+#include "config/input_error.hpp"
+#include "config/resource_budget.hpp"
 #include "contact/deterministic/mesh_deterministic.hpp"
 #include "contact/fidelity_registry.hpp"
 #include "contact/greenwood_williamson.hpp"
@@ -10,10 +14,6 @@
 #include "core/keyed_error.hpp"
 #include "gear/gear_mesh.hpp"
 #include "gear/mesh_dynamics.hpp"
-#include "io/case_parameters.hpp"
-#include "io/case_records.hpp"
-#include "io/input_error.hpp"
-#include "io/resource_budget.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/kinsol_solver.hpp"
 

@@ -3,7 +3,7 @@
 // returns in Python.
 #pragma once
 
-#include "io/table_writer.hpp"
+#include "output/table_writer.hpp"
 #include "surface/height_grid.hpp"
 #include "surface/surface_statistics.hpp"
 

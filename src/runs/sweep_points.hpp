@@ -3,11 +3,11 @@
 #pragma once
 
 #include "case/case.hpp"
+#include "config/case_file.hpp"
 #include "contact/mesh_contact.hpp"
 #include "contact/run_summary.hpp"
-#include "io/case_file.hpp"
-#include "io/column_table.hpp"
-#include "io/sweep_plan.hpp"
+#include "output/column_table.hpp"
+#include "runs/sweep_plan.hpp"
 
 #include <cstddef>
 #include <functional>

@@ -2,8 +2,8 @@
 // full stress outputs). Run: ./build/tests/geartrib_bench
 #include "asperity/side_contact.hpp"
 #include "case/asperity_setup.hpp"
-#include "io/case_file.hpp"
-#include "io/case_prepare.hpp"
+#include "config/case_file.hpp"
+#include "config/case_prepare.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -1,8 +1,8 @@
 // The steady mesh cycle of the reference pair at 1000 rpm by both integrators at several
 // tolerances: time, steps, and the error of the mesh force against a CVODE reference at 1e-12.
 #include "case/gear_setup.hpp"
-#include "io/case_file.hpp"
-#include "io/case_prepare.hpp"
+#include "config/case_file.hpp"
+#include "config/case_prepare.hpp"
 #include "solvers/integrators.hpp"
 
 #include <benchmark/benchmark.h>

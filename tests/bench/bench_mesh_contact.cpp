@@ -6,11 +6,11 @@
 #include "case/asperity_setup.hpp"
 #include "case/contact_setup.hpp"
 #include "case/gear_setup.hpp"
+#include "config/case_file.hpp"
+#include "config/case_prepare.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
 #include "contact/rough_line_contact.hpp"
-#include "io/case_file.hpp"
-#include "io/case_prepare.hpp"
 #include "runs/mesh_cycle.hpp"
 #include "solvers/kinsol_solver.hpp"
 

@@ -2,9 +2,9 @@
 // ("KEY=VALUE", one per line), a line "---", then the case TOML (no "---": all TOML). The case is
 // written to <scratch>/gears/case.toml beside links to the source tree's materials/ and
 // lubricants/, so that the shipped cases' relative paths resolve.
+#include "config/case_file.hpp"
+#include "config/case_prepare.hpp"
 #include "fuzz_support.hpp"
-#include "io/case_file.hpp"
-#include "io/case_prepare.hpp"
 
 #include <string>
 #include <vector>

@@ -13,8 +13,8 @@
 // positive, the density above half its 15 degC value, viscosity, density and alpha falling with
 // temperature; each law refusing a temperature beyond the range (OutsideLawRange, never a NaN);
 // the traction curves' coefficient finite and in [0, 1] at, between and beyond their grid.
+#include "config/case_file.hpp"
 #include "fuzz_support.hpp"
-#include "io/case_file.hpp"
 #include "lubrication/lubricant.hpp"
 
 #include <toml++/toml.h>

@@ -1,6 +1,6 @@
 // libFuzzer harness: a material file (TOML with units).
+#include "config/case_file.hpp"
 #include "fuzz_support.hpp"
-#include "io/case_file.hpp"
 
 using namespace geartrib;
 

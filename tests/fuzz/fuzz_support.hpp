@@ -5,7 +5,7 @@
 // (-timeout) and allocations beyond -rss_limit_mb.
 #pragma once
 
-#include "io/input_error.hpp"
+#include "config/input_error.hpp"
 
 #include <unistd.h>
 

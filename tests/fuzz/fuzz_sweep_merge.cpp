@@ -13,9 +13,9 @@
 // The rule (fuzz_support.hpp): a merge or a located refusal; and a merge is the whole sweep: one
 // row per point 0..points_total-1 in order, a table that validates and survives a write and read.
 #include "fuzz_support.hpp"
-#include "io/column_table.hpp"
-#include "io/hdf5_handles.hpp"
-#include "io/sweep_merge.hpp"
+#include "output/column_table.hpp"
+#include "output/hdf5_handles.hpp"
+#include "runs/sweep_merge.hpp"
 
 #include <fuzzer/FuzzedDataProvider.h>
 #include <hdf5.h>

@@ -2,8 +2,8 @@
 // extension the reader dispatches on), the rest is the file; read, cleaned, and its statistics
 // computed as `geartrib surface stats` does.
 #include "fuzz_support.hpp"
-#include "io/topography_files.hpp"
 #include "surface/surface_statistics.hpp"
+#include "topography/topography_files.hpp"
 
 using namespace geartrib;
 

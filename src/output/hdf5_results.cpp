@@ -1,0 +1,149 @@
+#include "output/hdf5_results.hpp"
+
+#include "config/case_records.hpp"
+#include "contact/fidelity_registry.hpp"
+#include "contact/run_summary.hpp"
+#include "output/hdf5_handles.hpp"
+#include "output/table_writer.hpp"
+
+#include <hdf5.h>
+
+#include <stdexcept>
+#include <vector>
+
+namespace geartrib::io {
+
+namespace {
+
+using hdf5::Handle;
+using hdf5::number_attribute;
+using hdf5::string_attribute;
+
+// A summary as its group's attributes: its texts, then its values.
+void summary_attributes(hid_t group, const contact::Summary& s) {
+  for (const auto& t : s.texts) string_attribute(group, t.name, t.value);
+  for (const auto& v : s.values) number_attribute(group, v.name, v.value);
+}
+
+void write_file(const std::string& path, const contact::MeshContactResult& r, const std::string& case_file,
+                const Case& c) {
+  hdf5::NewFile file(path);
+  {
+    Handle mesh(H5Gcreate2(file, "/mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /mesh");
+    for (const auto& s : r.mesh) hdf5::number_dataset(mesh, s.name, s.values, s.unit);
+    summary_attributes(mesh, contact::path_summary(r.path));
+  }
+  {
+    Handle contact(H5Gcreate2(file, "/contact", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /contact");
+    for (const auto& s : r.contact) hdf5::number_dataset(contact, s.name, s.values, s.unit);
+    if (!r.validity.empty()) {
+      Handle validity(H5Gcreate2(contact, "validity", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                      "group /contact/validity");
+      for (const auto& s : r.validity) hdf5::number_dataset(validity, s.name, s.values, s.unit);
+      summary_attributes(validity, contact::validity_summary(r));
+    }
+  }
+  if (!r.pressure_profiles.empty()) {
+    // Deterministic: the pressure across the strip at the positions kept (one x for all).
+    Handle group(H5Gcreate2(file, "/contact/pressure", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                 "group /contact/pressure");
+    hdf5::number_dataset(group, "x_m", r.pressure_profiles.front().x, "m");
+    for (const auto& p : r.pressure_profiles) {
+      const std::string name = "position_" + std::to_string(p.position);
+      hdf5::number_dataset(group, name, p.pressure, "Pa");
+      Handle d(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, name);
+      number_attribute(d, "s_m", p.s);
+      number_attribute(d, "position", p.position);
+      if (!p.point.empty()) string_attribute(d, "point", p.point);
+    }
+  }
+  if (!r.statistical.empty()) {
+    Handle group(H5Gcreate2(file, "/statistical", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                 "group /statistical");
+    string_attribute(group, "meaning", std::string(contact::group_description(r.fidelity, "/statistical")));
+    for (const auto& s : r.statistical) hdf5::number_dataset(group, s.name, s.values, s.unit);
+  }
+  if (r.running_in) {
+    const auto& ri = *r.running_in;
+    Handle group(H5Gcreate2(file, "/running_in", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /running_in");
+    for (const auto& s : ri.history) hdf5::number_dataset(group, s.name, s.values, s.unit);
+    summary_attributes(group, contact::running_in_summary(ri));
+    const char* gear[2] = {"pinion", "wheel"};
+    for (int g = 0; g < 2; ++g) {
+      hdf5::number_dataset(group, std::string(gear[g]) + "_profile_initial_m", ri.initial[g], "m");
+      hdf5::number_dataset(group, std::string(gear[g]) + "_profile_final_m", ri.final[g], "m");
+    }
+  }
+  if (!r.synthesis.empty()) {
+    // Deterministic: flanks synthesised from a measured patch, and how (attributes only).
+    Handle group(H5Gcreate2(file, "/synthesis", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /synthesis");
+    string_attribute(group, "meaning",
+                     "flank profiles synthesised from a measured patch's profile spectrum (random phases; iaaft: its "
+                     "height distribution kept); tooth t's seed is seed + t");
+    for (const auto& f : r.synthesis) {
+      Handle g(H5Gcreate2(group, f.gear.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+               "group /synthesis/" + f.gear);
+      summary_attributes(g, contact::synthesis_summary(f));
+    }
+  }
+  if (r.lubrication_summary) {
+    const auto& l = *r.lubrication_summary;
+    Handle lub(H5Gcreate2(file, "/lubrication", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /lubrication");
+    for (const auto& s : r.lubrication) hdf5::number_dataset(lub, s.name, s.values, s.unit);
+    summary_attributes(lub, contact::lubrication_summary(l));
+    // The named points, each evaluated where it stands (B and D on the single pair's side).
+    Handle points(H5Gcreate2(lub, "points", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                  "group /lubrication/points");
+    std::vector<std::string> names;
+    for (const auto& p : l.points) names.push_back(p.name);
+    hdf5::strings_dataset(points, "point", names);
+    for (const auto& q : contact::named_point_series(l)) hdf5::number_dataset(points, q.name, q.values, q.unit);
+  }
+  {
+    hdf5::string_dataset(file, "/scene", c.source_text);
+    Handle scene(H5Dopen2(file, "/scene", H5P_DEFAULT), H5Dclose, "/scene");
+    string_attribute(scene, "file", case_file);
+    // Every declared key as it ran: value with its SI unit, and where it came from.
+    Handle parameters(H5Gcreate2(file, "/parameters", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                      "group /parameters");
+    std::vector<std::string> keys, values, origins;
+    for (const auto& p : current_parameters(c)) {
+      keys.push_back(p.key);
+      values.push_back(p.value);
+      origins.push_back(p.origin.text());
+    }
+    hdf5::strings_dataset(parameters, "key", keys);
+    hdf5::strings_dataset(parameters, "value", values);
+    hdf5::strings_dataset(parameters, "origin", origins);
+  }
+  {
+    Handle meta(H5Gcreate2(file, "/meta", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /meta");
+    string_attribute(meta, "version", GEARTRIB_VERSION);
+    summary_attributes(meta, contact::surface_summary(r));
+    std::vector<double> seconds;
+    std::vector<std::string> names;
+    for (const auto& s : r.stages) {
+      seconds.push_back(s.seconds);
+      names.push_back(s.name);
+    }
+    hdf5::number_dataset(meta, "stage_seconds", seconds, "s");
+    hdf5::strings_dataset(meta, "stage_names", names);
+    hdf5::strings_dataset(meta, "warnings", r.warnings);
+  }
+  file.close();
+}
+
+}  // namespace
+
+void start_hdf5() {
+  H5open();
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+}
+
+void write_mesh_contact_hdf5(const std::filesystem::path& path, const contact::MeshContactResult& result,
+                             const std::string& case_file, const Case& c) {
+  start_hdf5();
+  write_file(path.string(), result, case_file, c);
+}
+
+}  // namespace geartrib::io
