@@ -3,6 +3,7 @@
 #include "config/case_prepare.hpp"
 #include "config/input_error.hpp"
 #include "config/text_lines.hpp"
+#include "contact/fidelity_registry.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "gear/mesh_dynamics.hpp"
@@ -253,6 +254,22 @@ TEST_F(BadInput, MeasuredFlanksGiveTheirSummitStatistics) {
   EXPECT_EQ(c.wheel.flank.topography->file, "wheel.csv");
 }
 
+// A measured pinion beside a wheel given by Ra: refused at the wheel's flank, at the line of the
+// form it was given in (its Ra), not at the case file without a line.
+TEST_F(BadInput, MixedRoughnessFormsLocatedAtTheWheelsFlank) {
+  surface::SelfAffineSpec spec;
+  spec.nx = spec.ny = 96;
+  io::write_topography(dir_ / "gears/pinion.h5", surface::self_affine_surface(spec));
+  const auto toml = dir_ / "gears/m6z30.toml";
+  replace_line(toml, "summit_radius = \"1.65 um\"", "");
+  replace_line(toml, "ra = \"0.8 um\"", "topography = { file = \"pinion.h5\" }");
+  const io::InputError e = load_error();
+  EXPECT_EQ(e.key(), "wheel.flank");
+  EXPECT_NE(std::string(e.what()).find("same form"), std::string::npos) << e.what();
+  EXPECT_NE(e.file().find("m6z30.toml"), std::string::npos) << e.what();
+  EXPECT_EQ(e.line(), line_of("gears/m6z30.toml", "ra = \"0.8 um\"")) << e.what();
+}
+
 TEST(CaseFile, MeasuredPatchSynthesisKeys) {
   // The shipped measured case synthesises both flanks (psd, seeds 1 and 1001, the default length):
   // the loader keeps each patch's profile spectrum along x, that of the cleaned surface (every line).
@@ -387,6 +404,33 @@ TEST(CaseParameters, TableIsConsistent) {
 // The case's defaults (case/case.hpp, what a case file gets) and the physics option structs'
 // defaults (what a library caller gets) must agree: the contact resolutions are still stated in
 // both (ContactSettings and the contact options); the dynamics' are one struct.
+// The fidelity registry names case keys (those a run reads, the trade tool's knobs, the key whose
+// ladder gives a family's settings): each must be a declared key, with a ladder where the trade
+// tool runs one, and every registered name a choice of contact.fidelity.
+TEST(CaseParameters, EveryFidelityNamesDeclaredKeys) {
+  const io::Parameter* fidelity = io::find_parameter("contact.fidelity").parameter;
+  ASSERT_NE(fidelity, nullptr);
+  ASSERT_FALSE(contact::fidelities().empty());
+  for (const contact::FidelityEntry& f : contact::fidelities()) {
+    EXPECT_NE(std::find(fidelity->choices.begin(), fidelity->choices.end(), std::string(f.name)),
+              fidelity->choices.end())
+        << f.name;
+    for (std::string_view key : f.traits.keys)
+      EXPECT_NE(io::find_parameter(key).parameter, nullptr) << f.name << ": key " << key;
+    for (const contact::TradeKnob& k : f.traits.knobs) {
+      if (k.key.empty()) continue;  // one of the trade tool's own knobs
+      const io::Parameter* p = io::find_parameter(k.key).parameter;
+      ASSERT_NE(p, nullptr) << f.name << ": knob " << k.name << " key " << k.key;
+      EXPECT_FALSE(p->ladder.empty()) << f.name << ": knob " << k.name << " has no ladder";
+    }
+    if (!f.traits.setting_key.empty()) {
+      const io::Parameter* p = io::find_parameter(f.traits.setting_key).parameter;
+      ASSERT_NE(p, nullptr) << f.name << ": setting key " << f.traits.setting_key;
+      EXPECT_FALSE(p->ladder.empty()) << f.name << ": setting key without a ladder";
+    }
+  }
+}
+
 TEST(CaseParameters, CaseDefaultsAreThePhysicsDefaults) {
   const Case c;
   const contact::StripOptions strip;

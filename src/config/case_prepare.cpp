@@ -20,6 +20,12 @@ namespace geartrib::io {
 
 namespace {
 
+// A finding of the preparation, once: preparing a Case again (after changing it in code) does not
+// repeat the warnings it already holds.
+void add_warning(Case& c, std::string w) {
+  if (std::find(c.warnings.begin(), c.warnings.end(), w) == c.warnings.end()) c.warnings.push_back(std::move(w));
+}
+
 constexpr std::size_t kFewSummits = 100;           // below this a summit statistic scatters by more than 10%
 constexpr double kReferenceProfilePoints = 65536;  // a generated profile's sample for its statistics
 
@@ -45,7 +51,7 @@ void prepare_measured(Case& c, int gear) {
   read.resample = spec.resample;
   const double given_radius = rough.summit_radius;
   const LoadedSurface loaded = load_surface(path, read, spec.clean);
-  for (const auto& w : loaded.warnings) c.warnings.push_back(w);  // units implausible for a flank
+  for (const auto& w : loaded.warnings) add_warning(c, w);  // units implausible for a flank
   const surface::HeightGrid& grid = loaded.grid;
   const bool trace = grid.nx < 3 || grid.ny < 3;
   auto refuse = [&](const std::string& key, const std::string& rule) { throw located_error_as_written(c, key, rule); };
@@ -91,10 +97,9 @@ void prepare_measured(Case& c, int gear) {
   }
   if (given(c, f + "summit_radius")) rough.summit_radius = given_radius;
   if (g.flank.measured->summits < kFewSummits)
-    c.warnings.push_back(
-        fmt::format("{}: warning: key '{}': only {} summits on the measured surface (statistics "
-                    "scatter by ~1/sqrt(n)); measure a larger area",
-                    location_of(c, t + "file").text(), t + "file", g.flank.measured->summits));
+    add_warning(c, fmt::format("{}: warning: key '{}': only {} summits on the measured surface (statistics "
+                               "scatter by ~1/sqrt(n)); measure a larger area",
+                               location_of(c, t + "file").text(), t + "file", g.flank.measured->summits));
 }
 
 // A generated rough profile: its spectral moments from a sample of kReferenceProfilePoints points.
@@ -120,7 +125,7 @@ void prepare_gear_pair(Case& c) {
   try {
     const gear::SpurPair pair(c.gear_pair);
     for (const auto& w : pair.warnings())
-      c.warnings.push_back(fmt::format("{}: warning: key '{}': {}", location_of(c, w.key).text(), w.key, w.message));
+      add_warning(c, fmt::format("{}: warning: key '{}': {}", location_of(c, w.key).text(), w.key, w.message));
   } catch (const gear::GeometryError& e) {
     for (const Parameter& p : case_parameters()) {
       if (p.key.rfind("gear_pair.", 0) != 0 || !given(c, p.key)) continue;
@@ -145,10 +150,18 @@ void prepare_case(Case& c) {
   }
   surface::FlankRoughness& r1 = c.pinion.flank.roughness;
   surface::FlankRoughness& r2 = c.wheel.flank.roughness;
-  if ((c.pinion.flank.topography || c.wheel.flank.topography) && r1.form != r2.form)
-    throw InputError(location_of(c, "wheel.flank.topography.file").file,
-                     location_of(c, "wheel.flank.topography.file").line, "wheel.flank", "",
+  if ((c.pinion.flank.topography || c.wheel.flank.topography) && r1.form != r2.form) {
+    // Located at the wheel's flank: the first of its keys the case gave (its form's).
+    std::string_view wheel_key = "wheel.flank.topography.file";
+    for (const auto& p : c.parameters)
+      if (p.key.rfind("wheel.flank.", 0) == 0 && p.origin.kind != Origin::Kind::default_value) {
+        wheel_key = p.key;
+        break;
+      }
+    const Location at = location_of(c, wheel_key);
+    throw InputError(at.file, at.line, "wheel.flank", "",
                      "give both flanks' roughness in the same form as the pinion's");
+  }
   // One radius per run: the flanks' radii consistent with the equivalent surface (spectral:
   // McCool's). A smooth generated profile has none: the deterministic run alone takes it.
   if (r1.form != surface::FlankRoughness::Form::spectral || (r1.m4 > 0.0 && r2.m4 > 0.0)) {

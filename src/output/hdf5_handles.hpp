@@ -1,4 +1,4 @@
-// Small RAII layer over the HDF5 C API shared by the HDF5 writers and readers of src/io.
+// Small RAII layer over the HDF5 C API shared by the HDF5 writers and readers (src/output, src/topography, src/runs).
 #pragma once
 
 #include <hdf5.h>
