@@ -52,16 +52,14 @@ int main(int argc, char** argv) {
   const surface::EquivalentSurface surf = contact::case_equivalent_surface(c);
   const asperity::ContactPair pair = asperity::contact_pair(c);
   const auto model = asperity::make_case_model(c, c.asperity.model);
-  const contact::GreenwoodWilliamson gw(surf, *model, pair, 1.5 * load.hertz_peak,
-                                        contact::greenwood_williamson_options(c));
+  const contact::GreenwoodWilliamson gw(surf, *model, pair, 1.5 * load.hertz_peak, c.contact.greenwood_williamson);
   std::printf("surface: sigma_s = %.3f um, plasticity index %.2f, model %s\n", surf.summit_sigma * 1e6,
               surface::plasticity_index(surf, pair.modulus, pair.hardness), c.asperity.model.c_str());
 
   // Step 4: the strip. Uncoupled fidelity imposes the smooth Hertz pressure on the rough surface
   // and integrates the summits' contacts across the strip (the coupled one needs a Newton solver,
   // e.g. solvers::KinsolSolver from geartrib::solvers).
-  const contact::RoughLineContact strip(gw, mesh.composite_modulus(), c.gear_pair.face_width, contact::strip_options(c),
-                                        nullptr);
+  const contact::RoughLineContact strip(gw, mesh.composite_modulus(), c.gear_pair.face_width, c.contact.strip, nullptr);
   const contact::StripResult r = strip.solve(load.line_load, radius);
   std::printf("real area ratio %.4f, plastic area fraction %.4f, mean real pressure %.2f GPa\n", r.real_area_ratio,
               r.plastic_area_fraction, r.mean_real_pressure * 1e-9);

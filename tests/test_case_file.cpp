@@ -401,9 +401,6 @@ TEST(CaseParameters, TableIsConsistent) {
   EXPECT_NE(io::parameter_text_error(*io::find_parameter("contact.positions").parameter, "2.5"), "");
 }
 
-// The case's defaults (case/case.hpp, what a case file gets) and the physics option structs'
-// defaults (what a library caller gets) must agree: the contact resolutions are still stated in
-// both (ContactSettings and the contact options); the dynamics' are one struct.
 // The fidelity registry names case keys (those a run reads, the trade tool's knobs, the key whose
 // ladder gives a family's settings): each must be a declared key, with a ladder where the trade
 // tool runs one, and every registered name a choice of contact.fidelity.
@@ -431,14 +428,17 @@ TEST(CaseParameters, EveryFidelityNamesDeclaredKeys) {
   }
 }
 
+// The case's defaults (case/case.hpp, what a case file gets) and the physics option structs'
+// defaults (what a library caller gets) must agree: the contact resolutions are the physics'
+// option structs held whole in ContactSettings, the dynamics' are one struct.
 TEST(CaseParameters, CaseDefaultsAreThePhysicsDefaults) {
   const Case c;
   const contact::StripOptions strip;
   const contact::GreenwoodWilliamsonOptions gw;
-  EXPECT_EQ(c.contact.strip_points, strip.strip_points);
-  EXPECT_EQ(c.contact.coupled_nodes, strip.coupled_nodes);
-  EXPECT_EQ(c.contact.height_points, gw.height_points);
-  EXPECT_EQ(c.contact.table_points, gw.table_points_per_sigma);
+  EXPECT_EQ(c.contact.strip.strip_points, strip.strip_points);
+  EXPECT_EQ(c.contact.strip.coupled_nodes, strip.coupled_nodes);
+  EXPECT_EQ(c.contact.greenwood_williamson.height_points, gw.height_points);
+  EXPECT_EQ(c.contact.greenwood_williamson.table_points_per_sigma, gw.table_points_per_sigma);
   const gear::DynamicsSettings dyn;
   EXPECT_EQ(c.dynamics.damping_ratio, dyn.damping_ratio);
   EXPECT_EQ(c.dynamics.tolerances.relative, dyn.tolerances.relative);

@@ -402,7 +402,7 @@ Case deterministic_case(int positions, double element) {
   Case c = test::seed_case();
   c.contact.fidelity = ContactFidelity::deterministic;
   c.contact.positions = positions;
-  c.contact.element_size = element;
+  c.contact.boundary_elements.element_size = element;
   c.contact.threads = 1;
   return c;
 }
@@ -500,7 +500,8 @@ TEST(DeterministicMeshContact, RoughFlanksRunTheStatisticalModelAndRunIn) {
   ASSERT_EQ(meshes.size(), static_cast<std::size_t>(ri.meshes + 1));  // row 0: the new flanks
   for (std::size_t k = 0; k < meshes.size(); ++k) EXPECT_EQ(meshes[k], static_cast<double>(k));
   const auto& plastic = column("new_plastic_deformation_m");
-  ASSERT_GT(plastic[1], c.running_in.tolerance);  // the first mesh yields: there is running-in to see
+  ASSERT_GT(plastic[1],
+            c.contact.boundary_elements.plastic_overlap);  // the first mesh yields: there is running-in to see
   const auto& rq = column("pinion_rq_m");
   EXPECT_LT(plastic.back(), plastic[1]);  // the later meshes yield less than the first (toward shakedown)
   EXPECT_LE(rq.back(), rq.front());       // running-in lowers the peaks

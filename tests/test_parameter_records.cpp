@@ -38,7 +38,7 @@ TEST(ParameterRecords, ACaseChangedInCodeRecordsItsValues) {
   const fs::path file = test::source_dir() / "gears/m6z30-dry.toml";
   Case c = io::prepare_case(io::load_case(file, {{"positions", "5"}}));
   c.operating.pinion_torque = 1234.0;  // the file's key, changed in code
-  c.contact.strip_points = 32;         // a key of the file, changed in code
+  c.contact.strip.strip_points = 32;   // a key of the file, changed in code
   c.dynamics.backlash = 2e-5;          // a default, changed in code
   io::prepare_case(c);
   const contact::MeshContactResult r = runs::run_mesh_cycle(c);

@@ -336,9 +336,9 @@ TEST(MeshContact, FastPathsEqualTheExactPathOnTheDefaultCase) {
   // position: every output within 1e-6 relative (measured: 1e-10).
   const Case& fast = test::lubricated_case();
   Case exact = fast;
-  exact.contact.exact_strip_lookup = true;
+  exact.contact.strip.lookup = contact::StripLookup::exact;
   exact.contact.stress_table = 0;
-  ASSERT_FALSE(fast.contact.exact_strip_lookup);
+  ASSERT_FALSE(fast.contact.strip.lookup == contact::StripLookup::exact);
   ASSERT_GT(fast.contact.stress_table, 0);
   for (const double ra : {0.8e-6, 0.1e-6}) {  // fully plastic (the default flanks) and elastic-plastic
     Case f = fast, e = exact;

@@ -150,7 +150,7 @@ TEST(Quadrature, JacksonGreenPlasticFractionConvergedAtTheDefault) {
   const Case c =
       io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30-dry.toml", {{"model", "jackson-green"}}));
   Case fine = c;
-  fine.contact.height_points = 2048;
+  fine.contact.greenwood_williamson.height_points = 2048;
   const gear::GearMesh mesh = gear::case_mesh(c);
   const auto a = runs::run_mesh_contact(c, mesh, nullptr, {}, 11);
   const auto b = runs::run_mesh_contact(fine, mesh, nullptr, {}, 11);

@@ -34,7 +34,11 @@ inline constexpr ContactFidelity ContactFidelity::deterministic{"deterministic"}
 // every position, or none.
 enum class PressureProfiles { points, all, none };
 
-// The mesh-cycle contact run: fidelity, the outputs asked for, and the resolution knobs.
+// The mesh-cycle contact run: fidelity, the outputs asked for, the run's own knobs, and the
+// physics' options whole (each default stated once, in its struct). The fidelity sets the members
+// that follow from the rest of the case: the strip's fidelity, the table's plastic area (the
+// plastic_fraction output), the boundary elements' cap, Poisson ratio and plastic share (the
+// flanks' materials) and subsurface stress (the asperity_stress output).
 struct ContactSettings {
   ContactFidelity fidelity;
   bool real_area = true;  // outputs asked for
@@ -42,28 +46,24 @@ struct ContactSettings {
   bool asperity_stress = true;
   bool mesh_stiffness = false;  // the tooth-pair stiffness along the path (needed anyway by stiffness load sharing)
   int positions = 201;          // along A -> E of one tooth pair
-  // The resolutions' defaults are the physics options' own (stated once, there).
-  int strip_points = contact::StripOptions{}.strip_points;                  // uncoupled quadrature across the strip
-  int height_points = contact::GreenwoodWilliamsonOptions{}.height_points;  // GW quadrature over summit heights
-  int table_points = contact::GreenwoodWilliamsonOptions{}.table_points_per_sigma;  // GW table points per summit sigma
-  int coupled_nodes = contact::StripOptions{}.coupled_nodes;                        // coupled pressure elements
-  bool exact_strip_lookup = false;  // "cubic" cells in the pressure (false) or "exact": the table's inversion
+  // Statistical fidelities: the summit-height quadrature and the pressure-separation table
+  // (contact.height_points, table_points); the strip (strip_points, strip_lookup, coupled_nodes).
+  contact::GreenwoodWilliamsonOptions greenwood_williamson;
+  contact::StripOptions strip;
   int stress_table = 64;  // von Mises table intervals over sqrt(plastic share); 0: exact maximisation each time
-  // Deterministic: boundary-element size, the strip's half-length in the path's largest Hertz
-  // half-widths, the pressure profiles kept and the threads (0: all cores).
-  double element_size = contact::DeterministicOptions{}.element_size;  // [m]
-  double strip_halfwidths = contact::DeterministicOptions{}.strip_halfwidths;
+  // Deterministic: the boundary elements (contact.element_size, strip_halfwidths; running_in.tolerance
+  // as the plastic overlap), the pressure profiles kept and the threads (0: all cores).
+  contact::DeterministicOptions boundary_elements;
   PressureProfiles pressure_profiles = PressureProfiles::points;
   int threads = 0;
 };
 
 // Running-in (deterministic fidelity): the plastic deformation of each flank point carried from
-// one mesh of the same teeth to the next, until shakedown or `meshes` meshes.
+// one mesh of the same teeth to the next, until shakedown or `meshes` meshes. Its threshold, below
+// which a plastic deformation counts as none (shakedown: a mesh that deforms no flank point by
+// more), is the boundary elements' plastic_overlap (ContactSettings::boundary_elements).
 struct RunningInSettings {
-  int meshes = 0;  // 0: one mesh, no running-in
-  // Plastic deformation below this counts as none [m]: the plastic area's threshold, and
-  // shakedown: a mesh that deforms no flank point by more.
-  double tolerance = contact::DeterministicOptions{}.plastic_overlap;
+  int meshes = 0;              // 0: one mesh, no running-in
   std::string teeth = "pair";  // "pair": one pinion and one wheel tooth; "hunting": every tooth, in mesh order
 };
 

@@ -24,10 +24,6 @@ struct StatisticalFlanks {
   double friction = 0.0;  // mu of the asperities' side contact; the boundary coefficient when lubricated
 };
 
-// The table's options: contact.height_points, contact.table_points; the plastic area when an
-// output asks for it.
-GreenwoodWilliamsonOptions greenwood_williamson_options(const ContactSettings& cs);
-
 // The equivalent rough surface of two flanks.
 surface::EquivalentSurface equivalent_surface(const StatisticalFlanks& f);
 

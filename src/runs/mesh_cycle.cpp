@@ -126,7 +126,7 @@ double largest_flank_step(const contact::FlankSpan& span, long n) {
 // width there bounds the strip from below.
 long running_in_positions(const Case& c, const contact::FlankSpan& span, PathHalfWidths& half_widths, long most) {
   constexpr long kMaxCandidates = 1000;
-  const double k = c.contact.strip_halfwidths;
+  const double k = c.contact.boundary_elements.strip_halfwidths;
   auto fewest_within = [&](double strip, long from) {  // step(n) falls with n
     long n = from;
     while (n <= most && largest_flank_step(span, n) > strip) n = std::min(most + 1, std::max(n + 1, n + n / 20));
@@ -201,7 +201,8 @@ void check_spacing(const FlankRead& f, double spacing, const std::string& where)
 void check_generated_stretch(const FlankRead& f, const std::string& what) {
   const contact::FlankSpan& span = f.span;
   if (span.first[f.g] >= span.generated_first[f.g] && span.last[f.g] <= span.generated_last[f.g]) return;
-  throw io::located_error(f.c, "contact.strip_halfwidths", fmt::format("{:g}", f.c.contact.strip_halfwidths),
+  throw io::located_error(f.c, "contact.strip_halfwidths",
+                          fmt::format("{:g}", f.c.contact.boundary_elements.strip_halfwidths),
                           fmt::format("the strip reaches {} beyond the {}'s active flank, past the {}'s end a "
                                       "module beyond its tip: narrow the strip",
                                       mm(span.strip_half_length), f.gear, what));

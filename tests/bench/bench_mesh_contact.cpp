@@ -143,7 +143,7 @@ void cycle_deterministic(benchmark::State& state) {
   Case c =
       io::prepare_case(io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30-deterministic.toml"));
   c.contact.threads = 1;
-  c.contact.element_size = static_cast<double>(state.range(0)) * 1e-9;
+  c.contact.boundary_elements.element_size = static_cast<double>(state.range(0)) * 1e-9;
   for (auto _ : state) benchmark::DoNotOptimize(runs::run_mesh_cycle(c));
 }
 }  // namespace

@@ -1,4 +1,6 @@
-// The mesh-cycle contact run's keys, declared beside ContactSettings and RunningInSettings.
+// The mesh-cycle contact run's keys, declared beside ContactSettings and RunningInSettings: the
+// resolutions' accessors name the physics' option fields (contact::StripOptions,
+// GreenwoodWilliamsonOptions, DeterministicOptions) held whole in ContactSettings.
 #include "config/parameters/declare.hpp"
 
 #include "asperity/model.hpp"
@@ -55,37 +57,41 @@ void declare_contact(ParameterRows& table) {
       .ladder({"11", "21", "41", "81", "101", "201", "401", "801"})
       .doc("Positions along the path of contact A -> E");
   add(integer(
-          "contact.strip_points", [](auto& c, int) -> auto& { return c.contact.strip_points; }))
+          "contact.strip_points", [](auto& c, int) -> auto& { return c.contact.strip.strip_points; }))
       .range(StripOptions::kMinStripPoints, StripOptions::kMaxStripPoints)
+      .field("contact.strip.strip_points")
       .alias({"strip_points"})
       .ladder({"8", "16", "32", "64", "128", "256", "512"})
       .doc("Uncoupled: quadrature points across the Hertz strip");
   add(integer(
-          "contact.height_points", [](auto& c, int) -> auto& { return c.contact.height_points; }))
+          "contact.height_points", [](auto& c, int) -> auto& { return c.contact.greenwood_williamson.height_points; }))
       .range(GreenwoodWilliamsonOptions::kMinHeightPoints, GreenwoodWilliamsonOptions::kMaxHeightPoints)
+      .field("contact.greenwood_williamson.height_points")
       .alias({"height_points"})
       .ladder({"8", "16", "32", "64", "128", "256", "512", "1024"})
       .doc("Quadrature points over the summit heights in contact");
   add(integer(
-          "contact.table_points", [](auto& c, int) -> auto& { return c.contact.table_points; }))
+          "contact.table_points",
+          [](auto& c, int) -> auto& { return c.contact.greenwood_williamson.table_points_per_sigma; }))
       .range(GreenwoodWilliamsonOptions::kMinTablePoints, GreenwoodWilliamsonOptions::kMaxTablePoints)
+      .field("contact.greenwood_williamson.table_points_per_sigma")
       .alias({"table_points"})
       .ladder({"4", "8", "16", "32", "64", "128", "256"})
       .doc("Pressure-separation table points per summit sigma");
   add(integer(
-          "contact.coupled_nodes", [](auto& c, int) -> auto& { return c.contact.coupled_nodes; }))
+          "contact.coupled_nodes", [](auto& c, int) -> auto& { return c.contact.strip.coupled_nodes; }))
       .range(StripOptions::kMinCoupledNodes, StripOptions::kMaxCoupledNodes)
+      .field("contact.strip.coupled_nodes")
       .alias({"coupled_nodes"})
       .ladder({"32", "64", "128", "256"})
       .doc("Coupled: pressure elements across the contact");
   add(mapped_choice(
-          "contact.strip_lookup", {"cubic", "exact"},
-          [](auto& c, int) -> auto& { return c.contact.exact_strip_lookup; },
-          [](const std::string& t) { return t == "exact"; },
-          [](bool exact) { return std::string(exact ? "exact" : "cubic"); }))
+          "contact.strip_lookup", {"cubic", "exact"}, [](auto& c, int) -> auto& { return c.contact.strip.lookup; },
+          [](const std::string& t) { return t == "exact" ? contact::StripLookup::exact : contact::StripLookup::cubic; },
+          [](contact::StripLookup l) { return std::string(l == contact::StripLookup::exact ? "exact" : "cubic"); }))
       .alias({"strip_lookup"})
       .ladder({"cubic", "exact"})
-      .field("contact.exact_strip_lookup")
+      .field("contact.strip.lookup")
       .doc(
           "Uncoupled: the rough surface at each strip point from cubic cells in the pressure (no transcendental "
           "call per point) or exact: the pressure table's inversion and log-linear interpolation, the reference");
@@ -100,8 +106,10 @@ void declare_contact(ParameterRows& table) {
 
   // Deterministic fidelity: the boundary elements across the strip.
   add(quantity(
-          "contact.element_size", D::length, [](auto& c, int) -> auto& { return c.contact.element_size; }))
+          "contact.element_size", D::length,
+          [](auto& c, int) -> auto& { return c.contact.boundary_elements.element_size; }))
       .range(1e-9, 1e-3)
+      .field("contact.boundary_elements.element_size")
       .plausible(0.01 * kUm, 10.0 * kUm)
       .alias({"element_size"})
       .ladder({"4 um", "2 um", "1 um", "0.5 um", "0.25 um", "0.125 um"})
@@ -109,8 +117,10 @@ void declare_contact(ParameterRows& table) {
           "Deterministic: boundary-element width across the strip; not below a flank profile's spacing (the profile "
           "is averaged over each element)");
   add(number(
-          "contact.strip_halfwidths", [](auto& c, int) -> auto& { return c.contact.strip_halfwidths; }))
+          "contact.strip_halfwidths",
+          [](auto& c, int) -> auto& { return c.contact.boundary_elements.strip_halfwidths; }))
       .range(contact::DeterministicOptions::kMinStripHalfwidths, contact::DeterministicOptions::kMaxStripHalfwidths)
+      .field("contact.boundary_elements.strip_halfwidths")
       .alias({"strip_halfwidths"})
       .ladder({"1.1", "1.25", "1.5", "2", "3"})
       .doc(
@@ -142,8 +152,10 @@ void declare_contact(ParameterRows& table) {
           "Deterministic: meshes of running-in, each flank's plastic deformation carried to its next mesh (0: the "
           "new flanks only); stops earlier at shakedown");
   add(quantity(
-          "running_in.tolerance", D::length, [](auto& c, int) -> auto& { return c.running_in.tolerance; }))
+          "running_in.tolerance", D::length,
+          [](auto& c, int) -> auto& { return c.contact.boundary_elements.plastic_overlap; }))
       .range(1e-15, 1e-3, true, false)
+      .field("contact.boundary_elements.plastic_overlap")
       .doc(
           "Deterministic: plastic deformation below this counts as none (the plastic area's threshold); a mesh that "
           "deforms no flank point by more ends the running-in (shakedown)");

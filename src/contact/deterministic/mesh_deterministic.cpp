@@ -55,7 +55,7 @@ void add_contact_series(const ContactSettings& cs, const std::vector<Determinist
                  {C{"bem_iterations", "1", [](const S& s) { return static_cast<double>(s.iterations); }}});
 
   // Where the answer holds: the strip long enough, the spots resolved.
-  const double e = cs.element_size;
+  const double e = cs.boundary_elements.element_size;
   auto per_spot = [e](const S& s) {
     return s.contact_spots > 0 ? s.real_area_per_width / (s.contact_spots * e) : kNaN;
   };
@@ -82,7 +82,7 @@ void add_contact_series(const ContactSettings& cs, const std::vector<Determinist
   r.verdict = fmt::format(
       "Deterministic rough contact of the flanks' profiles (boundary elements of {:.3g} um over +-{:.3g} Hertz "
       "half-widths): {}; of {} loaded positions {} elastic (<1% of the real area yielded), {} fully plastic (>99%).",
-      e * 1e6, cs.strip_halfwidths, r.regime, loaded, elastic, plastic);
+      e * 1e6, cs.boundary_elements.strip_halfwidths, r.regime, loaded, elastic, plastic);
   if (n_edge > 0)
     r.verdict += fmt::format(
         " At {} positions the pressure reaches the strip's ends: the contact is cut short there; raise "
@@ -168,7 +168,7 @@ core::KeyedError strip_overload(const ContactSettings& cs, const DeterministicOp
     wider.strip_halfwidths = needed;
     try {
       const HalfPlaneGrid g = strip_grid(needed * b_max, wider);
-      const double reach = 0.5 * g.size * g.spacing + 2.0 * cs.element_size;  // as the span's margin
+      const double reach = 0.5 * g.size * g.spacing + 2.0 * cs.boundary_elements.element_size;  // as the span's margin
       for (int k = 0; k < 2 && why_not.empty(); ++k)
         for (const FlankTrack& t : k == 0 ? flanks.pinion : flanks.wheel)
           // (Its last interval left out: a generated profile's may pass the module beyond the tip,
@@ -192,16 +192,12 @@ core::KeyedError strip_overload(const ContactSettings& cs, const DeterministicOp
 
 }  // namespace
 
-DeterministicOptions deterministic_options(const ContactSettings& cs, const RunningInSettings& running_in,
-                                           const Material& m1, const Material& m2) {
-  DeterministicOptions o;
-  o.element_size = cs.element_size;
-  o.strip_halfwidths = cs.strip_halfwidths;
+DeterministicOptions deterministic_options(const ContactSettings& cs, const Material& m1, const Material& m2) {
+  DeterministicOptions o = cs.boundary_elements;
   o.pressure_cap = std::min(m1.hardness, m2.hardness);
   o.poisson_ratio = m1.hardness <= m2.hardness ? m1.poisson_ratio : m2.poisson_ratio;
   o.pinion_plastic_share = m1.hardness < 0.99 * m2.hardness ? 1.0 : m2.hardness < 0.99 * m1.hardness ? 0.0 : 0.5;
   o.subsurface_stress = cs.asperity_stress;
-  o.plastic_overlap = running_in.tolerance;
   return o;
 }
 
@@ -255,18 +251,18 @@ void plan_strip(const FidelityInputs& in, BoundaryElements::State& st) {
   const double rb[2] = {pair.pinion().base_radius, pair.wheel().base_radius};
   const double b_max = *std::max_element(p.half_width.begin(), p.half_width.end());
   FlankSpan& span = st.span;
-  span.element_size = cs.element_size;
-  span.strip_half_length = cs.strip_halfwidths * b_max;
+  span.element_size = cs.boundary_elements.element_size;
+  span.strip_half_length = cs.boundary_elements.strip_halfwidths * b_max;
   for (std::size_t k = 0; k < p.size(); ++k) {
     st.sigma[0].push_back(p.rho1[k] * p.rho1[k] / (2.0 * rb[0]));  // involute arc length from the base circle
     st.sigma[1].push_back(p.rho2[k] * p.rho2[k] / (2.0 * rb[1]));
   }
-  st.options = deterministic_options(cs, in.running_in, *in.flanks.materials[0], *in.flanks.materials[1]);
+  st.options = deterministic_options(cs, *in.flanks.materials[0], *in.flanks.materials[1]);
   const DeterministicOptions& o = st.options;
   // The flanks are read over the grid's whole reach (at least 8 elements) and two elements more.
   st.grid = strip_grid(span.strip_half_length, o);
   span.elements = st.grid.size;
-  const double margin = 0.5 * st.grid.size * st.grid.spacing + 2.0 * cs.element_size;
+  const double margin = 0.5 * st.grid.size * st.grid.spacing + 2.0 * cs.boundary_elements.element_size;
   span.positions = n;
   span.running_in = in.running_in.meshes > 0;
   for (int g = 0; g < 2; ++g) {
@@ -329,7 +325,7 @@ std::optional<RunningInResult> running_in_start(const FidelityInputs& in, const 
   if (in.running_in.meshes <= 0) return std::nullopt;
   RunningInResult ri;
   ri.teeth = st.hunting ? "hunting" : "pair";
-  ri.tolerance = in.running_in.tolerance;
+  ri.tolerance = in.contact.boundary_elements.plastic_overlap;
   for (int g = 0; g < 2; ++g) {
     const FlankTrack& t = g == 0 ? st.flanks.pinion.front() : st.flanks.wheel.front();
     ri.spacing[static_cast<std::size_t>(g)] = t.profile.spacing;
@@ -390,7 +386,7 @@ void run_meshes(const FidelityInputs& in, BoundaryElements::State& st, const std
     if (round == 1) out.first = std::move(passes.front());  // its pressure profiles moved, not copied
     if (!ri) break;
     ri->meshes = round;
-    if (new_plastic <= in.running_in.tolerance) {
+    if (new_plastic <= in.contact.boundary_elements.plastic_overlap) {
       ri->shakedown_mesh = round;
       break;
     }

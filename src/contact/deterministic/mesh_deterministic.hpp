@@ -62,11 +62,10 @@ struct DeterministicCost {
   double seconds = 0.0;        // the whole run's wall time [s]
   double bytes() const { return flank_bytes + profile_bytes + solver_bytes + position_bytes; }
 };
-// The strip's boundary elements: contact.element_size and strip_halfwidths, the softer flank's
-// hardness capping the pressure and taking the plastic deformation (equal hardness: half each), the
-// subsurface stress when asked for, running_in.tolerance as the plastic overlap.
-DeterministicOptions deterministic_options(const ContactSettings& cs, const RunningInSettings& running_in,
-                                           const Material& pinion, const Material& wheel);
+// The case's boundary elements (ContactSettings::boundary_elements) with what the flanks decide: the
+// softer flank's hardness capping the pressure and taking the plastic deformation (equal hardness:
+// half each), the subsurface stress when asked for.
+DeterministicOptions deterministic_options(const ContactSettings& cs, const Material& pinion, const Material& wheel);
 // One strip solve's time on one core [s] for `elements` boundary elements.
 double strip_solve_seconds(int elements);
 DeterministicCost deterministic_cost(const FlankSpan& span, const DeterministicWork& work);

@@ -89,21 +89,14 @@ std::vector<HighestAsperity> highest_asperities(const FidelityInputs& in, const 
 
 }  // namespace
 
-StripOptions strip_options(const ContactSettings& cs, StripFidelity fidelity) {
-  StripOptions so;
-  so.fidelity = fidelity;
-  so.strip_points = cs.strip_points;
-  so.lookup = cs.exact_strip_lookup ? StripLookup::exact : StripLookup::cubic;
-  so.coupled_nodes = cs.coupled_nodes;
-  return so;
-}
-
 StatisticalSolution solve_statistical(const FidelityInputs& in, const SurfaceModel& m, StripFidelity fidelity,
                                       const std::vector<double>& share, StageClock* clock,
                                       const std::function<void(int, int)>& progress) {
   const ContactSettings& cs = in.contact;
-  const RoughLineContact strip(m.table, in.mesh.composite_modulus(), in.mesh.pair().spec().face_width,
-                               strip_options(cs, fidelity), in.solver);
+  StripOptions options = cs.strip;  // the case's strip, solved at this fidelity
+  options.fidelity = fidelity;
+  const RoughLineContact strip(m.table, in.mesh.composite_modulus(), in.mesh.pair().spec().face_width, options,
+                               in.solver);
   StatisticalSolution s;
   s.strips = solve_strips(in, strip, share, progress);
   if (clock) clock->lap(fidelity == StripFidelity::coupled ? "strip_contact_coupled" : "strip_contact_uncoupled");

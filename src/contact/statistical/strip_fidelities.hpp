@@ -24,9 +24,6 @@ struct StatisticalSolution {
   std::vector<std::string> warnings;
 };
 
-// The strip's options: the fidelity's strip, contact.strip_points, strip_lookup, coupled_nodes.
-StripOptions strip_options(const ContactSettings& cs, StripFidelity fidelity);
-
 // The strips on `model` at every position of the path, the asperities carrying `asperity_share`
 // of each position's load. progress(done, total) after each position (may be empty).
 StatisticalSolution solve_statistical(const FidelityInputs& in, const SurfaceModel& model, StripFidelity fidelity,
