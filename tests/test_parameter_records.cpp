@@ -4,6 +4,7 @@
 #include "config/case_file.hpp"
 #include "config/case_prepare.hpp"
 #include "config/case_records.hpp"
+#include "config/input_error.hpp"
 #include "output/hdf5_handles.hpp"
 #include "output/hdf5_results.hpp"
 #include "runs/mesh_cycle.hpp"
@@ -54,6 +55,45 @@ TEST(ParameterRecords, ACaseChangedInCodeRecordsItsValues) {
   EXPECT_EQ(p.at("contact.positions"), std::make_pair(std::string("5"), std::string("--set")));
   // The load-time record itself is unchanged: what the file said.
   EXPECT_NE(io::find_record(c, "operating.pinion_torque")->value, "1234 N m");
+}
+
+// The message of the error a run of `c` throws (empty: none).
+std::string run_error(const Case& c) {
+  try {
+    runs::run_mesh_cycle(c);
+  } catch (const io::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A physics refusal of an option value the table's range let through (a Case changed in code):
+// the option struct's validate() names its field (contact::StripOptions' strip_points, the boundary
+// elements' element_size), the table maps the field's path to its case key, and the message names
+// the file and line the key came from, the key, the value the Case holds and the rule.
+TEST(ParameterRecords, APhysicsRefusalIsLocatedAtItsKey) {
+  const fs::path dry = test::source_dir() / "gears/m6z30-dry.toml";
+  Case c = io::prepare_case(io::load_case(dry, {{"positions", "5"}}));
+  c.contact.strip.strip_points = 4;  // below contact::StripOptions::kMinStripPoints
+  EXPECT_EQ(run_error(c), dry.string() + ":50: key 'contact.strip_points' = 4: strip_points must lie in [8, 100000]");
+
+  const fs::path deterministic = test::source_dir() / "gears/m6z30-deterministic.toml";
+  Case d = io::prepare_case(io::load_case(deterministic, {{"positions", "5"}}));
+  d.contact.boundary_elements.element_size = -1e-6;
+  EXPECT_EQ(run_error(d),
+            deterministic.string() + ":58: key 'contact.element_size' = -1e-06 m: element size must be positive");
+  // The boundary elements' plastic_overlap is the key running_in.tolerance (a field of another
+  // table's struct): its line in [running_in].
+  d = io::prepare_case(io::load_case(deterministic, {{"positions", "5"}}));
+  d.contact.boundary_elements.plastic_overlap = 0.0;
+  EXPECT_EQ(run_error(d),
+            deterministic.string() +
+                ":65: key 'running_in.tolerance' = 0 m: plastic overlap threshold outside [1e-15, 1e-3] m");
+  // A key the file leaves to its default: its table's line ([contact], line 54).
+  d = io::prepare_case(io::load_case(deterministic, {{"positions", "5"}}));
+  d.contact.strip.coupled_nodes = 5;
+  EXPECT_EQ(run_error(d),
+            deterministic.string() + ":54: key 'contact.coupled_nodes' = 5: coupled_nodes must lie in [16, 4000]");
 }
 
 }  // namespace

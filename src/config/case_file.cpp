@@ -684,6 +684,7 @@ Case load_case_from(TomlReader& r, const std::vector<CaseChange>& changes, unsig
   check_rules(r, "roughness.", [&] { c.roughness.validate(); });
   check_rules(r, "dynamics.", [&] { c.dynamics.validate(); });
   check_rules(r, "asperity.", [&] { c.asperity.validate(); });
+  check_rules(r, "contact.", [&] { c.contact.validate(); });
 
   // The flanks, when asked for (or given): one roughness form each, the same on both (a measured
   // flank's form, areal summits or a profile trace's moments, is its file's: io::prepare_case).

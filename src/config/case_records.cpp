@@ -58,7 +58,15 @@ std::string located_warning(const Case& c, const std::string& key, const std::st
 }
 
 InputError refusal_error(const Case& c, const core::KeyedError& e, const std::string& prefix) {
-  return located_error(c, case_key_of_field(prefix + e.key()), e.what());
+  const std::string key = case_key_of_field(prefix + e.key());
+  const auto [row, gear] = find_parameter(key);
+  // A field no key sets (one the physics derives, as the boundary elements' pressure cap from the
+  // flanks' hardness): the case file, unkeyed, rather than a key the file cannot have.
+  if (!find_record(c, key) && !row) return InputError(case_file(c), 0, "", "", e.what());
+  // The value refused is the one the Case holds now (a Case changed in code: not its record's).
+  if (row && row->kind != ParameterKind::model_constants)
+    return located_error(c, key, row->format(row->get(c, gear)), e.what());
+  return located_error(c, key, e.what());
 }
 
 std::vector<ResolvedParameter> current_parameters(const Case& c) {

@@ -48,7 +48,7 @@ std::string located_warning(const Case& c, const std::string& key, const std::st
 
 // A component's refusal naming its option field (core::KeyedError): `prefix` + the field is the
 // Case member's path, which the table maps to its case key (io::case_key_of_field); the error
-// located at that key.
+// located at that key. A field no key sets (one the physics derives): the case file, unkeyed.
 InputError refusal_error(const Case& c, const core::KeyedError& e, const std::string& prefix = "");
 
 // The parameters as the Case holds them now, in the records' order: each recorded key's value

@@ -56,6 +56,9 @@ struct ContactSettings {
   contact::DeterministicOptions boundary_elements;
   PressureProfiles pressure_profiles = PressureProfiles::points;
   int threads = 0;
+  // The option structs' validate(): throws core::KeyedError naming the field by its path from here
+  // ("strip.strip_points", "boundary_elements.element_size").
+  void validate() const;
 };
 
 // Running-in (deterministic fidelity): the plastic deformation of each flank point carried from

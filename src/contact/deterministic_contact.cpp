@@ -1,5 +1,7 @@
 #include "contact/deterministic_contact.hpp"
 
+#include "core/keyed_error.hpp"
+
 #include "core/maximize.hpp"
 
 #include <fmt/format.h>
@@ -15,18 +17,20 @@
 namespace geartrib::contact {
 
 void DeterministicOptions::validate() const {
+  using core::KeyedError;
   if (!(element_size > 0.0 && std::isfinite(element_size)))
-    throw std::invalid_argument("element size must be positive");
+    throw KeyedError("element_size", "element size must be positive");
   if (!(strip_halfwidths >= kMinStripHalfwidths && strip_halfwidths <= kMaxStripHalfwidths))
-    throw std::invalid_argument(
-        fmt::format("strip half-widths must lie in [{}, {}]", kMinStripHalfwidths, kMaxStripHalfwidths));
-  if (!(pressure_cap > 0.0)) throw std::invalid_argument("pressure cap must be positive");
-  if (!(poisson_ratio > -1.0 && poisson_ratio < 0.5)) throw std::invalid_argument("Poisson ratio outside (-1, 0.5)");
+    throw KeyedError("strip_halfwidths",
+                     fmt::format("strip half-widths must lie in [{}, {}]", kMinStripHalfwidths, kMaxStripHalfwidths));
+  if (!(pressure_cap > 0.0)) throw KeyedError("pressure_cap", "pressure cap must be positive");
+  if (!(poisson_ratio > -1.0 && poisson_ratio < 0.5))
+    throw KeyedError("poisson_ratio", "Poisson ratio outside (-1, 0.5)");
   if (!(pinion_plastic_share >= 0.0 && pinion_plastic_share <= 1.0))
-    throw std::invalid_argument("pinion plastic share outside [0, 1]");
-  if (!(tolerance > 0.0 && tolerance < 1e-2)) throw std::invalid_argument("tolerance outside (0, 0.01)");
+    throw KeyedError("pinion_plastic_share", "pinion plastic share outside [0, 1]");
+  if (!(tolerance > 0.0 && tolerance < 1e-2)) throw KeyedError("tolerance", "tolerance outside (0, 0.01)");
   if (!(plastic_overlap >= 1e-15 && plastic_overlap <= 1e-3))
-    throw std::invalid_argument("plastic overlap threshold outside [1e-15, 1e-3] m");
+    throw KeyedError("plastic_overlap", "plastic overlap threshold outside [1e-15, 1e-3] m");
 }
 
 HalfPlaneGrid strip_grid(double half_length, const DeterministicOptions& o) {
@@ -35,6 +39,8 @@ HalfPlaneGrid strip_grid(double half_length, const DeterministicOptions& o) {
   // Element edges at whole multiples of the element size from the contact point, whatever the
   // strip's length: a longer strip adds elements, it does not move them.
   const double elements = 2.0 * std::ceil(half_length / o.element_size);
+  // The element size with the strip's length (a combination): unkeyed. The mesh cycle refuses it
+  // first, at the keys (runs/mesh_cycle.cpp, the memory budget).
   if (elements > DeterministicOptions::kMaxElements)
     throw std::invalid_argument(fmt::format("the strip of {:.4g} mm needs {:.0f} elements of {:.4g} um (at most {})",
                                             2e3 * half_length, elements, o.element_size * 1e6,

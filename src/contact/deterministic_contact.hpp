@@ -49,7 +49,7 @@ struct DeterministicOptions {
   // leave ~1e-14 m of a micrometre relief, and a flank flattened to the cap in an earlier mesh
   // touches again at the cap with overlaps far below a nanometre without yielding anew [m].
   double plastic_overlap = 1e-9;
-  void validate() const;  // throws std::invalid_argument
+  void validate() const;  // throws core::KeyedError naming the field
 };
 
 // Where the strip is at one position of the path.

@@ -1,5 +1,7 @@
 #include "contact/greenwood_williamson.hpp"
 
+#include "core/keyed_error.hpp"
+
 #include <fmt/format.h>
 
 #include <boost/math/distributions/normal.hpp>
@@ -33,10 +35,11 @@ double blend(double a, double b, double t) {
 void GreenwoodWilliamsonOptions::validate() const {
   static_assert(kMinHeightPoints >= kGaussPoints, "at least one Gauss panel");
   if (height_points < kMinHeightPoints || height_points > kMaxHeightPoints)
-    throw std::invalid_argument(fmt::format("height_points must lie in [{}, {}]", kMinHeightPoints, kMaxHeightPoints));
+    throw core::KeyedError("height_points",
+                           fmt::format("height_points must lie in [{}, {}]", kMinHeightPoints, kMaxHeightPoints));
   if (table_points_per_sigma < kMinTablePoints || table_points_per_sigma > kMaxTablePoints)
-    throw std::invalid_argument(
-        fmt::format("table_points_per_sigma must lie in [{}, {}]", kMinTablePoints, kMaxTablePoints));
+    throw core::KeyedError("table_points_per_sigma", fmt::format("table_points_per_sigma must lie in [{}, {}]",
+                                                                 kMinTablePoints, kMaxTablePoints));
 }
 
 GreenwoodWilliamson::GreenwoodWilliamson(const surface::EquivalentSurface& surface,

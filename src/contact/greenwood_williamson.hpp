@@ -46,7 +46,7 @@ struct GreenwoodWilliamsonOptions {
       128;  // quadrature points over the summit heights in contact (panel ends also at the model's breakpoints)
   int table_points_per_sigma = 32;  // separation table resolution
   bool plastic = true;              // tabulate the plastic area
-  void validate() const;
+  void validate() const;            // throws core::KeyedError naming the field
 };
 
 class GreenwoodWilliamson {

@@ -1,5 +1,7 @@
 #include "contact/half_plane_bem.hpp"
 
+#include "core/keyed_error.hpp"
+
 #include <boost/math/quadrature/gauss.hpp>
 
 #include <algorithm>
@@ -59,11 +61,12 @@ class CostMeter {
 }  // namespace
 
 void BemOptions::validate() const {
-  if (!(tolerance > 0.0)) throw std::invalid_argument("BEM tolerance must be positive");
-  if (max_iterations < 1) throw std::invalid_argument("BEM max_iterations must be positive");
-  if (!(pressure_cap > 0.0)) throw std::invalid_argument("pressure cap must be positive");
-  if (!periodic && !(reference_length > 0.0)) throw std::invalid_argument("reference length must be positive");
-  if (coarse_elements < 0) throw std::invalid_argument("BEM coarse_elements must be >= 0");
+  using core::KeyedError;
+  if (!(tolerance > 0.0)) throw KeyedError("tolerance", "BEM tolerance must be positive");
+  if (max_iterations < 1) throw KeyedError("max_iterations", "BEM max_iterations must be positive");
+  if (!(pressure_cap > 0.0)) throw KeyedError("pressure_cap", "pressure cap must be positive");
+  if (!periodic && !(reference_length > 0.0)) throw KeyedError("reference_length", "reference length must be positive");
+  if (coarse_elements < 0) throw KeyedError("coarse_elements", "BEM coarse_elements must be >= 0");
 }
 
 HalfPlaneBem::HalfPlaneBem(const HalfPlaneGrid& grid, double modulus, const BemOptions& options)

@@ -43,7 +43,7 @@ struct BemOptions {
   bool precondition = true;
   int coarse_elements = 4096;
   bool overlap_start = true;
-  void validate() const;
+  void validate() const;  // throws core::KeyedError naming the field
 };
 
 struct BemSolution {

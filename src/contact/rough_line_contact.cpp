@@ -1,5 +1,7 @@
 #include "contact/rough_line_contact.hpp"
 
+#include "core/keyed_error.hpp"
+
 #include "asperity/cylinder.hpp"
 
 #include <boost/math/quadrature/gauss.hpp>
@@ -58,16 +60,18 @@ constexpr int kWarmIterations = 50;
 
 void StripOptions::validate() const {
   if (strip_points < kMinStripPoints || strip_points > kMaxStripPoints)
-    throw std::invalid_argument(fmt::format("strip_points must lie in [{}, {}]", kMinStripPoints, kMaxStripPoints));
+    throw core::KeyedError("strip_points",
+                           fmt::format("strip_points must lie in [{}, {}]", kMinStripPoints, kMaxStripPoints));
   if (coupled_nodes < kMinCoupledNodes || coupled_nodes > kMaxCoupledNodes)
-    throw std::invalid_argument(fmt::format("coupled_nodes must lie in [{}, {}]", kMinCoupledNodes, kMaxCoupledNodes));
+    throw core::KeyedError("coupled_nodes",
+                           fmt::format("coupled_nodes must lie in [{}, {}]", kMinCoupledNodes, kMaxCoupledNodes));
 }
 
 RoughLineContact::RoughLineContact(const GreenwoodWilliamson& gw, double composite_modulus, double face_width,
                                    const StripOptions& options, const NonlinearSolver* solver)
     : gw_(gw), modulus_(composite_modulus), face_width_(face_width), options_(options), solver_(solver) {
   options_.validate();
-  if (options_.fidelity == StripFidelity::coupled && !solver_)
+  if (options_.fidelity == StripFidelity::coupled && !solver_)  // the caller's state, no option field: unkeyed
     throw std::invalid_argument("the coupled fidelity needs a nonlinear solver");
   // x = b sin(theta): the Hertz pressure p0 cos(theta) and dx = b cos(theta) d(theta) are smooth;
   // composite 8-point Gauss-Legendre over theta in (-pi/2, pi/2), symmetric about 0 (an even

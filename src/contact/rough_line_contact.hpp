@@ -29,7 +29,7 @@ struct StripOptions {
   StripLookup lookup = StripLookup::cubic;
   int strip_points = 64;    // uncoupled: Gauss points across the Hertz strip
   int coupled_nodes = 128;  // coupled: pressure elements across the contact
-  void validate() const;
+  void validate() const;    // throws core::KeyedError naming the field
 };
 
 // Strip results per unit face width. The nominal width is the smooth Hertz width 2b in both

@@ -7,6 +7,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace geartrib::core {
 
@@ -18,5 +19,17 @@ class KeyedError : public std::invalid_argument {
  private:
   std::string key_;
 };
+
+// A member struct's validate() (`member` its name in the enclosing struct): its refusal keyed by
+// the field's path from the enclosing struct ("clean" + "outlier_limit": "clean.outlier_limit"),
+// which the table maps to a case key as it maps a field of the enclosing struct.
+template <class Options>
+void validate_member(std::string_view member, const Options& options) {
+  try {
+    options.validate();
+  } catch (const KeyedError& e) {
+    throw KeyedError(std::string(member) + "." + e.key(), e.what());
+  }
+}
 
 }  // namespace geartrib::core

@@ -30,6 +30,24 @@ namespace geartrib::runs {
 
 namespace {
 
+// The components' own rules on the Case as it holds them now (the loader checked them; a Case
+// changed in code may break one): a refusal at the key of the field it names, before any work.
+void check_component_rules(const Case& c) {
+  const auto check = [&](const std::string& prefix, const auto& component) {
+    try {
+      component.validate();
+    } catch (const core::KeyedError& e) {
+      throw io::refusal_error(c, e, prefix);
+    }
+  };
+  check("lubrication.", c.lubrication);
+  check("mesh.", c.mesh);
+  check("roughness.", c.roughness);
+  check("dynamics.", c.dynamics);
+  check("asperity.", c.asperity);
+  check("contact.", c.contact);
+}
+
 // The load the flanks cannot carry at any separation (the rough-surface table's search gives up):
 // an input error at the torque, naming the flanks' roughness and where each came from.
 [[noreturn]] void throw_overload(const Case& c, const std::string& what) {
@@ -577,6 +595,7 @@ double finest_element_size(const Case& c) {
 }
 
 contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress) {
+  check_component_rules(c);
   const gear::GearMesh mesh = gear::case_mesh(c);
   const solvers::KinsolSolver kinsol;
   const std::unique_ptr<OdeIntegrator> integrator =
@@ -597,8 +616,8 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
     // A refusal the physics pins on one key: located where that key's value came from.
     throw io::refusal_error(c, e);
   } catch (const std::invalid_argument& e) {
-    // The case's values are what the physics refused: name the case file rather than leave the
-    // message without a place.
+    // A refusal about no one option field (a combination of them, a state of the physics: a
+    // coupled strip without its solver, more solves than a run counts): the case file, unkeyed.
     throw io::InputError(io::case_file(c), 0, "", "", e.what());
   }
   for (const auto& f : synthesis) {

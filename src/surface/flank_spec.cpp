@@ -11,6 +11,7 @@ void TopographySpec::validate() const {
   if (!(resample >= 0.0)) throw KeyedError("resample", "must not be negative (0: as measured)");
   if (!(profile_at >= 0.0 && profile_at <= 1.0)) throw KeyedError("profile_at", "must lie in [0, 1]");
   if (!(synthesis_length >= 0.0)) throw KeyedError("synthesis_length", "must not be negative");
+  core::validate_member("clean", clean);
 }
 
 void RoughnessSettings::validate() const {

@@ -1,5 +1,7 @@
 #include "surface/height_grid.hpp"
 
+#include "core/keyed_error.hpp"
+
 #include <fmt/format.h>
 #include <Eigen/Dense>
 
@@ -406,11 +408,12 @@ HeightGrid resample(const HeightGrid& g, double spacing) {
 }
 
 void CleanupOptions::validate() const {
-  if (form_degree < 0 || form_degree > 6) throw std::invalid_argument("form degree must lie in [0, 6]");
+  using core::KeyedError;
+  if (form_degree < 0 || form_degree > 6) throw KeyedError("form_degree", "form degree must lie in [0, 6]");
   if (!(waviness_cutoff >= 0.0) || !std::isfinite(waviness_cutoff))
-    throw std::invalid_argument("waviness cut-off must be >= 0");
+    throw KeyedError("waviness_cutoff", "waviness cut-off must be >= 0");
   if (!(outlier_limit == 0.0 || outlier_limit >= 2.0) || !std::isfinite(outlier_limit))
-    throw std::invalid_argument("outlier limit must be 0 (off) or at least 2 robust standard deviations");
+    throw KeyedError("outlier_limit", "outlier limit must be 0 (off) or at least 2 robust standard deviations");
 }
 
 CleanupReport clean_surface(HeightGrid& g, const CleanupOptions& o) {

@@ -81,7 +81,7 @@ struct CleanupOptions {
   double waviness_cutoff = 0;  // Gaussian cut-off lambda_c [m]; 0: no filter
   double outlier_limit = 0;    // k robust standard deviations; 0: keep all points
   bool fill = false;           // fill missing points (else they stay masked)
-  void validate() const;       // throws std::invalid_argument
+  void validate() const;       // throws core::KeyedError naming the field
 };
 struct CleanupReport {
   std::size_t missing_in = 0;   // points missing in the input

@@ -341,7 +341,7 @@ void run_meshes(const FidelityInputs& in, BoundaryElements::State& st, const std
   const int planned = std::max(1, in.running_in.meshes);
   const int per_round = st.hunting ? st.teeth[0] : 1;
   const long long all_solves = static_cast<long long>(planned) * per_round * n;
-  if (all_solves > std::numeric_limits<int>::max())
+  if (all_solves > std::numeric_limits<int>::max())  // meshes x teeth x positions, a combination: unkeyed
     throw std::invalid_argument(
         fmt::format("running-in of {} meshes x {} tooth pairs x {} positions: more strip solves "
                     "than a run can count ({})",
@@ -397,6 +397,7 @@ void run_meshes(const FidelityInputs& in, BoundaryElements::State& st, const std
 }  // namespace
 
 BoundaryElements::State BoundaryElements::prepare(const FidelityInputs& in, StageClock& clock) {
+  // The caller's inputs, no option field: unkeyed.
   if (!in.flank_source) throw std::invalid_argument("the deterministic fidelity needs the flanks' profiles");
   State st;
   plan_strip(in, st);
