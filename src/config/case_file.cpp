@@ -416,7 +416,7 @@ void warn_shared_synthesis_seeds(const TomlReader& r, Case& c) {
   if (!contact::rolls_flank_profiles(c.contact.fidelity) || !t1 || !t2 || t1->synthesis == SynthesisMethod::none ||
       t2->synthesis == SynthesisMethod::none)
     return;
-  const bool hunting = c.running_in.teeth == "hunting" && c.running_in.meshes > 0;
+  const bool hunting = c.running_in.hunting();
   const auto n1 = static_cast<std::uint64_t>(hunting ? c.gear_pair.teeth[0] : 1);
   const auto n2 = static_cast<std::uint64_t>(hunting ? c.gear_pair.teeth[1] : 1);
   const std::uint64_t s1 = t1->synthesis_seed, s2 = t2->synthesis_seed;

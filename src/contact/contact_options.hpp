@@ -5,7 +5,9 @@
 #include "contact/deterministic_contact.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/rough_line_contact.hpp"
+#include "core/named_choices.hpp"
 
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -65,9 +67,16 @@ struct ContactSettings {
 // one mesh of the same teeth to the next, until shakedown or `meshes` meshes. Its threshold, below
 // which a plastic deformation counts as none (shakedown: a mesh that deforms no flank point by
 // more), is the boundary elements' plastic_overlap (ContactSettings::boundary_elements).
+// The teeth that meet from mesh to mesh: pair, one pinion and one wheel tooth (the 1:1 pair's order);
+// hunting, every tooth in the order they mesh (pinion tooth k meets wheel tooth k mod z2).
+enum class ToothOrder { pair, hunting };
+std::span<const NamedChoice<ToothOrder>> tooth_order_choices();  // running_in.teeth
+const char* tooth_order_name(ToothOrder o);
+
 struct RunningInSettings {
-  int meshes = 0;              // 0: one mesh, no running-in
-  std::string teeth = "pair";  // "pair": one pinion and one wheel tooth; "hunting": every tooth, in mesh order
+  int meshes = 0;  // 0: one mesh, no running-in
+  ToothOrder teeth = ToothOrder::pair;
+  bool hunting() const { return teeth == ToothOrder::hunting && meshes > 0; }  // more than one mesh, every tooth
 };
 
 }  // namespace geartrib

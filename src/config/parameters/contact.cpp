@@ -159,9 +159,9 @@ void declare_contact(ParameterRows& table) {
       .doc(
           "Deterministic: plastic deformation below this counts as none (the plastic area's threshold); a mesh that "
           "deforms no flank point by more ends the running-in (shakedown)");
-  add(text(
-          "running_in.teeth", K::choice, [](auto& c, int) -> auto& { return c.running_in.teeth; }))
-      .choices({"pair", "hunting"}, "tooth order")
+  add(named_choice(
+          "running_in.teeth", tooth_order_choices(), "tooth order",
+          [](auto& c, int) -> auto& { return c.running_in.teeth; }))
       .doc(
           "pair: one pinion tooth meets one wheel tooth every mesh (the 1:1 pair's order); hunting: every tooth, "
           "in the order they mesh (pinion tooth k meets wheel tooth k mod z2)");

@@ -324,7 +324,7 @@ std::vector<std::string> point_names(const PathState& p) {
 std::optional<RunningInResult> running_in_start(const FidelityInputs& in, const BoundaryElements::State& st) {
   if (in.running_in.meshes <= 0) return std::nullopt;
   RunningInResult ri;
-  ri.teeth = st.hunting ? "hunting" : "pair";
+  ri.teeth = tooth_order_name(st.hunting ? ToothOrder::hunting : ToothOrder::pair);
   ri.tolerance = in.contact.boundary_elements.plastic_overlap;
   for (int g = 0; g < 2; ++g) {
     const FlankTrack& t = g == 0 ? st.flanks.pinion.front() : st.flanks.wheel.front();
@@ -401,7 +401,7 @@ BoundaryElements::State BoundaryElements::prepare(const FidelityInputs& in, Stag
   if (!in.flank_source) throw std::invalid_argument("the deterministic fidelity needs the flanks' profiles");
   State st;
   plan_strip(in, st);
-  st.hunting = in.running_in.teeth == "hunting" && in.running_in.meshes > 0;
+  st.hunting = in.running_in.hunting();
   const int* z = in.mesh.pair().spec().teeth;
   st.teeth[0] = st.hunting ? z[0] : 1;
   st.teeth[1] = st.hunting ? z[1] : 1;
