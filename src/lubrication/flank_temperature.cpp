@@ -35,7 +35,6 @@ double fernandes_lubricant_factor(BaseOil b, double iso_factor) {
     case BaseOil::mineral:
       return 0.846;
     case BaseOil::pao:
-      return 0.65;
     case BaseOil::ester:
       return 0.65;
     case BaseOil::polyglycol_insoluble:
