@@ -24,9 +24,11 @@
 // added by FFT) is a block-tridiagonal solve per iteration; the film at the two ends from the
 // integral form closes it, and h0 is corrected each iteration to carry the line load.
 //
-// Cavitation: Reynolds' condition p = 0 and dp/dx = 0 at the film's rupture, by the
-// complementarity p >= 0 (negative pressures set to zero and those nodes held at zero while
-// their Reynolds residual would push them negative; Christopherson 1941).
+// Cavitation: Reynolds' condition (p = 0 and dp/dx = 0 at the film's rupture) by the penalty
+// method (Wu, Quart. Appl. Math. 44, 1986): where p < 0 the residual gains -kappa p, kappa large,
+// so the cavitated zone's pressure is ~0 and the rupture moves freely with each Newton step.
+// Newton steps are limited to 0.3 p_H per node (the exponential viscosity), and nodes at the cap
+// or in contact form active sets checked once converged (a node held there is freed for one step).
 // Asperity contact (Holmes, Evans & Snidle 2003): where the film would fall below film_floor the
 // node is in contact: its equation becomes h = film_floor and its pressure is the contact
 // pressure (what the deformation needs), capped at the hardness (elastic-perfectly-plastic, as
@@ -56,7 +58,7 @@ std::span<const NamedChoice<ViscosityLaw>> viscosity_law_choices();
 enum class FlowModel { newtonian, eyring };
 std::span<const NamedChoice<FlowModel>> flow_model_choices();
 
-inline constexpr double kRoelandsPressure = 1.96e8;   // p0 [Pa]
+inline constexpr double kRoelandsPressure = 1.96e8;    // p0 [Pa]
 inline constexpr double kRoelandsViscosity = 6.31e-5;  // eta_inf [Pa s] (ln eta_inf = -9.67)
 
 // The oil in the contact at its inlet temperature.
@@ -90,10 +92,10 @@ struct EhlOptions {
   int nodes = 1024;
   double tolerance = 1e-7;  // converged: the largest Newton update below tolerance p_H_ref, the load within tolerance
   int max_iterations = 200;
-  double film_floor = 2e-9;  // h at which a node is in asperity contact [m]
+  double film_floor = 2e-9;                                       // h at which a node is in asperity contact [m]
   double pressure_cap = std::numeric_limits<double>::infinity();  // the softer surface's hardness [Pa]
-  double boundary_friction = 0.1;  // friction coefficient in the asperity contacts [-]
-  void validate() const;           // throws core::KeyedError naming the field
+  double boundary_friction = 0.1;                                 // friction coefficient in the asperity contacts [-]
+  void validate() const;                                          // throws core::KeyedError naming the field
 };
 
 enum class NodeState : std::uint8_t { fluid, cavitated, contact, capped };
@@ -104,19 +106,19 @@ struct EhlField {
   std::vector<double> film;      // h [m] (film_floor in contact; below it where capped: plastic)
   std::vector<double> shear;     // the surface shear stress the lower speed's surface feels, in +x for u1 > u2 [Pa]
   std::vector<NodeState> state;
-  double line_load = 0.0;        // integral of p [N/m]
-  double contact_load = 0.0;     // carried by the contact nodes [N/m]
-  double central_film = 0.0;     // at x = 0 [m]
-  double min_film = 0.0;         // the least over the fluid nodes [m]
-  double contact_fraction = 0.0; // contact nodes over the nodes within |x| <= b [-]
-  double asperity_share = 0.0;   // contact_load / line_load [-]
-  double peak_pressure = 0.0;    // [Pa]
-  double film_friction = 0.0;    // integral of the film's shear [N/m]
-  double boundary_friction = 0.0;// integral of boundary_friction p over the contacts [N/m]
+  double line_load = 0.0;             // integral of p [N/m]
+  double contact_load = 0.0;          // carried by the contact nodes [N/m]
+  double central_film = 0.0;          // at x = 0 [m]
+  double min_film = 0.0;              // the least over the fluid nodes [m]
+  double contact_fraction = 0.0;      // contact nodes over the nodes within |x| <= b [-]
+  double asperity_share = 0.0;        // contact_load / line_load [-]
+  double peak_pressure = 0.0;         // [Pa]
+  double film_friction = 0.0;         // integral of the film's shear [N/m]
+  double boundary_friction = 0.0;     // integral of boundary_friction p over the contacts [N/m]
   double friction_coefficient = 0.0;  // (film + boundary friction)/line load [-]
   int iterations = 0;
-  double update = 0.0;           // the last Newton update (largest, over p_H_ref)
-  double load_error = 0.0;       // relative
+  double update = 0.0;      // the last Newton update (largest, over p_H_ref)
+  double load_error = 0.0;  // relative
 };
 
 class LineEhlSolver {
@@ -167,7 +169,7 @@ struct StressMaximum {
   double x = 0.0;          // [m]
 };
 StressMaximum subsurface_maximum(const HalfPlaneGrid& grid, std::span<const double> pressure,
-                                 std::span<const double> traction, double poisson_ratio, double max_depth,
-                                 int depths, int stride);
+                                 std::span<const double> traction, double poisson_ratio, double max_depth, int depths,
+                                 int stride);
 
 }  // namespace geartrib::contact::mixed_ehl

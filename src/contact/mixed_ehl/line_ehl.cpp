@@ -1,0 +1,729 @@
+#include "contact/mixed_ehl/line_ehl.hpp"
+
+#include "contact/toeplitz_convolution.hpp"
+#include "core/keyed_error.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+
+namespace geartrib::contact::mixed_ehl {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+constexpr NamedChoice<ViscosityLaw> kViscosityLaws[] = {{ViscosityLaw::roelands, "roelands"},
+                                                        {ViscosityLaw::barus, "barus"}};
+constexpr NamedChoice<FlowModel> kFlowModels[] = {{FlowModel::newtonian, "newtonian"}, {FlowModel::eyring, "eyring"}};
+// Dowson & Higginson's density: rho/rho_0 = 1 + a p/(1 + b p) [p in Pa].
+constexpr double kDensityA = 0.6e-9, kDensityB = 1.7e-9;
+// exp() of at most this (eta/eta_0 ~ 1e304): beyond it the film carries no Poiseuille flow anyway.
+constexpr double kMaxViscosityExponent = 700.0;
+double log_antiderivative(double t) { return t == 0.0 ? 0.0 : t * std::log(std::abs(t)) - t; }  // int ln|t| dt
+
+using Block = std::array<double, 4>;  // 2x2, row major: (P, H) equations x (P, H) unknowns
+using Pair = std::array<double, 2>;
+Block multiply(const Block& a, const Block& b) {
+  return {a[0] * b[0] + a[1] * b[2], a[0] * b[1] + a[1] * b[3], a[2] * b[0] + a[3] * b[2], a[2] * b[1] + a[3] * b[3]};
+}
+Pair multiply(const Block& a, const Pair& v) { return {a[0] * v[0] + a[1] * v[1], a[2] * v[0] + a[3] * v[1]}; }
+Block inverse(const Block& a) {
+  const double det = a[0] * a[3] - a[1] * a[2];
+  if (!(std::abs(det) > 0.0) || !std::isfinite(det)) throw std::runtime_error("mixed EHL: singular Newton block");
+  return {a[3] / det, -a[1] / det, -a[2] / det, a[0] / det};
+}
+
+// The block-tridiagonal system's factors (block Thomas): dinv_k = (D_k - L_k C_{k-1})^-1,
+// C_k = dinv_k U_k.
+void factor(const std::vector<Block>& lower, const std::vector<Block>& diag, const std::vector<Block>& upper,
+            std::vector<Block>& dinv, std::vector<Block>& cprime) {
+  for (std::size_t k = 0; k < diag.size(); ++k) {
+    Block dk = diag[k];
+    if (k > 0) {
+      const Block lc = multiply(lower[k], cprime[k - 1]);
+      for (std::size_t e = 0; e < 4; ++e) dk[e] -= lc[e];
+    }
+    dinv[k] = inverse(dk);
+    cprime[k] = multiply(dinv[k], upper[k]);
+  }
+}
+void solve_tridiagonal(const std::vector<Block>& lower, const std::vector<Block>& dinv,
+                       const std::vector<Block>& cprime, const std::vector<Pair>& rhs, std::vector<Pair>& y) {
+  const std::size_t m = rhs.size();
+  for (std::size_t k = 0; k < m; ++k) {
+    Pair r = rhs[k];
+    if (k > 0) {
+      const Pair a = multiply(lower[k], y[k - 1]);
+      r = {r[0] - a[0], r[1] - a[1]};
+    }
+    y[k] = multiply(dinv[k], r);
+  }
+  for (std::size_t k = m - 1; k-- > 0;) {
+    const Pair a = multiply(cprime[k], y[k + 1]);
+    y[k] = {y[k][0] - a[0], y[k][1] - a[1]};
+  }
+}
+
+// GMRES(restart) with right preconditioning (Saad, Iterative Methods for Sparse Linear Systems,
+// 2003, alg. 9.5): x from zero until ||b - A x|| <= tolerance ||b||; returns the iterations.
+template <class Apply, class Precondition>
+int gmres(const Apply& apply, const Precondition& precondition, const std::vector<double>& b, std::vector<double>& x,
+          double tolerance, int max_iterations) {
+  const std::size_t n = b.size();
+  constexpr int kRestart = 40;
+  x.assign(n, 0.0);
+  auto dot = [](const std::vector<double>& u, const std::vector<double>& v) {
+    double s = 0.0;
+    for (std::size_t i = 0; i < u.size(); ++i) s += u[i] * v[i];
+    return s;
+  };
+  const double bnorm = std::sqrt(dot(b, b));
+  if (!(bnorm > 0.0)) return 0;
+  std::vector<std::vector<double>> v(kRestart + 1, std::vector<double>(n)), zs(kRestart, std::vector<double>(n));
+  std::vector<double> h((kRestart + 1) * kRestart), cs(kRestart), sn(kRestart), g(kRestart + 1), w(n), ax(n);
+  int total = 0;
+  while (total < max_iterations) {
+    apply(x, ax);
+    for (std::size_t i = 0; i < n; ++i) v[0][i] = b[i] - ax[i];
+    double beta = std::sqrt(dot(v[0], v[0]));
+    if (beta <= tolerance * bnorm) return total;
+    for (double& e : v[0]) e /= beta;
+    std::fill(g.begin(), g.end(), 0.0);
+    g[0] = beta;
+    int j = 0;
+    for (; j < kRestart && total < max_iterations; ++j, ++total) {
+      precondition(v[static_cast<std::size_t>(j)], zs[static_cast<std::size_t>(j)]);
+      apply(zs[static_cast<std::size_t>(j)], w);
+      for (int i = 0; i <= j; ++i) {  // modified Gram-Schmidt
+        const double hij = dot(w, v[static_cast<std::size_t>(i)]);
+        h[static_cast<std::size_t>(i * kRestart + j)] = hij;
+        for (std::size_t e = 0; e < n; ++e) w[e] -= hij * v[static_cast<std::size_t>(i)][e];
+      }
+      const double hn = std::sqrt(dot(w, w));
+      h[static_cast<std::size_t>((j + 1) * kRestart + j)] = hn;
+      if (hn > 0.0)
+        for (std::size_t e = 0; e < n; ++e) v[static_cast<std::size_t>(j + 1)][e] = w[e] / hn;
+      for (int i = 0; i < j; ++i) {  // the earlier Givens rotations
+        const double a = h[static_cast<std::size_t>(i * kRestart + j)],
+                     c = h[static_cast<std::size_t>((i + 1) * kRestart + j)];
+        h[static_cast<std::size_t>(i * kRestart + j)] =
+            cs[static_cast<std::size_t>(i)] * a + sn[static_cast<std::size_t>(i)] * c;
+        h[static_cast<std::size_t>((i + 1) * kRestart + j)] =
+            -sn[static_cast<std::size_t>(i)] * a + cs[static_cast<std::size_t>(i)] * c;
+      }
+      const double a = h[static_cast<std::size_t>(j * kRestart + j)],
+                   c = h[static_cast<std::size_t>((j + 1) * kRestart + j)];
+      const double rr = std::hypot(a, c);
+      cs[static_cast<std::size_t>(j)] = rr > 0.0 ? a / rr : 1.0;
+      sn[static_cast<std::size_t>(j)] = rr > 0.0 ? c / rr : 0.0;
+      h[static_cast<std::size_t>(j * kRestart + j)] = rr;
+      g[static_cast<std::size_t>(j + 1)] = -sn[static_cast<std::size_t>(j)] * g[static_cast<std::size_t>(j)];
+      g[static_cast<std::size_t>(j)] *= cs[static_cast<std::size_t>(j)];
+      if (std::abs(g[static_cast<std::size_t>(j + 1)]) <= tolerance * bnorm || hn == 0.0) {
+        ++j;
+        ++total;
+        break;
+      }
+    }
+    // x += Z y, y from the triangular system.
+    std::vector<double> y(static_cast<std::size_t>(j));
+    for (int i = j - 1; i >= 0; --i) {
+      double s = g[static_cast<std::size_t>(i)];
+      for (int k = i + 1; k < j; ++k)
+        s -= h[static_cast<std::size_t>(i * kRestart + k)] * y[static_cast<std::size_t>(k)];
+      y[static_cast<std::size_t>(i)] = s / h[static_cast<std::size_t>(i * kRestart + i)];
+    }
+    for (int i = 0; i < j; ++i)
+      for (std::size_t e = 0; e < n; ++e) x[e] += y[static_cast<std::size_t>(i)] * zs[static_cast<std::size_t>(i)][e];
+    if (j > 0 && std::abs(g[static_cast<std::size_t>(j)]) <= tolerance * bnorm) return total;
+  }
+  return total;
+}
+// The Newton step's linear solve: to this relative residual, in at most this many iterations.
+constexpr double kLinearTolerance = 1e-6;
+constexpr double kPenaltyFactor = 1e3;  // kappa dX^2: large against the Poiseuille coefficients where the film ruptures
+constexpr int kLinearIterations = 200;
+constexpr double kMaxPressureStep = 0.3;
+}  // namespace
+
+std::span<const NamedChoice<ViscosityLaw>> viscosity_law_choices() { return kViscosityLaws; }
+std::span<const NamedChoice<FlowModel>> flow_model_choices() { return kFlowModels; }
+
+double Fluid::viscosity_at(double p) const {
+  const double q = std::max(p, 0.0);
+  double exponent = 0.0;
+  if (viscosity_law == ViscosityLaw::barus) {
+    exponent = pressure_viscosity * q;
+  } else {
+    // Roelands (1966): ln(eta/eta_0) = (ln eta_0 + 9.67)((1 + p/p0)^Z - 1), Z = alpha p0/(ln eta_0 + 9.67).
+    const double lnr = std::log(viscosity / kRoelandsViscosity);
+    const double z = pressure_viscosity * kRoelandsPressure / lnr;
+    exponent = lnr * (std::pow(1.0 + q / kRoelandsPressure, z) - 1.0);
+  }
+  return viscosity * std::exp(std::min(exponent, kMaxViscosityExponent));
+}
+
+double Fluid::density_ratio(double p) const {
+  if (!compressible) return 1.0;
+  const double q = std::max(p, 0.0);
+  return 1.0 + kDensityA * q / (1.0 + kDensityB * q);
+}
+
+void Fluid::validate() const {
+  using core::KeyedError;
+  if (!(viscosity > 0.0) || !std::isfinite(viscosity)) throw KeyedError("viscosity", "viscosity must be positive");
+  if (viscosity_law == ViscosityLaw::roelands && !(viscosity > kRoelandsViscosity))
+    throw KeyedError("viscosity", fmt::format("Roelands' law needs a viscosity above {} Pa s", kRoelandsViscosity));
+  if (!(pressure_viscosity >= 0.0) || !std::isfinite(pressure_viscosity))
+    throw KeyedError("pressure_viscosity", "pressure-viscosity coefficient must be >= 0");
+  if (!(eyring_stress > 0.0) || !std::isfinite(eyring_stress))
+    throw KeyedError("eyring_stress", "Eyring stress must be positive");
+  if (!(limiting_shear_coefficient >= 0.0 && limiting_shear_coefficient <= 1.0))
+    throw KeyedError("limiting_shear_coefficient", "limiting shear coefficient must lie in [0, 1]");
+}
+
+void EhlOptions::validate() const {
+  using core::KeyedError;
+  if (!(inlet >= 1.5 && inlet <= 100.0)) throw KeyedError("inlet", "the inlet must lie 1.5 to 100 half-widths ahead");
+  if (!(outlet >= 1.05 && outlet <= 100.0))
+    throw KeyedError("outlet", "the outlet must lie 1.05 to 100 half-widths behind");
+  if (nodes < 16 || nodes > (1 << 20)) throw KeyedError("nodes", "nodes must lie in [16, 2^20]");
+  if (!(tolerance > 0.0 && tolerance < 0.1)) throw KeyedError("tolerance", "tolerance must lie in (0, 0.1)");
+  if (max_iterations < 1) throw KeyedError("max_iterations", "max_iterations must be positive");
+  if (!(film_floor > 0.0) || !std::isfinite(film_floor)) throw KeyedError("film_floor", "film floor must be positive");
+  if (!(pressure_cap > 0.0)) throw KeyedError("pressure_cap", "pressure cap must be positive");
+  if (!(boundary_friction >= 0.0 && boundary_friction <= 1.0))
+    throw KeyedError("boundary_friction", "boundary friction must lie in [0, 1]");
+}
+
+struct LineEhlSolver::Impl {
+  Fluid fluid;
+  double modulus = 0.0;  // E*
+  EhlOptions options;
+  ContactInstant reference;
+  double b = 0.0, ph = 0.0, w_ref = 0.0;  // Hertz half-width [m], pressure [Pa] and line load [N/m] of the reference
+  double film_scale = 0.0;                // h = film_scale H [m]
+  HalfPlaneGrid grid;
+  int n = 0;
+  double dx = 0.0;             // node spacing in b
+  std::vector<double> X;       // nodes in b
+  std::vector<double> kernel;  // K^(m) = int over an element of ln|X_i - S| dS, m = i - j in [-(n-1), n-1]
+  std::unique_ptr<ToeplitzConvolution> deflection;  // sum_j K^(i-j) P_j
+  std::vector<double> band;                         // D(0), D(1): the second difference of -K^/pi over dx^2 at 0, +-1
+  // State (dimensionless).
+  std::vector<double> P, H, mass_old;  // mass_old: rho H at the last time
+  double H0 = 0.0;
+  bool started = false;
+  EhlField field;
+  // Work.
+  std::vector<double> conv, eps, deps_dp, deps_dh, rho, drho, r, work_p, work_conv;
+
+  void build_grid() {
+    n = options.nodes;
+    const double x0 = -options.inlet * b, x1 = options.outlet * b;
+    grid.spacing = (x1 - x0) / n;
+    grid.start = x0;
+    grid.size = n;
+    dx = grid.spacing / b;
+    X.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) X[static_cast<std::size_t>(i)] = grid.x(i) / b;
+    kernel.assign(static_cast<std::size_t>(2 * n - 1), 0.0);
+    for (int m = 0; m < n; ++m)
+      kernel[static_cast<std::size_t>(n - 1 + m)] = kernel[static_cast<std::size_t>(n - 1 - m)] =
+          log_antiderivative(m * dx + 0.5 * dx) - log_antiderivative(m * dx - 0.5 * dx);
+    deflection = std::make_unique<ToeplitzConvolution>(kernel, n, false);
+    auto k = [&](int m) { return kernel[static_cast<std::size_t>(n - 1 + std::abs(m))]; };
+    band = {-(k(1) - 2.0 * k(0) + k(-1)) / (kPi * dx * dx), -(k(2) - 2.0 * k(1) + k(0)) / (kPi * dx * dx)};
+    P.assign(static_cast<std::size_t>(n), 0.0);
+    H.assign(static_cast<std::size_t>(n), 0.0);
+    mass_old.assign(static_cast<std::size_t>(n), 0.0);
+    for (auto* v : {&conv, &eps, &deps_dp, &deps_dh, &rho, &drho, &r}) v->assign(static_cast<std::size_t>(n), 0.0);
+  }
+
+  // The film from the integral form at every node (H0, geometry, deflection, heights).
+  void integral_film(double curvature, std::vector<double>& out) {
+    deflection->apply(P.data(), conv.data());
+    for (int i = 0; i < n; ++i) {
+      const auto s = static_cast<std::size_t>(i);
+      out[s] = H0 + 0.5 * curvature * X[s] * X[s] - conv[s] / kPi - r[s];
+    }
+  }
+
+  void start_hertz(const ContactInstant& c, double curvature, double load) {
+    // Hertz for the instant's load and curvature (in the reference's units), then H0 so that the
+    // central film is a first guess from Dowson-Toyoda's line-contact formula (E' = 2 E*).
+    const double a = std::sqrt(load / curvature);  // b/b_ref: a^2 proportional to w R
+    const double p0 = load / a;                    // p_H/p_H_ref
+    for (int i = 0; i < n; ++i) {
+      const auto s = static_cast<std::size_t>(i);
+      const double t = X[s] / a;
+      P[s] = std::abs(t) < 1.0 ? p0 * std::sqrt(1.0 - t * t) : 0.0;
+    }
+    P.front() = P.back() = 0.0;
+    const double e_prime = 2.0 * modulus;
+    const double u = c.entrainment(), w = c.line_load, rr = c.radius;
+    const double U = fluid.viscosity * u / (e_prime * rr), G = fluid.pressure_viscosity * e_prime,
+                 W = w / (e_prime * rr);
+    const double hc = 3.06 * std::pow(U, 0.69) * std::pow(std::max(G, 1.0), 0.56) * std::pow(W, -0.10) * rr;
+    H0 = 0.0;
+    integral_film(curvature, H);
+    const auto mid = static_cast<std::size_t>(std::lower_bound(X.begin(), X.end(), 0.0) - X.begin());
+    H0 = hc / film_scale - H[std::min(mid, H.size() - 1)];
+    for (double& h : H) h += H0;
+    started = true;
+  }
+
+  // eps and its derivatives, rho and its derivative, at every node.
+  void coefficients(const ContactInstant& c) {
+    const double lambda =
+        12.0 * fluid.viscosity * reference.entrainment() * reference.radius * reference.radius / (b * b * b * ph);
+    const double slide = std::abs(c.speed1 - c.speed2);
+    for (int i = 0; i < n; ++i) {
+      const auto s = static_cast<std::size_t>(i);
+      const double p = P[s] * ph;
+      const double eta = fluid.viscosity_at(p);
+      const double eta_bar = eta / fluid.viscosity;
+      rho[s] = fluid.density_ratio(p);
+      // d rho/dP and d ln(eta)/dP (Hertzian P).
+      double dlneta = 0.0;
+      if (p > 0.0 && std::log(eta_bar) < kMaxViscosityExponent) {
+        if (fluid.viscosity_law == ViscosityLaw::barus) {
+          dlneta = fluid.pressure_viscosity;
+        } else {
+          const double lnr = std::log(fluid.viscosity / kRoelandsViscosity);
+          const double z = fluid.pressure_viscosity * kRoelandsPressure / lnr;
+          dlneta = lnr * z / kRoelandsPressure * std::pow(1.0 + p / kRoelandsPressure, z - 1.0);
+        }
+      }
+      dlneta *= ph;
+      drho[s] = fluid.compressible && p > 0.0 ? kDensityA * ph / std::pow(1.0 + kDensityB * p, 2) : 0.0;
+      const double h = std::max(H[s], 0.0);
+      double phi = 1.0;
+      if (fluid.flow == FlowModel::eyring && h > 0.0) {
+        const double ratio = eta * slide / (fluid.eyring_stress * h * film_scale);
+        phi = std::sqrt(1.0 + ratio * ratio);  // cosh(asinh(ratio)), Conry, Wang & Cusano 1987
+      }
+      const double e = rho[s] * h * h * h * phi / (eta_bar * lambda);
+      eps[s] = std::isfinite(e) ? e : 0.0;
+      deps_dp[s] = eps[s] * (drho[s] / rho[s] - dlneta);
+      deps_dh[s] = h > 0.0 ? 3.0 * eps[s] / h : 0.0;
+    }
+  }
+
+  // One solve (steady: dt = 0) at the instant; throws if not converged.
+  const EhlField& solve(const ContactInstant& c, std::span<const double> heights, double dt) {
+    if (static_cast<int>(heights.size()) != n)
+      throw std::invalid_argument(fmt::format("mixed EHL: {} heights for {} nodes", heights.size(), n));
+    if (!(c.line_load > 0.0) || !(c.radius > 0.0) || !(c.speed1 >= 0.0) || !(c.speed2 >= 0.0) ||
+        !(c.entrainment() > 0.0))
+      throw std::invalid_argument("mixed EHL: the instant needs a positive load, radius and entrainment");
+    for (int i = 0; i < n; ++i) r[static_cast<std::size_t>(i)] = heights[static_cast<std::size_t>(i)] / film_scale;
+    const double curvature = reference.radius / c.radius;  // R_ref/R
+    const double load = c.line_load / w_ref;               // of the reference's
+    const double target = 0.5 * kPi * load;                // int P dX
+    const double speed = c.entrainment() / reference.entrainment();
+    const double squeeze = dt > 0.0 ? b / (reference.entrainment() * dt) : 0.0;  // 1/dT
+    if (!started) start_hertz(c, curvature, load);
+    // The second differences of the heights (they enter the film's differential form).
+    const double inv_dx2 = 1.0 / (dx * dx);
+    const std::size_t m = static_cast<std::size_t>(n - 2);  // interior unknowns
+    std::vector<Block> lower(m), diag(m), upper(m);
+    std::vector<Pair> rhs(m), y1(m), y2(m), col(m);
+    std::vector<Block> cprime(m), dinv(m);
+    std::vector<Pair> g1(m);
+    std::vector<double> boundary(static_cast<std::size_t>(n)), z(2 * m + 1, 0.0);
+    work_p.assign(static_cast<std::size_t>(n), 0.0);
+    work_conv.assign(static_cast<std::size_t>(n), 0.0);
+    const double cap = options.pressure_cap / ph;
+    const double penalty = kPenaltyFactor / (dx * dx);
+    double update = 0.0, load_error = 0.0;
+    int it = 0;
+    // Nodes at the cap: held there (their row dP = 0) from the iteration after a step would have
+    // raised them past it, released when their film opens above the floor.
+    std::vector<char> held(static_cast<std::size_t>(n), 0);
+    for (int i = 0; i < n; ++i) held[static_cast<std::size_t>(i)] = P[static_cast<std::size_t>(i)] >= cap;
+    std::vector<char> touching(static_cast<std::size_t>(n), 0);
+    const double floor = options.film_floor / film_scale;
+    for (int i = 0; i < n; ++i)
+      touching[static_cast<std::size_t>(i)] = H[static_cast<std::size_t>(i)] <= floor * (1.0 + 1e-9);
+    bool verifying = false;  // the held nodes free for one step: does any want to fall below the cap?
+    int released = 0;
+    for (; it < options.max_iterations; ++it) {
+      integral_film(curvature, boundary);  // the ends from the integral form (and conv = K P)
+      H.front() = boundary.front();
+      H.back() = boundary.back();
+      coefficients(c);
+      // Residuals and blocks for interior node i = k + 1.
+      for (std::size_t k = 0; k < m; ++k) {
+        const std::size_t i = k + 1;
+        const double ea = 0.5 * (eps[i] + eps[i + 1]) * inv_dx2, ec = 0.5 * (eps[i] + eps[i - 1]) * inv_dx2;
+        const double dpa = P[i + 1] - P[i], dpc = P[i] - P[i - 1];
+        const double mass = rho[i] * H[i], mass_prev = rho[i - 1] * H[i - 1];
+        const double F = ea * dpa - ec * dpc - speed * (mass - mass_prev) / dx - squeeze * (mass - mass_old[i]);
+        // D row from the full second difference of the deflection: conv is K P.
+        const double d2conv = (conv[i + 1] - 2.0 * conv[i] + conv[i - 1]) * inv_dx2;
+        const double G = (H[i + 1] - 2.0 * H[i] + H[i - 1]) * inv_dx2 - curvature + d2conv / kPi +
+                         (r[i + 1] - 2.0 * r[i] + r[i - 1]) * inv_dx2;
+        rhs[k] = {-F, -G};
+        const double half = 0.5 * inv_dx2;
+        Block d{}, l{}, u{};
+        // dF/dP, dF/dH
+        d[0] = -ea - ec + half * (dpa - dpc) * deps_dp[i] - (speed / dx + squeeze) * drho[i] * H[i];
+        d[1] = half * (dpa - dpc) * deps_dh[i] - (speed / dx + squeeze) * rho[i];
+        l[0] = ec - half * dpc * deps_dp[i - 1] + speed / dx * drho[i - 1] * H[i - 1];
+        l[1] = -half * dpc * deps_dh[i - 1] + speed / dx * rho[i - 1];
+        u[0] = ea + half * dpa * deps_dp[i + 1];
+        u[1] = half * dpa * deps_dh[i + 1];
+        // dG/dP (D's band), dG/dH
+        d[2] = -band[0];
+        d[3] = -2.0 * inv_dx2;
+        l[2] = u[2] = -band[1];
+        l[3] = u[3] = inv_dx2;
+        // Cavitation by the penalty method (Wu, 1986; Reynolds' condition as the penalty grows):
+        // where P < 0 the residual gains -kappa P, so the cavitated zone's pressure is
+        // F(0)/(kappa + |dF/dP|) ~ 0 and the film's rupture moves freely in each Newton step.
+        // A node at the cap (capped contact) is held there while F would raise it.
+        if (held[i] && !verifying) {
+          d[0] = 1.0;
+          d[1] = l[0] = l[1] = u[0] = u[1] = 0.0;
+          rhs[k][0] = 0.0;
+        } else if (touching[i] && !verifying) {
+          // Asperity contact: the gap is held at the floor, the pressure is what that takes.
+          d[0] = l[0] = l[1] = u[0] = u[1] = 0.0;
+          d[1] = 1.0;
+          rhs[k][0] = floor - H[i];
+        } else if (P[i] < 0.0) {
+          rhs[k][0] += penalty * P[i];
+          d[0] -= penalty;
+        }
+        lower[k] = l;
+        diag[k] = d;
+        upper[k] = u;
+        // H0 moves the two end films; they enter the first and last interior rows.
+        col[k] = {0.0, 0.0};
+      }
+      // dRes/dH0 through H_0 and H_{n-1} (both move by dH0).
+      {
+        const Block& l0 = lower.front();
+        col.front()[0] -= l0[1];
+        col.front()[1] -= l0[3];
+        const Block& um = upper.back();
+        col.back()[0] -= um[1];
+        col.back()[1] -= um[3];
+      }
+      // The Newton system J z = -(Res, load), J = T + E bordered by H0 and the load row: T the
+      // block-tridiagonal part (D's three central diagonals), E the rest of D (in the film rows,
+      // applied by FFT). Right-preconditioned GMRES with the bordered T as the preconditioner.
+      factor(lower, diag, upper, dinv, cprime);
+      solve_tridiagonal(lower, dinv, cprime, col, y2);  // T^-1 (-dRes/dH0)
+      double load_y2 = 0.0, sum_p = 0.0;
+      for (std::size_t k = 0; k < m; ++k) load_y2 += dx * y2[k][0], sum_p += P[k + 1];
+      load_error = (dx * sum_p - target) / target;
+      const double load_rhs = target - dx * sum_p;
+      // Preconditioner: the bordered T solve of (v, v_load).
+      auto precondition = [&](const std::vector<double>& v, std::vector<double>& out) {
+        for (std::size_t k = 0; k < m; ++k) g1[k] = {v[2 * k], v[2 * k + 1]};
+        solve_tridiagonal(lower, dinv, cprime, g1, y1);
+        double load_y1 = 0.0;
+        for (std::size_t k = 0; k < m; ++k) load_y1 += dx * y1[k][0];
+        const double s = std::abs(load_y2) > 0.0 ? (v[2 * m] - load_y1) / load_y2 : 0.0;
+        out.resize(2 * m + 1);
+        for (std::size_t k = 0; k < m; ++k)
+          out[2 * k] = y1[k][0] + s * y2[k][0], out[2 * k + 1] = y1[k][1] + s * y2[k][1];
+        out[2 * m] = s;
+      };
+      // The full Jacobian's product.
+      auto jacobian = [&](const std::vector<double>& z, std::vector<double>& out) {
+        out.assign(2 * m + 1, 0.0);
+        std::fill(work_p.begin(), work_p.end(), 0.0);
+        for (std::size_t k = 0; k < m; ++k) work_p[k + 1] = z[2 * k];
+        deflection->apply(work_p.data(), work_conv.data());
+        double load = 0.0;
+        for (std::size_t k = 0; k < m; ++k) {
+          Pair acc = multiply(diag[k], Pair{z[2 * k], z[2 * k + 1]});
+          if (k > 0) {
+            const Pair a = multiply(lower[k], Pair{z[2 * k - 2], z[2 * k - 1]});
+            acc = {acc[0] + a[0], acc[1] + a[1]};
+          }
+          if (k + 1 < m) {
+            const Pair a = multiply(upper[k], Pair{z[2 * k + 2], z[2 * k + 3]});
+            acc = {acc[0] + a[0], acc[1] + a[1]};
+          }
+          acc = {acc[0] - col[k][0] * z[2 * m], acc[1] - col[k][1] * z[2 * m]};
+          // E: the film row's full deflection term less its band (already in T).
+          const std::size_t i = k + 1;
+          const double full = (work_conv[i + 1] - 2.0 * work_conv[i] + work_conv[i - 1]) * inv_dx2 / kPi;
+          const double banded = -band[0] * work_p[i] - band[1] * (work_p[i - 1] + work_p[i + 1]);
+          acc[1] += full - banded;
+          out[2 * k] = acc[0];
+          out[2 * k + 1] = acc[1];
+          load += dx * z[2 * k];
+        }
+        out[2 * m] = load;
+      };
+      std::vector<double> b(2 * m + 1);
+      for (std::size_t k = 0; k < m; ++k) b[2 * k] = rhs[k][0], b[2 * k + 1] = rhs[k][1];
+      b[2 * m] = load_rhs;
+      gmres(jacobian, precondition, b, z, kLinearTolerance, kLinearIterations);
+      for (std::size_t k = 0; k < m; ++k) y1[k] = {z[2 * k], z[2 * k + 1]};
+      // A Newton step changes no pressure by more than kMaxPressureStep p_H (the viscosity's
+      // exponential makes the linearisation poor far from the solution): the step is scaled.
+      double step_max = 0.0;
+      for (std::size_t k = 0; k < m; ++k) step_max = std::max(step_max, std::abs(z[2 * k]));
+      if (step_max > kMaxPressureStep)
+        for (double& e : z) e *= kMaxPressureStep / step_max;
+      double dh0 = z[2 * m];
+      // Update, projected onto 0 <= P <= cap, with a step no larger than the largest P.
+      update = 0.0;
+      double dh_max = 0.0, h_ref = 0.0;
+      for (std::size_t k = 0; k < m; ++k) {
+        const std::size_t i = k + 1;
+        const double dp = z[2 * k], dh = z[2 * k + 1];
+        const double pn = std::min(P[i] + dp, cap);
+        if (verifying && held[i] && dp < 0.0) {
+          held[i] = 0;
+          ++released;
+        }
+        if (P[i] + dp > cap) held[i] = 1;
+        if (verifying && touching[i] && H[i] + dh > floor) {
+          touching[i] = 0;
+          ++released;
+        } else if (touching[i] && P[i] + dp < 0.0) {
+          touching[i] = 0;  // the contact would pull: the film opens
+        } else if (!touching[i] && H[i] + dh < floor && !held[i]) {
+          touching[i] = 1;
+        }
+        update = std::max(update, std::abs(pn - P[i]));
+        P[i] = pn;
+        H[i] += dh;
+        dh_max = std::max(dh_max, std::abs(dh));
+        if (std::abs(X[i]) <= 1.0) h_ref = std::max(h_ref, std::abs(H[i]));
+      }
+      H0 += dh0;
+      const double dh_rel = dh_max / std::max(h_ref, options.film_floor / film_scale);
+      if (!std::isfinite(update) || !std::isfinite(dh_rel))
+        throw std::runtime_error("mixed EHL: the Newton iteration diverged (non-finite update)");
+      const bool small =
+          update < options.tolerance && dh_rel < options.tolerance && std::abs(load_error) < options.tolerance;
+      if (verifying) {
+        verifying = false;
+        if (released == 0 && small) {
+          ++it;
+          break;
+        }
+        released = 0;
+        continue;
+      }
+      if (small && (std::any_of(held.begin(), held.end(), [](char c) { return c != 0; }) ||
+                    std::any_of(touching.begin(), touching.end(), [](char c) { return c != 0; }))) {
+        verifying = true;
+        continue;
+      }
+      if (small) {
+        ++it;
+        break;
+      }
+    }
+    if (it >= options.max_iterations && !(update < options.tolerance && std::abs(load_error) < options.tolerance))
+      throw std::runtime_error(
+          fmt::format("mixed EHL: not converged in {} iterations (last update {:.3g} p_H, load error {:.3g})",
+                      options.max_iterations, update, load_error));
+    // The film everywhere from the integral form (consistent with the converged differential form).
+    integral_film(curvature, H);
+    coefficients(c);
+    for (int i = 0; i < n; ++i)
+      mass_old[static_cast<std::size_t>(i)] = rho[static_cast<std::size_t>(i)] * H[static_cast<std::size_t>(i)];
+    fill(c, it, update, load_error);
+    return field;
+  }
+
+  void fill(const ContactInstant& c, int iterations, double update, double load_error) {
+    EhlField& f = field;
+    f.pressure.resize(static_cast<std::size_t>(n));
+    f.film.resize(static_cast<std::size_t>(n));
+    f.shear.resize(static_cast<std::size_t>(n));
+    f.state.resize(static_cast<std::size_t>(n));
+    const double slide = std::abs(c.speed1 - c.speed2);
+    const double cap = options.pressure_cap;
+    const double bc = std::sqrt(c.line_load * c.radius / (w_ref * reference.radius)) * b;  // this instant's b
+    double load = 0.0, contact_load = 0.0, film_friction = 0.0, boundary_friction = 0.0, peak = 0.0;
+    double min_film = std::numeric_limits<double>::infinity();
+    int in_band = 0, in_contact = 0;
+    for (int i = 0; i < n; ++i) {
+      const auto s = static_cast<std::size_t>(i);
+      const double p = std::max(P[s], 0.0) * ph, h = H[s] * film_scale, x = grid.x(i);
+      f.pressure[s] = p;
+      f.film[s] = h;
+      const bool contact = h < options.film_floor;
+      f.state[s] = contact ? (p >= cap ? NodeState::capped : NodeState::contact)
+                           : (p > 0.0 ? NodeState::fluid : NodeState::cavitated);
+      double tau = 0.0;
+      if (contact) {
+        tau = options.boundary_friction * p;
+        boundary_friction += tau * grid.spacing;
+        contact_load += p * grid.spacing;
+      } else {
+        const double eta = fluid.viscosity_at(p);
+        const double rate = eta * slide / h;  // Newtonian Couette shear stress [Pa]
+        tau = fluid.flow == FlowModel::eyring ? fluid.eyring_stress * std::asinh(rate / fluid.eyring_stress) : rate;
+        if (p > 0.0) tau = std::min(tau, fluid.limiting_shear_coefficient * p);
+        film_friction += tau * grid.spacing;
+        min_film = std::min(min_film, h);
+      }
+      f.shear[s] = tau;
+      load += p * grid.spacing;
+      peak = std::max(peak, p);
+      if (std::abs(x) <= bc) {
+        ++in_band;
+        if (contact) ++in_contact;
+      }
+    }
+    // Central film: linear interpolation at x = 0.
+    const double t = -grid.start / grid.spacing - 0.5;
+    const int i0 = std::clamp(static_cast<int>(std::floor(t)), 0, n - 2);
+    const double frac = t - i0;
+    f.central_film =
+        (1.0 - frac) * f.film[static_cast<std::size_t>(i0)] + frac * f.film[static_cast<std::size_t>(i0 + 1)];
+    f.line_load = load;
+    f.contact_load = contact_load;
+    f.min_film = std::isfinite(min_film) ? min_film : 0.0;
+    f.contact_fraction = in_band > 0 ? static_cast<double>(in_contact) / in_band : 0.0;
+    f.asperity_share = load > 0.0 ? contact_load / load : 0.0;
+    f.peak_pressure = peak;
+    f.film_friction = film_friction;
+    f.boundary_friction = boundary_friction;
+    f.friction_coefficient = load > 0.0 ? (film_friction + boundary_friction) / load : 0.0;
+    f.iterations = iterations;
+    f.update = update;
+    f.load_error = load_error;
+  }
+};
+
+LineEhlSolver::LineEhlSolver(const Fluid& fluid, double composite_modulus, const ContactInstant& reference,
+                             const EhlOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  fluid.validate();
+  options.validate();
+  if (!(composite_modulus > 0.0)) throw std::invalid_argument("mixed EHL: the modulus must be positive");
+  if (!(reference.line_load > 0.0) || !(reference.radius > 0.0) || !(reference.entrainment() > 0.0))
+    throw std::invalid_argument("mixed EHL: the reference instant needs a positive load, radius and entrainment");
+  Impl& s = *impl_;
+  s.fluid = fluid;
+  s.modulus = composite_modulus;
+  s.options = options;
+  s.reference = reference;
+  s.w_ref = reference.line_load;
+  // Hertz (Johnson 4.43): b^2 = 4 w R/(pi E*), p_H = 2 w/(pi b) = E* b/(2 R).
+  s.b = std::sqrt(4.0 * reference.line_load * reference.radius / (kPi * composite_modulus));
+  s.ph = 2.0 * reference.line_load / (kPi * s.b);
+  s.film_scale = s.b * s.b / reference.radius;
+  s.build_grid();
+}
+LineEhlSolver::~LineEhlSolver() = default;
+LineEhlSolver::LineEhlSolver(LineEhlSolver&&) noexcept = default;
+LineEhlSolver& LineEhlSolver::operator=(LineEhlSolver&&) noexcept = default;
+
+const HalfPlaneGrid& LineEhlSolver::grid() const { return impl_->grid; }
+double LineEhlSolver::hertz_half_width() const { return impl_->b; }
+double LineEhlSolver::hertz_pressure() const { return impl_->ph; }
+const EhlField& LineEhlSolver::field() const { return impl_->field; }
+
+const EhlField& LineEhlSolver::solve_steady(const ContactInstant& instant, std::span<const double> heights) {
+  return impl_->solve(instant, heights, 0.0);
+}
+const EhlField& LineEhlSolver::step(const ContactInstant& instant, std::span<const double> heights, double dt) {
+  if (!(dt > 0.0)) throw std::invalid_argument("mixed EHL: the time step must be positive");
+  if (!impl_->started) throw std::logic_error("mixed EHL: a time step needs a solution to start from");
+  return impl_->solve(instant, heights, dt);
+}
+
+std::vector<double> flash_temperature(const HalfPlaneGrid& grid, std::span<const double> heat_flux, double speed1,
+                                      double speed2, double contact_coefficient1, double contact_coefficient2) {
+  const std::size_t n = heat_flux.size();
+  if (static_cast<int>(n) != grid.size) throw std::invalid_argument("flash_temperature: one heat flux per element");
+  const double denominator = std::sqrt(kPi) * (contact_coefficient1 * std::sqrt(std::max(speed1, 0.0)) +
+                                               contact_coefficient2 * std::sqrt(std::max(speed2, 0.0)));
+  std::vector<double> theta(n, 0.0);
+  if (!(denominator > 0.0)) return theta;
+  // theta(x_i) = sum_j q_j int_{e_j}^{min(e_{j+1}, x_i)} (x_i - s)^(-1/2) ds / denominator, the
+  // element's integral exact: 2 (sqrt(x_i - e_j) - sqrt(max(x_i - e_{j+1}, 0))).
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = grid.x(static_cast<int>(i));
+    double sum = 0.0;
+    for (std::size_t j = 0; j <= i; ++j) {
+      const double q = heat_flux[j];
+      if (q == 0.0) continue;
+      const double e0 = grid.start + static_cast<double>(j) * grid.spacing, e1 = e0 + grid.spacing;
+      sum += q * 2.0 * (std::sqrt(x - e0) - std::sqrt(std::max(x - e1, 0.0)));
+    }
+    theta[i] = sum / denominator;
+  }
+  return theta;
+}
+
+PlaneStrainStress uniform_strip_shear_stress(double x, double z, double half_width, double traction) {
+  // Johnson's tangential line load Q at s (eq. 2.19), xi = x - s, r^2 = xi^2 + z^2:
+  // sigma_x = -(2Q/pi) xi^3/r^4, sigma_z = -(2Q/pi) xi z^2/r^4, tau_xz = -(2Q/pi) xi^2 z/r^4,
+  // integrated over s in [-a, a] (xi from x - a to x + a) with the antiderivatives
+  // int xi^3/r^4 = ln(r^2)/2 + z^2/(2 r^2), int xi/r^4 = -1/(2 r^2), int xi^2/r^4 = atan(xi/z)/(2z) - xi/(2 r^2).
+  auto f = [z](double xi) {
+    const double r2 = xi * xi + z * z;
+    return std::array<double, 3>{0.5 * std::log(r2) + 0.5 * z * z / r2, -0.5 / r2,
+                                 0.5 * std::atan2(xi, z) / z - 0.5 * xi / r2};
+  };
+  const auto hi = f(x + half_width), lo = f(x - half_width);
+  const double c = -2.0 * traction / kPi;
+  PlaneStrainStress s;
+  s.xx = c * (hi[0] - lo[0]);
+  s.zz = c * z * z * (hi[1] - lo[1]);
+  s.xz = c * z * (hi[2] - lo[2]);
+  return s;
+}
+
+StressMaximum subsurface_maximum(const HalfPlaneGrid& grid, std::span<const double> pressure,
+                                 std::span<const double> traction, double poisson_ratio, double max_depth, int depths,
+                                 int stride) {
+  if (static_cast<int>(pressure.size()) != grid.size || static_cast<int>(traction.size()) != grid.size)
+    throw std::invalid_argument("subsurface_maximum: one pressure and traction per element");
+  if (depths < 1 || stride < 1 || !(max_depth > 0.0))
+    throw std::invalid_argument("subsurface_maximum: positive depths, stride and depth");
+  StressMaximum best;
+  const double a = 0.5 * grid.spacing;
+  // Only where the surface is loaded, and a contact width around it.
+  int first = grid.size, last = -1;
+  for (int j = 0; j < grid.size; ++j)
+    if (pressure[static_cast<std::size_t>(j)] != 0.0 || traction[static_cast<std::size_t>(j)] != 0.0) {
+      first = std::min(first, j);
+      last = std::max(last, j);
+    }
+  if (last < 0) return best;
+  for (int i = first; i <= last; i += stride) {
+    const double x = grid.x(i);
+    for (int d = 1; d <= depths; ++d) {
+      const double z = max_depth * d / depths;
+      PlaneStrainStress s;
+      for (int j = first; j <= last; ++j) {
+        const double p = pressure[static_cast<std::size_t>(j)], q = traction[static_cast<std::size_t>(j)];
+        const double xi = x - grid.x(j);
+        if (p != 0.0) {
+          const PlaneStrainStress e = uniform_strip_stress(xi, z, a, p, poisson_ratio);
+          s.xx += e.xx, s.zz += e.zz, s.xz += e.xz;
+        }
+        if (q != 0.0) {
+          const PlaneStrainStress e = uniform_strip_shear_stress(xi, z, a, q);
+          s.xx += e.xx, s.zz += e.zz, s.xz += e.xz;
+        }
+      }
+      s.yy = poisson_ratio * (s.xx + s.zz);
+      const double vm = s.von_mises();
+      if (vm > best.von_mises) best = {vm, z, x};
+    }
+  }
+  return best;
+}
+
+}  // namespace geartrib::contact::mixed_ehl
