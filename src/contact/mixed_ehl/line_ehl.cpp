@@ -148,6 +148,7 @@ constexpr double kLinearTolerance = 1e-6;
 constexpr double kPenaltyFactor = 1e3;  // kappa dX^2: large against the Poiseuille coefficients where the film ruptures
 constexpr int kLinearIterations = 200;
 constexpr double kMaxPressureStep = 0.3;
+constexpr double kContactStiffness = 1e3;  // the contact's stiffness over a node's elastic stiffness
 }  // namespace
 
 std::span<const NamedChoice<ViscosityLaw>> viscosity_law_choices() { return kViscosityLaws; }
@@ -221,6 +222,28 @@ struct LineEhlSolver::Impl {
   EhlField field;
   // Work.
   std::vector<double> conv, eps, deps_dp, deps_dh, rho, drho, r, work_p, work_conv;
+  // Asperity contact (Hertzian units): its pressure at each node, its derivative in H, and the
+  // film's total pressure P + pc.
+  std::vector<double> pc, dpc, total;
+  double contact_stiffness = 0.0;  // k of pc = k (H_floor - H)+
+
+  // pc = min(k (H_floor - H)+, cap - P) at every node, and d pc/d H.
+  void contact_pressure(double cap) {
+    const double floor = options.film_floor / film_scale;
+    for (int i = 0; i < n; ++i) {
+      const auto s = static_cast<std::size_t>(i);
+      const double want = contact_stiffness * (floor - H[s]), room = std::max(cap - std::max(P[s], 0.0), 0.0);
+      if (want <= 0.0) {
+        pc[s] = dpc[s] = 0.0;
+      } else if (want < room) {
+        pc[s] = want;
+        dpc[s] = -contact_stiffness;
+      } else {
+        pc[s] = room;
+        dpc[s] = 0.0;
+      }
+    }
+  }
 
   void build_grid() {
     n = options.nodes;
@@ -241,12 +264,21 @@ struct LineEhlSolver::Impl {
     P.assign(static_cast<std::size_t>(n), 0.0);
     H.assign(static_cast<std::size_t>(n), 0.0);
     mass_old.assign(static_cast<std::size_t>(n), 0.0);
-    for (auto* v : {&conv, &eps, &deps_dp, &deps_dh, &rho, &drho, &r}) v->assign(static_cast<std::size_t>(n), 0.0);
+    for (auto* v : {&conv, &eps, &deps_dp, &deps_dh, &rho, &drho, &r, &pc, &dpc, &total})
+      v->assign(static_cast<std::size_t>(n), 0.0);
+    // A node's elastic compliance is ~ (dx/pi)|K^(0) - K^(n)| (H per P); the contact is a
+    // thousand times stiffer, so a contact node's film lies within 0.1 % of that below the floor.
+    contact_stiffness = kContactStiffness * kPi /
+                        (dx * std::max(std::abs(kernel[static_cast<std::size_t>(n - 1)] - kernel.front()) / dx, 1.0));
   }
 
   // The film from the integral form at every node (H0, geometry, deflection, heights).
   void integral_film(double curvature, std::vector<double>& out) {
-    deflection->apply(P.data(), conv.data());
+    for (int i = 0; i < n; ++i) {
+      const auto s = static_cast<std::size_t>(i);
+      total[s] = P[s] + pc[s];
+    }
+    deflection->apply(total.data(), conv.data());
     for (int i = 0; i < n; ++i) {
       const auto s = static_cast<std::size_t>(i);
       out[s] = H0 + 0.5 * curvature * X[s] * X[s] - conv[s] / kPi - r[s];
@@ -342,118 +374,92 @@ struct LineEhlSolver::Impl {
     const double penalty = kPenaltyFactor / (dx * dx);
     double update = 0.0, load_error = 0.0;
     int it = 0;
-    // Nodes at the cap: held there (their row dP = 0) from the iteration after a step would have
-    // raised them past it, released when their film opens above the floor.
-    std::vector<char> held(static_cast<std::size_t>(n), 0);
-    for (int i = 0; i < n; ++i) held[static_cast<std::size_t>(i)] = P[static_cast<std::size_t>(i)] >= cap;
-    std::vector<char> touching(static_cast<std::size_t>(n), 0);
-    const double floor = options.film_floor / film_scale;
-    for (int i = 0; i < n; ++i)
-      touching[static_cast<std::size_t>(i)] = H[static_cast<std::size_t>(i)] <= floor * (1.0 + 1e-9);
-    bool verifying = false;  // the held nodes free for one step: does any want to fall below the cap?
-    int released = 0;
     for (; it < options.max_iterations; ++it) {
-      integral_film(curvature, boundary);  // the ends from the integral form (and conv = K P)
+      contact_pressure(cap);
+      integral_film(curvature, boundary);  // the ends from the integral form (and conv = K (P + pc))
       H.front() = boundary.front();
       H.back() = boundary.back();
       coefficients(c);
-      // Residuals and blocks for interior node i = k + 1.
       for (std::size_t k = 0; k < m; ++k) {
         const std::size_t i = k + 1;
         const double ea = 0.5 * (eps[i] + eps[i + 1]) * inv_dx2, ec = 0.5 * (eps[i] + eps[i - 1]) * inv_dx2;
-        const double dpa = P[i + 1] - P[i], dpc = P[i] - P[i - 1];
+        const double dpa = P[i + 1] - P[i], dpc_ = P[i] - P[i - 1];
         const double mass = rho[i] * H[i], mass_prev = rho[i - 1] * H[i - 1];
-        const double F = ea * dpa - ec * dpc - speed * (mass - mass_prev) / dx - squeeze * (mass - mass_old[i]);
-        // D row from the full second difference of the deflection: conv is K P.
+        const double F = ea * dpa - ec * dpc_ - speed * (mass - mass_prev) / dx - squeeze * (mass - mass_old[i]);
         const double d2conv = (conv[i + 1] - 2.0 * conv[i] + conv[i - 1]) * inv_dx2;
         const double G = (H[i + 1] - 2.0 * H[i] + H[i - 1]) * inv_dx2 - curvature + d2conv / kPi +
                          (r[i + 1] - 2.0 * r[i] + r[i - 1]) * inv_dx2;
         rhs[k] = {-F, -G};
         const double half = 0.5 * inv_dx2;
         Block d{}, l{}, u{};
-        // dF/dP, dF/dH
-        d[0] = -ea - ec + half * (dpa - dpc) * deps_dp[i] - (speed / dx + squeeze) * drho[i] * H[i];
-        d[1] = half * (dpa - dpc) * deps_dh[i] - (speed / dx + squeeze) * rho[i];
-        l[0] = ec - half * dpc * deps_dp[i - 1] + speed / dx * drho[i - 1] * H[i - 1];
-        l[1] = -half * dpc * deps_dh[i - 1] + speed / dx * rho[i - 1];
+        d[0] = -ea - ec + half * (dpa - dpc_) * deps_dp[i] - (speed / dx + squeeze) * drho[i] * H[i];
+        d[1] = half * (dpa - dpc_) * deps_dh[i] - (speed / dx + squeeze) * rho[i];
+        l[0] = ec - half * dpc_ * deps_dp[i - 1] + speed / dx * drho[i - 1] * H[i - 1];
+        l[1] = -half * dpc_ * deps_dh[i - 1] + speed / dx * rho[i - 1];
         u[0] = ea + half * dpa * deps_dp[i + 1];
         u[1] = half * dpa * deps_dh[i + 1];
-        // dG/dP (D's band), dG/dH
+        // The film rows: d/dP_j through D's band, d/dH_j through the band and the contact pressure.
         d[2] = -band[0];
-        d[3] = -2.0 * inv_dx2;
+        d[3] = -2.0 * inv_dx2 - band[0] * dpc[i];
         l[2] = u[2] = -band[1];
-        l[3] = u[3] = inv_dx2;
+        l[3] = inv_dx2 - band[1] * dpc[i - 1];
+        u[3] = inv_dx2 - band[1] * dpc[i + 1];
         // Cavitation by the penalty method (Wu, 1986; Reynolds' condition as the penalty grows):
         // where P < 0 the residual gains -kappa P, so the cavitated zone's pressure is
         // F(0)/(kappa + |dF/dP|) ~ 0 and the film's rupture moves freely in each Newton step.
-        // A node at the cap (capped contact) is held there while F would raise it.
-        if (held[i] && !verifying) {
-          d[0] = 1.0;
-          d[1] = l[0] = l[1] = u[0] = u[1] = 0.0;
-          rhs[k][0] = 0.0;
-        } else if (touching[i] && !verifying) {
-          // Asperity contact: the gap is held at the floor, the pressure is what that takes.
-          d[0] = l[0] = l[1] = u[0] = u[1] = 0.0;
-          d[1] = 1.0;
-          rhs[k][0] = floor - H[i];
-        } else if (P[i] < 0.0) {
+        if (P[i] < 0.0) {
           rhs[k][0] += penalty * P[i];
           d[0] -= penalty;
         }
         lower[k] = l;
         diag[k] = d;
         upper[k] = u;
-        // H0 moves the two end films; they enter the first and last interior rows.
         col[k] = {0.0, 0.0};
       }
-      // dRes/dH0 through H_0 and H_{n-1} (both move by dH0).
-      {
-        const Block& l0 = lower.front();
-        col.front()[0] -= l0[1];
-        col.front()[1] -= l0[3];
-        const Block& um = upper.back();
-        col.back()[0] -= um[1];
-        col.back()[1] -= um[3];
-      }
+      // -dRes/dH0 through H_0 and H_{n-1} (both move by dH0).
+      col.front() = {-lower.front()[1], -lower.front()[3]};
+      col.back() = {col.back()[0] - upper.back()[1], col.back()[1] - upper.back()[3]};
       // The Newton system J z = -(Res, load), J = T + E bordered by H0 and the load row: T the
       // block-tridiagonal part (D's three central diagonals), E the rest of D (in the film rows,
       // applied by FFT). Right-preconditioned GMRES with the bordered T as the preconditioner.
       factor(lower, diag, upper, dinv, cprime);
       solve_tridiagonal(lower, dinv, cprime, col, y2);  // T^-1 (-dRes/dH0)
-      double load_y2 = 0.0, sum_p = 0.0;
-      for (std::size_t k = 0; k < m; ++k) load_y2 += dx * y2[k][0], sum_p += P[k + 1];
+      auto load_of = [&](const std::vector<Pair>& y) {  // the load row: dx sum(dP + dpc/dH dH)
+        double sum = 0.0;
+        for (std::size_t k = 0; k < m; ++k) sum += y[k][0] + dpc[k + 1] * y[k][1];
+        return dx * sum;
+      };
+      const double load_y2 = load_of(y2);
+      double sum_p = 0.0;
+      for (std::size_t k = 0; k < m; ++k) sum_p += P[k + 1] + pc[k + 1];
       load_error = (dx * sum_p - target) / target;
       const double load_rhs = target - dx * sum_p;
-      // Preconditioner: the bordered T solve of (v, v_load).
       auto precondition = [&](const std::vector<double>& v, std::vector<double>& out) {
         for (std::size_t k = 0; k < m; ++k) g1[k] = {v[2 * k], v[2 * k + 1]};
         solve_tridiagonal(lower, dinv, cprime, g1, y1);
-        double load_y1 = 0.0;
-        for (std::size_t k = 0; k < m; ++k) load_y1 += dx * y1[k][0];
-        const double s = std::abs(load_y2) > 0.0 ? (v[2 * m] - load_y1) / load_y2 : 0.0;
+        const double s = std::abs(load_y2) > 0.0 ? (v[2 * m] - load_of(y1)) / load_y2 : 0.0;
         out.resize(2 * m + 1);
         for (std::size_t k = 0; k < m; ++k)
           out[2 * k] = y1[k][0] + s * y2[k][0], out[2 * k + 1] = y1[k][1] + s * y2[k][1];
         out[2 * m] = s;
       };
-      // The full Jacobian's product.
-      auto jacobian = [&](const std::vector<double>& z, std::vector<double>& out) {
+      auto jacobian = [&](const std::vector<double>& zz, std::vector<double>& out) {
         out.assign(2 * m + 1, 0.0);
         std::fill(work_p.begin(), work_p.end(), 0.0);
-        for (std::size_t k = 0; k < m; ++k) work_p[k + 1] = z[2 * k];
+        for (std::size_t k = 0; k < m; ++k) work_p[k + 1] = zz[2 * k] + dpc[k + 1] * zz[2 * k + 1];
         deflection->apply(work_p.data(), work_conv.data());
         double load = 0.0;
         for (std::size_t k = 0; k < m; ++k) {
-          Pair acc = multiply(diag[k], Pair{z[2 * k], z[2 * k + 1]});
+          Pair acc = multiply(diag[k], Pair{zz[2 * k], zz[2 * k + 1]});
           if (k > 0) {
-            const Pair a = multiply(lower[k], Pair{z[2 * k - 2], z[2 * k - 1]});
+            const Pair a = multiply(lower[k], Pair{zz[2 * k - 2], zz[2 * k - 1]});
             acc = {acc[0] + a[0], acc[1] + a[1]};
           }
           if (k + 1 < m) {
-            const Pair a = multiply(upper[k], Pair{z[2 * k + 2], z[2 * k + 3]});
+            const Pair a = multiply(upper[k], Pair{zz[2 * k + 2], zz[2 * k + 3]});
             acc = {acc[0] + a[0], acc[1] + a[1]};
           }
-          acc = {acc[0] - col[k][0] * z[2 * m], acc[1] - col[k][1] * z[2 * m]};
+          acc = {acc[0] - col[k][0] * zz[2 * m], acc[1] - col[k][1] * zz[2 * m]};
           // E: the film row's full deflection term less its band (already in T).
           const std::size_t i = k + 1;
           const double full = (work_conv[i + 1] - 2.0 * work_conv[i] + work_conv[i - 1]) * inv_dx2 / kPi;
@@ -461,69 +467,35 @@ struct LineEhlSolver::Impl {
           acc[1] += full - banded;
           out[2 * k] = acc[0];
           out[2 * k + 1] = acc[1];
-          load += dx * z[2 * k];
+          load += dx * work_p[i];
         }
         out[2 * m] = load;
       };
-      std::vector<double> b(2 * m + 1);
-      for (std::size_t k = 0; k < m; ++k) b[2 * k] = rhs[k][0], b[2 * k + 1] = rhs[k][1];
-      b[2 * m] = load_rhs;
-      gmres(jacobian, precondition, b, z, kLinearTolerance, kLinearIterations);
-      for (std::size_t k = 0; k < m; ++k) y1[k] = {z[2 * k], z[2 * k + 1]};
-      // A Newton step changes no pressure by more than kMaxPressureStep p_H (the viscosity's
+      std::vector<double> bvec(2 * m + 1);
+      for (std::size_t k = 0; k < m; ++k) bvec[2 * k] = rhs[k][0], bvec[2 * k + 1] = rhs[k][1];
+      bvec[2 * m] = load_rhs;
+      gmres(jacobian, precondition, bvec, z, kLinearTolerance, kLinearIterations);
+      // A Newton step changes no fluid pressure by more than kMaxPressureStep p_H (the viscosity's
       // exponential makes the linearisation poor far from the solution): the step is scaled.
       double step_max = 0.0;
       for (std::size_t k = 0; k < m; ++k) step_max = std::max(step_max, std::abs(z[2 * k]));
       if (step_max > kMaxPressureStep)
         for (double& e : z) e *= kMaxPressureStep / step_max;
-      double dh0 = z[2 * m];
-      // Update, projected onto 0 <= P <= cap, with a step no larger than the largest P.
       update = 0.0;
       double dh_max = 0.0, h_ref = 0.0;
       for (std::size_t k = 0; k < m; ++k) {
         const std::size_t i = k + 1;
-        const double dp = z[2 * k], dh = z[2 * k + 1];
-        const double pn = std::min(P[i] + dp, cap);
-        if (verifying && held[i] && dp < 0.0) {
-          held[i] = 0;
-          ++released;
-        }
-        if (P[i] + dp > cap) held[i] = 1;
-        if (verifying && touching[i] && H[i] + dh > floor) {
-          touching[i] = 0;
-          ++released;
-        } else if (touching[i] && P[i] + dp < 0.0) {
-          touching[i] = 0;  // the contact would pull: the film opens
-        } else if (!touching[i] && H[i] + dh < floor && !held[i]) {
-          touching[i] = 1;
-        }
-        update = std::max(update, std::abs(pn - P[i]));
-        P[i] = pn;
-        H[i] += dh;
-        dh_max = std::max(dh_max, std::abs(dh));
+        update = std::max(update, std::abs(z[2 * k]));
+        P[i] += z[2 * k];
+        H[i] += z[2 * k + 1];
+        dh_max = std::max(dh_max, std::abs(z[2 * k + 1]));
         if (std::abs(X[i]) <= 1.0) h_ref = std::max(h_ref, std::abs(H[i]));
       }
-      H0 += dh0;
+      H0 += z[2 * m];
       const double dh_rel = dh_max / std::max(h_ref, options.film_floor / film_scale);
       if (!std::isfinite(update) || !std::isfinite(dh_rel))
         throw std::runtime_error("mixed EHL: the Newton iteration diverged (non-finite update)");
-      const bool small =
-          update < options.tolerance && dh_rel < options.tolerance && std::abs(load_error) < options.tolerance;
-      if (verifying) {
-        verifying = false;
-        if (released == 0 && small) {
-          ++it;
-          break;
-        }
-        released = 0;
-        continue;
-      }
-      if (small && (std::any_of(held.begin(), held.end(), [](char c) { return c != 0; }) ||
-                    std::any_of(touching.begin(), touching.end(), [](char c) { return c != 0; }))) {
-        verifying = true;
-        continue;
-      }
-      if (small) {
+      if (update < options.tolerance && dh_rel < options.tolerance && std::abs(load_error) < options.tolerance) {
         ++it;
         break;
       }
@@ -533,6 +505,7 @@ struct LineEhlSolver::Impl {
           fmt::format("mixed EHL: not converged in {} iterations (last update {:.3g} p_H, load error {:.3g})",
                       options.max_iterations, update, load_error));
     // The film everywhere from the integral form (consistent with the converged differential form).
+    contact_pressure(cap);
     integral_film(curvature, H);
     coefficients(c);
     for (int i = 0; i < n; ++i)
@@ -555,12 +528,12 @@ struct LineEhlSolver::Impl {
     int in_band = 0, in_contact = 0;
     for (int i = 0; i < n; ++i) {
       const auto s = static_cast<std::size_t>(i);
-      const double p = std::max(P[s], 0.0) * ph, h = H[s] * film_scale, x = grid.x(i);
+      const double p = (std::max(P[s], 0.0) + pc[s]) * ph, h = H[s] * film_scale, x = grid.x(i);
       f.pressure[s] = p;
       f.film[s] = h;
-      const bool contact = h < options.film_floor;
-      f.state[s] = contact ? (p >= cap ? NodeState::capped : NodeState::contact)
-                           : (p > 0.0 ? NodeState::fluid : NodeState::cavitated);
+      const bool contact = pc[s] > 0.0;
+      f.state[s] = contact ? (p >= cap * (1.0 - 1e-12) ? NodeState::capped : NodeState::contact)
+                           : (P[s] > 0.0 ? NodeState::fluid : NodeState::cavitated);
       double tau = 0.0;
       if (contact) {
         tau = options.boundary_friction * p;

@@ -29,12 +29,13 @@
 // so the cavitated zone's pressure is ~0 and the rupture moves freely with each Newton step.
 // Newton steps are limited to 0.3 p_H per node (the exponential viscosity), and nodes at the cap
 // or in contact form active sets checked once converged (a node held there is freed for one step).
-// Asperity contact (Holmes, Evans & Snidle 2003): where the film would fall below film_floor the
-// node is in contact: its equation becomes h = film_floor and its pressure is the contact
-// pressure (what the deformation needs), capped at the hardness (elastic-perfectly-plastic, as
-// the dry boundary elements, contact/half_plane_bem.hpp): a capped node's gap may close further
-// (plastic). The load the contact nodes carry is the asperity share.
-//
+// Asperity contact: where the film falls below film_floor the surfaces touch and carry a contact
+// pressure p_c = k (h_floor - h)+ beside the film's (a penalty contact, its stiffness k a thousand
+// times a node's elastic stiffness, so a contact node's film lies ~0.1 % of that deflection below
+// the floor), capped at the hardness less the film's pressure (elastic-perfectly-plastic, as the
+// dry boundary elements, contact/half_plane_bem.hpp: a capped node's gap may close further,
+// plastic). The deflection is that of the film's and the contacts' pressure together; the load
+// the contacts carry is the asperity share. The film's own pressure is not capped.
 // Lubricant: viscosity by Roelands (1966) (p0 = 1.96e8 Pa, Z = alpha p0/(ln eta_0 + 9.67)) or
 // Barus, density by Dowson & Higginson (1966): rho/rho_0 = 1 + 0.6e-9 p/(1 + 1.7e-9 p) [p in Pa];
 // the flow Newtonian, or Ree-Eyring with the Poiseuille flow factor
