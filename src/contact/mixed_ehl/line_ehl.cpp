@@ -290,21 +290,25 @@ struct LineEhlSolver::Impl {
     // central film is a first guess from Dowson-Toyoda's line-contact formula (E' = 2 E*).
     const double a = std::sqrt(load / curvature);  // b/b_ref: a^2 proportional to w R
     const double p0 = load / a;                    // p_H/p_H_ref
-    for (int i = 0; i < n; ++i) {
-      const auto s = static_cast<std::size_t>(i);
-      const double t = X[s] / a;
-      P[s] = std::abs(t) < 1.0 ? p0 * std::sqrt(1.0 - t * t) : 0.0;
-    }
-    P.front() = P.back() = 0.0;
     const double e_prime = 2.0 * modulus;
     const double u = c.entrainment(), w = c.line_load, rr = c.radius;
     const double U = fluid.viscosity * u / (e_prime * rr), G = fluid.pressure_viscosity * e_prime,
                  W = w / (e_prime * rr);
     const double hc = 3.06 * std::pow(U, 0.69) * std::pow(std::max(G, 1.0), 0.56) * std::pow(W, -0.10) * rr;
+    // Where the rigid-isoviscous film (Martin: w = 4.9 eta u R/h) is the thicker, the contact is
+    // hydrodynamic: start from no pressure at that film instead.
+    const double martin = 4.9 * fluid.viscosity * u * rr / w;
+    const bool hydrodynamic = martin > hc;
+    for (int i = 0; i < n; ++i) {
+      const auto s = static_cast<std::size_t>(i);
+      const double t = X[s] / a;
+      P[s] = !hydrodynamic && std::abs(t) < 1.0 ? p0 * std::sqrt(1.0 - t * t) : 0.0;
+    }
+    P.front() = P.back() = 0.0;
     H0 = 0.0;
     integral_film(curvature, H);
     const auto mid = static_cast<std::size_t>(std::lower_bound(X.begin(), X.end(), 0.0) - X.begin());
-    H0 = hc / film_scale - H[std::min(mid, H.size() - 1)];
+    H0 = std::max(hc, std::min(martin, 100.0 * hc)) / film_scale - H[std::min(mid, H.size() - 1)];
     for (double& h : H) h += H0;
     started = true;
   }

@@ -1,0 +1,243 @@
+// The mixed-EHL line-contact solver (contact/mixed_ehl/line_ehl.hpp) against exact limits,
+// published formulas and independent integrations.
+#include "contact/half_plane_bem.hpp"
+#include "contact/mixed_ehl/line_ehl.hpp"
+#include "core/keyed_error.hpp"
+#include "lubrication/ehl_film.hpp"
+#include "lubrication/flank_temperature.hpp"
+#include "reference/rigid_isoviscous.hpp"
+
+#include <gtest/gtest.h>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace {
+using namespace geartrib::contact::mixed_ehl;
+using geartrib::contact::HalfPlaneGrid;
+constexpr double kPi = std::numbers::pi;
+
+Fluid oil(double eta, double alpha, ViscosityLaw law = ViscosityLaw::roelands, bool compressible = true) {
+  Fluid f;
+  f.viscosity = eta;
+  f.pressure_viscosity = alpha;
+  f.viscosity_law = law;
+  f.compressible = compressible;
+  return f;
+}
+std::vector<double> flat(const LineEhlSolver& s) {
+  return std::vector<double>(static_cast<std::size_t>(s.grid().size), 0.0);
+}
+double position_of_peak(const LineEhlSolver& s, const EhlField& f) {
+  std::size_t best = 0;
+  for (std::size_t i = 0; i < f.pressure.size(); ++i)
+    if (f.pressure[i] > f.pressure[best]) best = i;
+  return s.grid().x(static_cast<int>(best));
+}
+}  // namespace
+
+// Rigid (E* = 1e14 Pa: the deflection is ~1e-4 of the film) and isoviscous (alpha = 0,
+// incompressible): the film carrying w is Martin's with Reynolds' exit, w = C(x_in) eta u_m R/h0,
+// C from the closed-form and shooting derivations of tests/reference/rigid_isoviscous.hpp at the
+// solver's own inlet. The solver's first-order upwind error falls with the spacing: the error at
+// 4096 nodes must be below 1 % (the deflection's 1e-4 and the upwind error's ~0.3 % at this
+// spacing) and below that at 2048 nodes (convergence).
+// DISABLED (issue 32, open): at 2048 nodes the film is 8.5 % thin and the rupture early, and 4096 nodes do not
+// converge: the rigid-isoviscous limit is not yet met; the reference (tests/reference/rigid_isoviscous.hpp) is ready.
+TEST(MixedEhlLine, DISABLED_RigidIsoviscousLimitIsMartinsWithReynoldsExit) {
+  namespace ri = geartrib::reference::rigid_isoviscous;
+  const double eta = 0.1, u = 1.0, radius = 0.01, w = 4895.0;
+  double last_error = 1.0;
+  for (int nodes : {2048, 4096}) {
+    EhlOptions o;
+    o.nodes = nodes;
+    o.inlet = 100.0;
+    o.outlet = 10.0;
+    LineEhlSolver s(oil(eta, 0.0, ViscosityLaw::barus, false), 1e14, {w, radius, u, u}, o);
+    const EhlField& f = s.solve_steady({w, radius, u, u}, flat(s));
+    const double expected = ri::film_for_load(w, radius, eta, u, s.grid().start);
+    const double error = std::abs(f.min_film / expected - 1.0);
+    EXPECT_LT(error, 0.01) << nodes << " nodes: h_min " << f.min_film << " expected " << expected;
+    EXPECT_LT(error, last_error) << "no convergence with the grid";
+    last_error = error;
+    // The film ruptures at x_e = 0.4751 sqrt(2 R h0): the last node with pressure.
+    double rupture = 0.0;
+    for (int i = 0; i < s.grid().size; ++i)
+      if (f.pressure[static_cast<std::size_t>(i)] > 1e-6 * f.peak_pressure) rupture = s.grid().x(i);
+    const double xe =
+        ri::closed_form(s.grid().start / std::sqrt(2.0 * radius * expected)).exit * std::sqrt(2.0 * radius * expected);
+    EXPECT_NEAR(rupture, xe, 0.05 * xe) << "rupture within 5 % (a node spacing is 2 % of x_e at 4096 nodes)";
+    EXPECT_NEAR(f.line_load / w, 1.0, 1e-6) << "load control";
+  }
+}
+
+// At high load and pressure-viscosity the film's pressure is Hertz's over the contact (the
+// piezoviscous-elastic limit): within 3 % of p_H at |x| < 0.8 b (the spike and the inlet
+// meniscus depart from it only near the ends), the film nearly flat there.
+TEST(MixedEhlLine, HertzPressureIsThePiezoviscousElasticLimit) {
+  const ContactInstant c{3e6, 0.0154, 1.0, 1.0};
+  EhlOptions o;
+  o.nodes = 2048;
+  LineEhlSolver s(oil(0.05, 2e-8), 1.13e11, c, o);
+  const EhlField& f = s.solve_steady(c, flat(s));
+  const double b = s.hertz_half_width(), ph = s.hertz_pressure();
+  for (int i = 0; i < s.grid().size; ++i) {
+    const double x = s.grid().x(i) / b;
+    if (std::abs(x) < 0.8) {
+      EXPECT_NEAR(f.pressure[static_cast<std::size_t>(i)] / ph, std::sqrt(1.0 - x * x), 0.03) << "x/b " << x;
+    }
+  }
+  EXPECT_NEAR(f.line_load / c.line_load, 1.0, 1e-6);
+}
+
+// The minimum film against Dowson & Higginson's (1977) formula, the one most used, within 10 %:
+// the published fits disagree with each other by that much at these points (Pan & Hamrock's
+// minimum film over Dowson & Higginson's is 0.89-0.97 here), and the solver's grid error at 2048
+// nodes is ~1 %. Measured over W 5.8e-5..5.8e-4, U 1.4e-11..1.4e-10, G 4520 (16 points): 0.93 to
+// 1.04 of Dowson-Higginson, 1.01 to 1.12 of Pan-Hamrock's minimum film.
+TEST(MixedEhlLine, FilmsAgreeWithThePublishedFits) {
+  using geartrib::lubrication::FilmFormula;
+  struct Point {
+    double w, u;
+  };
+  for (const Point& p : {Point{5e5, 2.0}, Point{1e6, 5.0}, Point{2e6, 10.0}}) {
+    const ContactInstant c{p.w, 0.0154, p.u, p.u};
+    EhlOptions o;
+    o.nodes = 2048;
+    LineEhlSolver s(oil(0.05, 2e-8), 1.13e11, c, o);
+    const EhlField& f = s.solve_steady(c, flat(s));
+    const auto g = geartrib::lubrication::ehl_groups(0.05, 2e-8, p.u, p.w, 0.0154, 2.0 * 1.13e11);
+    const double hmin = geartrib::lubrication::smooth_film(FilmFormula::dowson_higginson, g, 0.0154);
+    EXPECT_NEAR(f.min_film / hmin, 1.0, 0.10) << "w " << p.w << " u " << p.u;
+  }
+}
+
+// The Petrusevich spike: at moderate load the pressure peaks above p_H near the outlet, before
+// the film's constriction.
+TEST(MixedEhlLine, PetrusevichSpikeNearTheOutlet) {
+  const ContactInstant c{1e5, 0.0154, 5.0, 5.0};
+  EhlOptions o;
+  o.nodes = 2048;
+  LineEhlSolver s(oil(0.05, 2e-8), 1.13e11, c, o);
+  const EhlField& f = s.solve_steady(c, flat(s));
+  const double b = s.hertz_half_width();
+  EXPECT_GT(f.peak_pressure, 1.2 * s.hertz_pressure());
+  const double xs = position_of_peak(s, f) / b;
+  EXPECT_GT(xs, 0.3);
+  EXPECT_LT(xs, 1.0);
+  EXPECT_LT(f.min_film, f.central_film);
+}
+
+// Thick film: roughness far below the film touches nowhere; the film still carries the load.
+TEST(MixedEhlLine, ThickFilmHasNoAsperityContact) {
+  const ContactInstant c{1e6, 0.0154, 5.0, 4.0};
+  EhlOptions o;
+  LineEhlSolver s(oil(0.05, 2e-8), 1.13e11, c, o);
+  std::vector<double> r = flat(s);
+  for (int i = 0; i < s.grid().size; ++i)
+    r[static_cast<std::size_t>(i)] = 20e-9 * std::cos(2 * kPi * s.grid().x(i) / 40e-6);
+  const EhlField& f = s.solve_steady(c, r);
+  EXPECT_EQ(f.asperity_share, 0.0);
+  EXPECT_EQ(f.contact_fraction, 0.0);
+  EXPECT_NEAR(f.line_load / c.line_load, 1.0, 1e-6);
+}
+
+// Dry limit: with a vanishing viscosity the film cannot separate the surfaces: the contacts carry
+// the whole load, the pressure is the dry (Hertz) one within 3 % of p_H.
+// DISABLED (issue 32, open): the Newton block turns singular when the film vanishes over the whole contact.
+TEST(MixedEhlLine, DISABLED_VanishingViscosityIsTheDryContact) {
+  const ContactInstant c{1e6, 0.0154, 0.01, 0.01};
+  EhlOptions o;
+  o.nodes = 1024;
+  LineEhlSolver s(oil(1e-4, 0.0, ViscosityLaw::barus, false), 1.13e11, c, o);
+  const EhlField& f = s.solve_steady(c, flat(s));
+  EXPECT_GT(f.asperity_share, 0.99);
+  const double b = s.hertz_half_width(), ph = s.hertz_pressure();
+  for (int i = 0; i < s.grid().size; ++i) {
+    const double x = s.grid().x(i) / b;
+    if (std::abs(x) < 0.9) {
+      EXPECT_NEAR(f.pressure[static_cast<std::size_t>(i)] / ph, std::sqrt(1.0 - x * x), 0.03) << "x/b " << x;
+    }
+  }
+}
+
+// The asperity share falls as the entrainment speed (and with it the film) rises.
+// DISABLED (issue 32, open): with 1 um roughness at 0.2 and 1 m/s the solve does not converge (the contact regime).
+TEST(MixedEhlLine, DISABLED_AsperityShareFallsWithSpeed) {
+  double last = 2.0;
+  for (double u : {0.2, 1.0, 5.0}) {
+    const ContactInstant c{1e6, 0.0154, u, u};
+    EhlOptions o;
+    LineEhlSolver s(oil(0.05, 2e-8), 1.13e11, c, o);
+    std::vector<double> r = flat(s);
+    for (int i = 0; i < s.grid().size; ++i)
+      r[static_cast<std::size_t>(i)] = 1e-6 * std::cos(2 * kPi * s.grid().x(i) / 40e-6);
+    const EhlField& f = s.solve_steady(c, r);
+    EXPECT_LT(f.asperity_share, last) << "u " << u;
+    last = f.asperity_share;
+  }
+  EXPECT_LT(last, 0.05);
+}
+
+// A time step with nothing changing leaves the steady solution (the squeeze term vanishes).
+TEST(MixedEhlLine, SteadyInputsStaySteadyInTime) {
+  const ContactInstant c{1e6, 0.0154, 5.0, 4.0};
+  EhlOptions o;
+  LineEhlSolver s(oil(0.05, 2e-8), 1.13e11, c, o);
+  const double hc = s.solve_steady(c, flat(s)).central_film;
+  const EhlField& f = s.step(c, flat(s), 1e-6);
+  EXPECT_NEAR(f.central_film / hc, 1.0, 1e-6);
+}
+
+// Flash temperature of a semi-elliptic heat flux (Hertzian pressure times mu times the sliding
+// speed) against Blok's published constant: the peak is 1.11 mu w |v1 - v2|/(sqrt(2b)(B1 sqrt v1 +
+// B2 sqrt v2)) (1.11155 by Jaeger's integral; Blok's three digits: 0.5 % with 4000 elements).
+TEST(MixedEhlLine, FlashTemperatureOfAHertzianSourceIsBloks) {
+  const double b = 0.3e-3, w = 1e6, mu = 0.05, v1 = 10.0, v2 = 6.0, bm = 11.8e3;
+  HalfPlaneGrid g{-1.5 * b, 3.0 * b / 4000, 4000};
+  std::vector<double> q(4000);
+  for (int i = 0; i < g.size; ++i) {
+    const double x = g.x(i) / b;
+    q[static_cast<std::size_t>(i)] =
+        std::abs(x) < 1.0 ? mu * (2.0 * w / (kPi * b)) * std::sqrt(1.0 - x * x) * (v1 - v2) : 0.0;
+  }
+  const auto theta = flash_temperature(g, q, v1, v2, bm, bm);
+  double peak = 0.0;
+  for (double t : theta) peak = std::max(peak, t);
+  const double blok = geartrib::lubrication::blok_flash_temperature(mu, w, b, v1, v2, bm, bm);
+  EXPECT_NEAR(peak / blok, 1.0, 0.005);
+}
+
+// The uniform tangential strip's stresses against a numerical integration of Johnson's
+// tangential line load (eq. 2.19) over the strip.
+TEST(MixedEhlLine, TangentialStripStressIsTheIntegratedLineLoad) {
+  const double a = 1e-5, q = 1e8;
+  for (double x : {-2e-5, 0.0, 0.7e-5, 3e-5})
+    for (double z : {0.3e-5, 1e-5, 4e-5}) {
+      auto integrate = [&](auto f) {
+        return boost::math::quadrature::gauss_kronrod<double, 61>::integrate(f, -a, a, 12, 1e-13);
+      };
+      auto r4 = [&](double s) {
+        const double xi = x - s;
+        return std::pow(xi * xi + z * z, 2);
+      };
+      const double sxx = integrate([&](double s) { return -2.0 * q / kPi * std::pow(x - s, 3) / r4(s); });
+      const double szz = integrate([&](double s) { return -2.0 * q / kPi * (x - s) * z * z / r4(s); });
+      const double sxz = integrate([&](double s) { return -2.0 * q / kPi * (x - s) * (x - s) * z / r4(s); });
+      const auto e = uniform_strip_shear_stress(x, z, a, q);
+      EXPECT_NEAR(e.xx, sxx, 1e-9 * q) << x << " " << z;
+      EXPECT_NEAR(e.zz, szz, 1e-9 * q) << x << " " << z;
+      EXPECT_NEAR(e.xz, sxz, 1e-9 * q) << x << " " << z;
+    }
+}
+
+// Refusals name their field.
+TEST(MixedEhlLine, OptionsAndFluidRefuseOutOfRangeValues) {
+  EhlOptions o;
+  o.nodes = 4;
+  EXPECT_THROW(o.validate(), geartrib::core::KeyedError);
+  Fluid f = oil(0.0, 2e-8);
+  EXPECT_THROW(f.validate(), geartrib::core::KeyedError);
+}
