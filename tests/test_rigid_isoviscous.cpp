@@ -8,7 +8,11 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include <cmath>
+#include <fstream>
 #include <limits>
+#include <map>
+#include <sstream>
+#include <string>
 
 namespace {
 
@@ -136,6 +140,32 @@ TEST(RigidIsoviscous, DimensionalContactAndLoadControl) {
   cut.inlet = -2e-3;
   const double h0 = ri::film_for_load(cut.load(), 0.01, 0.01, 1.0, -2e-3);
   EXPECT_NEAR(h0 / 10e-6, 1.0, 1e-10);
+}
+
+TEST(RigidIsoviscous, TheValidationCaseTableIsThisSolution) {
+  // validation/mixed-ehl/rigid_isoviscous_case.csv (20-digit mpmath, a fixed point on the Hertz
+  // half-width) read back: at its line load, with p = 0 at -960 b, the least film is 10 um.
+  std::ifstream in(std::string(GEARTRIB_SOURCE_DIR) + "/validation/mixed-ehl/rigid_isoviscous_case.csv");
+  ASSERT_TRUE(in);
+  std::string line, header;
+  while (std::getline(in, line) && line.starts_with("#")) {
+  }
+  header = line;
+  ASSERT_TRUE(std::getline(in, line));
+  std::map<std::string, double> v;
+  std::stringstream hs(header), ls(line);
+  for (std::string k, x; std::getline(hs, k, ',') && std::getline(ls, x, ',');) v[k] = std::stod(x);
+  const double r = 0.01, eta = 0.01, um = 1.0, x_in = -960.0 * v["hertz_halfwidth_m"];
+  // The table's b is Hertz's at its load (E* of steel, 206 GPa, 0.3).
+  EXPECT_NEAR(v["hertz_halfwidth_m"] /
+                  std::sqrt(4.0 * v["line_load_N_per_m"] * r / (std::numbers::pi * 206e9 / (2.0 * (1.0 - 0.09)))),
+              1.0, 1e-10);
+  const double h0 = ri::film_for_load(v["line_load_N_per_m"], r, eta, um, x_in);
+  EXPECT_NEAR(h0 / 10e-6, 1.0, 1e-10);  // the table's 12 digits
+  const ri::Contact c{r, eta, um, h0, x_in};
+  EXPECT_NEAR(c.exit() / v["exit_x_m"], 1.0, 1e-10);
+  EXPECT_NEAR(c.solution().load / v["load_C"], 1.0, 1e-10);
+  EXPECT_NEAR(c.solution().peak * eta * um * std::sqrt(r / h0) / h0 / v["peak_pressure_Pa"], 1.0, 1e-10);
 }
 
 }  // namespace
