@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -226,6 +227,7 @@ struct LineEhlSolver::Impl {
   double H0 = 0.0;
   bool started = false;
   EhlField field;
+  int newton_total = 0, linear_total = 0;  // over a public call's solves
   ContactInstant last_instant;
   std::vector<double> last_heights;  // [m]
   // Work.
@@ -362,7 +364,7 @@ struct LineEhlSolver::Impl {
     work_conv.assign(static_cast<std::size_t>(n), 0.0);
     const double penalty = kPenaltyFactor / (dx * dx);
     double update = 0.0, load_error = 0.0;
-    int it = 0;
+    int it = 0, linear_iterations = 0;
     std::vector<double> row_scale(2 * m, 1.0), P_base, H_base, work_v;
     // The residuals at the present state (F, G per interior node, the load's), and with
     // `jacobian` the Newton blocks; returns the merit sum((row residual/row scale)^2) + load^2
@@ -503,7 +505,7 @@ struct LineEhlSolver::Impl {
       bvec[2 * m] /= target;
       // Inexact Newton: the linear solve's tolerance follows the residual's fall (Eisenstat &
       // Walker, SIAM J. Sci. Comput. 17, 1996, choice 2 with gamma 0.9, alpha 2).
-      gmres(scaled_jacobian, scaled_precondition, bvec, z, forcing, kLinearIterations);
+      linear_iterations += gmres(scaled_jacobian, scaled_precondition, bvec, z, forcing, kLinearIterations);
       // The step's first length: no fluid pressure of the open film changes by more than
       // kMaxPressureStep p_H (the viscosity's exponential makes the linearisation poor far from
       // the solution), no open film more than halves, no film near contact more than doubles.
@@ -568,6 +570,8 @@ struct LineEhlSolver::Impl {
     for (int i = 0; i < n; ++i)
       mass_old[static_cast<std::size_t>(i)] = rho[static_cast<std::size_t>(i)] * H[static_cast<std::size_t>(i)];
     fill(c, it, update, load_error);
+    newton_total += it;
+    linear_total += linear_iterations;
     last_instant = c;
     last_heights.assign(heights.begin(), heights.end());
     return field;
@@ -687,17 +691,56 @@ double LineEhlSolver::hertz_half_width() const { return impl_->b; }
 double LineEhlSolver::hertz_pressure() const { return impl_->ph; }
 const EhlField& LineEhlSolver::field() const { return impl_->field; }
 
+namespace {
+// A steady solve, with the roughness's homotopy when the direct solve fails (below).
+void steady_solve(LineEhlSolver::Impl& s, const ContactInstant& instant, std::span<const double> heights);
+
+// A solve's cost: the FFTs this thread executed during it, their time and its wall time.
+class SolveMeter {
+ public:
+  void fill(EhlField& f, int iterations, int linear) const {
+    f.transforms = ToeplitzConvolution::transforms() - transforms_;
+    f.transform_seconds = ToeplitzConvolution::transform_seconds() - transform_seconds_;
+    f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    f.iterations = iterations;
+    f.linear_iterations = linear;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  long transforms_ = ToeplitzConvolution::transforms();
+  double transform_seconds_ = ToeplitzConvolution::transform_seconds();
+};
+}  // namespace
+
 const EhlField& LineEhlSolver::solve_steady(const ContactInstant& instant, std::span<const double> heights) {
   Impl& s = *impl_;
-  const std::vector<double> P_keep = s.P, H_keep = s.H;
-  const double H0_keep = s.H0;
-  const bool started_keep = s.started;
+  const SolveMeter meter;
+  s.newton_total = s.linear_total = 0;
+  steady_solve(s, instant, heights);
+  meter.fill(s.field, s.newton_total, s.linear_total);
+  return s.field;
+}
+
+const EhlField& LineEhlSolver::step(const ContactInstant& instant, std::span<const double> heights, double dt) {
+  if (!(dt > 0.0)) throw std::invalid_argument("mixed EHL: the time step must be positive");
+  if (!impl_->started) throw std::logic_error("mixed EHL: a time step needs a solution to start from");
+  Impl& s = *impl_;
+  const SolveMeter meter;
+  s.newton_total = s.linear_total = 0;
+  s.advance(instant, std::vector<double>(heights.begin(), heights.end()), dt, 0);
+  meter.fill(s.field, s.newton_total, s.linear_total);
+  return s.field;
+}
+
+namespace {
+void steady_solve(LineEhlSolver::Impl& s, const ContactInstant& instant, std::span<const double> heights) {
   try {
-    return s.solve(instant, heights, 0.0);
+    s.solve(instant, heights, 0.0);
+    return;
   } catch (const std::runtime_error&) {
     // Homotopy in the roughness: from the smooth contact (Hertz's start) the heights scaled by
     // lambda = 0 .. 1, each solve started from the last; a stage that fails is bisected.
-    s.P = P_keep, s.H = H_keep, s.H0 = H0_keep, s.started = started_keep;
     s.started = false;
     std::vector<double> scaled(heights.size());
     auto at = [&](double lambda) {
@@ -719,15 +762,9 @@ const EhlField& LineEhlSolver::solve_steady(const ContactInstant& instant, std::
         stride *= 0.5;
       }
     }
-    return s.field;
   }
 }
-const EhlField& LineEhlSolver::step(const ContactInstant& instant, std::span<const double> heights, double dt) {
-  if (!(dt > 0.0)) throw std::invalid_argument("mixed EHL: the time step must be positive");
-  if (!impl_->started) throw std::logic_error("mixed EHL: a time step needs a solution to start from");
-  impl_->advance(instant, std::vector<double>(heights.begin(), heights.end()), dt, 0);
-  return impl_->field;
-}
+}  // namespace
 
 std::vector<double> flash_temperature(const HalfPlaneGrid& grid, std::span<const double> heat_flux, double speed1,
                                       double speed2, double contact_coefficient1, double contact_coefficient2) {

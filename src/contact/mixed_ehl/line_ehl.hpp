@@ -122,9 +122,14 @@ struct EhlField {
   double film_friction = 0.0;            // integral of the film's shear [N/m]
   double boundary_friction = 0.0;        // integral of boundary_friction p over the contacts [N/m]
   double friction_coefficient = 0.0;     // (film + boundary friction)/line load [-]
-  int iterations = 0;
-  double update = 0.0;      // the last Newton update (largest, over p_H_ref)
-  double load_error = 0.0;  // relative
+  int iterations = 0;                    // Newton iterations (a retried time step: all its substeps')
+  int linear_iterations = 0;             // GMRES iterations over them
+  double update = 0.0;                   // the last Newton update (largest, over p_H_ref)
+  double load_error = 0.0;               // relative
+  // Cost of the solve (a time step with its retries): FFTs executed (r2c or c2r of the
+  // convolution's length), their time and the wall time [s].
+  long transforms = 0;
+  double transform_seconds = 0.0, seconds = 0.0;
 };
 
 class LineEhlSolver {
@@ -151,8 +156,9 @@ class LineEhlSolver {
   const EhlField& step(const ContactInstant& instant, std::span<const double> heights, double dt);
   const EhlField& field() const;
 
+  struct Impl;  // (public for the solve's helpers in line_ehl.cpp)
+
  private:
-  struct Impl;
   std::unique_ptr<Impl> impl_;
 };
 
