@@ -149,7 +149,7 @@ constexpr double kLinearTolerance = 1e-6;  // the least forcing term
 constexpr double kMaxForcing = 1e-3;
 constexpr double kPenaltyFactor = 1e5;  // kappa dX^2: large against the Poiseuille coefficients where the film ruptures
 constexpr int kLinearIterations = 200;
-constexpr double kMaxPressureStep = 0.3;
+constexpr double kMaxPressureStep = 1.0;
 constexpr double kEpsilonFloor = 1.0;  // eps >= this x u dX H_floor
 constexpr int kLineSearchHalvings = 10;
 constexpr double kMeritGrowth = 1e8;
