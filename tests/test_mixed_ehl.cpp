@@ -241,3 +241,55 @@ TEST(MixedEhlLine, OptionsAndFluidRefuseOutOfRangeValues) {
   Fluid f = oil(0.0, 2e-8);
   EXPECT_THROW(f.validate(), geartrib::core::KeyedError);
 }
+
+// Roelands' law is built to have Barus' initial slope: d ln(eta)/dp at p = 0 is alpha (a finite
+// difference, not the formula); and it rises more slowly than Barus' at high pressure.
+TEST(MixedEhlLine, RoelandsStartsAtBarusSlopeAndStaysBelowIt) {
+  const Fluid r = oil(0.05, 2e-8), b = oil(0.05, 2e-8, ViscosityLaw::barus);
+  const double dp = 1e3;
+  EXPECT_NEAR(std::log(r.viscosity_at(dp) / r.viscosity_at(0.0)) / dp, 2e-8, 1e-12);
+  EXPECT_NEAR(std::log(b.viscosity_at(dp) / b.viscosity_at(0.0)) / dp, 2e-8, 1e-15);
+  for (double p : {0.2e9, 0.5e9, 1e9}) EXPECT_LT(r.viscosity_at(p), b.viscosity_at(p)) << p;
+}
+
+// Dowson-Higginson's density: 1 at zero pressure, rising, and bounded by 1 + 0.6/1.7 (the oil's
+// largest compression, 35 %); constant when incompressible.
+TEST(MixedEhlLine, DowsonHigginsonDensityIsBounded) {
+  const Fluid f = oil(0.05, 2e-8);
+  EXPECT_EQ(f.density_ratio(0.0), 1.0);
+  double last = 1.0;
+  for (double p : {1e8, 1e9, 1e10, 1e12}) {
+    EXPECT_GT(f.density_ratio(p), last);
+    last = f.density_ratio(p);
+  }
+  EXPECT_LT(last, 1.0 + 0.6 / 1.7);
+  EXPECT_NEAR(last, 1.0 + 0.6 / 1.7, 1e-3);
+  EXPECT_EQ(oil(0.05, 2e-8, ViscosityLaw::roelands, false).density_ratio(1e9), 1.0);
+}
+
+// Ree-Eyring flow: without sliding the flow factor is 1 and the solution Newtonian's exactly;
+// with sliding its shear-thinning of the Poiseuille flow (phi > 1) lets the inlet pass more oil at
+// a given pressure gradient, so it builds less pressure: the film is thinner (Conry, Wang &
+// Cusano 1987 report the same fall with slide-to-roll ratio).
+TEST(MixedEhlLine, EyringFlowIsNewtonianWithoutSlidingAndThinsTheFilmWithIt) {
+  auto film = [](FlowModel flow, double u1, double u2) {
+    Fluid f = oil(0.05, 2e-8);
+    f.flow = flow;
+    f.eyring_stress = 2e6;
+    const ContactInstant c{1e6, 0.0154, u1, u2};
+    LineEhlSolver s(f, 1.13e11, c, EhlOptions{});
+    return s.solve_steady(c, flat(s)).central_film;
+  };
+  EXPECT_EQ(film(FlowModel::eyring, 5.0, 5.0), film(FlowModel::newtonian, 5.0, 5.0));
+  EXPECT_LT(film(FlowModel::eyring, 7.5, 2.5), film(FlowModel::newtonian, 7.5, 2.5));
+}
+
+// Barus' law, its viscosity the higher at the inlet's pressures, gives the thicker film.
+TEST(MixedEhlLine, BarusGivesAThickerFilmThanRoelands) {
+  auto film = [](ViscosityLaw law) {
+    const ContactInstant c{1e6, 0.0154, 5.0, 5.0};
+    LineEhlSolver s(oil(0.05, 2e-8, law), 1.13e11, c, EhlOptions{});
+    return s.solve_steady(c, flat(s)).central_film;
+  };
+  EXPECT_GT(film(ViscosityLaw::barus), film(ViscosityLaw::roelands));
+}

@@ -320,15 +320,17 @@ struct LineEhlSolver::Impl {
       dlneta *= ph;
       drho[s] = fluid.compressible && p > 0.0 ? kDensityA * ph / std::pow(1.0 + kDensityB * p, 2) : 0.0;
       const double h = std::max(H[s], 0.0);
-      double phi = 1.0;
+      double phi = 1.0, phi_share = 0.0;  // phi_share = s^2/phi^2 = d ln(phi)/d ln(s)
       if (fluid.flow == FlowModel::eyring && h > 0.0) {
         const double ratio = eta * slide / (fluid.eyring_stress * h * film_scale);
         phi = std::sqrt(1.0 + ratio * ratio);  // cosh(asinh(ratio)), Conry, Wang & Cusano 1987
+        phi_share = ratio * ratio / (phi * phi);
       }
       const double e = rho[s] * h * h * h * phi / (eta_bar * lambda);
       eps[s] = std::isfinite(e) ? e : 0.0;
-      deps_dp[s] = eps[s] * (drho[s] / rho[s] - dlneta);
-      deps_dh[s] = h > 0.0 ? 3.0 * eps[s] / h : 0.0;
+      // ln eps = ln rho + 3 ln H + ln phi - ln eta, phi of s = eta |u1 - u2|/(tau_0 h).
+      deps_dp[s] = eps[s] * (drho[s] / rho[s] - (1.0 - phi_share) * dlneta);
+      deps_dh[s] = h > 0.0 ? (3.0 - phi_share) * eps[s] / h : 0.0;
       // Where the film vanishes (contact, or a solid viscosity) the pressure would be
       // undetermined by this equation: eps gains a constant (smoothly, not as a floor, whose kink
       // would stall Newton's method where eps crosses it), so the pressure stays the harmonic
