@@ -28,6 +28,20 @@ bool rough(const FlankTrack& t) {
   return std::any_of(t.profile.z.begin(), t.profile.z.end(), [](double z) { return z != 0.0; });
 }
 
+// The statistical model's flanks: each flank's spectral moments from its profile over the active
+// part (McCool's summits), the rest as the case gives them.
+StatisticalFlanks profile_statistics(const FidelityInputs& in, const FlankSpan& span, const RollingFlanks& flanks) {
+  StatisticalFlanks f = in.flanks;
+  const FlankTrack* tracks[2] = {&flanks.pinion.front(), &flanks.wheel.front()};
+  for (std::size_t g = 0; g < 2; ++g)
+    f.roughness[g] =
+        surface::spectral_roughness(active_statistics(*tracks[g], span.active_first[g], span.active_last[g]));
+  const auto [r1, r2] = surface::flank_summit_radii(f.roughness[0], f.roughness[1]);
+  f.roughness[0].summit_radius = r1;
+  f.roughness[1].summit_radius = r2;
+  return f;
+}
+
 // The per-position outputs of one mesh, as the case asks for them.
 void add_contact_series(const ContactSettings& cs, const std::vector<DeterministicStrip>& strips,
                         MeshContactResult& r) {
@@ -237,42 +251,27 @@ DeterministicCost deterministic_cost(const FlankSpan& span, const DeterministicW
   return c;
 }
 
-namespace deterministic {
-
-namespace {
-
-// The strip, its boundary elements and the span of each flank it reads. The softer flank's
-// hardness caps the pressure and takes the plastic deformation (equal hardness: half each).
-void plan_strip(const FidelityInputs& in, BoundaryElements::State& st) {
-  const ContactSettings& cs = in.contact;
-  const PathState& p = in.path;
-  const gear::SpurPair& pair = in.mesh.pair();
-  const int n = static_cast<int>(p.size());
+std::array<std::vector<double>, 2> contact_arcs(const gear::SpurPair& pair, const PathState& p) {
   const double rb[2] = {pair.pinion().base_radius, pair.wheel().base_radius};
-  const double b_max = *std::max_element(p.half_width.begin(), p.half_width.end());
-  FlankSpan& span = st.span;
-  span.element_size = cs.boundary_elements.element_size;
-  span.strip_half_length = cs.boundary_elements.strip_halfwidths * b_max;
+  std::array<std::vector<double>, 2> sigma;
   for (std::size_t k = 0; k < p.size(); ++k) {
-    st.sigma[0].push_back(p.rho1[k] * p.rho1[k] / (2.0 * rb[0]));  // involute arc length from the base circle
-    st.sigma[1].push_back(p.rho2[k] * p.rho2[k] / (2.0 * rb[1]));
+    sigma[0].push_back(p.rho1[k] * p.rho1[k] / (2.0 * rb[0]));  // involute arc length from the base circle
+    sigma[1].push_back(p.rho2[k] * p.rho2[k] / (2.0 * rb[1]));
   }
-  st.options = deterministic_options(cs, *in.flanks.materials[0], *in.flanks.materials[1]);
-  const DeterministicOptions& o = st.options;
-  // The flanks are read over the grid's whole reach (at least 8 elements) and two elements more.
-  st.grid = strip_grid(span.strip_half_length, o);
-  span.elements = st.grid.size;
-  const double margin = 0.5 * st.grid.size * st.grid.spacing + 2.0 * cs.boundary_elements.element_size;
-  span.positions = n;
-  span.running_in = in.running_in.meshes > 0;
+  return sigma;
+}
+
+void set_span_ranges(FlankSpan& span, const gear::SpurPair& pair, const std::array<std::vector<double>, 2>& sigma,
+                     const double before[2], const double after[2]) {
+  span.positions = static_cast<int>(sigma[0].size());
   for (int g = 0; g < 2; ++g) {
-    const auto& sigma = st.sigma[static_cast<std::size_t>(g)];
-    for (std::size_t i = 0; i + 1 < sigma.size(); ++i)
-      span.max_step[g] = std::max(span.max_step[g], std::abs(sigma[i + 1] - sigma[i]));
-    span.active_first[g] = *std::min_element(sigma.begin(), sigma.end());
-    span.active_last[g] = *std::max_element(sigma.begin(), sigma.end());
-    span.first[g] = span.active_first[g] - margin;
-    span.last[g] = span.active_last[g] + margin;
+    const auto& sg = sigma[static_cast<std::size_t>(g)];
+    for (std::size_t i = 0; i + 1 < sg.size(); ++i)
+      span.max_step[g] = std::max(span.max_step[g], std::abs(sg[i + 1] - sg[i]));
+    span.active_first[g] = *std::min_element(sg.begin(), sg.end());
+    span.active_last[g] = *std::max_element(sg.begin(), sg.end());
+    span.first[g] = span.active_first[g] - before[g];
+    span.last[g] = span.active_last[g] + after[g];
     const gear::GearBody& body = pair.gear(g);
     const double tip =
         (body.tip_radius * body.tip_radius - body.base_radius * body.base_radius) / (2.0 * body.base_radius);
@@ -281,32 +280,35 @@ void plan_strip(const FidelityInputs& in, BoundaryElements::State& st) {
   }
 }
 
-// The statistical model's flanks: each flank's spectral moments from its profile over the active
-// part (McCool's summits), the rest as the case gives them.
-StatisticalFlanks profile_statistics(const FidelityInputs& in, const BoundaryElements::State& st) {
-  StatisticalFlanks f = in.flanks;
-  const FlankTrack* tracks[2] = {&st.flanks.pinion.front(), &st.flanks.wheel.front()};
-  for (std::size_t g = 0; g < 2; ++g)
-    f.roughness[g] =
-        surface::spectral_roughness(active_statistics(*tracks[g], st.span.active_first[g], st.span.active_last[g]));
-  const auto [r1, r2] = surface::flank_summit_radii(f.roughness[0], f.roughness[1]);
-  f.roughness[0].summit_radius = r1;
-  f.roughness[1].summit_radius = r2;
-  return f;
+void build_rolled_flanks_model(const FidelityInputs& in, const FlankSpan& span, const RollingFlanks& flanks,
+                               std::string_view fidelity, StageClock& clock, std::optional<SurfaceModel>& model) {
+  const bool statistics = rough(flanks.pinion.front()) && rough(flanks.wheel.front());
+  if (in.lubricated && !statistics)
+    throw core::KeyedError(
+        rough(flanks.pinion.front()) ? "wheel.flank" : "pinion.flank",
+        fmt::format("a lubricated {} run takes the film's share of the load from the flanks' statistics, and this "
+                    "flank's profile is flat: give both flanks a rough profile (or run the case dry)",
+                    fidelity));
+  if (!statistics) return;
+  double p_max = 0.0;
+  for (double p : in.path.hertz_p0) p_max = std::max(p_max, p);
+  model.emplace(profile_statistics(in, span, flanks), in.contact, p_max);
+  clock.lap("statistical_surface_table");
 }
 
-// The positions' strips, at the load the asperities carry, and which pressure profiles are kept.
-std::vector<StripPosition> strip_positions(const PathState& p, const BoundaryElements::State& st,
-                                           const std::vector<double>& share) {
-  std::vector<StripPosition> positions;
-  for (std::size_t k = 0; k < p.size(); ++k)
-    positions.push_back(
-        {p.line_load[k] * share[k], p.radius[k], p.half_width[k], st.sigma[0][k], st.sigma[1][k], p.s[k]});
-  return positions;
+void write_statistical_beside(const FidelityInputs& in, const SurfaceModel& m, const StatisticalSolution& s,
+                              MeshContactResult& r) {
+  std::vector<Series> contact, validity;
+  add_statistical_series(s, m, in.contact, contact, validity);
+  for (const auto* group : {&contact, &validity})
+    for (const Series& q : *group) r.statistical.push_back({"statistical_" + q.name, q.unit, q.values});
+  r.surface = m.surface;
+  r.plasticity_index = m.plasticity_index;
+  r.asperity_model = std::string(m.table.model().name());
+  for (const auto& w : s.warnings) r.warnings.push_back("statistical model: " + w);
 }
 
-// The path's points A, B, C, D, E at their nearest positions.
-std::vector<std::string> point_names(const PathState& p) {
+std::vector<std::string> path_point_names(const PathState& p) {
   const auto& path = p.path;
   const std::pair<const char*, double> named[] = {
       {"A", path.a}, {"B", path.b}, {"C", path.c}, {"D", path.d}, {"E", path.e}};
@@ -318,6 +320,52 @@ std::vector<std::string> point_names(const PathState& p) {
     point_name[best] = name;
   }
   return point_name;
+}
+
+std::vector<bool> kept_profiles(const ContactSettings& cs, const PathState& p) {
+  std::vector<bool> keep(p.size(), cs.pressure_profiles == PressureProfiles::all);
+  if (cs.pressure_profiles == PressureProfiles::points) {
+    const std::vector<std::string> names = path_point_names(p);
+    for (std::size_t k = 0; k < names.size(); ++k)
+      if (!names[k].empty()) keep[k] = true;
+  }
+  return keep;
+}
+
+namespace deterministic {
+
+namespace {
+
+// The strip, its boundary elements and the span of each flank it reads. The softer flank's
+// hardness caps the pressure and takes the plastic deformation (equal hardness: half each).
+void plan_strip(const FidelityInputs& in, BoundaryElements::State& st) {
+  const ContactSettings& cs = in.contact;
+  const PathState& p = in.path;
+  const gear::SpurPair& pair = in.mesh.pair();
+  const double b_max = *std::max_element(p.half_width.begin(), p.half_width.end());
+  FlankSpan& span = st.span;
+  span.element_size = cs.boundary_elements.element_size;
+  span.strip_half_length = cs.boundary_elements.strip_halfwidths * b_max;
+  st.sigma = contact_arcs(pair, p);
+  st.options = deterministic_options(cs, *in.flanks.materials[0], *in.flanks.materials[1]);
+  const DeterministicOptions& o = st.options;
+  // The flanks are read over the grid's whole reach (at least 8 elements) and two elements more.
+  st.grid = strip_grid(span.strip_half_length, o);
+  span.elements = st.grid.size;
+  const double margin = 0.5 * st.grid.size * st.grid.spacing + 2.0 * cs.boundary_elements.element_size;
+  const double margins[2] = {margin, margin};
+  set_span_ranges(span, pair, st.sigma, margins, margins);
+  span.running_in = in.running_in.meshes > 0;
+}
+
+// The positions' strips, at the load the asperities carry, and which pressure profiles are kept.
+std::vector<StripPosition> strip_positions(const PathState& p, const BoundaryElements::State& st,
+                                           const std::vector<double>& share) {
+  std::vector<StripPosition> positions;
+  for (std::size_t k = 0; k < p.size(); ++k)
+    positions.push_back(
+        {p.line_load[k] * share[k], p.radius[k], p.half_width[k], st.sigma[0][k], st.sigma[1][k], p.s[k]});
+  return positions;
 }
 
 // The running-in record before the first mesh: the flanks as made.
@@ -411,18 +459,7 @@ BoundaryElements::State BoundaryElements::prepare(const FidelityInputs& in, Stag
     throw std::logic_error("deterministic run: the flank source gave the wrong number of teeth");
   clock.lap("flank_profiles");
   // The statistical model on the same flanks (both rough), and in lubricated runs the film's share.
-  const bool statistics = rough(st.flanks.pinion.front()) && rough(st.flanks.wheel.front());
-  if (in.lubricated && !statistics)
-    throw core::KeyedError(
-        rough(st.flanks.pinion.front()) ? "wheel.flank" : "pinion.flank",
-        "a lubricated deterministic run takes the film's share of the load from the flanks' statistics, and this "
-        "flank's profile is flat: give both flanks a rough profile (or run the case dry)");
-  if (statistics) {
-    double p_max = 0.0;
-    for (double p : in.path.hertz_p0) p_max = std::max(p_max, p);
-    st.model.emplace(profile_statistics(in, st), in.contact, p_max);
-    clock.lap("statistical_surface_table");
-  }
+  build_rolled_flanks_model(in, st.span, st.flanks, name, clock, st.model);
   return st;
 }
 
@@ -436,12 +473,7 @@ BoundaryElements::Solution BoundaryElements::solve(const FidelityInputs& in, Sta
   const ContactSettings& cs = in.contact;
   const PathState& p = in.path;
   const std::vector<StripPosition> positions = strip_positions(p, st, share);
-  std::vector<bool> keep(p.size(), cs.pressure_profiles == PressureProfiles::all);
-  if (cs.pressure_profiles == PressureProfiles::points) {
-    const std::vector<std::string> names = point_names(p);
-    for (std::size_t k = 0; k < names.size(); ++k)
-      if (!names[k].empty()) keep[k] = true;
-  }
+  const std::vector<bool> keep = kept_profiles(cs, p);
   // The strip carries at most 2 L H (every element at the cap): beyond it the contact is plastic
   // across the whole strip and would spread beyond it.
   const double capacity = st.grid.size * st.grid.spacing * st.options.pressure_cap;
@@ -459,22 +491,12 @@ BoundaryElements::Solution BoundaryElements::solve(const FidelityInputs& in, Sta
 }
 
 void BoundaryElements::write(const FidelityInputs& in, State& st, Solution& s, MeshContactResult& r) {
-  if (s.statistical) {  // the statistical model beside, its series prefixed statistical_
-    const SurfaceModel& m = *st.model;
-    std::vector<Series> contact, validity;
-    add_statistical_series(*s.statistical, m, in.contact, contact, validity);
-    for (const auto* group : {&contact, &validity})
-      for (const Series& q : *group) r.statistical.push_back({"statistical_" + q.name, q.unit, q.values});
-    r.surface = m.surface;
-    r.plasticity_index = m.plasticity_index;
-    r.asperity_model = std::string(m.table.model().name());
-    for (const auto& w : s.statistical->warnings) r.warnings.push_back("statistical model: " + w);
-  }
+  if (s.statistical) write_statistical_beside(in, *st.model, *s.statistical, r);
   add_contact_series(in.contact, s.first.strips, r);
   // The pressure profiles kept (first mesh), on the strip's grid (the one every solver has).
   std::vector<double> x(static_cast<std::size_t>(st.grid.size));
   for (std::size_t j = 0; j < x.size(); ++j) x[j] = st.grid.x(static_cast<int>(j));
-  const std::vector<std::string> names = point_names(in.path);
+  const std::vector<std::string> names = path_point_names(in.path);
   for (std::size_t k = 0; k < s.first.strips.size(); ++k) {
     if (s.first.strips[k].pressure.empty()) continue;
     r.pressure_profiles.push_back(

@@ -13,6 +13,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace geartrib::contact {
@@ -34,6 +35,12 @@ struct FlankSpan {
   // base circle to a module beyond the tip (so that changing a knob does not change the flank).
   double generated_first[2] = {0.0, 0.0};
   double generated_last[2] = {0.0, 0.0};
+  // Who reads the flanks: the strip's boundary elements average a profile over each element
+  // (element_size not finer than its spacing), or the mixed-EHL grid samples it at its nodes
+  // (element_size, the nodes' spacing, not coarser than it; 0: chosen by the fidelity once the
+  // profiles are made, never coarser).
+  enum class Reader { strip, grid };
+  Reader reader = Reader::strip;
   double length(int g) const { return last[g] - first[g]; }
   // A measured trace of `length` centred on the flank's active part: where its first point lies.
   double centred_start(int g, double length) const { return 0.5 * (active_first[g] + active_last[g]) - 0.5 * length; }
@@ -44,6 +51,30 @@ struct FlankSpan {
 struct RollingFlanks {
   std::vector<FlankTrack> pinion, wheel;
 };
+
+// What every fidelity that rolls the flanks' profiles shares (the deterministic one, the mixed-EHL
+// one): the contact point's arc coordinate on each flank at every position, sigma = rho^2/(2 r_b)
+// (Litvin: the involute's arc length from the base circle) [m].
+std::array<std::vector<double>, 2> contact_arcs(const gear::SpurPair& pair, const PathState& p);
+// The span's ranges from the arcs: the active ranges, the largest step between positions, the
+// generated stretch (a module below the base circle to a module beyond the tip) and the positions;
+// each flank read from `before[g]` below its active range to `after[g]` above it [m].
+void set_span_ranges(FlankSpan& span, const gear::SpurPair& pair, const std::array<std::vector<double>, 2>& sigma,
+                     const double before[2], const double after[2]);
+// The flanks' statistical model from the rolled profiles (each flank's spectral moments over its
+// active part, McCool's summits), when both are rough; none when a flank is flat, which a lubricated
+// run refuses (core::KeyedError naming the flat flank: the film shares the load with the model).
+// `fidelity`: the run's, for the refusal. Built into `model`, with the lap "statistical_surface_table".
+void build_rolled_flanks_model(const FidelityInputs& in, const FlankSpan& span, const RollingFlanks& flanks,
+                               std::string_view fidelity, StageClock& clock, std::optional<SurfaceModel>& model);
+// The statistical model beside a rolling fidelity: its series (prefixed statistical_) in
+// /statistical, its surface, plasticity index, asperity model and warnings ("statistical model: ").
+void write_statistical_beside(const FidelityInputs& in, const SurfaceModel& model, const StatisticalSolution& s,
+                              MeshContactResult& r);
+// The path's points A, B, C, D, E at their nearest positions ("" elsewhere).
+std::vector<std::string> path_point_names(const PathState& p);
+// The positions whose profiles are kept (contact.pressure_profiles: the named points, all or none).
+std::vector<bool> kept_profiles(const ContactSettings& cs, const PathState& p);
 
 // What a deterministic run will take, estimated from its sizes alone (before any flank is made or
 // strip solved), from measured per-unit costs (docs/reference/performance.md#budgets).
