@@ -268,9 +268,26 @@ def _dataset(coordinate: str, series: Iterable[tuple[str, str, np.ndarray, str]]
 
 
 # The result's per-position groups (geartrib run's /mesh, /contact, /contact/validity,
-# /lubrication, /statistical) and its parts over other dimensions.
-_GROUPS = ("mesh", "contact", "validity", "lubrication", "statistical")
-_PARTS = _GROUPS + ("pressure_profiles", "running_in")
+# /lubrication, /statistical, /mixed_ehl) and its parts over other dimensions.
+_GROUPS = ("mesh", "contact", "validity", "lubrication", "statistical", "mixed_ehl")
+_PARTS = _GROUPS + ("pressure_profiles", "running_in", "mixed_ehl_profiles", "mixed_ehl_summary")
+
+
+def _mixed_ehl_parts(r: dict):
+    """A mixed-EHL run's profiles through the contact as (name, unit, dims, values, group) variables
+    and (name, unit, dims, values) coordinates: each kept position k on its own nodes
+    ``mixed_ehl_x_m_<k>`` (its grid spans its own contact), ``mixed_ehl_<instant>_<quantity>_<k>``
+    for the instants peak and middle; nothing for the other fidelities."""
+    variables, coords = [], []
+    units = {"pressure_Pa": "Pa", "film_m": "m", "shear_Pa": "Pa", "state": "1"}
+    for p in r.get("mixed_ehl_profiles", []):
+        k = p["position"]
+        dim = f"mixed_ehl_x_m_{k}"
+        coords.append((dim, "m", (dim,), p["x_m"]))
+        for instant in ("peak", "middle"):
+            for q, unit in units.items():
+                variables.append((f"mixed_ehl_{instant}_{q}_{k}", unit, (dim,), p[f"{instant}_{q}"], "mixed_ehl"))
+    return variables, coords
 
 
 def _deterministic_parts(r: dict):
@@ -324,7 +341,11 @@ def run(case=None, *, positions: int | None = None, as_dict: bool = False):
     ``running_in_{pinion,wheel}_arc_m`` (along the active flank from its root end) and attrs
     ``running_in.*`` (teeth, meshes, shakedown_mesh, tolerance_m, profile spacings). Flanks
     synthesised from a measured patch are recorded as attrs ``synthesis.<gear>.*`` (the file's
-    ``/synthesis/<gear>``). As a dict the same names hold the same arrays (``attrs["running_in"]``,
+    ``/synthesis/<gear>``). A mixed-EHL run (``contact.fidelity = "mixed_ehl"``) adds its windows'
+    series (group mixed_ehl, ``ehl_*`` over ``s_m``), the statistical model beside it, its summary
+    as attrs ``mixed_ehl.*`` (the file's ``/mixed_ehl`` attributes) and the profiles through the
+    contact kept as ``mixed_ehl_<peak|middle>_<pressure_Pa|film_m|shear_Pa|state>_<k>`` over
+    ``mixed_ehl_x_m_<k>`` (k: the position's index). As a dict the same names hold the same arrays (``attrs["running_in"]``,
     ``attrs["synthesis"]`` dicts)."""
     case = _as_case(case)
     if positions is not None:
@@ -332,9 +353,14 @@ def run(case=None, *, positions: int | None = None, as_dict: bool = False):
     r = _core.run(case.loaded)
     series = [(n, u, v, group) for group in _GROUPS for n, u, v in r.get(group, [])]
     variables, coords, running_in = _deterministic_parts(r)
+    ehl_variables, ehl_coords = _mixed_ehl_parts(r)
+    variables += ehl_variables
+    coords += ehl_coords
     attrs = {k: v for k, v in r.items() if k not in _PARTS}
     if running_in:
         attrs["running_in"] = running_in
+    if "mixed_ehl_summary" in r:
+        attrs["mixed_ehl"] = r["mixed_ehl_summary"]
     attrs["case"] = repr(case)
     attrs["version"] = __version__
     if not (as_dict or _xarray() is None):  # netCDF-style attrs: flatten the nested ones

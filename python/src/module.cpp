@@ -117,6 +117,31 @@ py::dict result_dict(const contact::MeshContactResult& r) {
     profiles.append(q);
   }
   d["pressure_profiles"] = profiles;
+  // Mixed-EHL runs: the windows' series, the profiles through the contact kept, the summary.
+  d["mixed_ehl"] = series_list(r.mixed_ehl);
+  py::list ehl_profiles;
+  for (const auto& p : r.ehl_profiles) {
+    py::dict q;
+    q["position"] = p.position;
+    q["point"] = p.point;
+    q["s_m"] = p.s;
+    q["x_m"] = to_array(p.x);
+    for (const auto& [name, at] : {std::pair{"peak", &p.peak}, std::pair{"middle", &p.middle}}) {
+      const std::string k = name;
+      q[py::str(k + "_time_s")] = at->time;
+      q[py::str(k + "_pressure_Pa")] = to_array(at->pressure);
+      q[py::str(k + "_film_m")] = to_array(at->film);
+      q[py::str(k + "_shear_Pa")] = to_array(at->shear);
+      q[py::str(k + "_state")] = to_array(at->state);
+    }
+    ehl_profiles.append(q);
+  }
+  d["mixed_ehl_profiles"] = ehl_profiles;
+  if (r.mixed_ehl_summary) {
+    py::dict q;
+    add_summary(q, contact::mixed_ehl_summary(*r.mixed_ehl_summary));
+    d["mixed_ehl_summary"] = q;
+  }
   if (r.running_in) {
     const auto& ri = *r.running_in;
     py::dict q;

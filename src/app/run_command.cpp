@@ -48,7 +48,7 @@ void print_summary(const contact::MeshContactResult& r) {
       r.asperity_model, r.fidelity);
   fmt::print("{:<30} {:>6} {:>12} {:>9} {:>3} {:>12} {:>9} {:>3}\n", "quantity", "unit", "min", "at s mm", "", "max",
              "at s mm", "");
-  for (const auto* group : {&r.mesh, &r.contact, &r.lubrication, &r.statistical})
+  for (const auto* group : {&r.mesh, &r.contact, &r.lubrication, &r.statistical, &r.mixed_ehl})
     for (const auto& q : *group) {
       if (q.name == "s_m" || q.name == "ehl_regime" || q.name.rfind("flag_", 0) == 0) continue;
       std::size_t lo = 0, hi = 0;
@@ -92,6 +92,21 @@ void print_summary(const contact::MeshContactResult& r) {
       fmt::print(
           "Scuffing (flash-temperature method): safety S_B {:.3g} (ISO/TS 6336-20), {:.3g} (Blok, local friction)\n",
           l.iso_scuffing_safety, l.scuffing_safety);
+  }
+  if (r.mixed_ehl_summary) {
+    const auto& m = *r.mixed_ehl_summary;
+    fmt::print(
+        "Mixed EHL: nodes of {:.4g} um (up to {:.0f}), windows of {:g} contact widths at Courant {:g}, {} viscosity, {} "
+        "flow; {:.0f} time steps in {:.3g} s of windows (summed over threads){}\n",
+        m.grid_spacing * 1e6, m.nodes_max, m.window, m.time_step, m.viscosity_law, m.flow, m.steps, m.window_seconds,
+        m.whole_path > 0.0
+            ? fmt::format("; the whole path: {:.0f} time steps in {:.3g} s", m.whole_path_steps, m.whole_path_seconds)
+            : std::string());
+    fmt::print(
+        "Mixed EHL along the path: least film {:.4g} um, asperity share up to {:.3g} (path mean {:.3g}), peak pressure "
+        "up to {:.4g} GPa, friction (path mean) {:.4f}, flash temperature up to {:.4g} K, load error at most {:.2g}\n",
+        m.min_film * 1e6, m.max_asperity_share, m.mean_asperity_share, m.max_peak_pressure * 1e-9, m.mean_friction,
+        m.max_flash_temperature, m.max_load_error);
   }
   if (r.running_in) {
     const auto& ri = *r.running_in;

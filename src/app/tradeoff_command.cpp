@@ -81,6 +81,23 @@ void limit_to_profile_spacing(const Case& c, Knob& elements) {
   }
 }
 
+// A grid not coarser than the flanks' profile spacing (the mixed-EHL case's rule): the ladder's
+// settings that respect it, and the spacing itself as the coarsest when the ladder starts finer.
+void limit_to_grid_spacing(const Case& c, Knob& grid) {
+  const double coarsest = runs::coarsest_grid_spacing(c);
+  if (!(coarsest > 0.0)) return;
+  std::erase_if(grid.settings, [&](const Setting& s) {
+    return io::parse_quantity(s.label, io::Dimension::length) > coarsest * (1.0 + 1e-9);
+  });
+  const bool on_ladder = !grid.settings.empty() && io::parse_quantity(grid.settings.front().label,
+                                                                      io::Dimension::length) >= coarsest * (1.0 - 1e-9);
+  if (!on_ladder) {
+    // Written to 1e-6 um, rounded down: the setting is never coarser than the spacing.
+    const std::string v = fmt::format("{:.12g} um", std::floor(coarsest * 1e12 * (1.0 + 1e-12)) * 1e-6);
+    grid.settings.insert(grid.settings.begin(), {v, {{"mixed_ehl.grid_spacing", v}}});
+  }
+}
+
 // The fidelities of the case's family (contact/fidelities.hpp), each with its settings.
 Knob fidelity_knob(const contact::FidelityEntry& own) {
   Knob fidelity{"fidelity", {}, false};
@@ -135,6 +152,7 @@ std::vector<Knob> knobs_of(const Case& c) {
     if (!k.key.empty()) {
       out.push_back(ladder(k.name, k.key));
       if (k.key == "contact.element_size") limit_to_profile_spacing(c, out.back());
+      if (k.key == "mixed_ehl.grid_spacing") limit_to_grid_spacing(c, out.back());
     } else if (k.name == "fidelity") {
       out.push_back(fidelity_knob(entry));
     } else if (k.name == "dynamics" || k.name == "integrator") {
@@ -369,7 +387,10 @@ void add_tradeoff_command(CLI::App& app) {
       "A deterministic case (contact.fidelity = deterministic) has its own knobs: positions, element_size\n"
       "(boundary-element width) and strip_halfwidths (the strip's reach in Hertz half-widths), compared on\n"
       "the real-area ratio, the plastic area fraction and the von Mises maximum below the strip (set\n"
-      "threads=1 for one core's times). The multi-asperity study's boundary-element grid: `geartrib_bench\n"
+      "threads=1 for one core's times). A mixed-EHL case (contact.fidelity = mixed_ehl): positions,\n"
+      "grid_spacing (not coarser than the flanks' profiles), window, time_step and tolerance, compared on\n"
+      "the asperity contact's area ratio and plastic fraction within the film and the von Mises maximum.\n"
+      "The multi-asperity study's boundary-element grid: `geartrib_bench\n"
       "--benchmark_filter=multi_asperity` (docs/reference/timings.md).");
   add_case_argument(cmd, o->case_options);
   add_output_option(cmd, o->table.output,

@@ -373,10 +373,11 @@ void read_flank(TomlReader& r, Case& c, int gear) {
               "a smooth profile has no roughness for the statistical model: only contact.fidelity = "
               "\"deterministic\" takes it");
         if (c.lubrication.lubricated)
-          throw std::invalid_argument(
-              "a lubricated deterministic run takes the film's share of the load from the flanks' statistics, "
-              "which a smooth profile has none of: give the flank a rough profile (ground or hobbed), or run the "
-              "case dry (lubricant = none)");
+          throw std::invalid_argument(fmt::format(
+              "a lubricated {} run takes the film's share of the load from the flanks' statistics, which a smooth "
+              "profile has none of: give the flank a rough profile (ground or hobbed), or run the case dry "
+              "(lubricant = none)",
+              c.contact.fidelity.name()));
         rough.m0 = rough.m2 = rough.m4 = 0.0;  // no statistics: the deterministic run skips the statistical model
       }
     } catch (const core::KeyedError& e) {
@@ -673,6 +674,10 @@ Case load_case_from(TomlReader& r, const std::vector<CaseChange>& changes, unsig
       if (std::find(c.warnings.begin(), c.warnings.end(), w) == c.warnings.end()) c.warnings.push_back(std::move(w));
   }
   if (r.has("lubricant")) read_lubrication(r, c);
+  // A fidelity that solves the lubricant's film refuses a dry case.
+  if (const std::string rule = contact::dry_case_rule(contact::find_fidelity(c.contact.fidelity));
+      !rule.empty() && !c.lubrication.lubricated)
+    r.fail("contact.fidelity", rule);
   if (r.is_string("asperity.cylinder.yield_constant")) {
     // green-2005: Green's plane-strain C_L(nu) of the softer body.
     c.asperity.cylinder_yield_constant =

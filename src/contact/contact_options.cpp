@@ -15,6 +15,7 @@ void ContactSettings::validate() const {
   core::validate_member("greenwood_williamson", greenwood_williamson);
   core::validate_member("strip", strip);
   core::validate_member("boundary_elements", boundary_elements);
+  core::validate_member("mixed_ehl", mixed_ehl);
 }
 
 }  // namespace geartrib

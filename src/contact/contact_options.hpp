@@ -4,6 +4,7 @@
 
 #include "contact/deterministic_contact.hpp"
 #include "contact/greenwood_williamson.hpp"
+#include "contact/mixed_ehl/mixed_ehl_options.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "core/named_choices.hpp"
 
@@ -23,7 +24,7 @@ class ContactFidelity {
   constexpr std::string_view name() const { return name_; }
   friend constexpr bool operator==(ContactFidelity a, ContactFidelity b) { return a.name_ == b.name_; }
   // The built-in ones, for code and tests that name them.
-  static const ContactFidelity uncoupled, coupled, deterministic;
+  static const ContactFidelity uncoupled, coupled, deterministic, mixed_ehl;
 
  private:
   std::string_view name_ = "uncoupled";
@@ -31,9 +32,10 @@ class ContactFidelity {
 inline constexpr ContactFidelity ContactFidelity::uncoupled{"uncoupled"};
 inline constexpr ContactFidelity ContactFidelity::coupled{"coupled"};
 inline constexpr ContactFidelity ContactFidelity::deterministic{"deterministic"};
+inline constexpr ContactFidelity ContactFidelity::mixed_ehl{"mixed_ehl"};
 
-// Which pressure profiles a deterministic run keeps: at the path's points A, B, C, D, E, at
-// every position, or none.
+// Which pressure profiles a deterministic or mixed-EHL run keeps: at the path's points A, B, C, D,
+// E, at every position, or none.
 enum class PressureProfiles { points, all, none };
 
 // The mesh-cycle contact run: fidelity, the outputs asked for, the run's own knobs, and the
@@ -58,8 +60,11 @@ struct ContactSettings {
   contact::DeterministicOptions boundary_elements;
   PressureProfiles pressure_profiles = PressureProfiles::points;
   int threads = 0;
+  // Mixed EHL: the grid, the transient window and the line solver (the pressure profiles kept and
+  // the threads as above).
+  contact::mixed_ehl::MixedEhlOptions mixed_ehl;
   // The option structs' validate(): throws core::KeyedError naming the field by its path from here
-  // ("strip.strip_points", "boundary_elements.element_size").
+  // ("strip.strip_points", "boundary_elements.element_size", "mixed_ehl.solver.tolerance").
   void validate() const;
 };
 

@@ -5,6 +5,7 @@
 
 #include "contact/deterministic/mesh_deterministic.hpp"
 #include "contact/fidelity_registry.hpp"
+#include "contact/mixed_ehl/mesh_mixed_ehl.hpp"
 #include "contact/statistical/strip_fidelities.hpp"
 
 #include <string>
@@ -13,7 +14,8 @@
 
 namespace geartrib::contact {
 
-using FidelityList = std::tuple<statistical::Uncoupled, statistical::Coupled, deterministic::BoundaryElements>;
+using FidelityList =
+    std::tuple<statistical::Uncoupled, statistical::Coupled, deterministic::BoundaryElements, mixed_ehl::MixedEhl>;
 
 template <class Fidelity>
 struct FidelityTag {

@@ -7,6 +7,8 @@
 //                                                          // statistical model the film shares the load with (or null)
 //   struct Solution;
 //   static Solution solve(const FidelityInputs&, State&, const std::vector<double>& asperity_share, StageClock&);
+//                                                          // (FidelityInputs::film: the lubricated stage, when
+//                                                          lubricated)
 //   static void write(const FidelityInputs&, State&, Solution&, MeshContactResult&);  // its outputs
 // The mesh cycle (contact/mesh_contact.cpp) runs: the path, prepare, the film (lubricated), solve,
 // friction/temperatures/wear, the outputs.
@@ -28,6 +30,8 @@ namespace geartrib::contact {
 
 // The stages' timings, lap by lap (contact/stage_clock.hpp, internal).
 struct StageClock;
+// The lubricated stage (contact/mesh_lubrication.hpp).
+class MeshLubrication;
 
 // A fidelity's typed inputs: the path stage's state and the options that concern the contact.
 struct FidelityInputs {
@@ -40,6 +44,9 @@ struct FidelityInputs {
   const NonlinearSolver* solver = nullptr;  // for a fidelity that needs one
   const FlankSource& flank_source;          // for a fidelity that rolls the flanks' profiles
   const std::function<void(int, int)>& progress;
+  // Lubricated runs: the film stage (its oil at the flanks' bulk temperature, the flanks' thermal
+  // contact coefficients), set once it is built, before solve(); nullptr when dry or in prepare().
+  const MeshLubrication* film = nullptr;
 };
 
 }  // namespace geartrib::contact

@@ -2,6 +2,8 @@
 
 #include "contact/fidelities.hpp"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
 
 namespace geartrib::contact {
@@ -22,6 +24,14 @@ const FidelityEntry& find_fidelity(std::string_view name) {
     known += (known.empty() ? "" : ", ") + std::string(e.name);
   }
   throw std::invalid_argument("unknown contact fidelity '" + std::string(name) + "' (known: " + known + ")");
+}
+
+std::string dry_case_rule(const FidelityEntry& f) {
+  if (!f.traits.needs.lubricant) return "";
+  return fmt::format(
+      "\"{}\" solves the lubricant's film between the flanks, and the case is dry: give a [lubricant] (its file, or "
+      "its data) and operating.oil_temperature, or choose a dry fidelity (deterministic, uncoupled, coupled)",
+      f.name);
 }
 
 std::vector<std::string> fidelity_names() {

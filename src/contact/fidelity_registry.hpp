@@ -29,6 +29,7 @@ struct OutputGroup {
 struct FidelityNeeds {
   bool nonlinear_solver = false;  // a nonlinear solver (KINSOL) for its strips
   bool flank_profiles = false;    // the flanks' profiles along the involute (FlankSource)
+  bool lubricant = false;         // a lubricated case (its film stage, FidelityInputs::film): a dry one is refused
 };
 
 struct FidelityTraits {
@@ -56,6 +57,9 @@ const FidelityEntry& find_fidelity(std::string_view name);
 inline const FidelityEntry& find_fidelity(ContactFidelity f) { return find_fidelity(f.name()); }
 // The fidelity rolls the flanks' profiles (the deterministic one): a run of it reads their lines.
 inline bool rolls_flank_profiles(ContactFidelity f) { return find_fidelity(f).traits.needs.flank_profiles; }
+// The refusal of a dry case by a fidelity that needs a lubricant ("" when it needs none): the rule
+// the case loader and the mesh cycle state at contact.fidelity.
+std::string dry_case_rule(const FidelityEntry& f);
 std::vector<std::string> fidelity_names();
 // "name: description; name: description; ..." (the case table's documentation).
 std::string fidelity_descriptions();

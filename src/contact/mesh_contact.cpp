@@ -79,7 +79,7 @@ void add_lubrication_outputs(LubricationResult& l, const FidelityTraits& traits,
 // temperatures and wear, and the outputs of each.
 template <class F>
 void run_stages(const MeshCycleInputs& in, const PathState& path, StageClock& clock, MeshContactResult& r) {
-  const FidelityInputs fi{
+  FidelityInputs fi{
       in.mesh,         path,       in.contact, in.running_in, in.flanks, in.lubrication != nullptr, in.solver,
       in.flank_source, in.progress};
   typename F::State state = F::prepare(fi, clock);
@@ -89,6 +89,7 @@ void run_stages(const MeshCycleInputs& in, const PathState& path, StageClock& cl
     lubricated.emplace(LubricationInputs{*in.lubrication, in.operating}, in.mesh, path, *state.surface());
     share = lubricated->asperity_shares();
     clock.lap("film_and_load_sharing");
+    fi.film = &*lubricated;
   }
   typename F::Solution solution = F::solve(fi, state, share, clock);
   std::optional<LubricationResult> lubrication;

@@ -87,6 +87,45 @@ struct PressureProfile {
   std::vector<double> x, pressure;  // across the strip [m], [Pa]
 };
 
+// A mixed-EHL run's film and pressure through the contact at one position kept, at two instants
+// of its transient window: that of its highest peak pressure and the window's middle.
+struct EhlProfile {
+  int position = 0;       // index along the path (0 at A)
+  std::string point;      // the path's point it stands for (A, B, C, D, E) or empty
+  double s = 0.0;         // [m] from T1
+  std::vector<double> x;  // the nodes, x along the rolling direction from the contact point [m]
+  struct Instant {
+    double time = 0.0;  // since the window's start [s]
+    // Per node: p [Pa], h [m], the slower surface's shear stress (film, and the boundary friction
+    // in contact) [Pa], and the node's state (0 fluid, 1 cavitated, 2 asperity contact).
+    std::vector<double> pressure, film, shear, state;
+  };
+  Instant peak, middle;
+};
+
+// A mixed-EHL run's settings as run, its cost and the path's extremes (/mixed_ehl's attributes).
+struct MixedEhlSummary {
+  std::string viscosity_law, flow;
+  double compressible = 1.0;
+  double grid_spacing = 0.0;  // as run (the automatic one when not given) [m]
+  double nodes_max = 0.0;     // at the largest contact
+  double window = 0.0, time_step = 0.0, tolerance = 0.0, inlet = 0.0, outlet = 0.0;
+  double film_floor = 0.0, boundary_friction = 0.0, hardness = 0.0;
+  double eta = 0.0, alpha = 0.0, eyring_stress = 0.0, limiting_shear_coefficient = 0.0;  // the oil as run
+  double steps = 0.0;                                                                    // time steps of all windows
+  double window_seconds = 0.0;                                 // their wall time, summed over the threads' windows [s]
+  double transform_seconds = 0.0;                              // of which in the solver's FFTs [s]
+  double min_film = 0.0;                                       // the least film over every window [m]
+  double max_asperity_share = 0.0, mean_asperity_share = 0.0;  // largest instant; path mean of the time means
+  double max_peak_pressure = 0.0;                              // [Pa]
+  double mean_friction = 0.0;                                  // path mean of the time means
+  double max_flash_temperature = 0.0;                          // [K]
+  double max_von_mises = 0.0;                                  // [Pa]
+  double max_load_error = 0.0;                                 // the largest |integral of p - w|/w over every instant
+  double whole_path = 0.0;                                     // 1: the path solved transiently A -> E as well
+  double whole_path_steps = 0.0, whole_path_seconds = 0.0;
+};
+
 // Running-in (deterministic): the history over the meshes (one entry per mesh of the pair, or per
 // pinion revolution in the hunting order) and the flanks' profiles before and after.
 struct RunningInResult {
@@ -132,8 +171,13 @@ struct MeshContactResult {
   std::vector<PressureProfile> pressure_profiles;
   std::optional<RunningInResult> running_in;
   std::vector<FlankSynthesis> synthesis;  // flanks synthesised from a measured patch
-  std::string regime;                     // "elastic", "elastic-plastic" or "fully plastic"
-  std::string verdict;                    // one paragraph: the regime and every validity rule broken, and where
+  // Mixed-EHL runs: its per-position series (/mixed_ehl), the film and pressure profiles kept and
+  // its summary.
+  std::vector<Series> mixed_ehl;
+  std::vector<EhlProfile> ehl_profiles;
+  std::optional<MixedEhlSummary> mixed_ehl_summary;
+  std::string regime;   // "elastic", "elastic-plastic" or "fully plastic"
+  std::string verdict;  // one paragraph: the regime and every validity rule broken, and where
   struct FlagCount {
     std::string name;
     int positions = 0;
@@ -147,10 +191,10 @@ struct MeshContactResult {
   std::string fidelity;
   // Findings that make a result doubtful (e.g. a real area larger than the nominal one).
   std::vector<std::string> warnings;
-  const Series* find(const std::string& name) const;  // in mesh, contact, validity, lubrication; nullptr if absent
+  const Series* find(const std::string& name) const;  // in every group of groups(); nullptr if absent
   // Every per-position group, in the order of the CSV columns and of find().
-  std::array<const std::vector<Series>*, 5> groups() const {
-    return {&mesh, &contact, &validity, &lubrication, &statistical};
+  std::array<const std::vector<Series>*, 6> groups() const {
+    return {&mesh, &contact, &validity, &lubrication, &statistical, &mixed_ehl};
   }
 };
 

@@ -55,6 +55,10 @@ class MeshLubrication {
   std::vector<double> asperity_shares() const;
   // Friction, temperatures, wear and losses, the summary, the verdict's text and the warnings.
   LubricationResult finish();
+  // The oil at the flanks' bulk temperature, as the film and the load sharing take it.
+  const lubrication::OilState& bulk_oil() const { return oil_at_bulk_; }
+  // The flanks' thermal contact coefficients B = sqrt(k rho c) (0: pinion, 1: wheel) [W s^0.5/(m^2 K)].
+  double thermal_contact_coefficient(int gear) const { return thermal_coefficient_[gear]; }
 
   // One position's lubricated state (SI); film() fills the film and the shares, rest() the rest.
   // Each field is one /lubrication series.

@@ -119,6 +119,42 @@ Summary lubrication_summary(const LubricationSummary& l) {
   return s;
 }
 
+Summary mixed_ehl_summary(const MixedEhlSummary& m) {
+  Summary s{{{"viscosity_law", m.viscosity_law}, {"flow", m.flow}},
+            {{"compressible", "1", m.compressible},
+             {"grid_spacing_m", "m", m.grid_spacing},
+             {"nodes_max", "1", m.nodes_max},
+             {"inlet_halfwidths", "1", m.inlet},
+             {"outlet_halfwidths", "1", m.outlet},
+             {"window_contact_widths", "1", m.window},
+             {"time_step_courant", "1", m.time_step},
+             {"tolerance", "1", m.tolerance},
+             {"film_floor_m", "m", m.film_floor},
+             {"boundary_friction", "1", m.boundary_friction},
+             {"hardness_Pa", "Pa", m.hardness},
+             {"dynamic_viscosity_Pa_s", "Pa s", m.eta},
+             {"pressure_viscosity_per_Pa", "1/Pa", m.alpha},
+             {"eyring_stress_Pa", "Pa", m.eyring_stress},
+             {"limiting_shear_coefficient", "1", m.limiting_shear_coefficient},
+             {"time_steps", "1", m.steps},
+             {"windows_seconds", "s", m.window_seconds},
+             {"windows_transform_seconds", "s", m.transform_seconds},
+             {"min_film_m", "m", m.min_film},
+             {"max_asperity_share", "1", m.max_asperity_share},
+             {"mean_asperity_share", "1", m.mean_asperity_share},
+             {"max_peak_pressure_Pa", "Pa", m.max_peak_pressure},
+             {"mean_friction_coefficient", "1", m.mean_friction},
+             {"max_flash_temperature_K", "K", m.max_flash_temperature},
+             {"max_von_mises_Pa", "Pa", m.max_von_mises},
+             {"max_load_error", "1", m.max_load_error},
+             {"whole_path", "1", m.whole_path}}};
+  if (m.whole_path > 0.0) {
+    s.values.push_back({"whole_path_time_steps", "1", m.whole_path_steps});
+    s.values.push_back({"whole_path_seconds", "s", m.whole_path_seconds});
+  }
+  return s;
+}
+
 std::vector<Series> named_point_series(const LubricationSummary& l) {
   using P = LubricationSummary::NamedPoint;
   std::vector<Series> out;

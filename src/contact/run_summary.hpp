@@ -44,6 +44,11 @@ Summary synthesis_summary(const FlankSynthesis& f);
 // ehl_regime codes; the oil, the roughness, friction, losses, temperatures, lambda, safeties
 // (/lubrication's; the safeties only with a scuffing temperature).
 Summary lubrication_summary(const LubricationSummary& l);
+// A mixed-EHL run's settings as run, its cost and the path's extremes: viscosity_law, flow; the
+// grid, window, solver and oil as run, the steps and their wall time, the least film, the largest
+// asperity share, peak pressure, flash temperature, von Mises stress and load error, the path
+// means of the asperity share and friction, and the whole path's solve (/mixed_ehl's).
+Summary mixed_ehl_summary(const MixedEhlSummary& m);
 // The named points' values as series over the points (in the order of l.points; the names are
 // l.points[i].name): /lubrication/points in HDF5, the Python module's table.
 std::vector<Series> named_point_series(const LubricationSummary& l);

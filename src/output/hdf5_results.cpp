@@ -86,6 +86,37 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
       summary_attributes(g, contact::synthesis_summary(f));
     }
   }
+  if (r.mixed_ehl_summary) {
+    // Mixed EHL: the windows' series, the run's summary and the profiles through the contact kept.
+    Handle group(H5Gcreate2(file, "/mixed_ehl", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /mixed_ehl");
+    string_attribute(group, "meaning", std::string(contact::group_description(r.fidelity, "/mixed_ehl")));
+    for (const auto& s : r.mixed_ehl) hdf5::number_dataset(group, s.name, s.values, s.unit);
+    summary_attributes(group, contact::mixed_ehl_summary(*r.mixed_ehl_summary));
+    if (!r.ehl_profiles.empty()) {
+      Handle profiles(H5Gcreate2(group, "profiles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                      "group /mixed_ehl/profiles");
+      string_attribute(profiles, "meaning",
+                       std::string(contact::group_description(r.fidelity, "/mixed_ehl/profiles")) +
+                           "; state: 0 fluid, 1 cavitated, 2 asperity contact");
+      for (const auto& p : r.ehl_profiles) {
+        const std::string name = "position_" + std::to_string(p.position);
+        Handle g(H5Gcreate2(profiles, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                 "group /mixed_ehl/profiles/" + name);
+        number_attribute(g, "s_m", p.s);
+        number_attribute(g, "position", p.position);
+        if (!p.point.empty()) string_attribute(g, "point", p.point);
+        hdf5::number_dataset(g, "x_m", p.x, "m");
+        for (const auto& [instant, q] : {std::pair{"peak", &p.peak}, std::pair{"middle", &p.middle}}) {
+          const std::string at = instant;
+          number_attribute(g, at + "_time_s", q->time);
+          hdf5::number_dataset(g, at + "_pressure_Pa", q->pressure, "Pa");
+          hdf5::number_dataset(g, at + "_film_m", q->film, "m");
+          hdf5::number_dataset(g, at + "_shear_Pa", q->shear, "Pa");
+          hdf5::number_dataset(g, at + "_state", q->state, "1");
+        }
+      }
+    }
+  }
   if (r.lubrication_summary) {
     const auto& l = *r.lubrication_summary;
     Handle lub(H5Gcreate2(file, "/lubrication", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /lubrication");

@@ -192,7 +192,7 @@ void check_running_in_step(const Case& c, const contact::FlankSpan& span, PathHa
                                                most)));
 }
 
-// One gear's flank as the deterministic run reads it: the stretch it needs and why.
+// One gear's flank as a rolling fidelity reads it: the stretch it needs and why.
 struct FlankRead {
   const Case& c;
   const contact::FlankSpan& span;
@@ -202,11 +202,23 @@ struct FlankRead {
   const surface::FlankSpec& flank;
   double needed = 0.0;
   std::string why_needed;
+  bool grid() const { return span.reader == contact::FlankSpan::Reader::grid; }
+  // What reads the flank, for the messages.
+  const char* reader() const { return grid() ? "mixed-EHL contact" : "deterministic contact"; }
 };
 
 // The elements average the profile: finer elements than its spacing resolve only the
 // interpolation between its points.
+// The mixed-EHL grid samples it at its nodes: a grid coarser than its spacing would skip its points
+// (0: the automatic grid, which the fidelity keeps at most at the profiles' spacing).
 void check_spacing(const FlankRead& f, double spacing, const std::string& where) {
+  if (f.grid()) {
+    if (f.span.element_size <= spacing * (1.0 + 1e-9)) return;
+    throw io::located_error(f.c, "mixed_ehl.grid_spacing", um(f.span.element_size),
+                            fmt::format("coarser than the {} spacing of {} ({}): the nodes would skip the profile's "
+                                        "points between them; use a spacing of at most {} (or 0: automatic)",
+                                        um(spacing), where, f.gear, um(spacing)));
+  }
   if (f.span.element_size >= spacing * (1.0 - 1e-9)) return;
   throw io::located_error(f.c, "contact.element_size", um(f.span.element_size),
                           fmt::format("finer than the {} spacing of {} ({}): the elements would resolve the "
@@ -219,6 +231,14 @@ void check_spacing(const FlankRead& f, double spacing, const std::string& where)
 void check_generated_stretch(const FlankRead& f, const std::string& what) {
   const contact::FlankSpan& span = f.span;
   if (span.first[f.g] >= span.generated_first[f.g] && span.last[f.g] <= span.generated_last[f.g]) return;
+  if (f.grid())
+    throw io::located_error(
+        f.c, "mixed_ehl.window", fmt::format("{:g}", f.c.contact.mixed_ehl.window),
+        fmt::format("the grid and the windows reach {} before and {} beyond the {}'s active flank, past the {}'s ends "
+                    "(a module below the base circle and beyond the tip): a shorter window, or a shorter domain "
+                    "(mixed_ehl.inlet, mixed_ehl.outlet)",
+                    mm(span.active_first[f.g] - span.first[f.g]), mm(span.last[f.g] - span.active_last[f.g]), f.gear,
+                    what));
   throw io::located_error(f.c, "contact.strip_halfwidths",
                           fmt::format("{:g}", f.c.contact.boundary_elements.strip_halfwidths),
                           fmt::format("the strip reaches {} beyond the {}'s active flank, past the {}'s end a "
@@ -267,9 +287,9 @@ void synthesised_tracks(const FlankRead& f, std::vector<contact::FlankTrack>& tr
     if (given && (start > span.first[g] || start + s.profile.length() < span.last[g])) {
       throw io::located_error(f.c, t + "synthesis_length", mm(topo.synthesis_length),
                               fmt::format("the synthesised profile, centred on the {}'s active flank, must cover the "
-                                          "{} the deterministic contact reads ({}); give at least that, or 0 (a "
+                                          "{} the {} reads ({}); give at least that, or 0 (a "
                                           "module below the base circle to a module beyond the tip)",
-                                          f.gear, mm(f.needed), f.why_needed));
+                                          f.gear, mm(f.needed), f.reader(), f.why_needed));
     }
     if (tooth == 0) {
       record.profile_length = s.profile.length();
@@ -297,11 +317,11 @@ void measured_tracks(const FlankRead& f, std::vector<contact::FlankTrack>& track
   check_spacing(f, profile_spacing(f.flank), "the profile of " + file);
   if (p.length() < f.needed) {
     throw io::located_error(f.c, key, file,
-                            fmt::format("its profile along {} is {} long; the deterministic contact reads {} of it "
+                            fmt::format("its profile along {} is {} long; the {} reads {} of it "
                                         "({}): give a trace of the whole flank (profile_axis, resample), "
                                         "synthesise one from its spectrum (synthesis = \"psd\" or \"iaaft\" in "
                                         "[{}.flank.topography]) or give a generated [{}.flank.profile]",
-                                        axis, mm(p.length()), mm(f.needed), f.why_needed, f.gear, f.gear));
+                                        axis, mm(p.length()), f.reader(), mm(f.needed), f.why_needed, f.gear, f.gear));
   }
   const double start = span.centred_start(g, p.length());
   if (start > span.first[g] || start + p.length() < span.last[g]) {
@@ -337,9 +357,10 @@ void generated_tracks(const FlankRead& f, std::vector<contact::FlankTrack>& trac
   }
 }
 
-// The deterministic fidelity's flanks: each gear's measured profile (its topography's line along
-// the involute), one synthesised from the topography's spectrum, or a generated one, checked against
-// the stretch of flank the run reads and the element size. Hunting order: a generated or synthesised
+// A rolling fidelity's flanks (deterministic, mixed EHL): each gear's measured profile (its
+// topography's line along the involute), one synthesised from the topography's spectrum, or a
+// generated one, checked against the stretch of flank the run reads and the element size (the
+// mixed-EHL grid's spacing). Hunting order: a generated or synthesised
 // profile per tooth (seed + tooth); a measured one is every tooth's. `synthesis`: what each
 // synthesised flank came from; `half_widths`: the path's, for the advice on positions.
 contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& span, const int teeth[2],
@@ -348,17 +369,22 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
   check_running_in_step(c, span, half_widths);
   for (int g = 0; g < 2; ++g) {
     const std::string gear = g == 0 ? "pinion" : "wheel";
-    const FlankRead f{c,
-                      span,
-                      g,
-                      teeth[g],
-                      gear,
-                      (g == 0 ? c.pinion : c.wheel).flank,
-                      span.length(g),
-                      fmt::format("the contact point rolls {} along the {}'s active flank and the strip reaches {} "
-                                  "either side",
-                                  mm(span.active_last[g] - span.active_first[g]), gear,
-                                  mm(span.strip_half_length + 2.0 * span.element_size))};
+    const std::string rolls = mm(span.active_last[g] - span.active_first[g]);
+    const FlankRead f{
+        c,
+        span,
+        g,
+        teeth[g],
+        gear,
+        (g == 0 ? c.pinion : c.wheel).flank,
+        span.length(g),
+        span.reader == contact::FlankSpan::Reader::grid
+            ? fmt::format(
+                  "the contact point rolls {} along the {}'s active flank and the grid and the windows reach {} "
+                  "before it and {} beyond",
+                  rolls, gear, mm(span.active_first[g] - span.first[g]), mm(span.last[g] - span.active_last[g]))
+            : fmt::format("the contact point rolls {} along the {}'s active flank and the strip reaches {} either side",
+                          rolls, gear, mm(span.strip_half_length + 2.0 * span.element_size))};
     auto& tracks = g == 0 ? out.pinion : out.wheel;
     const surface::TopographySpec* topo = f.flank.topography ? &*f.flank.topography : nullptr;
     if (topo && topo->synthesis != surface::SynthesisMethod::none) {
@@ -369,10 +395,11 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
       generated_tracks(f, tracks);
     } else {
       const auto [where, line] = io::location_of(c, "contact.fidelity");
-      throw io::InputError(where, line, gear + ".flank", "",
-                           "the deterministic fidelity rolls each flank's profile: give [" + gear +
-                               ".flank.profile] (generated) or [" + gear +
-                               ".flank.topography] (a measured surface, its line along the involute)");
+      throw io::InputError(
+          where, line, gear + ".flank", "",
+          fmt::format("the {} fidelity rolls each flank's profile: give [{}.flank.profile] (generated) "
+                      "or [{}.flank.topography] (a measured surface, its line along the involute)",
+                      c.contact.fidelity.name(), gear, gear));
     }
   }
   return out;
@@ -522,6 +549,16 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
   group("/contact/validity/", r.validity, true);
   group("/lubrication/", r.lubrication, true);
   group("/statistical/", r.statistical, true);
+  group("/mixed_ehl/", r.mixed_ehl, true);
+  for (const auto& p : r.ehl_profiles) {
+    const std::string at = "/mixed_ehl/profiles/position_" + std::to_string(p.position) + "/";
+    values(at + "x_m", p.x, false);
+    for (const auto& [name, q] : {std::pair{"peak", &p.peak}, std::pair{"middle", &p.middle}}) {
+      values(at + name + "_pressure_Pa", q->pressure, false);
+      values(at + name + "_film_m", q->film, false);
+      values(at + name + "_shear_Pa", q->shear, false);
+    }
+  }
   // Every summary's values, named as the file names them (contact/run_summary.hpp).
   auto summary = [&](const std::string& group, const contact::Summary& sum) {
     for (const auto& v : sum.values) scalar(group + " attribute " + v.name, v.value);
@@ -529,6 +566,7 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
   summary("/mesh", contact::path_summary(r.path));
   summary("/meta", contact::surface_summary(r));
   summary("/contact/validity", contact::validity_summary(r));
+  if (r.mixed_ehl_summary) summary("/mixed_ehl", contact::mixed_ehl_summary(*r.mixed_ehl_summary));
   if (r.lubrication_summary) {
     summary("/lubrication", contact::lubrication_summary(*r.lubrication_summary));
     const auto& points = r.lubrication_summary->points;
@@ -594,8 +632,17 @@ double finest_element_size(const Case& c) {
   return std::max(profile_spacing(c.pinion.flank), profile_spacing(c.wheel.flank));
 }
 
+double coarsest_grid_spacing(const Case& c) {
+  const double a = profile_spacing(c.pinion.flank), b = profile_spacing(c.wheel.flank);
+  return a > 0.0 && b > 0.0 ? std::min(a, b) : std::max(a, b);
+}
+
 contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<void(int, int)>& progress) {
   check_component_rules(c);
+  // A fidelity that needs a lubricant, on a dry case (the loader refuses it; a Case changed in code).
+  if (const std::string rule = contact::dry_case_rule(contact::find_fidelity(c.contact.fidelity));
+      !rule.empty() && !c.lubrication.lubricated)
+    throw io::located_error(c, "contact.fidelity", rule);
   const gear::GearMesh mesh = gear::case_mesh(c);
   const solvers::KinsolSolver kinsol;
   const std::unique_ptr<OdeIntegrator> integrator =
@@ -607,7 +654,8 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
     const contact::FidelityNeeds needs = contact::find_fidelity(c.contact.fidelity).traits.needs;
     r = run_mesh_contact(c, mesh, needs.nonlinear_solver ? &kinsol : nullptr, progress, 0, integrator.get(),
                          [&](const contact::FlankSpan& span, const int teeth[2]) {
-                           check_budget(c, span, teeth);
+                           // The strip solves' estimate (the mixed-EHL windows have none yet).
+                           if (span.reader == contact::FlankSpan::Reader::strip) check_budget(c, span, teeth);
                            return rolling_flanks(c, span, teeth, synthesis, half_widths);
                          });
   } catch (const contact::RoughSurfaceOverload& e) {

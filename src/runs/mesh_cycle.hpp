@@ -37,5 +37,8 @@ contact::MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh&
 // profiles' spacings (generated, measured or synthesised: the elements average a profile, finer ones
 // would resolve only the interpolation between its points); 0 when neither flank has a profile.
 double finest_element_size(const Case& c);
+// The coarsest grid a mixed-EHL case's flanks allow [m]: the finer of its two flank profiles'
+// spacings (the nodes sample a profile, coarser ones would skip its points); 0 when neither has one.
+double coarsest_grid_spacing(const Case& c);
 
 }  // namespace geartrib::runs

@@ -1,12 +1,14 @@
 // The mesh-cycle contact run's keys, declared beside ContactSettings and RunningInSettings: the
 // resolutions' accessors name the physics' option fields (contact::StripOptions,
-// GreenwoodWilliamsonOptions, DeterministicOptions) held whole in ContactSettings.
+// GreenwoodWilliamsonOptions, DeterministicOptions, mixed_ehl::MixedEhlOptions) held whole in
+// ContactSettings.
 #include "config/parameters/declare.hpp"
 
 #include "asperity/model.hpp"
 #include "contact/deterministic_contact.hpp"
 #include "contact/fidelity_registry.hpp"
 #include "contact/greenwood_williamson.hpp"
+#include "contact/mixed_ehl/mixed_ehl_options.hpp"
 #include "contact/rough_line_contact.hpp"
 
 namespace geartrib::io::parameters {
@@ -136,13 +138,98 @@ void declare_contact(ParameterRows& table) {
             return std::string(p == PressureProfiles::all ? "all" : p == PressureProfiles::none ? "none" : "points");
           }))
       .doc(
-          "Deterministic: the pressure profiles kept in the HDF5 file: at the positions nearest A, B, C, D, E "
-          "(points), at every position (all) or none");
+          "Deterministic and mixed EHL: the pressure profiles kept in the HDF5 file (mixed EHL: with the film) at "
+          "the positions nearest A, B, C, D, E (points), at every position (all) or none");
   add(integer(
           "contact.threads", [](auto& c, int) -> auto& { return c.contact.threads; }))
       .range(0, 1024)
       .alias({"threads"})
-      .doc("Deterministic: threads solving the positions of a mesh (0: all cores)");
+      .doc("Deterministic and mixed EHL: threads solving the positions of a mesh (0: all cores)");
+  // [mixed_ehl]: the mixed-EHL fidelity's grid, window and line solver (contact::mixed_ehl::MixedEhlOptions).
+  using contact::mixed_ehl::MixedEhlOptions;
+  add(quantity(
+          "mixed_ehl.grid_spacing", D::length, [](auto& c, int) -> auto& { return c.contact.mixed_ehl.grid_spacing; }))
+      .range(0.0, 1e-3)
+      .field("contact.mixed_ehl.grid_spacing")
+      .ladder({"2 um", "1 um", "0.5 um", "0.25 um"})
+      .doc(
+          "Mixed EHL: the nodes' spacing at every position (its domain from -inlet to outlet Hertz half-widths); "
+          "not coarser than a flank profile's spacing (the nodes would skip its points). 0: the largest contact's "
+          "domain in 1024 nodes, or the profiles' spacing where that is finer");
+  add(number(
+          "mixed_ehl.inlet", [](auto& c, int) -> auto& { return c.contact.mixed_ehl.solver.inlet; }))
+      .range(1.5, 100.0)
+      .field("contact.mixed_ehl.solver.inlet")
+      .doc("Mixed EHL: the domain's start, this many Hertz half-widths before the contact point (the inlet)");
+  add(number(
+          "mixed_ehl.outlet", [](auto& c, int) -> auto& { return c.contact.mixed_ehl.solver.outlet; }))
+      .range(1.05, 100.0)
+      .field("contact.mixed_ehl.solver.outlet")
+      .doc("Mixed EHL: the domain's end, this many Hertz half-widths after the contact point (the outlet)");
+  add(number(
+          "mixed_ehl.window", [](auto& c, int) -> auto& { return c.contact.mixed_ehl.window; }))
+      .range(MixedEhlOptions::kMinWindow, MixedEhlOptions::kMaxWindow)
+      .field("contact.mixed_ehl.window")
+      .ladder({"1", "2", "4", "8"})
+      .doc(
+          "Mixed EHL: the transient window at each position, in contact widths 2b travelled by the slower surface "
+          "(at least 1: its roughness crosses the whole contact); the time means and extremes are over it");
+  add(number(
+          "mixed_ehl.time_step", [](auto& c, int) -> auto& { return c.contact.mixed_ehl.time_step; }))
+      .range(0.0, 100.0, true, false)
+      .field("contact.mixed_ehl.time_step")
+      .ladder({"4", "2", "1", "0.5", "0.25"})
+      .doc(
+          "Mixed EHL: the time step as a Courant number, dt = time_step x node spacing / the faster surface's speed "
+          "(the faster surface's roughness moves this many nodes a step)");
+  add(number(
+          "mixed_ehl.tolerance", [](auto& c, int) -> auto& { return c.contact.mixed_ehl.solver.tolerance; }))
+      .range(0.0, 0.1, true, true)
+      .field("contact.mixed_ehl.solver.tolerance")
+      .ladder({"1e-4", "1e-5", "1e-6", "1e-7", "1e-8"})
+      .doc(
+          "Mixed EHL: converged when the largest Newton update of the pressure is below this times the Hertz "
+          "pressure and the load within this of the line load");
+  add(named_choice(
+          "mixed_ehl.viscosity_law", contact::mixed_ehl::viscosity_law_choices(), "viscosity law",
+          [](auto& c, int) -> auto& { return c.contact.mixed_ehl.viscosity_law; }))
+      .doc(
+          "Mixed EHL: the viscosity's rise with pressure: roelands (Roelands 1966, Z from alpha) or barus "
+          "(exp(alpha p)); eta and alpha are the oil's at the flanks' bulk temperature");
+  add(named_choice(
+          "mixed_ehl.flow", contact::mixed_ehl::flow_model_choices(), "flow model",
+          [](auto& c, int) -> auto& { return c.contact.mixed_ehl.flow; }))
+      .doc(
+          "Mixed EHL: newtonian, or eyring: the Ree-Eyring Poiseuille flow factor of the mid-film shear with the "
+          "oil's Eyring stress (Conry, Wang & Cusano 1987)");
+  add(numeric(
+          "mixed_ehl.compressible", K::flag, D::dimensionless,
+          [](auto& c, int) -> auto& { return c.contact.mixed_ehl.compressible; }))
+      .field("contact.mixed_ehl.compressible")
+      .doc("Mixed EHL: the oil's density rising with pressure (Dowson & Higginson 1966); false: constant");
+  add(quantity(
+          "mixed_ehl.film_floor", D::length,
+          [](auto& c, int) -> auto& { return c.contact.mixed_ehl.solver.film_floor; }))
+      .range(0.0, 1e-6, true, false)
+      .field("contact.mixed_ehl.solver.film_floor")
+      .doc(
+          "Mixed EHL: the film below which a node counts as in asperity contact (its load the asperity share, its "
+          "friction mixed_ehl.boundary_friction)");
+  add(number(
+          "mixed_ehl.boundary_friction",
+          [](auto& c, int) -> auto& { return c.contact.mixed_ehl.solver.boundary_friction; }))
+      .range(0.0, 1.0)
+      .field("contact.mixed_ehl.solver.boundary_friction")
+      .doc(
+          "Mixed EHL: the friction coefficient in the asperity contacts (the statistical cycle beside it takes "
+          "friction.mu)");
+  add(numeric(
+          "mixed_ehl.whole_path", K::flag, D::dimensionless,
+          [](auto& c, int) -> auto& { return c.contact.mixed_ehl.whole_path; }))
+      .field("contact.mixed_ehl.whole_path")
+      .doc(
+          "Mixed EHL: also one transient solve from A to E on the largest contact's grid, the load, curvature and "
+          "speeds changing every step (the squeeze they cause), its cost measured");
   // [running_in]
   add(integer(
           "running_in.meshes", [](auto& c, int) -> auto& { return c.running_in.meshes; }))
