@@ -254,6 +254,20 @@ check det-running-in-positions 2 "key 'contact.positions' = 21: running-in needs
 check det-overload 2 "m6z30-deterministic.toml:[0-9]+: key 'contact.strip_halfwidths' = 2: the line load 1.478e\+07 N/m would yield the whole strip.*a strip of 5 half-widths, which would carry it, reaches .*: lower the torque" -- \
   "$bin" run gears/m6z30-deterministic.toml --set torque=1e5Nm --positions 11 -o "$tmp/det-bad.h5" -q
 [[ ! -e "$tmp/det-bad.h5" ]] && echo "ok   det-nothing-written"
+# Mixed-EHL fidelity (issue 32): a dry case, a window shorter than the contact, a grid coarser than
+# the flanks' profiles, a position that does not converge (a tolerance below rounding): exit 2
+# naming the key (and the position); nothing written.
+check ehl-dry 2 "m6z30-mixed-ehl.toml:[0-9]+: key 'contact.fidelity' = \"mixed_ehl\": \"mixed_ehl\" solves the lubricant's film between the flanks, and the case is dry" -- \
+  "$bin" run gears/m6z30-mixed-ehl.toml --set lubricant.file=none -o "$tmp/ehl-bad.h5" -q
+check ehl-window 2 "key 'mixed_ehl.window' = 0.5: must lie in \[1, 1000\]" -- \
+  "$bin" run gears/m6z30-mixed-ehl.toml --set mixed_ehl.window=0.5 -o "$tmp/ehl-bad.h5" -q
+check ehl-grid 2 "key 'mixed_ehl.grid_spacing' = 2 um: coarser than the 1 um spacing of pinion.flank.profile.spacing" -- \
+  "$bin" run gears/m6z30-mixed-ehl.toml --set mixed_ehl.grid_spacing=2um -o "$tmp/ehl-bad.h5" -q
+check ehl-not-converged 2 "key 'mixed_ehl.tolerance' = 1e-17: at position 1 of 3 \(s = 16.1376 mm, point A, .*the steady start of its window: mixed EHL: not converged.*a looser tolerance \(mixed_ehl.tolerance\)" -- \
+  "$bin" run gears/m6z30-mixed-ehl.toml --positions 3 --set threads=1 --set mixed_ehl.tolerance=1e-17 \
+  --set pinion.flank.profile.spacing=2um --set wheel.flank.profile.spacing=2um --set mixed_ehl.grid_spacing=2um \
+  -o "$tmp/ehl-bad.h5" -q
+[[ ! -e "$tmp/ehl-bad.h5" ]] && echo "ok   ehl-nothing-written" || { echo "FAIL ehl-bad.h5 written"; fail=1; }
 # A measured profile trace (a stylus's line along the involute, one grid row): its spectral
 # moments give the statistical roughness and the deterministic run rolls it; 14 mm covers the
 # seed's pinion (10.7 mm active plus the strip), 5 mm does not.

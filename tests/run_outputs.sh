@@ -82,6 +82,26 @@ head -1 "$tmp/m6z30.csv" | grep -q "^s_m,roll_angle_rad" && ok csv-header || bad
 "$bin" run gears/m6z30-deterministic.toml --positions 11 -q -o "$tmp/det.h5" >/dev/null 2>&1 \
   && "$py" scripts/plot_deterministic.py "$tmp/det.h5" -o "$tmp/det" >/dev/null && [[ -s "$tmp/det-path.png" ]] \
   && ok deterministic-plots || bad deterministic-plots
+# The mixed-EHL run (issue 32), thick film on a coarse grid: its group with units, the profiles at
+# the points kept, the statistical cycle beside it, and its plots.
+"$bin" run gears/m6z30-mixed-ehl.toml --positions 3 -q -o "$tmp/ehl.h5" --set pinion.flank.profile.rq=10nm \
+  --set wheel.flank.profile.rq=10nm --set pinion.flank.profile.spacing=2um --set wheel.flank.profile.spacing=2um \
+  --set mixed_ehl.grid_spacing=2um --set mixed_ehl.window=1 >/dev/null 2>&1 \
+  && "$py" scripts/plot_mixed_ehl.py "$tmp/ehl.h5" -o "$tmp/ehl" >/dev/null && [[ -s "$tmp/ehl-path.png" ]] \
+  && [[ -s "$tmp/ehl-contact.png" ]] && ok mixed-ehl-plots || bad mixed-ehl-plots
+"$py" - "$tmp/ehl.h5" <<'PY' && ok mixed-ehl-hdf5 || bad mixed-ehl-hdf5
+import sys, h5py
+f = h5py.File(sys.argv[1], "r")
+g = f["mixed_ehl"]
+text = lambda v: v.decode() if isinstance(v, bytes) else v
+assert text(f["meta"].attrs["fidelity"]) == "mixed_ehl"
+assert text(g["ehl_min_film_mean_m"].attrs["units"]) == "m" and text(g["ehl_peak_pressure_max_Pa"].attrs["units"]) == "Pa"
+assert g["ehl_asperity_share_mean"].shape == (3,) and g.attrs["grid_spacing_m"] == 2e-6 and text(g.attrs["meaning"])
+p = g["profiles/position_0"]
+assert text(p.attrs["point"]) == "A" and text(p["peak_pressure_Pa"].attrs["units"]) == "Pa"
+assert p["x_m"].shape == p["middle_film_m"].shape == p["peak_state"].shape
+assert "statistical" in f and "asperity_load_share" in f["lubrication"] and "max_von_mises_Pa" in f["contact"]
+PY
 "$py" - "$tmp/wheel.h5" <<'PY' && ok surface-hdf5-attributes || bad surface-hdf5-attributes
 import sys, h5py
 f = h5py.File(sys.argv[1], "r")

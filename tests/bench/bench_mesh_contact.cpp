@@ -2,7 +2,8 @@
 // quadrature at one separation, the pressure-separation table, the separation inversion, one
 // strip (uncoupled, coupled), the coupled strip along the path (cold, warm), the highest
 // asperity's stresses, the whole cycle as `geartrib run` does it, dry and lubricated, and the
-// deterministic cycle. Run: ./build/tests/geartrib_bench --benchmark_filter='gw_|strip_|cycle'
+// deterministic cycle, the mixed-EHL window and cycle. Run:
+// ./build/tests/geartrib_bench --benchmark_filter='gw_|strip_|cycle|ehl_'
 #include "case/asperity_setup.hpp"
 #include "case/contact_setup.hpp"
 #include "case/gear_setup.hpp"
@@ -10,9 +11,13 @@
 #include "config/case_prepare.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
+#include "contact/mesh_path.hpp"
+#include "contact/mixed_ehl/mesh_mixed_ehl.hpp"
 #include "contact/rough_line_contact.hpp"
+#include "lubrication/lubricant.hpp"
 #include "runs/mesh_cycle.hpp"
 #include "solvers/kinsol_solver.hpp"
+#include "surface/flank_profile.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -146,8 +151,54 @@ void cycle_deterministic(benchmark::State& state) {
   c.contact.boundary_elements.element_size = static_cast<double>(state.range(0)) * 1e-9;
   for (auto _ : state) benchmark::DoNotOptimize(runs::run_mesh_cycle(c));
 }
+// The mixed-EHL fidelity (issue 32: a position's window of 2048 nodes in under 5 s on one core).
+// One window at the single pair's B-side position (4 of 11) of gears/m6z30-mixed-ehl.toml, the oil
+// at its 70 degC inlet, flanks ground at Rq 10 nm (the thick film) on 0.25 um profiles, two
+// contact widths at Courant 1, with its flash temperature and subsurface stress: the nodes over
+// [-4 b, 1.5 b] in the argument.
+void ehl_window(benchmark::State& state) {
+  const Setup& s = setup();
+  contact::PathOptions po;
+  po.positions = 11;
+  const contact::PathState p = contact::path_state(s.mesh, po);
+  const std::array<std::vector<double>, 2> sigma = contact::contact_arcs(s.mesh.pair(), p);
+  const std::size_t k = 4;
+  const lubrication::OilState oil = lubrication::oil_state(s.c.lubrication.lubricant, s.c.operating.oil_temperature);
+  contact::mixed_ehl::WindowSetup w;
+  w.fluid.viscosity = oil.dynamic_viscosity;
+  w.fluid.pressure_viscosity = oil.pressure_viscosity;
+  w.fluid.eyring_stress = oil.eyring_stress;
+  w.fluid.limiting_shear_coefficient = oil.limiting_shear_coefficient;
+  w.composite_modulus = s.mesh.composite_modulus();
+  w.solver.nodes = static_cast<int>(state.range(0));
+  w.solver.hardness = std::min(s.c.pinion.material.hardness, s.c.wheel.material.hardness);
+  w.instant = {p.line_load[k], p.radius[k], p.v1[k], p.v2[k]};
+  w.sigma_pinion = sigma[0][k], w.sigma_wheel = sigma[1][k];
+  w.thermal_coefficient[0] = w.thermal_coefficient[1] = 1.2e4;
+  surface::GeneratedProfileSpec g;
+  g.rq = 10e-9;
+  g.spacing = 0.25e-6;
+  auto flank = [&](double centre, std::uint64_t seed) {
+    g.seed = seed;
+    return contact::FlankTrack{surface::generate_profile(g, 4e-3), centre - 2e-3};
+  };
+  const contact::FlankTrack pinion = flank(sigma[0][k], 1), wheel = flank(sigma[1][k], 2);
+  for (auto _ : state) benchmark::DoNotOptimize(contact::mixed_ehl::solve_window(pinion, wheel, w));
+}
+// The mixed-EHL cycle (issue 32: the default case's A..E in under 30 s): gears/m6z30-mixed-ehl.toml
+// with its flanks at Rq 10 nm (the thick film) at 5 positions on one thread.
+void cycle_mixed_ehl(benchmark::State& state) {
+  Case c = io::prepare_case(io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30-mixed-ehl.toml",
+                                          {{"pinion.flank.profile.rq", "10 nm"},
+                                           {"wheel.flank.profile.rq", "10 nm"},
+                                           {"contact.positions", "5"},
+                                           {"contact.threads", "1"}}));
+  for (auto _ : state) benchmark::DoNotOptimize(runs::run_mesh_cycle(c));
+}
 }  // namespace
 
+BENCHMARK(ehl_window)->Arg(1024)->Arg(2048)->ArgName("nodes")->Unit(benchmark::kMillisecond);
+BENCHMARK(cycle_mixed_ehl)->Unit(benchmark::kMillisecond);
 BENCHMARK(cycle_deterministic)
     ->Arg(2000)
     ->Arg(1000)
