@@ -416,7 +416,7 @@ void add_ehl_command(CLI::App& app) {
       "transient: the last instant's, then the window's extremes and means); -o writes the profile (x, pressure,\n"
       "film, shear, heights, state) as CSV, or as HDF5 (.h5) with the summary and the transient's series.");
   // The operating point.
-  cmd->add_option("--load", o->load, "W: line load [N/m]")->check(CLI::PositiveNumber);
+  auto* load = cmd->add_option("--load", o->load, "W: line load [N/m]")->check(CLI::PositiveNumber);
   cmd->add_option("--radius", o->radius, "R: reduced radius of curvature R1 R2/(R1 + R2) (e.g. 10mm)");
   auto* speed = cmd->add_option("--speed", o->speed, "U: entrainment speed, the mean of the surfaces' (e.g. 2m/s)");
   cmd->add_option("--slide-roll", o->slide_roll,
@@ -437,7 +437,7 @@ void add_ehl_command(CLI::App& app) {
                                "--radius, E* and --viscosity")
                    ->delimiter(',')
                    ->expected(2);
-  groups->excludes(moes);
+  groups->excludes(moes)->excludes(load);
   for (auto* dimensional : {speed, speed1, speed2}) groups->excludes(dimensional), moes->excludes(dimensional);
   // The solids and the oil.
   auto* modulus = cmd->add_option("--modulus", o->modulus,
@@ -502,13 +502,16 @@ void add_ehl_command(CLI::App& app) {
   cmd->add_option("--rough-surface", o->surfaces,
                   "1 (default), 2 or both: the surface carrying the roughness, which moves at that surface's speed")
       ->check(CLI::IsMember(choice_names(me::rough_surfaces_choices())));
-  cmd->add_flag("--steady", o->steady, "The roughness in place (a crest at x = 0), one steady solve");
-  cmd->add_option("--window", o->window,
-                  "The transient's length in contact widths 2b travelled by the slower rough surface (default: the "
-                  "roughness crosses the domain, then 2 more)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--time-step", o->courant,
-                  "The time step in nodes travelled by the faster rough surface: dt = this dx/u (default 1)");
+  auto* steady = cmd->add_flag("--steady", o->steady, "The roughness in place (a crest at x = 0), one steady solve");
+  auto* window =
+      cmd->add_option("--window", o->window,
+                      "The transient's length in contact widths 2b travelled by the slower rough surface (default: the "
+                      "roughness crosses the domain, then 2 more)")
+          ->check(CLI::NonNegativeNumber);
+  auto* time_step =
+      cmd->add_option("--time-step", o->courant,
+                      "The time step in nodes travelled by the faster rough surface: dt = this dx/u (default 1)");
+  steady->excludes(window)->excludes(time_step);
   cmd->add_flag("--dry", o->dry,
                 "Also the dry contact of the same gap and load by boundary elements: its pressure beside the "
                 "solver's (the limit of a vanishing viscosity)");
