@@ -162,6 +162,11 @@ ex asperity asperity --contact side --mu 0.1 --delta-star 0.5,2,10
 fresh multi-asperity
 ex multi-asperity multi-asperity --layout HLH --height-step 3 --spacing 0.5um --delta-pc 0.5797nm
 
+fresh ehl
+ex ehl ehl --load 1e6 --radius 15.4mm --speed 5m/s --modulus 113GPa --viscosity 0.05 --alpha 2e-8
+blank ehl
+ex ehl ehl --materials materials/steel-45.toml --lubricant lubricants/mineral-vg100.toml --oil-temperature 80degC --load 3e5 --radius 10mm --speed 5m/s --slide-roll 0.4 --waviness 50nm,100um -o ehl.h5
+
 fresh surface
 ex surface surface generate hobbed -o hob.xyz --tip-radius "6.6 um" --noise "2 nm"
 ex surface surface stats hob.xyz

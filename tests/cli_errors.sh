@@ -400,6 +400,26 @@ check fzg-sweep-stage-15 2 "'fzg_load_stage=9,15': value '15' for operating.fzg_
   "$bin" sweep gears/fzg-c.toml --set fzg_load_stage=9,15 -o "$tmp/fzg-bad.h5" -q
 [[ ! -e "$tmp/fzg-bad.h5" ]] && echo "ok   fzg-nothing-written" || { echo "FAIL fzg-bad.h5 written"; fail=1; }
 
+# The line contact (geartrib ehl): the summary's rows, the profile's columns, the transient's series,
+# refusals at the option that gave the value, nothing written on error.
+ehl=("$bin" ehl --load 1e6 --radius 15.4mm --speed 5m/s --modulus 113GPa --viscosity 0.05 --alpha 2e-8 --nodes 256)
+check ehl-summary 0 "^min_film_over_dowson_higginson,1\.0" -- "${ehl[@]}" --csv
+check ehl-profile 0 "" -- "${ehl[@]}" -q -o "$tmp/ehl.csv"
+grep -q "^x_m,pressure_Pa,film_m,shear_Pa,heights_m,state\$" "$tmp/ehl.csv" && echo "ok   ehl-profile-columns" || { echo "FAIL ehl-profile-columns"; fail=1; }
+check ehl-series 0 "^time_per_step_s," -- "${ehl[@]}" --waviness 20nm,100um --window 0.5 --time-step 4 --series "$tmp/ehl-series.csv" --csv
+grep -q "^time_s,central_film_m,min_film_m,peak_pressure_Pa" "$tmp/ehl-series.csv" && echo "ok   ehl-series-columns" || { echo "FAIL ehl-series-columns"; fail=1; }
+check ehl-groups 0 "^moes_M,29\.06888" -- "$bin" ehl --groups 1.3e-4,1e-11,5000 --radius 10mm --modulus 113.1868GPa --viscosity 0.05 --nodes 256 --csv
+check ehl-lubricant 0 "^viscosity_Pa_s,0\.0164" -- "$bin" ehl --materials materials/steel-45.toml --lubricant lubricants/mineral-vg100.toml --oil-temperature 80degC --load 3e5 --radius 10mm --speed 5m/s --nodes 256 --csv
+check ehl-no-load 2 "--load W" -- "$bin" ehl --radius 10mm --speed 1m/s --modulus 113GPa --viscosity 0.05 --alpha 0
+check ehl-bad-unit 2 "--radius '10parsec': unknown unit 'parsec'" -- "${ehl[@]/15.4mm/10parsec}"
+check ehl-few-nodes 2 "--nodes: nodes must lie in" -- "${ehl[@]/256/8}"
+check ehl-still-roughness 2 "--window: the rough surface does not move" -- "$bin" ehl --load 1e6 --radius 15.4mm --speed1 1m/s --speed2 0m/s --modulus 113GPa --viscosity 0.05 --alpha 2e-8 --waviness 0.1um,50um --rough-surface 2
+check ehl-steady-smooth 2 "--steady needs a roughness" -- "${ehl[@]}" --steady
+check ehl-cold-oil 2 "--oil-temperature '-90degC'" -- "$bin" ehl --modulus 113GPa --lubricant lubricants/mineral-vg100.toml --oil-temperature -90degC --load 3e5 --radius 10mm --speed 5m/s
+check ehl-not-converged 1 "not converged in 1 iterations" -- "${ehl[@]}" --max-iterations 1 -o "$tmp/ehl-bad.csv"
+check ehl-missing-folder 2 "" -- "${ehl[@]}" -o "$tmp/no/such/folder/ehl.csv"
+[[ ! -e "$tmp/ehl-bad.csv" ]] && echo "ok   ehl-nothing-written" || { echo "FAIL ehl-bad.csv written"; fail=1; }
+
 # Output files: written whole, atomically; nothing written on error.
 check output-file 0 "" -- "$bin" asperity --csv -o "$tmp/out.csv" --delta-star 1,2
 grep -q "^$header\$" "$tmp/out.csv" && echo "ok   output-content" || { echo "FAIL output-content"; fail=1; }

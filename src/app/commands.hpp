@@ -16,6 +16,7 @@ void add_run_command(CLI::App& app);
 void add_multi_asperity_command(CLI::App& app);
 void add_fit_command(CLI::App& app);
 void add_dynamics_command(CLI::App& app);
+void add_ehl_command(CLI::App& app);
 void add_surface_command(CLI::App& app);
 void add_fem_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);

@@ -65,6 +65,7 @@ constexpr std::pair<std::string_view, AddCommand> kCommands[] = {
     {"case", geartrib::app::add_case_command},
     {"kinematics", geartrib::app::add_kinematics_command},
     {"multi-asperity", geartrib::app::add_multi_asperity_command},
+    {"ehl", geartrib::app::add_ehl_command},
     {"dynamics", geartrib::app::add_dynamics_command},
     {"fit", add_fit_command_from_module},
     {"surface", geartrib::app::add_surface_command},

@@ -27,6 +27,17 @@ EhlGroups ehl_groups(double eta0, double alpha, double u, double w, double radiu
   return {eta0 * u / (e * radius), alpha * e, w / (e * radius)};
 }
 
+MoesGroups moes_groups(const EhlGroups& g) {
+  const double two_u = 2.0 * g.speed;
+  return {g.load / std::sqrt(two_u), g.material * std::pow(two_u, 0.25)};
+}
+
+EhlGroups groups_from_moes(const MoesGroups& m, double load) {
+  const double ratio = load / m.load;
+  const double speed = 0.5 * ratio * ratio;
+  return {speed, m.material * std::pow(2.0 * speed, -0.25), load};
+}
+
 const FilmLaw& film_law(FilmFormula f) { return kLaws[static_cast<std::size_t>(f)]; }
 
 std::span<const NamedChoice<FilmFormula>> film_formula_choices() { return kFormulaNames; }

@@ -22,6 +22,17 @@ struct EhlGroups {
 EhlGroups ehl_groups(double eta0, double alpha, double entrainment, double line_load, double radius,
                      double reduced_modulus);
 
+// Moes's groups of a line contact (Moes, Proc. IMechE 180 (1965-66) part 3B; in the form of Venner &
+// Lubrecht, Multilevel Methods in Lubrication, 2000): M = W (2U)^-1/2, L = G (2U)^1/4, with U on
+// the mean speed as above. Two groups fix the dimensionless solution; with W given, (M, L) give U
+// and G back: U = (W/M)^2/2, G = L (2U)^-1/4.
+struct MoesGroups {
+  double load = 0.0;      // M
+  double material = 0.0;  // L
+};
+MoesGroups moes_groups(const EhlGroups& g);
+EhlGroups groups_from_moes(const MoesGroups& m, double load);  // load: W
+
 // The film formulas, H = k U^u G^g W^w:
 //  - dowson-higginson: minimum, 2.65 U^0.70 G^0.54 W^-0.13 (Dowson & Higginson, Elasto-hydrodynamic
 //    lubrication, SI ed., 1977) -- the default, the form GEARpie and ISO/TS 6336-22 build on;
