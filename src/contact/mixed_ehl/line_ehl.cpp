@@ -164,7 +164,7 @@ constexpr double kMaxForcing = 1e-3;
 constexpr double kPenaltyFactor = 1e5;  // kappa dX^2: large against the Poiseuille coefficients where the film ruptures
 constexpr int kLinearIterations = 200;
 constexpr double kMaxPressureStep = 1.0;
-constexpr double kEpsilonFloor = 1.0;  // eps >= this x u dX H_floor
+constexpr double kEpsilonFloor = 1e-3;  // eps gains this x u dX H_floor
 constexpr int kLineSearchHalvings = 10;
 constexpr double kMeritGrowth = 1e8;
 constexpr int kMaxStepHalvings = 4;
@@ -349,8 +349,9 @@ struct LineEhlSolver::Impl {
       // Where the film vanishes (contact, or a solid viscosity) the pressure would be
       // undetermined by this equation: eps gains a constant (smoothly, not as a floor, whose kink
       // would stall Newton's method where eps crosses it), so the pressure stays the harmonic
-      // continuation of its neighbours'. Its Poiseuille flux is ~dX of the Couette flux through a
-      // film at the floor.
+      // continuation of its neighbours'. Its Poiseuille flux across a node where the pressure
+      // jumps by p_H is 1e-3 of the Couette flux through a film at the floor (at 1, that flux
+      // drained the contacts' oil until their films turned negative).
       eps[s] += eps_floor;
     }
   }
