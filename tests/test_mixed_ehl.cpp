@@ -38,39 +38,35 @@ double position_of_peak(const LineEhlSolver& s, const EhlField& f) {
 }
 }  // namespace
 
-// Rigid (E* = 1e12 Pa: the deflection's change of shape is ~0.2 % of the film) and isoviscous
-// (alpha = 0, incompressible): the film carrying w is Martin's with Reynolds' exit,
+// Rigid (E* = 1e13 Pa: the deflection's change of the film's shape is ~3e-4 of it) and
+// isoviscous (alpha = 0, incompressible): the film carrying w is Martin's with Reynolds' exit,
 // w = C(x_in) eta u_m R/h0, C from the closed-form and shooting derivations of
-// tests/reference/rigid_isoviscous.hpp at the solver's own inlet (100 b ahead; the outlet 10 b
-// behind, past the rupture). The first-order upwind error is ~1.02 dx/sqrt(2 R h0)
-// (validation/mixed-ehl/upwind_error_estimate.py): 0.74 % at 1024 nodes and 0.2 % at 4096,
-// above the deflection's ~0.2 %; so within 1.5 % at 1024, 0.6 % at 4096, and falling.
+// tests/reference/rigid_isoviscous.hpp at the solver's own inlet (100 b ahead; the outlet 30 b
+// behind, past the rupture at ~20 b). The second-order upwind film is within 0.03 % at 1024 to
+// 8192 nodes (measured); 0.1 % allows for the deflection. The rupture (the last node with
+// pressure) within three node spacings: the penalty cavitation rounds the pressure's tail.
 TEST(MixedEhlLine, RigidIsoviscousLimitIsMartinsWithReynoldsExit) {
   namespace ri = geartrib::reference::rigid_isoviscous;
   const double eta = 0.1, u = 1.0, radius = 0.01, w = 4895.0;
-  double last_error = 1.0;
-  for (const auto& [nodes, bound] : {std::pair{1024, 0.015}, std::pair{4096, 0.006}}) {
+  for (int nodes : {1024, 4096}) {
     EhlOptions o;
     o.nodes = nodes;
     o.inlet = 100.0;
-    o.outlet = 10.0;
-    LineEhlSolver s(oil(eta, 0.0, ViscosityLaw::barus, false), 1e12, {w, radius, u, u}, o);
+    o.outlet = 30.0;
+    LineEhlSolver s(oil(eta, 0.0, ViscosityLaw::barus, false), 1e13, {w, radius, u, u}, o);
     const EhlField& f = s.solve_steady({w, radius, u, u}, flat(s));
     const double expected = ri::film_for_load(w, radius, eta, u, s.grid().start);
-    const double error = std::abs(f.min_film / expected - 1.0);
-    EXPECT_LT(error, bound) << nodes << " nodes: h_min " << f.min_film << " expected " << expected;
-    EXPECT_LT(error, last_error) << "no convergence with the grid";
-    last_error = error;
-    // The film ruptures at x_e = 0.4751 sqrt(2 R h0): the last node with pressure.
+    EXPECT_NEAR(f.min_film / expected, 1.0, 1e-3) << nodes << " nodes";
     double rupture = 0.0;
     for (int i = 0; i < s.grid().size; ++i)
       if (f.pressure[static_cast<std::size_t>(i)] > 1e-6 * f.peak_pressure) rupture = s.grid().x(i);
     const double xe =
         ri::closed_form(s.grid().start / std::sqrt(2.0 * radius * expected)).exit * std::sqrt(2.0 * radius * expected);
-    EXPECT_NEAR(rupture, xe, 2.0 * s.grid().spacing + 0.005 * xe) << "the rupture within two nodes";
-    // Load control: the cavitated zone's penalty pressures (below ~1e-6 of the load at
-    // kappa dX^2 = 1e5) lie outside the positive pressure integrated here.
-    EXPECT_NEAR(f.line_load / w, 1.0, 1e-5) << "load control";
+    EXPECT_NEAR(rupture, xe, 3.0 * s.grid().spacing) << "the rupture within three nodes";
+    // Load control: the cavitated zone's penalty pressures (~2.4e-5 of the load over this
+    // contact's 30 b of cavitated film at kappa dX^2 = 1e5) lie outside the positive pressure
+    // integrated here.
+    EXPECT_NEAR(f.line_load / w, 1.0, 5e-5) << "load control";
   }
 }
 

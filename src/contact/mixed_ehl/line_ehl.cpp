@@ -7,6 +7,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -164,10 +165,11 @@ constexpr double kMaxForcing = 1e-3;
 constexpr double kPenaltyFactor = 1e5;  // kappa dX^2: large against the Poiseuille coefficients where the film ruptures
 constexpr int kLinearIterations = 200;
 constexpr double kMaxPressureStep = 1.0;
-constexpr double kEpsilonFloor = 1e-3;  // eps gains this x u dX H_floor
+constexpr double kSecondOrderFilms = 20.0;  // films above this many floors: the Couette term to second order
+constexpr double kEpsilonFloor = 1e-3;      // eps gains this x u dX H_floor
 constexpr int kLineSearchHalvings = 10;
 constexpr double kMeritGrowth = 1e8;
-constexpr int kMaxStepHalvings = 4;
+constexpr int kMaxStepHalvings = 6;                // a failed time step retried as up to 64 substeps
 constexpr double kMinHomotopyStride = 1.0 / 64.0;  // the roughness's smallest step in a steady solve's homotopy  // a
                                                    // failed time step retried as up to 16 substeps
 }  // namespace
@@ -237,7 +239,11 @@ struct LineEhlSolver::Impl {
   std::unique_ptr<ToeplitzConvolution> deflection;  // sum_j K^(i-j) P_j
   std::vector<double> band;                         // D(0), D(1): the second difference of -K^/pi over dx^2 at 0, +-1
   // State (dimensionless).
-  std::vector<double> P, H, mass_old;  // mass_old: rho H at the last time
+  std::vector<double> P, H, mass_old;           // mass_old: rho H at the last time
+  std::vector<double> mass_older, mass_target;  // rho H a step before; the time derivative's known part
+  std::vector<char> second_order;               // the Couette term's order at each node (2 or 1)
+  bool first_order = false;                     // a retry: the Couette term to first order everywhere
+  double last_dt = 0.0;                         // the last step's [s]; 0 after a steady solve
   double H0 = 0.0;
   bool started = false;
   EhlField field;
@@ -266,6 +272,8 @@ struct LineEhlSolver::Impl {
     P.assign(static_cast<std::size_t>(n), 0.0);
     H.assign(static_cast<std::size_t>(n), 0.0);
     mass_old.assign(static_cast<std::size_t>(n), 0.0);
+    mass_older.assign(static_cast<std::size_t>(n), 0.0);
+    mass_target.assign(static_cast<std::size_t>(n), 0.0);
     for (auto* v : {&conv, &eps, &deps_dp, &deps_dh, &rho, &drho, &r}) v->assign(static_cast<std::size_t>(n), 0.0);
   }
 
@@ -368,12 +376,34 @@ struct LineEhlSolver::Impl {
     const double load = c.line_load / w_ref;               // of the reference's
     const double target = 0.5 * kPi * load;                // int P dX
     const double speed = c.entrainment() / reference.entrainment();
-    const double squeeze = dt > 0.0 ? b / (reference.entrainment() * dt) : 0.0;  // 1/dT
+    // The squeeze term d(rho H)/dT ~ squeeze (rho H - target): backward Euler on the first step
+    // after a steady solve, then the variable-step second-order backward difference
+    // a0 M^{n+1} + a1 M^n + a2 M^{n-1}, omega = dt/dt_last (Hairer, Norsett & Wanner, Solving
+    // ODEs I, sec. III.5): a0 = (1 + 2 omega)/((1 + omega) dT), a1 = -(1 + omega)/dT,
+    // a2 = omega^2/((1 + omega) dT). With the second-order upwind Couette term below this is
+    // Venner & Lubrecht's discretisation (Multilevel Methods in Lubrication, 2000, ch. 9): first
+    // order in both damped the roughness's film waves to a few per cent of their amplitude.
+    double squeeze = 0.0;
+    if (dt > 0.0) {
+      const double dT = dt * reference.entrainment() / b;
+      if (last_dt > 0.0 && !first_order) {
+        const double omega = dt / last_dt;
+        const double a0 = (1.0 + 2.0 * omega) / ((1.0 + omega) * dT), a1 = -(1.0 + omega) / dT,
+                     a2 = omega * omega / ((1.0 + omega) * dT);
+        squeeze = a0;
+        for (std::size_t i = 0; i < mass_target.size(); ++i)
+          mass_target[i] = -(a1 * mass_old[i] + a2 * mass_older[i]) / a0;
+      } else {
+        squeeze = 1.0 / dT;
+        mass_target = mass_old;
+      }
+    }
     if (!started) start_hertz(c, curvature, load);
     // The second differences of the heights (they enter the film's differential form).
     const double inv_dx2 = 1.0 / (dx * dx);
     const std::size_t m = static_cast<std::size_t>(n - 2);  // interior unknowns
-    std::vector<Block> lower(m), diag(m), upper(m);
+    std::vector<Block> lower(m), diag(m), upper(m), lumped(m);
+    std::vector<Pair> far(m);
     std::vector<Pair> rhs(m), y1(m), y2(m), col(m);
     std::vector<Block> cprime(m), dinv(m);
     std::vector<Pair> g1(m);
@@ -400,8 +430,13 @@ struct LineEhlSolver::Impl {
         const std::size_t i = k + 1;
         const double ea = 0.5 * (eps[i] + eps[i + 1]) * inv_dx2, ec = 0.5 * (eps[i] + eps[i - 1]) * inv_dx2;
         const double dpa = P[i + 1] - P[i], dpc_ = P[i] - P[i - 1];
+        // The Couette term upwinded to second order, (3 M_i - 4 M_{i-1} + M_{i-2})/(2 dX) (first
+        // order at the first node): c0, c1, c2 its weights.
+        const bool second = i >= 2 && second_order[i];
+        const double c0 = second ? 1.5 / dx : 1.0 / dx, c1 = second ? 2.0 / dx : 1.0 / dx, c2 = second ? 0.5 / dx : 0.0;
         const double mass = rho[i] * H[i], mass_prev = rho[i - 1] * H[i - 1];
-        const double couette = speed * (mass - mass_prev) / dx + squeeze * (mass - mass_old[i]);
+        const double mass_far = second ? rho[i - 2] * H[i - 2] : 0.0;
+        const double couette = speed * (c0 * mass - c1 * mass_prev + c2 * mass_far) + squeeze * (mass - mass_target[i]);
         double F = ea * dpa - ec * dpc_ - couette;
         if (P[i] < 0.0) F -= penalty * P[i];
         const double d2conv = (conv[i + 1] - 2.0 * conv[i] + conv[i - 1]) * inv_dx2;
@@ -411,10 +446,13 @@ struct LineEhlSolver::Impl {
         if (with_jacobian) {
           const double half = 0.5 * inv_dx2;
           Block d{}, l{}, u{};
-          d[0] = -ea - ec + half * (dpa - dpc_) * deps_dp[i] - (speed / dx + squeeze) * drho[i] * H[i];
-          d[1] = half * (dpa - dpc_) * deps_dh[i] - (speed / dx + squeeze) * rho[i];
-          l[0] = ec - half * dpc_ * deps_dp[i - 1] + speed / dx * drho[i - 1] * H[i - 1];
-          l[1] = -half * dpc_ * deps_dh[i - 1] + speed / dx * rho[i - 1];
+          d[0] = -ea - ec + half * (dpa - dpc_) * deps_dp[i] - (speed * c0 + squeeze) * drho[i] * H[i];
+          d[1] = half * (dpa - dpc_) * deps_dh[i] - (speed * c0 + squeeze) * rho[i];
+          l[0] = ec - half * dpc_ * deps_dp[i - 1] + speed * c1 * drho[i - 1] * H[i - 1];
+          l[1] = -half * dpc_ * deps_dh[i - 1] + speed * c1 * rho[i - 1];
+          // The node two upstream: outside the tridiagonal blocks, in the Jacobian's product;
+          // the preconditioner lumps it onto the upstream neighbour.
+          far[k] = second ? Pair{-speed * c2 * drho[i - 2] * H[i - 2], -speed * c2 * rho[i - 2]} : Pair{0.0, 0.0};
           u[0] = ea + half * dpa * deps_dp[i + 1];
           u[1] = half * dpa * deps_dh[i + 1];
           // Cavitation by the penalty method (Wu, 1986; Reynolds' condition as the penalty
@@ -440,17 +478,35 @@ struct LineEhlSolver::Impl {
       load_error = (dx * sum_p - target) / target;
       return merit + load_error * load_error;
     };
+    // The Couette term is upwinded to second order where the film, at the solve's start, is thick
+    // over the three nodes (above kSecondOrderFilms floors), to first order elsewhere: second
+    // order's undershoots at a contact's edge turn films negative and stall Newton's method there.
+    // Fixed through the solve, so the Jacobian stays exact.
+    second_order.assign(static_cast<std::size_t>(n), 0);
+    {
+      const double thick = kSecondOrderFilms * options.film_floor / film_scale;
+      for (int i = 2; i < n; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        second_order[k] = !first_order && std::min({H[k], H[k - 1], H[k - 2]}) > thick;
+      }
+    }
     double merit = assemble(true), forcing = kMaxForcing;
     for (; it < options.max_iterations; ++it) {
       // -dRes/dH0 through H_0 and H_{n-1} (both move by dH0).
       col.front() = {-lower.front()[1], -lower.front()[3]};
+      if (m > 1) col[1] = {col[1][0] - far[1][1], col[1][1]};  // the second row's node two upstream is node 0
       col.back() = {col.back()[0] - upper.back()[1], col.back()[1] - upper.back()[3]};
+      for (std::size_t k = 0; k < m; ++k) {
+        lumped[k] = lower[k];
+        lumped[k][0] += far[k][0];
+        lumped[k][1] += far[k][1];
+      }
       // The Newton system J z = -(Res, load), J = T + E bordered by H0 and the load row: T the
       // block-tridiagonal part (D's three central diagonals), E the rest of D (in the film rows,
       // applied by FFT). Right-preconditioned GMRES with the bordered T as the preconditioner.
-      factor(lower, diag, upper, dinv, cprime);
-      solve_tridiagonal(lower, dinv, cprime, col, y2);  // T^-1 (-dRes/dH0)
-      auto load_of = [&](const std::vector<Pair>& y) {  // the load row: dx sum(dP)
+      factor(lumped, diag, upper, dinv, cprime);
+      solve_tridiagonal(lumped, dinv, cprime, col, y2);  // T^-1 (-dRes/dH0)
+      auto load_of = [&](const std::vector<Pair>& y) {   // the load row: dx sum(dP)
         double sum = 0.0;
         for (std::size_t k = 0; k < m; ++k) sum += y[k][0];
         return dx * sum;
@@ -459,7 +515,7 @@ struct LineEhlSolver::Impl {
       const double load_rhs = -load_error * target;
       auto precondition = [&](const std::vector<double>& v, std::vector<double>& out) {
         for (std::size_t k = 0; k < m; ++k) g1[k] = {v[2 * k], v[2 * k + 1]};
-        solve_tridiagonal(lower, dinv, cprime, g1, y1);
+        solve_tridiagonal(lumped, dinv, cprime, g1, y1);
         const double s = std::abs(load_y2) > 0.0 ? (v[2 * m] - load_of(y1)) / load_y2 : 0.0;
         out.resize(2 * m + 1);
         for (std::size_t k = 0; k < m; ++k)
@@ -482,12 +538,14 @@ struct LineEhlSolver::Impl {
             const Pair a = multiply(upper[k], Pair{zz[2 * k + 2], zz[2 * k + 3]});
             acc = {acc[0] + a[0], acc[1] + a[1]};
           }
+          if (k >= 2) acc[0] += far[k][0] * zz[2 * k - 4] + far[k][1] * zz[2 * k - 3];
           acc = {acc[0] - col[k][0] * zz[2 * m], acc[1] - col[k][1] * zz[2 * m]};
           // The end films move with the whole pressure (the integral form): dH_end = -(K dP)_end/pi.
           if (k == 0) {
             const double dh = -work_conv.front() / kPi;
             acc = {acc[0] + lower[k][1] * dh, acc[1] + lower[k][3] * dh};
           }
+          if (k == 1) acc[0] += far[k][1] * (-work_conv.front() / kPi);
           if (k + 1 == m) {
             const double dh = -work_conv.back() / kPi;
             acc = {acc[0] + upper[k][1] * dh, acc[1] + upper[k][3] * dh};
@@ -524,6 +582,35 @@ struct LineEhlSolver::Impl {
       // Inexact Newton: the linear solve's tolerance follows the residual's fall (Eisenstat &
       // Walker, SIAM J. Sci. Comput. 17, 1996, choice 2 with gamma 0.9, alpha 2).
       linear_iterations += gmres(gmres_work, scaled_jacobian, scaled_precondition, bvec, z, forcing, kLinearIterations);
+      if (std::getenv("EHL_FD")) {
+        std::vector<double> jz;
+        jacobian(z, jz);
+        std::vector<Pair> r0 = rhs;
+        const double l0 = load_error;
+        const std::vector<double> Pb = P, Hb = H;
+        const double H0b = H0, delta = 1e-7;
+        for (std::size_t k = 0; k < m; ++k) P[k + 1] += delta * z[2 * k], H[k + 1] += delta * z[2 * k + 1];
+        H0 += delta * z[2 * m];
+        assemble(false);
+        double worst = 0.0;
+        std::size_t wk = 0;
+        int wr = 0;
+        for (std::size_t k = 0; k < m; ++k)
+          for (int q = 0; q < 2; ++q) {
+            const double fd = -(rhs[k][q] - r0[k][q]) / delta;
+            const double e = std::abs(fd - jz[2 * k + q]) / row_scale[2 * k + q];
+            if (e > worst) worst = e, wk = k, wr = q;
+          }
+        fmt::print(
+            stderr,
+            "  FD worst {:.3e} node {} row {} X {:.4f} fd {:.4e} jz {:.4e} P {:.3f} | load fd {:.4e} jz {:.4e}\n",
+            worst, wk + 1, wr, X[wk + 1], -(rhs[wk][wr] - r0[wk][wr]) / delta, jz[2 * wk + wr], P[wk + 1],
+            (load_error - l0) * target / delta, jz[2 * m]);
+        P = Pb;
+        H = Hb;
+        H0 = H0b;
+        assemble(true);
+      }
       // The step's first length: no fluid pressure of the open film changes by more than
       // kMaxPressureStep p_H (the viscosity's exponential makes the linearisation poor far from
       // the solution), no open film more than halves, no film near contact more than doubles.
@@ -570,6 +657,16 @@ struct LineEhlSolver::Impl {
       const double dh_rel = dh_max / h_ref;
       if (!std::isfinite(update) || !std::isfinite(dh_rel))
         throw std::runtime_error("mixed EHL: the Newton iteration diverged (non-finite update)");
+      if (std::getenv("EHL_TRACE") && it >= 470) {
+        std::size_t kk = 0;
+        for (std::size_t k = 0; k < m; ++k)
+          if (std::abs(z[2 * k]) > std::abs(z[2 * kk])) kk = k;
+        fmt::print(
+            stderr,
+            "it {} theta {:.2e} merit {:.3e} upd {:.2e} dh {:.2e} load {:.2e} forcing {:.1e} | node {} X {:.4f} P {:.4f} H {:.3e} eps {:.2e} zp {:.2e} zh {:.2e} dt {:.3g}\n",
+            it, theta, merit, update, dh_rel, load_error, forcing, kk + 1, X[kk + 1], P[kk + 1], H[kk + 1], eps[kk + 1],
+            z[2 * kk], z[2 * kk + 1], dt);
+      }
       const double merit_last = merit;
       merit = assemble(true);
       forcing = std::clamp(0.9 * merit / merit_last, kLinearTolerance, kMaxForcing);
@@ -585,8 +682,10 @@ struct LineEhlSolver::Impl {
     // The film everywhere from the integral form (consistent with the converged differential form).
     integral_film(curvature, H);
     coefficients(c);
+    mass_older = mass_old;
     for (int i = 0; i < n; ++i)
       mass_old[static_cast<std::size_t>(i)] = rho[static_cast<std::size_t>(i)] * H[static_cast<std::size_t>(i)];
+    last_dt = dt;
     fill(c, it, update, load_error);
     newton_total += it;
     linear_total += linear_iterations;
@@ -598,16 +697,34 @@ struct LineEhlSolver::Impl {
   // A time step; one that does not converge is retried as two half steps (the instant and the
   // heights interpolated linearly between the last and the new), at most kMaxStepHalvings deep.
   void advance(const ContactInstant& c, const std::vector<double>& heights, double dt, int depth) {
-    const std::vector<double> P_keep = P, H_keep = H, mass_keep = mass_old, heights_keep = last_heights;
+    const std::vector<double> P_keep = P, H_keep = H, mass_keep = mass_old, older_keep = mass_older,
+                              heights_keep = last_heights;
+    const double dt_keep = last_dt;
     const double H0_keep = H0;
     const ContactInstant instant_keep = last_instant;
+    auto restore = [&] {
+      P = P_keep, H = H_keep, mass_old = mass_keep, mass_older = older_keep, H0 = H0_keep, last_dt = dt_keep;
+      last_heights = heights_keep;
+      last_instant = instant_keep;
+    };
     try {
       solve(c, heights, dt);
     } catch (const std::runtime_error&) {
+      restore();
+      // First the same step with the Couette term to first order everywhere (monotone: no
+      // negative films at a contact's edge), then two half steps.
+      if (!first_order) {
+        first_order = true;
+        try {
+          solve(c, heights, dt);
+          first_order = false;
+          return;
+        } catch (const std::runtime_error&) {
+          first_order = false;
+          restore();
+        }
+      }
       if (depth >= kMaxStepHalvings) throw;
-      P = P_keep, H = H_keep, mass_old = mass_keep, H0 = H0_keep;
-      last_heights = heights_keep;
-      last_instant = instant_keep;
       const ContactInstant mid{0.5 * (instant_keep.line_load + c.line_load), 0.5 * (instant_keep.radius + c.radius),
                                0.5 * (instant_keep.speed1 + c.speed1), 0.5 * (instant_keep.speed2 + c.speed2)};
       std::vector<double> mid_heights(heights.size());
@@ -753,6 +870,20 @@ const EhlField& LineEhlSolver::step(const ContactInstant& instant, std::span<con
 
 namespace {
 void steady_solve(LineEhlSolver::Impl& s, const ContactInstant& instant, std::span<const double> heights) {
+  const std::vector<double> P_keep = s.P, H_keep = s.H;
+  const double H0_keep = s.H0;
+  try {
+    s.solve(instant, heights, 0.0);
+    return;
+  } catch (const std::runtime_error&) {
+  }
+  // Again with the Couette term to first order everywhere, then by homotopy in the roughness.
+  s.P = P_keep, s.H = H_keep, s.H0 = H0_keep;
+  s.first_order = true;
+  struct Reset {
+    LineEhlSolver::Impl& s;
+    ~Reset() { s.first_order = false; }
+  } reset{s};
   try {
     s.solve(instant, heights, 0.0);
     return;
