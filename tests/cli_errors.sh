@@ -403,7 +403,7 @@ check fzg-sweep-stage-15 2 "'fzg_load_stage=9,15': value '15' for operating.fzg_
 # The line contact (geartrib ehl): the summary's rows, the profile's columns, the transient's series,
 # refusals at the option that gave the value, nothing written on error.
 ehl=("$bin" ehl --load 1e6 --radius 15.4mm --speed 5m/s --modulus 113GPa --viscosity 0.05 --alpha 2e-8 --nodes 256)
-check ehl-summary 0 "^min_film_over_dowson_higginson,1\.0" -- "${ehl[@]}" --csv
+check ehl-summary 0 "^min_film_over_dowson_higginson,(0\.9|1\.0)" -- "${ehl[@]}" --csv  # within 10 % of Dowson-Higginson
 check ehl-profile 0 "" -- "${ehl[@]}" -q -o "$tmp/ehl.csv"
 grep -q "^x_m,pressure_Pa,film_m,shear_Pa,heights_m,state\$" "$tmp/ehl.csv" && echo "ok   ehl-profile-columns" || { echo "FAIL ehl-profile-columns"; fail=1; }
 check ehl-series 0 "^time_per_step_s," -- "${ehl[@]}" --waviness 20nm,100um --window 0.5 --time-step 4 --series "$tmp/ehl-series.csv" --csv
