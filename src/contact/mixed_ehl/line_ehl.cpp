@@ -922,20 +922,18 @@ std::vector<double> flash_temperature(const HalfPlaneGrid& grid, std::span<const
   const double denominator = std::sqrt(kPi) * (contact_coefficient1 * std::sqrt(std::max(speed1, 0.0)) +
                                                contact_coefficient2 * std::sqrt(std::max(speed2, 0.0)));
   std::vector<double> theta(n, 0.0);
-  if (!(denominator > 0.0)) return theta;
-  // theta(x_i) = sum_j q_j int_{e_j}^{min(e_{j+1}, x_i)} (x_i - s)^(-1/2) ds / denominator, the
-  // element's integral exact: 2 (sqrt(x_i - e_j) - sqrt(max(x_i - e_{j+1}, 0))).
-  for (std::size_t i = 0; i < n; ++i) {
-    const double x = grid.x(static_cast<int>(i));
-    double sum = 0.0;
-    for (std::size_t j = 0; j <= i; ++j) {
-      const double q = heat_flux[j];
-      if (q == 0.0) continue;
-      const double e0 = grid.start + static_cast<double>(j) * grid.spacing, e1 = e0 + grid.spacing;
-      sum += q * 2.0 * (std::sqrt(x - e0) - std::sqrt(std::max(x - e1, 0.0)));
-    }
-    theta[i] = sum / denominator;
-  }
+  if (!(denominator > 0.0) || n == 0) return theta;
+  // theta(x_i) = sum_{j <= i} q_j int_{e_j}^{min(e_{j+1}, x_i)} (x_i - s)^(-1/2) ds / denominator: a
+  // causal Toeplitz convolution, k(m) = 2 sqrt(dx) (sqrt(m + 1/2) - sqrt(max(m - 1/2, 0))) for
+  // m = i - j >= 0 (the element's integral exact), 0 for m < 0; by DC-FFT.
+  const int size = static_cast<int>(n);
+  std::vector<double> kernel(2 * n - 1, 0.0);
+  const double root = 2.0 * std::sqrt(grid.spacing);
+  for (int m = 0; m < size; ++m)
+    kernel[static_cast<std::size_t>(m + size - 1)] = root * (std::sqrt(m + 0.5) - std::sqrt(std::max(m - 0.5, 0.0)));
+  const ToeplitzConvolution convolution(kernel, size, false);
+  convolution.apply(heat_flux.data(), theta.data());
+  for (double& t : theta) t /= denominator;
   return theta;
 }
 

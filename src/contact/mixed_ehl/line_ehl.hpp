@@ -15,14 +15,15 @@
 // Equations (Hertzian units: X = x/b, P = p/p_H, H = h R/b^2, T = t u_ref/b):
 //   d/dX(eps dP/dX) - (u/u_ref) d(rho H)/dX - d(rho H)/dT = 0,   eps = rho H^3 phi/(eta lambda),
 //   lambda = 12 eta_0 u_ref R^2/(b^3 p_H);
-// finite volumes, the Poiseuille flux centred, the Couette flux upwinded (first order, the
-// upstream node), the squeeze term backward Euler. The elastic film is written in differential
+// finite volumes, the Poiseuille flux centred, the Couette flux upwinded to second order (first
+// order within 20 film floors of contact), the squeeze term by the variable-step BDF2 (Venner &
+// Lubrecht, Multilevel Methods in Lubrication, 2000). The elastic film is written in differential
 // form (Evans & Hughes, Proc. IMechE C 214, 2000; Holmes, Evans & Snidle, J. Tribol. 125, 2003):
 //   (H_{i+1} - 2 H_i + H_{i-1})/dX^2 = R_ref/R + sum_j D_ij P_j - d2r_i,
-// D the second difference of the displacement's influence coefficients, which fall as 1/k^2, so
-// Newton's method on (P_i, H_i) with D's three central diagonals in its Jacobian (the rest lagged,
-// added by FFT) is a block-tridiagonal solve per iteration; the film at the two ends from the
-// integral form closes it, and h0 is corrected each iteration to carry the line load.
+// D the second difference of the displacement's influence coefficients, which fall as 1/k^2.
+// Newton's method on (P_i, H_i) and h0 with the exact Jacobian, solved by GMRES preconditioned with
+// its block-tridiagonal part (D's three central diagonals) bordered by the load row; the rest of D
+// applied by FFT; the film at the two ends from the integral form (docs/theory/mixed-ehl.md).
 //
 // Cavitation: Reynolds' condition (p = 0 and dp/dx = 0 at the film's rupture) by the penalty
 // method (Wu, Quart. Appl. Math. 44, 1986): where p < 0 the residual gains -kappa p, kappa large,

@@ -34,12 +34,6 @@ void MixedEhlOptions::validate() const {
 
 namespace {
 
-// Heat fluxes below this share of the instant's largest are left out of the flash temperature's
-// integral (the inlet's and the cavitated zone's film shear, eta_0 |u1 - u2|/h, some 1e-5 of the
-// contact's): the rest changes the peak by less than 1e-4 x 2 sqrt(5.5/2) ~ 3e-4 of it (the whole
-// domain [-4b, 1.5b] at the cut against the contact's 2b at the largest flux), and the integral's
-// cost, quadratic in the nodes it spans, falls to that of the contact's.
-constexpr double kHeatFluxCut = 1e-4;
 // The subsurface stress: columns across the loaded nodes, and two scans in depth: to 1.5 b (the
 // Hertzian maximum lies at 0.70-0.78 b, nearer with traction) in 48 steps of 0.031 b (the von
 // Mises curve's flat top: its maximum within ~1e-3), and to 16 node spacings in steps of one (the
@@ -63,13 +57,7 @@ std::pair<double, double> flash_peak(const HalfPlaneGrid& grid, const EhlField& 
   double q_max = 0.0;
   for (std::size_t i = 0; i < q.size(); ++i) q_max = std::max(q_max, q[i] = std::abs(f.shear[i]) * slide);
   if (!(q_max > 0.0)) return {0.0, 0.0};
-  int first = grid.size, last = -1;
-  for (int i = 0; i < grid.size; ++i)
-    if (q[static_cast<std::size_t>(i)] >= kHeatFluxCut * q_max) first = std::min(first, i), last = i;
-  const std::vector<double> theta =
-      flash_temperature(sub_grid(grid, first, last),
-                        std::span<const double>(q.data() + first, static_cast<std::size_t>(last - first + 1)), c.speed1,
-                        c.speed2, coefficient[0], coefficient[1]);
+  const std::vector<double> theta = flash_temperature(grid, q, c.speed1, c.speed2, coefficient[0], coefficient[1]);
   return {*std::max_element(theta.begin(), theta.end()), q_max};
 }
 
