@@ -160,21 +160,26 @@ TEST(MixedEhlLine, VanishingViscosityIsTheDryContact) {
 }
 
 // The asperity share rises as the entrainment speed (and with it the film) falls: steady solves
-// at 5, 1 and 0.2 m/s, 1 um waviness of 40 um wavelength.
+// at 2, 0.5 and 0.2 m/s, 1 um waviness of 40 um wavelength (shares 0, 0.0073, 0.0138 measured;
+// below 0.1 m/s the steady contact's oil stays locked in the waviness's valleys and the share
+// falls back to 0: validation/mixed-ehl/README.md, "What fails").
 TEST(MixedEhlLine, AsperityShareRisesAsSpeedFalls) {
   double last = -1.0;
-  for (double u : {5.0, 1.0, 0.2}) {
+  for (double u : {2.0, 0.5, 0.2}) {
     const ContactInstant c{1e6, 0.0154, u, u};
     LineEhlSolver s(oil(0.05, 2e-8), 1.13e11, c, EhlOptions{});
     std::vector<double> r = flat(s);
     for (int i = 0; i < s.grid().size; ++i)
       r[static_cast<std::size_t>(i)] = 1e-6 * std::cos(2 * kPi * s.grid().x(i) / 40e-6);
     const EhlField& f = s.solve_steady(c, r);
+    if (last > 0.0) {
+      EXPECT_GT(f.asperity_share, last) << "u " << u;
+    }
     EXPECT_GE(f.asperity_share, last) << "u " << u;
     EXPECT_NEAR(f.line_load / c.line_load, 1.0, 1e-5);
     last = f.asperity_share;
   }
-  EXPECT_GT(last, 0.01);  // the asperities touch at the lowest speed (0.068 measured)
+  EXPECT_GT(last, 0.01);  // the asperities touch at the lowest speed (0.0138 measured)
 }
 
 // A time step with nothing changing leaves the steady solution (the squeeze term vanishes).
@@ -288,4 +293,115 @@ TEST(MixedEhlLine, BarusGivesAThickerFilmThanRoelands) {
     return s.solve_steady(c, flat(s)).central_film;
   };
   EXPECT_GT(film(ViscosityLaw::barus), film(ViscosityLaw::roelands));
+}
+
+namespace {
+// Two rough surfaces (two cosines each, of 23-41 um wavelength) sliding through the contact of the
+// shipped case's point A (gears/m6z30-mixed-ehl.toml: slide-to-roll 0.95, p_H 0.39 GPa): the
+// heights at time t, towards each other.
+std::vector<double> sliding_roughness(const HalfPlaneGrid& g, const ContactInstant& c, double amplitude, double t) {
+  std::vector<double> r(static_cast<std::size_t>(g.size));
+  for (int i = 0; i < g.size; ++i) {
+    const double x1 = g.x(i) - c.speed1 * t, x2 = g.x(i) - c.speed2 * t;
+    r[static_cast<std::size_t>(i)] =
+        amplitude * (std::cos(2 * kPi * x1 / 31e-6) + std::sin(2 * kPi * x1 / 23e-6) +
+                     std::cos(2 * kPi * x2 / 41e-6 + 1.0) + std::sin(2 * kPi * x2 / 29e-6));
+  }
+  return r;
+}
+constexpr ContactInstant kPointA{49267.5, 0.01191, 1.69, 4.757};
+}  // namespace
+
+// The oil the rough surfaces carry into the contact stays there: over 120 time steps (Courant
+// number 1 at the faster surface) no film falls below zero, though the asperities of 1.5 um
+// cosines squeeze it to tens of nanometres at elastic pressures of tens of GPa. With the mean of
+// the neighbours' Poiseuille coefficients at a face (instead of a film's linear conductance) the
+// closing films drained through their open neighbours to -0.12 um here.
+TEST(MixedEhlLine, FilmsStayPositiveAsRoughSurfacesSlideThroughContact) {
+  const ContactInstant& c = kPointA;
+  EhlOptions o;
+  o.nodes = 512;
+  o.tolerance = 1e-6;
+  LineEhlSolver s(oil(0.06, 2.2e-8), 1.154e11, c, o);
+  const HalfPlaneGrid& g = s.grid();
+  const double dt = g.spacing / c.speed2;
+  s.solve_steady(c, sliding_roughness(g, c, 1.5e-6, 0.0));
+  double least = std::numeric_limits<double>::infinity(), peak = 0.0;
+  for (int k = 1; k <= 120; ++k) {
+    const EhlField& f = s.step(c, sliding_roughness(g, c, 1.5e-6, k * dt), dt);
+    for (std::size_t i = 1; i + 1 < f.film.size(); ++i) {
+      if (f.film[i] < 0.0 && std::getenv("SHOWNEG"))
+        std::printf("k %d i %zu x/b %.3f h %.3g p %.3g GPa state %d\n", k, i, g.x((int)i) / s.hertz_half_width(),
+                    f.film[i], f.pressure[i] * 1e-9, (int)f.state[i]);
+      least = std::min(least, f.film[i]);
+    }
+    peak = std::max(peak, f.peak_pressure);
+    ASSERT_NEAR(f.line_load / c.line_load, 1.0, 1e-5);  // the load balance (tolerance 1e-6)
+  }
+  EXPECT_GE(least, 0.0);
+  EXPECT_LT(least, 30e-9);                     // the asperities squeeze the film thin
+  EXPECT_GT(peak, 10.0 * s.hertz_pressure());  // at micro-EHL pressures
+}
+
+// Elastic-perfectly-plastic surfaces: with the softer surface's hardness given, the same sliding
+// roughness's pressure is held at it (the regularised yield lets it exceed the hardness by ~0.1 %
+// per film unit b^2/R of flattening: 1 % allows ten), the surfaces yield at some nodes and the
+// load is carried at every step.
+TEST(MixedEhlLine, PressureIsHeldAtTheHardness) {
+  const ContactInstant& c = kPointA;
+  EhlOptions o;
+  o.nodes = 512;
+  o.tolerance = 1e-6;
+  o.hardness = 1.17e9;  // 45 steel (materials/steel-45.toml)
+  LineEhlSolver s(oil(0.06, 2.2e-8), 1.154e11, c, o);
+  const HalfPlaneGrid& g = s.grid();
+  const double dt = g.spacing / c.speed2;
+  s.solve_steady(c, flat(s));  // the smooth contact, then the roughness grown over 30 steps
+  double yielding = 0.0;
+  for (int k = 1; k <= 90; ++k) {
+    const EhlField& f = s.step(c, sliding_roughness(g, c, 1.5e-6 * std::min(1.0, k / 30.0), k * dt), dt);
+    EXPECT_LT(f.peak_pressure, 1.01 * o.hardness) << "step " << k;
+    ASSERT_NEAR(f.line_load / c.line_load, 1.0, 1e-5);
+    yielding = std::max(yielding, f.yield_fraction);
+  }
+  EXPECT_GT(yielding, 0.0);
+}
+
+// The piezoviscous-elastic limit of elastic-perfectly-plastic surfaces: a smooth contact loaded
+// past the hardness (p_H 2.65 GPa, hardness 2.2 GPa) has the dry contact's pressure, held at the
+// hardness over its middle, computed independently by the boundary elements' capped
+// complementarity solver (conjugate gradients on the free set, the approach bracketed;
+// contact/half_plane_bem.hpp): within 3 % of p_H at |x| < 0.8 b as the elastic limit above. The
+// pressure never passes the hardness. (A vanishing viscosity, the dry limit of the elastic test,
+// leaves the film under a yielded plateau undetermined: there the pressure is flat and the
+// Poiseuille term vanishes.)
+TEST(MixedEhlLine, PiezoviscousLimitOfYieldingSurfacesIsTheCappedDryContact) {
+  const ContactInstant c{3e6, 0.0154, 1.0, 1.0};
+  EhlOptions o;
+  o.nodes = 2048;
+  o.hardness = 2.2e9;
+  LineEhlSolver s(oil(0.05, 2e-8), 1.13e11, c, o);
+  const EhlField& f = s.solve_steady(c, flat(s));
+  const HalfPlaneGrid& g = s.grid();
+  geartrib::contact::BemOptions bo;
+  bo.pressure_cap = o.hardness;
+  bo.reference_length = 10.0 * g.size * g.spacing;  // past the domain (the rigid displacement's datum)
+  const geartrib::contact::HalfPlaneBem bem(g, 1.13e11, bo);
+  std::vector<double> gap0(static_cast<std::size_t>(g.size));
+  for (int i = 0; i < g.size; ++i) gap0[static_cast<std::size_t>(i)] = g.x(i) * g.x(i) / (2.0 * c.radius);
+  const auto dry = bem.solve_load(gap0, c.line_load);
+  ASSERT_GT(dry.capped_elements, 0);
+  const double b = s.hertz_half_width(), ph = s.hertz_pressure();
+  int held = 0;
+  for (int i = 0; i < g.size; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (std::abs(g.x(i) / b) < 0.8) {
+      EXPECT_NEAR(f.pressure[k] / ph, dry.pressure[k] / ph, 0.03) << "x/b " << g.x(i) / b;
+    }
+    held += f.yields[k];
+  }
+  EXPECT_GT(held, 0);
+  EXPECT_LE(f.peak_pressure, o.hardness);
+  EXPECT_GT(f.yield_fraction, 0.0);
+  EXPECT_NEAR(f.line_load / c.line_load, 1.0, 1e-6);
 }

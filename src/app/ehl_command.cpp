@@ -259,7 +259,7 @@ io::Table summary_table(const me::LineEhlSpec& s, const me::LineEhlResult& r) {
   add("load_error", f.load_error);
   add("asperity_share", f.asperity_share);
   add("contact_fraction", f.contact_fraction);
-  add("above_hardness_fraction", f.above_hardness_fraction);
+  add("yield_fraction", f.yield_fraction);
   add("friction_coefficient", f.friction_coefficient);
   add("film_friction_N_per_m", f.film_friction);
   add("boundary_friction_N_per_m", f.boundary_friction);
@@ -447,9 +447,10 @@ void add_ehl_command(CLI::App& app) {
                                     "and the softer one's hardness")
                         ->delimiter(',');
   modulus->excludes(materials);
-  cmd->add_option("--hardness", o->hardness,
-                  "H: the pressure whose excess is counted (above_hardness_fraction; default: the softer material's, "
-                  "else none)");
+  cmd->add_option(
+      "--hardness", o->hardness,
+      "H: the surfaces yield at this pressure, which holds there (elastic-perfectly-plastic; yield_fraction; "
+      "default: the softer material's, else elastic)");
   auto* viscosity =
       cmd->add_option("--viscosity", o->viscosity, "eta_0: the oil's viscosity at the inlet (e.g. 0.05Pa s)");
   auto* alpha = cmd->add_option("--alpha", o->alpha, "alpha: pressure-viscosity coefficient (e.g. 2e-8 1/Pa)");

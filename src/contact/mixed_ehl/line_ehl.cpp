@@ -168,6 +168,9 @@ constexpr double kMaxPressureStep = 1.0;
 constexpr double kSecondOrderFilms = 20.0;  // films above this many floors: the Couette term to second order
 constexpr double kEpsilonFloor = 1e-3;      // eps gains this x u dX H_floor
 constexpr int kLineSearchHalvings = 10;
+// The yield's corner (Impl::derive_pressure): rounded over this share of the hardness (1e-2 took
+// 1.7 times as long on gears/m6z30-mixed-ehl.toml with the same shares and films to 3 digits).
+constexpr double kYieldCorner = 1e-3;
 constexpr double kMeritGrowth = 1e8;
 constexpr int kMaxStepHalvings = 6;                // a failed time step retried as up to 64 substeps
 constexpr double kMinHomotopyStride = 1.0 / 64.0;  // the roughness's smallest step in a steady solve's homotopy  // a
@@ -239,8 +242,12 @@ struct LineEhlSolver::Impl {
   std::unique_ptr<ToeplitzConvolution> deflection;  // sum_j K^(i-j) P_j
   std::vector<double> band;                         // D(0), D(1): the second difference of -K^/pi over dx^2 at 0, +-1
   // State (dimensionless).
-  std::vector<double> P, H, mass_old;           // mass_old: rho H at the last time
+  // The unknowns are Q and H: Q the pressure's parameter along the elastic-perfectly-plastic
+  // graph (pressure_of), P = p(Q) the pressure, U = u(Q) the surfaces' plastic flattening.
+  std::vector<double> Q, P, dP, U, dU;
+  std::vector<double> H, mass_old;              // mass_old: rho H at the last time
   std::vector<double> mass_older, mass_target;  // rho H a step before; the time derivative's known part
+  std::vector<double> squeeze_at;               // the time derivative's coefficient at each node
   std::vector<char> second_order;               // the Couette term's order at each node (2 or 1)
   bool first_order = false;                     // a retry: the Couette term to first order everywhere
   double last_dt = 0.0;                         // the last step's [s]; 0 after a steady solve
@@ -252,7 +259,8 @@ struct LineEhlSolver::Impl {
   ContactInstant last_instant;
   std::vector<double> last_heights;  // [m]
   // Work.
-  std::vector<double> conv, eps, deps_dp, deps_dh, rho, drho, r, work_p, work_conv;
+  std::vector<double> conv, mobility, dmobility_dp, dmobility_dh, rho, drho, r, work_p, work_conv;
+  double eps_floor = 0.0;  // each face's eps gains this (coefficients())
   void build_grid() {
     n = options.nodes;
     const double x0 = -options.inlet * b, x1 = options.outlet * b;
@@ -269,20 +277,23 @@ struct LineEhlSolver::Impl {
     deflection = std::make_unique<ToeplitzConvolution>(kernel, n, false);
     auto k = [&](int m) { return kernel[static_cast<std::size_t>(n - 1 + std::abs(m))]; };
     band = {-(k(1) - 2.0 * k(0) + k(-1)) / (kPi * dx * dx), -(k(2) - 2.0 * k(1) + k(0)) / (kPi * dx * dx)};
-    P.assign(static_cast<std::size_t>(n), 0.0);
+    for (auto* v : {&Q, &P, &dP, &U, &dU}) v->assign(static_cast<std::size_t>(n), 0.0);
+    std::fill(dP.begin(), dP.end(), 1.0);
     H.assign(static_cast<std::size_t>(n), 0.0);
     mass_old.assign(static_cast<std::size_t>(n), 0.0);
     mass_older.assign(static_cast<std::size_t>(n), 0.0);
     mass_target.assign(static_cast<std::size_t>(n), 0.0);
-    for (auto* v : {&conv, &eps, &deps_dp, &deps_dh, &rho, &drho, &r}) v->assign(static_cast<std::size_t>(n), 0.0);
+    for (auto* v : {&conv, &mobility, &dmobility_dp, &dmobility_dh, &rho, &drho, &r})
+      v->assign(static_cast<std::size_t>(n), 0.0);
   }
 
   // The film from the integral form at every node (H0, geometry, deflection, heights).
   void integral_film(double curvature, std::vector<double>& out) {
+    derive_pressure();
     deflection->apply(P.data(), conv.data());
     for (int i = 0; i < n; ++i) {
       const auto s = static_cast<std::size_t>(i);
-      out[s] = H0 + 0.5 * curvature * X[s] * X[s] - conv[s] / kPi - r[s];
+      out[s] = H0 + 0.5 * curvature * X[s] * X[s] - conv[s] / kPi - r[s] + U[s];
     }
   }
 
@@ -305,9 +316,10 @@ struct LineEhlSolver::Impl {
     for (int i = 0; i < n; ++i) {
       const auto s = static_cast<std::size_t>(i);
       const double t = (X[s] - centre) / half;
-      P[s] = std::abs(t) < 1.0 ? (load / half) * std::sqrt(1.0 - t * t) : 0.0;
+      Q[s] = std::abs(t) < 1.0 ? (load / half) * std::sqrt(1.0 - t * t) : 0.0;
+      if (plastic_on) Q[s] = std::min(Q[s], yield_level());  // yielding surfaces: at most the hardness
     }
-    P.front() = P.back() = 0.0;
+    Q.front() = Q.back() = 0.0;
     H0 = 0.0;
     integral_film(curvature, H);
     const auto mid = static_cast<std::size_t>(std::lower_bound(X.begin(), X.end(), 0.0) - X.begin());
@@ -316,9 +328,61 @@ struct LineEhlSolver::Impl {
     started = true;
   }
 
+  // The Poiseuille coefficient eps across the face between nodes i and j, and its derivatives by
+  // each node's P and H: the lubricant's mobility rho phi/(eta lambda) averaged (as Venner &
+  // Lubrecht average eps), times the conductance of a film varying linearly from h_i to h_j,
+  // dX / int dX/h^3 = 2 h_i^2 h_j^2/(h_i + h_j) (h^3 where they are equal), plus eps's floor. The
+  // mean of eps itself lets a closing film drain through its open neighbour's coefficient: on
+  // rough surfaces sliding at the shipped case's point A that turned contact nodes' films
+  // negative (to -0.45 um) while their pressure rose to tens of GPa.
+  struct Face {
+    double value, dp_this, dh_this, dp_other, dh_other;
+  };
+  Face face(std::size_t i, std::size_t j) const {
+    const double hi = std::max(H[i], 0.0), hj = std::max(H[j], 0.0), sum = hi + hj;
+    const double m = 0.5 * (mobility[i] + mobility[j]);
+    double cond = 0.0, dci = 0.0, dcj = 0.0;
+    if (sum > 0.0) {
+      cond = 2.0 * hi * hi * hj * hj / sum;
+      dci = 2.0 * hi * hj * hj * (hi + 2.0 * hj) / (sum * sum);
+      dcj = 2.0 * hj * hi * hi * (hj + 2.0 * hi) / (sum * sum);
+    }
+    return {m * cond + eps_floor, 0.5 * dmobility_dp[i] * cond, 0.5 * dmobility_dh[i] * cond + m * dci,
+            0.5 * dmobility_dp[j] * cond, 0.5 * dmobility_dh[j] * cond + m * dcj};
+  }
+
+  // Elastic-perfectly-plastic surfaces (the pressure truncated at the softer surface's hardness,
+  // as the dry boundary elements do; Almqvist et al., Wear 262, 2007, 1320-1332): a node's
+  // pressure P and the surfaces' plastic flattening U (which opens the film like the elastic
+  // displacement) lie on the graph U = 0 for P < P_y, P = P_y for U > 0, P_y = hardness/p_H. The
+  // graph is parametrised by Q (Newton's unknown), its corner rounded over d = kYieldCorner P_y:
+  //   P = P_y - d softplus((P_y - Q)/d),   U = d softplus((Q - P_y)/d)   (film units per unit Q),
+  // so the pressure never exceeds the hardness and both slopes stay within [0, 1] (a kinked cap
+  // or a steep plastic compliance made Newton's method cycle). Q = P without a hardness. The
+  // flattening follows the pressure at each instant (it is not carried with the surface).
+  double yield_level() const { return options.hardness / ph; }
+  void derive_pressure() {
+    if (!plastic_on) {
+      P = Q;
+      return;
+    }
+    const double py = yield_level(), d = kYieldCorner * py;
+    for (std::size_t i = 0; i < Q.size(); ++i) {
+      const double t = (Q[i] - py) / d;
+      // softplus(t) = ln(1 + e^t), its slope the logistic function, both without overflow.
+      const double up = t > 0.0 ? t + std::log1p(std::exp(-t)) : std::log1p(std::exp(t));
+      const double sig = t > 0.0 ? 1.0 / (1.0 + std::exp(-t)) : std::exp(t) / (1.0 + std::exp(t));
+      U[i] = d * up;
+      dU[i] = sig;
+      P[i] = Q[i] - U[i];  // P_y - d softplus(-t) = Q - d softplus(t)
+      dP[i] = 1.0 - sig;
+    }
+  }
+  bool plastic_on = false;  // a finite hardness
+
   // eps and its derivatives, rho and its derivative, at every node.
   void coefficients(const ContactInstant& c) {
-    const double eps_floor =
+    const double floor =
         kEpsilonFloor * (c.entrainment() / reference.entrainment()) * dx * options.film_floor / film_scale;
     const double lambda =
         12.0 * fluid.viscosity * reference.entrainment() * reference.radius * reference.radius / (b * b * b * ph);
@@ -349,19 +413,20 @@ struct LineEhlSolver::Impl {
         phi = std::sqrt(1.0 + ratio * ratio);  // cosh(asinh(ratio)), Conry, Wang & Cusano 1987
         phi_share = ratio * ratio / (phi * phi);
       }
-      const double e = rho[s] * h * h * h * phi / (eta_bar * lambda);
-      eps[s] = std::isfinite(e) ? e : 0.0;
-      // ln eps = ln rho + 3 ln H + ln phi - ln eta, phi of s = eta |u1 - u2|/(tau_0 h).
-      deps_dp[s] = eps[s] * (drho[s] / rho[s] - (1.0 - phi_share) * dlneta);
-      deps_dh[s] = h > 0.0 ? (3.0 - phi_share) * eps[s] / h : 0.0;
-      // Where the film vanishes (contact, or a solid viscosity) the pressure would be
-      // undetermined by this equation: eps gains a constant (smoothly, not as a floor, whose kink
-      // would stall Newton's method where eps crosses it), so the pressure stays the harmonic
-      // continuation of its neighbours'. Its Poiseuille flux across a node where the pressure
-      // jumps by p_H is 1e-3 of the Couette flux through a film at the floor (at 1, that flux
-      // drained the contacts' oil until their films turned negative).
-      eps[s] += eps_floor;
+      // The mobility rho phi/(eta lambda) (eps = mobility H^3): ln of it = ln rho + ln phi - ln eta,
+      // phi of s = eta |u1 - u2|/(tau_0 h).
+      const double mob = rho[s] * phi / (eta_bar * lambda);
+      mobility[s] = std::isfinite(mob) ? mob : 0.0;
+      dmobility_dp[s] = mobility[s] * (drho[s] / rho[s] - (1.0 - phi_share) * dlneta);
+      dmobility_dh[s] = h > 0.0 ? -phi_share * mobility[s] / h : 0.0;
     }
+    // Where the film vanishes (contact, or a solid viscosity) the pressure would be undetermined
+    // by this equation: each face's eps gains a constant (smoothly, not as a floor, whose kink
+    // would stall Newton's method where eps crosses it), so the pressure stays the harmonic
+    // continuation of its neighbours'. Its Poiseuille flux across a node where the pressure jumps
+    // by p_H is 1e-3 of the Couette flux through a film at the floor (at 1, that flux drained the
+    // contacts' oil until their films turned negative).
+    eps_floor = floor;
   }
 
   // One solve (steady: dt = 0) at the instant; throws if not converged.
@@ -413,7 +478,7 @@ struct LineEhlSolver::Impl {
     const double penalty = kPenaltyFactor / (dx * dx);
     double update = 0.0, load_error = 0.0;
     int it = 0, linear_iterations = 0;
-    std::vector<double> row_scale(2 * m, 1.0), P_base, H_base, work_v;
+    std::vector<double> row_scale(2 * m, 1.0), Q_base, H_base, work_v;
     // The residuals at the present state (F, G per interior node, the load's), and with
     // `jacobian` the Newton blocks; returns the merit sum((row residual/row scale)^2) + load^2
     // with the row scales of the last Jacobian (fixed through a line search).
@@ -428,7 +493,8 @@ struct LineEhlSolver::Impl {
           h_scale = std::max(h_scale, std::abs(H[static_cast<std::size_t>(i)]));
       for (std::size_t k = 0; k < m; ++k) {
         const std::size_t i = k + 1;
-        const double ea = 0.5 * (eps[i] + eps[i + 1]) * inv_dx2, ec = 0.5 * (eps[i] + eps[i - 1]) * inv_dx2;
+        const Face fa = face(i, i + 1), fc = face(i, i - 1);
+        const double ea = fa.value * inv_dx2, ec = fc.value * inv_dx2;
         const double dpa = P[i + 1] - P[i], dpc_ = P[i] - P[i - 1];
         // The Couette term upwinded to second order, (3 M_i - 4 M_{i-1} + M_{i-2})/(2 dX) (first
         // order at the first node): c0, c1, c2 its weights.
@@ -436,25 +502,26 @@ struct LineEhlSolver::Impl {
         const double c0 = second ? 1.5 / dx : 1.0 / dx, c1 = second ? 2.0 / dx : 1.0 / dx, c2 = second ? 0.5 / dx : 0.0;
         const double mass = rho[i] * H[i], mass_prev = rho[i - 1] * H[i - 1];
         const double mass_far = second ? rho[i - 2] * H[i - 2] : 0.0;
-        const double couette = speed * (c0 * mass - c1 * mass_prev + c2 * mass_far) + squeeze * (mass - mass_target[i]);
+        const double couette =
+            speed * (c0 * mass - c1 * mass_prev + c2 * mass_far) + squeeze_at[i] * (mass - mass_target[i]);
         double F = ea * dpa - ec * dpc_ - couette;
         if (P[i] < 0.0) F -= penalty * P[i];
         const double d2conv = (conv[i + 1] - 2.0 * conv[i] + conv[i - 1]) * inv_dx2;
         const double G = (H[i + 1] - 2.0 * H[i] + H[i - 1]) * inv_dx2 - curvature + d2conv / kPi +
-                         (r[i + 1] - 2.0 * r[i] + r[i - 1]) * inv_dx2;
+                         (r[i + 1] - 2.0 * r[i] + r[i - 1]) * inv_dx2 - (U[i + 1] - 2.0 * U[i] + U[i - 1]) * inv_dx2;
         rhs[k] = {-F, -G};
         if (with_jacobian) {
-          const double half = 0.5 * inv_dx2;
           Block d{}, l{}, u{};
-          d[0] = -ea - ec + half * (dpa - dpc_) * deps_dp[i] - (speed * c0 + squeeze) * drho[i] * H[i];
-          d[1] = half * (dpa - dpc_) * deps_dh[i] - (speed * c0 + squeeze) * rho[i];
-          l[0] = ec - half * dpc_ * deps_dp[i - 1] + speed * c1 * drho[i - 1] * H[i - 1];
-          l[1] = -half * dpc_ * deps_dh[i - 1] + speed * c1 * rho[i - 1];
+          d[0] = -ea - ec + (fa.dp_this * dpa - fc.dp_this * dpc_) * inv_dx2 -
+                 (speed * c0 + squeeze_at[i]) * drho[i] * H[i];
+          d[1] = (fa.dh_this * dpa - fc.dh_this * dpc_) * inv_dx2 - (speed * c0 + squeeze_at[i]) * rho[i];
+          l[0] = ec - fc.dp_other * dpc_ * inv_dx2 + speed * c1 * drho[i - 1] * H[i - 1];
+          l[1] = -fc.dh_other * dpc_ * inv_dx2 + speed * c1 * rho[i - 1];
           // The node two upstream: outside the tridiagonal blocks, in the Jacobian's product;
           // the preconditioner lumps it onto the upstream neighbour.
           far[k] = second ? Pair{-speed * c2 * drho[i - 2] * H[i - 2], -speed * c2 * rho[i - 2]} : Pair{0.0, 0.0};
-          u[0] = ea + half * dpa * deps_dp[i + 1];
-          u[1] = half * dpa * deps_dh[i + 1];
+          u[0] = ea + fa.dp_other * dpa * inv_dx2;
+          u[1] = fa.dh_other * dpa * inv_dx2;
           // Cavitation by the penalty method (Wu, 1986; Reynolds' condition as the penalty
           // grows): where P < 0 the residual gains -kappa P, so the cavitated zone's pressure is
           // F(0)/(kappa + |dF/dP|) ~ 0 and the film's rupture moves freely in each Newton step.
@@ -464,6 +531,11 @@ struct LineEhlSolver::Impl {
           d[3] = -2.0 * inv_dx2;
           l[2] = u[2] = -band[1];
           l[3] = u[3] = inv_dx2;
+          // By Q: the pressure's columns times dP/dQ, the flattening's second difference by dU/dQ.
+          d[0] *= dP[i], d[2] = d[2] * dP[i] + 2.0 * dU[i] * inv_dx2;
+          l[0] *= dP[i - 1], l[2] = l[2] * dP[i - 1] - dU[i - 1] * inv_dx2;
+          u[0] *= dP[i + 1], u[2] = u[2] * dP[i + 1] - dU[i + 1] * inv_dx2;
+          if (second) far[k][0] *= dP[i - 2];
           lower[k] = l;
           diag[k] = d;
           upper[k] = u;
@@ -483,12 +555,24 @@ struct LineEhlSolver::Impl {
     // order's undershoots at a contact's edge turn films negative and stall Newton's method there.
     // Fixed through the solve, so the Jacobian stays exact.
     second_order.assign(static_cast<std::size_t>(n), 0);
+    const double thick = kSecondOrderFilms * options.film_floor / film_scale;
     {
-      const double thick = kSecondOrderFilms * options.film_floor / film_scale;
       for (int i = 2; i < n; ++i) {
         const auto k = static_cast<std::size_t>(i);
         second_order[k] = !first_order && std::min({H[k], H[k - 1], H[k - 2]}) > thick;
       }
+    }
+    // Where the Couette term is first order (near a contact) so is the time derivative: backward
+    // Euler, M^{n+1} = M^n - dT u dM/dX. BDF2's M^{n+1} = (4 M^n - M^{n-1})/3 + ... turns a film
+    // that thins fast as an asperity closes (M^{n-1} > 4 M^n) negative; upwind with backward
+    // Euler keeps the carried content positive (a monotone scheme, LeVeque, Finite Volume
+    // Methods for Hyperbolic Problems, 2002, sec. 8.3).
+    squeeze_at.assign(static_cast<std::size_t>(n), squeeze);
+    if (dt > 0.0) {
+      const double backward_euler = b / (dt * reference.entrainment());
+      for (std::size_t i = 0; i < squeeze_at.size(); ++i)
+        if (!second_order[i] && (i >= 2 || first_order || H[i] <= thick))
+          squeeze_at[i] = backward_euler, mass_target[i] = mass_old[i];
     }
     double merit = assemble(true), forcing = kMaxForcing;
     for (; it < options.max_iterations; ++it) {
@@ -506,9 +590,9 @@ struct LineEhlSolver::Impl {
       // applied by FFT). Right-preconditioned GMRES with the bordered T as the preconditioner.
       factor(lumped, diag, upper, dinv, cprime);
       solve_tridiagonal(lumped, dinv, cprime, col, y2);  // T^-1 (-dRes/dH0)
-      auto load_of = [&](const std::vector<Pair>& y) {   // the load row: dx sum(dP)
+      auto load_of = [&](const std::vector<Pair>& y) {   // the load row: dx sum(dP/dQ dQ)
         double sum = 0.0;
-        for (std::size_t k = 0; k < m; ++k) sum += y[k][0];
+        for (std::size_t k = 0; k < m; ++k) sum += dP[k + 1] * y[k][0];
         return dx * sum;
       };
       const double load_y2 = load_of(y2);
@@ -525,7 +609,7 @@ struct LineEhlSolver::Impl {
       auto jacobian = [&](const std::vector<double>& zz, std::vector<double>& out) {
         out.assign(2 * m + 1, 0.0);
         std::fill(work_p.begin(), work_p.end(), 0.0);
-        for (std::size_t k = 0; k < m; ++k) work_p[k + 1] = zz[2 * k];
+        for (std::size_t k = 0; k < m; ++k) work_p[k + 1] = zz[2 * k] * dP[k + 1];  // dP = dP/dQ dQ
         deflection->apply(work_p.data(), work_conv.data());
         double load = 0.0;
         for (std::size_t k = 0; k < m; ++k) {
@@ -587,9 +671,9 @@ struct LineEhlSolver::Impl {
         jacobian(z, jz);
         std::vector<Pair> r0 = rhs;
         const double l0 = load_error;
-        const std::vector<double> Pb = P, Hb = H;
+        const std::vector<double> Qb = Q, Hb = H;
         const double H0b = H0, delta = 1e-7;
-        for (std::size_t k = 0; k < m; ++k) P[k + 1] += delta * z[2 * k], H[k + 1] += delta * z[2 * k + 1];
+        for (std::size_t k = 0; k < m; ++k) Q[k + 1] += delta * z[2 * k], H[k + 1] += delta * z[2 * k + 1];
         H0 += delta * z[2 * m];
         assemble(false);
         double worst = 0.0;
@@ -606,7 +690,7 @@ struct LineEhlSolver::Impl {
             "  FD worst {:.3e} node {} row {} X {:.4f} fd {:.4e} jz {:.4e} P {:.3f} | load fd {:.4e} jz {:.4e}\n",
             worst, wk + 1, wr, X[wk + 1], -(rhs[wk][wr] - r0[wk][wr]) / delta, jz[2 * wk + wr], P[wk + 1],
             (load_error - l0) * target / delta, jz[2 * m]);
-        P = Pb;
+        Q = Qb;
         H = Hb;
         H0 = H0b;
         assemble(true);
@@ -631,13 +715,13 @@ struct LineEhlSolver::Impl {
       // while the merit would grow more than kMeritGrowth-fold. (An Armijo search, Dennis &
       // Schnabel 1983 sec. 6.3, took 1.5-3 times the iterations: the cavitation's penalty and the
       // exponential viscosity make the merit fall non-monotonically along Newton's path.)
-      P_base = P;
+      Q_base = Q;
       H_base = H;
       const double H0_base = H0, merit_base = merit;
       double trial_merit = merit_base;
       for (int halving = 0; halving <= kLineSearchHalvings; ++halving) {
         for (std::size_t k = 0; k < m; ++k) {
-          P[k + 1] = P_base[k + 1] + theta * z[2 * k];
+          Q[k + 1] = Q_base[k + 1] + theta * z[2 * k];
           H[k + 1] = H_base[k + 1] + theta * z[2 * k + 1];
         }
         H0 = H0_base + theta * z[2 * m];
@@ -663,9 +747,9 @@ struct LineEhlSolver::Impl {
           if (std::abs(z[2 * k]) > std::abs(z[2 * kk])) kk = k;
         fmt::print(
             stderr,
-            "it {} theta {:.2e} merit {:.3e} upd {:.2e} dh {:.2e} load {:.2e} forcing {:.1e} | node {} X {:.4f} P {:.4f} H {:.3e} eps {:.2e} zp {:.2e} zh {:.2e} dt {:.3g}\n",
-            it, theta, merit, update, dh_rel, load_error, forcing, kk + 1, X[kk + 1], P[kk + 1], H[kk + 1], eps[kk + 1],
-            z[2 * kk], z[2 * kk + 1], dt);
+            "it {} theta {:.2e} merit {:.3e} upd {:.2e} dh {:.2e} load {:.2e} forcing {:.1e} | node {} X {:.4f} P {:.4f} H {:.3e} mobility {:.2e} zp {:.2e} zh {:.2e} dt {:.3g}\n",
+            it, theta, merit, update, dh_rel, load_error, forcing, kk + 1, X[kk + 1], P[kk + 1], H[kk + 1],
+            mobility[kk + 1], z[2 * kk], z[2 * kk + 1], dt);
       }
       const double merit_last = merit;
       merit = assemble(true);
@@ -697,13 +781,13 @@ struct LineEhlSolver::Impl {
   // A time step; one that does not converge is retried as two half steps (the instant and the
   // heights interpolated linearly between the last and the new), at most kMaxStepHalvings deep.
   void advance(const ContactInstant& c, const std::vector<double>& heights, double dt, int depth) {
-    const std::vector<double> P_keep = P, H_keep = H, mass_keep = mass_old, older_keep = mass_older,
+    const std::vector<double> Q_keep = Q, H_keep = H, mass_keep = mass_old, older_keep = mass_older,
                               heights_keep = last_heights;
     const double dt_keep = last_dt;
     const double H0_keep = H0;
     const ContactInstant instant_keep = last_instant;
     auto restore = [&] {
-      P = P_keep, H = H_keep, mass_old = mass_keep, mass_older = older_keep, H0 = H0_keep, last_dt = dt_keep;
+      Q = Q_keep, H = H_keep, mass_old = mass_keep, mass_older = older_keep, H0 = H0_keep, last_dt = dt_keep;
       last_heights = heights_keep;
       last_instant = instant_keep;
     };
@@ -738,20 +822,24 @@ struct LineEhlSolver::Impl {
     EhlField& f = field;
     f.pressure.resize(static_cast<std::size_t>(n));
     f.film.resize(static_cast<std::size_t>(n));
+    f.flattening.resize(static_cast<std::size_t>(n));
+    f.yields.resize(static_cast<std::size_t>(n));
     f.shear.resize(static_cast<std::size_t>(n));
     f.state.resize(static_cast<std::size_t>(n));
     const double slide = std::abs(c.speed1 - c.speed2);
-    const double hardness = options.hardness;
     const double bc = std::sqrt(c.line_load * c.radius / (w_ref * reference.radius)) * b;  // this instant's b
     double load = 0.0, contact_load = 0.0, film_friction = 0.0, boundary_friction = 0.0, peak = 0.0;
     double min_film = std::numeric_limits<double>::infinity();
-    int in_band = 0, in_contact = 0, above = 0;
+    int in_band = 0, in_contact = 0, yielding = 0;
     for (int i = 0; i < n; ++i) {
       const auto s = static_cast<std::size_t>(i);
       const double p = std::max(P[s], 0.0) * ph, h = H[s] * film_scale, x = grid.x(i);
       f.pressure[s] = p;
       f.film[s] = h;
-      const bool contact = h < options.film_floor;
+      f.flattening[s] = U[s] * film_scale;
+      f.yields[s] = plastic_on && Q[s] > yield_level();  // past the yield's corner
+      // The domain's two end nodes hold the pressure at zero: their film is the gap, not a contact.
+      const bool contact = h < options.film_floor && i > 0 && i + 1 < n;
       f.state[s] = contact ? NodeState::contact : (P[s] > 0.0 ? NodeState::fluid : NodeState::cavitated);
       double tau = 0.0;
       if (contact) {  // the contacts' pressure and the film's between them: boundary friction
@@ -772,7 +860,7 @@ struct LineEhlSolver::Impl {
       if (std::abs(x) <= bc) {
         ++in_band;
         if (contact) ++in_contact;
-        if (p > hardness) ++above;
+        if (f.yields[s]) ++yielding;
       }
     }
     // Central film: linear interpolation at x = 0.
@@ -785,7 +873,7 @@ struct LineEhlSolver::Impl {
     f.contact_load = contact_load;
     f.min_film = std::isfinite(min_film) ? min_film : 0.0;
     f.contact_fraction = in_band > 0 ? static_cast<double>(in_contact) / in_band : 0.0;
-    f.above_hardness_fraction = in_band > 0 ? static_cast<double>(above) / in_band : 0.0;
+    f.yield_fraction = in_band > 0 ? static_cast<double>(yielding) / in_band : 0.0;
     f.asperity_share = load > 0.0 ? contact_load / load : 0.0;
     f.peak_pressure = peak;
     f.film_friction = film_friction;
@@ -815,6 +903,7 @@ LineEhlSolver::LineEhlSolver(const Fluid& fluid, double composite_modulus, const
   s.b = std::sqrt(4.0 * reference.line_load * reference.radius / (kPi * composite_modulus));
   s.ph = 2.0 * reference.line_load / (kPi * s.b);
   s.film_scale = s.b * s.b / reference.radius;
+  s.plastic_on = std::isfinite(options.hardness);
   s.build_grid();
 }
 LineEhlSolver::~LineEhlSolver() = default;
@@ -870,7 +959,7 @@ const EhlField& LineEhlSolver::step(const ContactInstant& instant, std::span<con
 
 namespace {
 void steady_solve(LineEhlSolver::Impl& s, const ContactInstant& instant, std::span<const double> heights) {
-  const std::vector<double> P_keep = s.P, H_keep = s.H;
+  const std::vector<double> Q_keep = s.Q, H_keep = s.H;
   const double H0_keep = s.H0;
   try {
     s.solve(instant, heights, 0.0);
@@ -878,7 +967,7 @@ void steady_solve(LineEhlSolver::Impl& s, const ContactInstant& instant, std::sp
   } catch (const std::runtime_error&) {
   }
   // Again with the Couette term to first order everywhere, then by homotopy in the roughness.
-  s.P = P_keep, s.H = H_keep, s.H0 = H0_keep;
+  s.Q = Q_keep, s.H = H_keep, s.H0 = H0_keep;
   s.first_order = true;
   struct Reset {
     LineEhlSolver::Impl& s;
@@ -900,14 +989,14 @@ void steady_solve(LineEhlSolver::Impl& s, const ContactInstant& instant, std::sp
     double done = 0.0, stride = 0.25;
     while (done < 1.0) {
       const double next = std::min(1.0, done + stride);
-      const std::vector<double> P_stage = s.P, H_stage = s.H;
+      const std::vector<double> Q_stage = s.Q, H_stage = s.H;
       const double H0_stage = s.H0;
       try {
         at(next);
         done = next;
       } catch (const std::runtime_error&) {
         if (stride < kMinHomotopyStride) throw;
-        s.P = P_stage, s.H = H_stage, s.H0 = H0_stage;
+        s.Q = Q_stage, s.H = H_stage, s.H0 = H0_stage;
         stride *= 0.5;
       }
     }

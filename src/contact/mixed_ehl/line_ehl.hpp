@@ -15,10 +15,12 @@
 // Equations (Hertzian units: X = x/b, P = p/p_H, H = h R/b^2, T = t u_ref/b):
 //   d/dX(eps dP/dX) - (u/u_ref) d(rho H)/dX - d(rho H)/dT = 0,   eps = rho H^3 phi/(eta lambda),
 //   lambda = 12 eta_0 u_ref R^2/(b^3 p_H);
-// finite volumes, the Poiseuille flux centred, the Couette flux upwinded to second order (first
-// order within 20 film floors of contact), the squeeze term by the variable-step BDF2 (Venner &
-// Lubrecht, Multilevel Methods in Lubrication, 2000). The elastic film is written in differential
-// form (Evans & Hughes, Proc. IMechE C 214, 2000; Holmes, Evans & Snidle, J. Tribol. 125, 2003):
+// finite volumes, the Poiseuille flux centred (the coefficient at a face the mean mobility
+// rho/(eta lambda) times the conductance 2 h_i^2 h_j^2/(h_i + h_j) of a film varying linearly
+// between the nodes), the Couette flux upwinded to second order and the squeeze term by the
+// variable-step BDF2 (Venner & Lubrecht, Multilevel Methods in Lubrication, 2000), both first
+// order (upwind, backward Euler: monotone) within 20 film floors of contact. The elastic film is written in
+// differential form (Evans & Hughes, Proc. IMechE C 214, 2000; Holmes, Evans & Snidle, J. Tribol. 125, 2003):
 //   (H_{i+1} - 2 H_i + H_{i-1})/dX^2 = R_ref/R + sum_j D_ij P_j - d2r_i,
 // D the second difference of the displacement's influence coefficients, which fall as 1/k^2.
 // Newton's method on (P_i, H_i) and h0 with the exact Jacobian, solved by GMRES preconditioned with
@@ -28,8 +30,8 @@
 // Cavitation: Reynolds' condition (p = 0 and dp/dx = 0 at the film's rupture) by the penalty
 // method (Wu, Quart. Appl. Math. 44, 1986): where p < 0 the residual gains -kappa p, kappa large,
 // so the cavitated zone's pressure is ~0 and the rupture moves freely with each Newton step.
-// Newton steps are limited to 0.3 p_H per node (the exponential viscosity), and nodes at the cap
-// or in contact form active sets checked once converged (a node held there is freed for one step).
+// Newton steps are limited to 1 p_H per node (the exponential viscosity) and to halving an open
+// film or doubling one near contact.
 // Asperity contact by the unified approach (Hu & Zhu, J. Tribol. 122, 2000, 1-9; for spur gears Li
 // & Kahraman, J. Tribol. 132, 2010, 011501): one pressure and one Reynolds equation everywhere.
 // Where the film thins to nanometres its Poiseuille term vanishes (h^3, and the viscosity's rise),
@@ -38,8 +40,12 @@
 // the dry contact's. A node whose film is below film_floor counts as in asperity contact; the load
 // those nodes carry is the asperity share. The Poiseuille coefficient is floored at
 // u dX h_floor (Hertzian units) so that a pressure stays defined where the film vanishes, a flux
-// ~dX/1000 of the Couette flux through a film at the floor. The pressure is elastic: where it
-// exceeds the softer surface's hardness the node is counted (above_hardness_fraction), not capped.
+// ~dX/1000 of the Couette flux through a film at the floor.
+// Surfaces elastic-perfectly-plastic when a hardness is given (EhlOptions::hardness; the mesh
+// fidelity gives the softer flank's, as the dry boundary elements cap their pressure at it): the
+// pressure is held at the hardness where the surfaces yield, and their plastic flattening opens
+// the film like the elastic displacement (Almqvist et al., Wear 262, 2007); the corner of that
+// pressure-flattening graph is rounded over 0.1 % of the hardness (line_ehl.cpp).
 // Lubricant: viscosity by Roelands (1966) (p0 = 1.96e8 Pa, Z = alpha p0/(ln eta_0 + 9.67)) or
 // Barus, density by Dowson & Higginson (1966): rho/rho_0 = 1 + 0.6e-9 p/(1 + 1.7e-9 p) [p in Pa];
 // the flow Newtonian, or Ree-Eyring with the Poiseuille flow factor
@@ -99,7 +105,7 @@ struct EhlOptions {
   int max_iterations = 500;
   double film_floor = 2e-9;  // h below which a node is in asperity contact [m]
   double hardness =
-      std::numeric_limits<double>::infinity();  // the softer surface's [Pa]: pressures above it are counted
+      std::numeric_limits<double>::infinity();  // the softer surface's [Pa]: the pressure held at it; infinite: elastic
   double boundary_friction = 0.1;               // friction coefficient in the asperity contacts [-]
   void validate() const;                        // throws core::KeyedError naming the field
 };
@@ -108,25 +114,27 @@ enum class NodeState : std::uint8_t { fluid, cavitated, contact };
 
 // One instant's answer on the nodes, per unit face width.
 struct EhlField {
-  std::vector<double> pressure;  // p [Pa]
-  std::vector<double> film;      // h [m]
-  std::vector<double> shear;     // the surface shear stress the lower speed's surface feels, in +x for u1 > u2 [Pa]
+  std::vector<double> pressure;    // p [Pa]
+  std::vector<double> film;        // h [m]
+  std::vector<double> flattening;  // the surfaces' plastic flattening (EhlOptions::hardness) [m]
+  std::vector<char> yields;        // 1 where the surfaces yield: the pressure held at the hardness
+  std::vector<double> shear;       // the surface shear stress the lower speed's surface feels, in +x for u1 > u2 [Pa]
   std::vector<NodeState> state;
-  double line_load = 0.0;                // integral of p [N/m]
-  double contact_load = 0.0;             // carried by the contact nodes [N/m]
-  double central_film = 0.0;             // at x = 0 [m]
-  double min_film = 0.0;                 // the least over the fluid nodes [m]
-  double contact_fraction = 0.0;         // contact nodes over the nodes within |x| <= b [-]
-  double asperity_share = 0.0;           // contact_load / line_load [-]
-  double peak_pressure = 0.0;            // [Pa]
-  double above_hardness_fraction = 0.0;  // nodes within |x| <= b whose pressure exceeds the hardness [-]
-  double film_friction = 0.0;            // integral of the film's shear [N/m]
-  double boundary_friction = 0.0;        // integral of boundary_friction p over the contacts [N/m]
-  double friction_coefficient = 0.0;     // (film + boundary friction)/line load [-]
-  int iterations = 0;                    // Newton iterations (a retried time step: all its substeps')
-  int linear_iterations = 0;             // GMRES iterations over them
-  double update = 0.0;                   // the last Newton update (largest, over p_H_ref)
-  double load_error = 0.0;               // relative
+  double line_load = 0.0;             // integral of p [N/m]
+  double contact_load = 0.0;          // carried by the contact nodes [N/m]
+  double central_film = 0.0;          // at x = 0 [m]
+  double min_film = 0.0;              // the least over the fluid nodes [m]
+  double contact_fraction = 0.0;      // contact nodes over the nodes within |x| <= b [-]
+  double asperity_share = 0.0;        // contact_load / line_load [-]
+  double peak_pressure = 0.0;         // [Pa]
+  double yield_fraction = 0.0;        // nodes within |x| <= b where the surfaces yield (at the hardness) [-]
+  double film_friction = 0.0;         // integral of the film's shear [N/m]
+  double boundary_friction = 0.0;     // integral of boundary_friction p over the contacts [N/m]
+  double friction_coefficient = 0.0;  // (film + boundary friction)/line load [-]
+  int iterations = 0;                 // Newton iterations (a retried time step: all its substeps')
+  int linear_iterations = 0;          // GMRES iterations over them
+  double update = 0.0;                // the last Newton update (largest, over p_H_ref)
+  double load_error = 0.0;            // relative
   // Cost of the solve (a time step with its retries): FFTs executed (r2c or c2r of the
   // convolution's length), their time and the wall time [s].
   long transforms = 0;

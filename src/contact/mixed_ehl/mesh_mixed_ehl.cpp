@@ -89,33 +89,6 @@ EhlProfile::Instant snapshot(const EhlField& f, double time) {
   return s;
 }
 
-// The steady start with the heights at t = 0: directly, or when that does not converge by
-// continuation in the roughness, the heights scaled by 0, 1/m, ..., 1 in successive steady solves
-// each started from the last (m = 4, 8, 16, 32; each try on a new solver, a failed solve leaving
-// its state behind). The answer is the same steady problem's, reached from nearer starts.
-const EhlField& steady_start(std::optional<LineEhlSolver>& solver, const WindowSetup& w,
-                             const std::vector<double>& heights) {
-  constexpr int kMaxStages = 32;
-  try {
-    return solver->solve_steady(w.instant, heights);
-  } catch (const std::runtime_error&) {
-  }
-  std::vector<double> scaled(heights.size());
-  for (int stages = 4;; stages *= 2) {
-    solver.emplace(w.fluid, w.composite_modulus, w.instant, w.solver);
-    try {
-      for (int j = 0; j <= stages; ++j) {
-        const double a = static_cast<double>(j) / stages;
-        for (std::size_t i = 0; i < heights.size(); ++i) scaled[i] = a * heights[i];
-        solver->solve_steady(w.instant, scaled);
-      }
-      return solver->field();
-    } catch (const std::runtime_error&) {
-      if (stages >= kMaxStages) throw;
-    }
-  }
-}
-
 }  // namespace
 
 void rolled_heights(const FlankTrack& pinion, const FlankTrack& wheel, const HalfPlaneGrid& grid, double sigma_pinion,
@@ -155,17 +128,51 @@ WindowResult solve_window(const FlankTrack& pinion, const FlankTrack& wheel, con
 
   std::vector<double> heights, q;
   std::vector<double> central, min_film, contact, share, peak, friction, film_friction, boundary, heat, flash, area,
-      plastic, above, iterations, linear, transforms;
+      plastic, yielding_band, iterations, linear, transforms;
   EhlProfile::Instant at_peak, at_middle;
   double best_peak = -1.0;
+  auto heights_at = [&](double t) {
+    rolled_heights(pinion, wheel, grid, w.sigma_pinion + c.speed1 * t, w.sigma_wheel - c.speed2 * t, heights);
+  };
+  // The window's start: the steady contact with the heights at t = 0 (the solver retries it at
+  // first order and by homotopy in the roughness). Where that has no solution Newton's method
+  // reaches (a steady roughness meeting oil locked at tens of p_H: not a state moving surfaces
+  // leave), a lead-in instead: the smooth steady contact, then time steps from t = -T_lead over
+  // which the heights grow linearly from zero to their amplitude in the first half, so that the
+  // window starts from the state the moving surfaces leave. T_lead = 4 b/u, twice the time the
+  // entrainment takes to carry the oil across the contact.
+  heights_at(0.0);
+  try {
+    solver->solve_steady(c, heights);
+  } catch (const std::runtime_error&) {
+    solver.emplace(w.fluid, w.composite_modulus, c, w.solver);
+    r.lead_in_steps = static_cast<int>(std::ceil(4.0 * r.half_width / (c.entrainment() * r.dt)));
+    std::vector<double> smooth(n, 0.0);
+    try {
+      solver->solve_steady(c, smooth);
+      const int ramp = std::max(1, r.lead_in_steps / 2);
+      for (int j = r.lead_in_steps - 1; j >= 0; --j) {
+        heights_at(-j * r.dt);
+        const double grow = std::min(1.0, static_cast<double>(r.lead_in_steps - j) / ramp);
+        for (double& h : heights) h *= grow;
+        solver->step(c, heights, r.dt);
+      }
+    } catch (const std::runtime_error& e) {
+      throw WindowFailure(e.what(), true, 0, r.steps, 0.0, r.duration);
+    }
+  }
   for (int k = 0; k <= r.steps; ++k) {
     const double t = k * r.dt;
-    rolled_heights(pinion, wheel, grid, w.sigma_pinion + c.speed1 * t, w.sigma_wheel - c.speed2 * t, heights);
     const EhlField* f = nullptr;
-    try {
-      f = k == 0 ? &steady_start(solver, w, heights) : &solver->step(c, heights, r.dt);
-    } catch (const std::runtime_error& e) {
-      throw WindowFailure(e.what(), k == 0, k, r.steps, t, r.duration);
+    if (k == 0) {
+      f = &solver->field();
+    } else {
+      heights_at(t);
+      try {
+        f = &solver->step(c, heights, r.dt);
+      } catch (const std::runtime_error& e) {
+        throw WindowFailure(e.what(), false, k, r.steps, t, r.duration);
+      }
     }
     central.push_back(f->central_film);
     min_film.push_back(f->min_film);
@@ -179,14 +186,14 @@ WindowResult solve_window(const FlankTrack& pinion, const FlankTrack& wheel, con
     const auto [theta, q_max] = flash_peak(grid, *f, c, w.thermal_coefficient, q);
     flash.push_back(theta);
     heat.push_back(q_max);
-    // The contact nodes, and those of them whose pressure exceeds the softer flank's hardness (the
-    // solver's pressure is elastic: they would yield).
+    // The contact nodes, and those of them where the flanks yield (the pressure held at the
+    // softer flank's hardness).
     int touching = 0, yielding = 0;
     for (std::size_t i = 0; i < n; ++i)
-      if (f->state[i] == NodeState::contact) ++touching, yielding += f->pressure[i] > w.solver.hardness;
+      if (f->state[i] == NodeState::contact) ++touching, yielding += f->yields[i];
     area.push_back(touching * grid.spacing / (2.0 * r.half_width));
     plastic.push_back(touching > 0 ? static_cast<double>(yielding) / touching : 0.0);
-    above.push_back(f->above_hardness_fraction);
+    yielding_band.push_back(f->yield_fraction);
     linear.push_back(f->linear_iterations);
     transforms.push_back(static_cast<double>(f->transforms));
     r.transform_seconds += f->transform_seconds;
@@ -215,7 +222,7 @@ WindowResult solve_window(const FlankTrack& pinion, const FlankTrack& wheel, con
   r.flash_mean = path_mean(flash), r.flash_max = extreme(flash, true);
   r.real_area_ratio_mean = path_mean(area), r.real_area_ratio_max = extreme(area, true);
   r.plastic_fraction_mean = path_mean(plastic);
-  r.above_hardness_max = extreme(above, true);
+  r.yield_fraction_max = extreme(yielding_band, true);
   r.iterations_mean = path_mean(iterations);
   r.linear_iterations_mean = path_mean(linear);
   r.transforms_mean = path_mean(transforms);
@@ -502,11 +509,11 @@ void add_validity(const MixedEhlOptions& o, const MixedEhl::State& st, const std
   // A pressure above this share of p_H at the domain's first or last node: the inlet or the outlet
   // cuts the film's pressure short (a fully flooded inlet builds from zero well ahead of the contact).
   constexpr double kEdgePressure = 1e-3;
-  Series edge{"flag_domain_edge_loaded", "1", {}}, hard{"flag_pressure_above_hardness", "1", {}};
+  Series edge{"flag_domain_edge_loaded", "1", {}}, hard{"flag_flanks_yield", "1", {}};
   int n_edge = 0, n_hard = 0, touching = 0;
   double share_max = 0.0;
   for (const WindowResult& q : w) {
-    const bool e = q.edge_pressure_max > kEdgePressure, h = q.above_hardness_max > 0.0;
+    const bool e = q.edge_pressure_max > kEdgePressure, h = q.yield_fraction_max > 0.0;
     edge.values.push_back(e ? 1.0 : 0.0);
     hard.values.push_back(h ? 1.0 : 0.0);
     n_edge += e, n_hard += h;
@@ -524,13 +531,13 @@ void add_validity(const MixedEhlOptions& o, const MixedEhl::State& st, const std
       touching == 0 ? "the film separates the flanks everywhere" : "mixed lubrication", touching, w.size(), share_max);
   if (n_hard > 0)
     r.verdict += fmt::format(
-        " At {} positions the pressure passes the softer flank's hardness somewhere in the contact: the solver's "
-        "pressure is elastic, the flanks would yield there (flag_pressure_above_hardness).",
+        " At {} positions the flanks yield somewhere in the contact: the pressure is held at the softer flank's "
+        "hardness there and the flanks flatten plastically (flag_flanks_yield).",
         n_hard);
   if (n_edge > 0)
     r.verdict += fmt::format(
         " At {} positions the pressure reaches the domain's ends: raise mixed_ehl.inlet or mixed_ehl.outlet.", n_edge);
-  r.flag_counts = {{"domain_edge_loaded", n_edge}, {"pressure_above_hardness", n_hard}};
+  r.flag_counts = {{"domain_edge_loaded", n_edge}, {"flanks_yield", n_hard}};
 }
 
 MixedEhlSummary summary_of(const FidelityInputs& in, const MixedEhl::State& st, const MixedEhl::Solution& s) {
@@ -618,7 +625,8 @@ void MixedEhl::write(const FidelityInputs& in, State& st, Solution& s, MeshConta
                   C{"ehl_nodes", "1", [](const W& w) { return static_cast<double>(w.nodes); }},
                   C{"ehl_time_steps", "1", [](const W& w) { return static_cast<double>(w.steps); }},
                   C{"ehl_window_s", "s", [](const W& w) { return w.duration; }},
-                  C{"ehl_above_hardness_fraction_max", "1", [](const W& w) { return w.above_hardness_max; }},
+                  C{"ehl_lead_in_steps", "1", [](const W& w) { return static_cast<double>(w.lead_in_steps); }},
+                  C{"ehl_yield_fraction_max", "1", [](const W& w) { return w.yield_fraction_max; }},
                   C{"ehl_newton_iterations_mean", "1", [](const W& w) { return w.iterations_mean; }},
                   C{"ehl_gmres_iterations_mean", "1", [](const W& w) { return w.linear_iterations_mean; }},
                   C{"ehl_transforms_mean", "1", [](const W& w) { return w.transforms_mean; }}});

@@ -65,7 +65,8 @@ struct WindowResult {
   double spacing = 0.0;     // of the nodes [m]
   double half_width = 0.0;  // the instant's Hertz b [m]
   int steps = 0;
-  double duration = 0.0, dt = 0.0;                                                                  // [s]
+  double duration = 0.0, dt = 0.0;  // [s]
+  int lead_in_steps = 0;            // time steps before t = 0 where the steady start failed (solve_window)
   double central_film_mean = 0.0, central_film_min = 0.0, min_film_mean = 0.0, min_film_min = 0.0;  // [m]
   double contact_fraction_mean = 0.0, contact_fraction_max = 0.0;  // the solver's, nodes within |x| <= b
   double asperity_share_mean = 0.0, asperity_share_max = 0.0;
@@ -75,11 +76,11 @@ struct WindowResult {
   double heat_flux_mean = 0.0, heat_flux_max = 0.0;               // peak over x of |tau| |u1 - u2| [W/m^2]
   double flash_mean = 0.0, flash_max = 0.0;                       // peak over x of the flash temperature [K]
   double real_area_ratio_mean = 0.0, real_area_ratio_max = 0.0;   // contact nodes' length over 2b
-  double plastic_fraction_mean = 0.0;   // contact nodes above the softer flank's hardness over the contact nodes
-  double above_hardness_max = 0.0;      // the solver's: nodes within |x| <= b above the hardness, the largest instant
-  StressMaximum stress;                 // at the instant of the highest peak pressure
-  double load_error_max = 0.0;          // |integral of p - w|/w, the largest over the instants
-  double iterations_mean = 0.0;         // Newton iterations per instant
+  double plastic_fraction_mean = 0.0;  // contact nodes above the softer flank's hardness over the contact nodes
+  double yield_fraction_max = 0.0;  // the solver's: nodes within |x| <= b where the flanks yield, the largest instant
+  StressMaximum stress;             // at the instant of the highest peak pressure
+  double load_error_max = 0.0;      // |integral of p - w|/w, the largest over the instants
+  double iterations_mean = 0.0;     // Newton iterations per instant
   double linear_iterations_mean = 0.0;  // GMRES iterations per instant
   double transforms_mean = 0.0;         // FFTs per instant
   double transform_seconds = 0.0;       // their time [s]
