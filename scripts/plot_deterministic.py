@@ -18,7 +18,6 @@ Panels whose series the file lacks are left out (contact.outputs may ask for few
 have no /statistical). Needs Debian's python3-h5py and python3-matplotlib (scripts/setup.sh
 installs them); run with /usr/bin/python3.
 """
-import argparse
 import os
 import sys
 
@@ -31,7 +30,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-from plot_mesh import mark_points, text  # noqa: E402  (one drawing of the path's points A..E)
+from plot_common import (describe, path_points, pick_profiles, plot_path_panels, plot_script,  # noqa: E402
+                         profile_heading, profiles_in, read_group, save, tidy_axis)
+from plot_mesh import text  # noqa: E402
 
 NAME = "plot_deterministic.py"
 # Path panels: label, scale, deterministic /contact series, statistical /statistical series,
@@ -52,51 +53,14 @@ def note(message):
     print(f"{NAME}: {message}", file=sys.stderr)
 
 
-def tidy_axis(ax, values):
-    # Plain tick labels (no offset notation); a visible band for nearly constant data.
-    ax.ticklabel_format(axis="y", useOffset=False)
-    finite = np.concatenate([np.asarray(v, dtype=float).ravel() for v in values])
-    finite = finite[np.isfinite(finite)]
-    if finite.size == 0:
-        return
-    lo, hi = float(finite.min()), float(finite.max())
-    if hi - lo <= 1e-3 * max(abs(hi), abs(lo), 1e-300):
-        pad = 0.05 * abs(hi) if hi != 0.0 else 0.05
-        ax.set_ylim(lo - pad, hi + pad)
-
-
-def read_group(f, group):
-    """The group's 1-D datasets as {name: array}; empty when the group is absent."""
-    if group not in f or not isinstance(f[group], h5py.Group):
-        return {}
-    return {name: d[()] for name, d in f[group].items() if isinstance(d, h5py.Dataset) and d.ndim == 1}
-
-
-def save(fig, out, written):
-    fig.savefig(out)
-    plt.close(fig)
-    written.append(out)
-
-
-def describe(f, path):
-    """A one-line title: the file, the flanks, the element size and the regime."""
-    params = {}
-    if "parameters" in f and "key" in f["parameters"] and "value" in f["parameters"]:
-        params = {text(k): text(v) for k, v in zip(f["parameters/key"][()], f["parameters/value"][()])}
-    parts = [os.path.basename(path)]
-    kinds = {params.get(f"{g}.flank.profile.kind") for g in ("pinion", "wheel")} - {None}
-    if kinds:
-        flank = "/".join(sorted(kinds))
-        if kinds != {"smooth"} and "pinion.flank.profile.rq" in params:
-            flank += f" Rq {float(params['pinion.flank.profile.rq'].split()[0]) * 1e6:g} um"
-        parts.append(f"{flank} flanks")
+def details(f, params):
+    """The title's parts of a deterministic run: the element size, the statistical model."""
+    parts = []
     if "contact.element_size" in params:
         parts.append(f"elements {float(params['contact.element_size'].split()[0]) * 1e6:g} um")
     if "meta" in f and text(f["meta"].attrs.get("asperity_model", "")):
         parts.append(f"statistical model {text(f['meta'].attrs['asperity_model'])}")
-    if "contact/validity" in f and "regime" in f["contact/validity"].attrs:
-        parts.append(f"regime {text(f['contact/validity'].attrs['regime'])}")
-    return ", ".join(parts)
+    return parts
 
 
 def plot_path(s, points, mesh, contact, statistical, title, out, written):
@@ -104,10 +68,9 @@ def plot_path(s, points, mesh, contact, statistical, title, out, written):
     if not panels:
         note("no deterministic or statistical series along the path: skipped " + out)
         return
-    fig, axes = plt.subplots(len(panels), 1, figsize=(9.0, 1.9 * len(panels) + 0.8), dpi=110, sharex=True,
-                             squeeze=False)
-    axes = axes[:, 0]
-    for ax, (label, scale, det, stat, ref) in zip(axes, panels):
+
+    def draw(ax, panel):
+        _, scale, det, stat, ref = panel
         shown = []
         det_label, stat_label = PATH_LEGEND.get(det, ("deterministic", "statistical"))
         if det in contact:
@@ -119,16 +82,10 @@ def plot_path(s, points, mesh, contact, statistical, title, out, written):
         if ref and ref in mesh:
             shown.append(mesh[ref] * scale)
             ax.plot(s, shown[-1], color="0.35", linestyle=":", label=REFERENCE_LABEL.get(ref, ref))
-        tidy_axis(ax, shown)
-        mark_points(ax, points)
-        ax.set_ylabel(label, fontsize=8)
-        ax.tick_params(labelsize=8)
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
-    axes[-1].set_xlabel("position on the line of action s (from T1) [mm]")
-    fig.suptitle(f"deterministic against statistical contact along the path\n{title}", fontsize=9)
-    fig.tight_layout()
-    save(fig, out, written)
+        return shown
+
+    plot_path_panels(points, panels, draw, "deterministic against statistical contact along the path", title, out,
+                     written)
 
 
 def plot_pressure(f, mesh, title, out, written):
@@ -137,28 +94,21 @@ def plot_pressure(f, mesh, title, out, written):
         return
     group = f["contact/pressure"]
     x = group["x_m"][()] * 1e6
-    profiles = []
-    for name, d in group.items():
-        if name.startswith("position_") and isinstance(d, h5py.Dataset):
-            position = int(d.attrs.get("position", name.split("_", 1)[1]))
-            profiles.append((position, text(d.attrs.get("point", "")), float(d.attrs.get("s_m", np.nan)), d[()]))
+    profiles = profiles_in(group, lambda name, d: name.startswith("position_") and isinstance(d, h5py.Dataset))
     if not profiles:
         note("/contact/pressure holds no profiles: skipped " + out)
         return
-    profiles.sort(key=lambda p: p[0])
     kept = len(profiles)
-    if kept > MAX_PROFILES:
-        named = [p for p in profiles if p[1]]
-        pick = np.unique(np.linspace(0, kept - 1, MAX_PROFILES).round().astype(int))
-        profiles = named if 0 < len(named) <= MAX_PROFILES else [profiles[i] for i in pick]
-        note(f"{kept} pressure profiles kept; drawing {len(profiles)} (" +
-             ("the points A..E" if profiles is named else "evenly spaced") + ")")
+    profiles, picked = pick_profiles(profiles, MAX_PROFILES)
+    if picked:
+        note(f"{kept} pressure profiles kept; drawing {len(profiles)} ({picked})")
     fig, axes = plt.subplots(len(profiles), 1, figsize=(7.0, 1.75 * len(profiles) + 0.6), dpi=110, sharex=True,
                              sharey=True, squeeze=False)
     axes = axes[:, 0]
-    for ax, (position, point, s_m, p) in zip(axes, profiles):
+    for ax, (position, point, s_m, d) in zip(axes, profiles):
+        p = d[()]
         ax.plot(x, p * 1e-9, color="C0", linewidth=0.8, label="deterministic")
-        label = f"{point + ': ' if point else ''}position {position}, s = {s_m * 1e3:.2f} mm"
+        label = profile_heading(position, point, s_m)
         if "hertz_p0_Pa" in mesh and "hertz_halfwidth_m" in mesh and 0 <= position < len(mesh["hertz_p0_Pa"]):
             p0, b = float(mesh["hertz_p0_Pa"][position]), float(mesh["hertz_halfwidth_m"][position]) * 1e6
             xe = np.linspace(-b, b, 401)
@@ -276,56 +226,24 @@ def plot_running_in(f, window_um, title, out, written):
     save(fig, out, written)
 
 
+def draw(f, a, prefix, written):
+    mesh = read_group(f, "mesh")
+    s = mesh["s_m"] * 1e3
+    contact = read_group(f, "contact")
+    statistical = read_group(f, "statistical")
+    if "statistical" not in f:
+        note("no /statistical (smooth flanks have no statistical model): deterministic curves alone")
+    title = describe(f, a.results, details)
+    plot_path(s, path_points(f), mesh, contact, statistical, title, f"{prefix}-path.png", written)
+    plot_pressure(f, mesh, title, f"{prefix}-pressure.png", written)
+    plot_running_in(f, a.window, title, f"{prefix}-running-in.png", written)
+
+
 def main(argv):
-    if len(argv) == 1:
-        print(__doc__.strip(), file=sys.stderr)
-        return 2
-    doc = __doc__.strip().splitlines()
-    usage = "%(prog)s " + next(line for line in doc if line.startswith("Usage: ")).split(" ", 2)[2]
-    p = argparse.ArgumentParser(prog="scripts/" + NAME, usage=usage,
-                                formatter_class=argparse.RawDescriptionHelpFormatter,
-                                description="\n".join(line for line in doc if not line.startswith("Usage: ")))
-    p.add_argument("results", metavar="RESULTS.h5")
-    p.add_argument("-o", "--output", metavar="PREFIX", help="output prefix (default: RESULTS without .h5)")
-    p.add_argument("--window", type=float, default=200.0, metavar="UM",
-                   help="width of the running-in profile window in um (default 200)")
-    a = p.parse_args(argv[1:])
-    prefix = a.output or (a.results[:-3] if a.results.endswith(".h5") else a.results)
-    if not a.window > 0.0:
-        print(f"{NAME}: --window must be positive", file=sys.stderr)
-        return 2
-    try:
-        f = h5py.File(a.results, "r")
-    except OSError as e:
-        print(f"{NAME}: cannot read {a.results}: {e}", file=sys.stderr)
-        return 2
-    written = []
-    with f:
-        if "mesh" not in f or "s_m" not in f["mesh"]:
-            print(f"{NAME}: {a.results} has no /mesh/s_m: not a `geartrib run` result", file=sys.stderr)
-            return 2
-        fidelity = text(f["meta"].attrs.get("fidelity", "")) if "meta" in f else ""
-        if fidelity and fidelity != "deterministic":
-            print(f"{NAME}: {a.results} ran contact.fidelity = \"{fidelity}\", not \"deterministic\"; "
-                  "plot it with scripts/plot_mesh.py", file=sys.stderr)
-            return 2
-        mesh = read_group(f, "mesh")
-        s = mesh["s_m"] * 1e3
-        points = [(q, f["mesh"].attrs[f"s_{q}_m"] * 1e3) for q in "ABCDE" if f"s_{q}_m" in f["mesh"].attrs]
-        contact = read_group(f, "contact")
-        statistical = read_group(f, "statistical")
-        if "statistical" not in f:
-            note("no /statistical (smooth flanks have no statistical model): deterministic curves alone")
-        title = describe(f, a.results)
-        outdir = os.path.dirname(prefix)
-        if outdir:
-            os.makedirs(outdir, exist_ok=True)
-        plot_path(s, points, mesh, contact, statistical, title, f"{prefix}-path.png", written)
-        plot_pressure(f, mesh, title, f"{prefix}-pressure.png", written)
-        plot_running_in(f, a.window, title, f"{prefix}-running-in.png", written)
-    for out in written:
-        print(f"wrote {out}")
-    return 0
+    window = (("--window",), dict(type=float, default=200.0, metavar="UM",
+                                  help="width of the running-in profile window in um (default 200)"))
+    return plot_script(argv, __doc__, NAME, "deterministic", "scripts/plot_mesh.py", draw, options=[window],
+                       check=lambda a: None if a.window > 0.0 else "--window must be positive", unnamed=True)
 
 
 if __name__ == "__main__":

@@ -18,7 +18,6 @@ Writes, with PREFIX defaulting to RESULTS without its .h5:
 Panels whose series the file lacks are left out. Needs Debian's python3-h5py and
 python3-matplotlib (scripts/setup.sh installs them); run with /usr/bin/python3.
 """
-import argparse
 import os
 import sys
 
@@ -31,8 +30,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-from plot_deterministic import read_group, save, tidy_axis  # noqa: E402
-from plot_mesh import mark_points, text  # noqa: E402  (one drawing of the path's points A..E)
+from plot_common import (describe, path_points, pick_profiles, plot_path_panels, plot_script,  # noqa: E402
+                         profile_heading, profiles_in, read_group, save)
 
 NAME = "plot_mixed_ehl.py"
 # Path panels: label, scale, [(group, series, legend, style)], [(group, low, high)] bands.
@@ -69,25 +68,14 @@ def note(message):
     print(f"{NAME}: {message}", file=sys.stderr)
 
 
-def describe(f, path):
-    """A one-line title: the file, the flanks, the grid and window, the regime."""
-    params = {}
-    if "parameters" in f and "key" in f["parameters"] and "value" in f["parameters"]:
-        params = {text(k): text(v) for k, v in zip(f["parameters/key"][()], f["parameters/value"][()])}
-    parts = [os.path.basename(path)]
-    kinds = {params.get(f"{g}.flank.profile.kind") for g in ("pinion", "wheel")} - {None}
-    if kinds:
-        flank = "/".join(sorted(kinds))
-        if "pinion.flank.profile.rq" in params:
-            flank += f" Rq {float(params['pinion.flank.profile.rq'].split()[0]) * 1e6:g} um"
-        parts.append(f"{flank} flanks")
-    if "mixed_ehl" in f:
-        a = f["mixed_ehl"].attrs
-        parts.append(f"nodes {float(a.get('grid_spacing_m', np.nan)) * 1e6:.3g} um, window "
-                     f"{float(a.get('window_contact_widths', np.nan)):g} x 2b, Courant {float(a.get('time_step_courant', np.nan)):g}")
-    if "contact/validity" in f and "regime" in f["contact/validity"].attrs:
-        parts.append(f"regime {text(f['contact/validity'].attrs['regime'])}")
-    return ", ".join(parts)
+def details(f, params):
+    """The title's part of a mixed-EHL run: the grid, the window and the time step (smooth flanks,
+    whose title would leave out Rq, are refused by a mixed-EHL run)."""
+    if "mixed_ehl" not in f:
+        return []
+    a = f["mixed_ehl"].attrs
+    return [f"nodes {float(a.get('grid_spacing_m', np.nan)) * 1e6:.3g} um, window "
+            f"{float(a.get('window_contact_widths', np.nan)):g} x 2b, Courant {float(a.get('time_step_courant', np.nan)):g}"]
 
 
 def plot_path(s, points, groups, title, out, written):
@@ -95,10 +83,9 @@ def plot_path(s, points, groups, title, out, written):
     if not panels:
         note("no mixed-EHL or statistical series along the path: skipped " + out)
         return
-    fig, axes = plt.subplots(len(panels), 1, figsize=(9.0, 1.9 * len(panels) + 0.8), dpi=110, sharex=True,
-                             squeeze=False)
-    axes = axes[:, 0]
-    for ax, (label, scale, lines, bands) in zip(axes, panels):
+
+    def draw(ax, panel):
+        _, scale, lines, bands = panel
         shown = []
         for g, lo, hi in bands:
             if lo in groups.get(g, {}) and hi in groups.get(g, {}):
@@ -111,43 +98,30 @@ def plot_path(s, points, groups, title, out, written):
             shown.append(values)
             color, line = (style[:2], style[2:]) if style.startswith("C") else (style[:4], style[4:])
             ax.plot(s, values, color=color, linestyle=line, marker="o", ms=2.5, linewidth=1.0, label=legend)
-        tidy_axis(ax, shown)
-        mark_points(ax, points)
-        ax.set_ylabel(label, fontsize=8)
-        ax.tick_params(labelsize=8)
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
-    axes[-1].set_xlabel("position on the line of action s (from T1) [mm]")
-    fig.suptitle(f"mixed EHL against the statistical lubricated cycle along the path\n{title}", fontsize=9)
-    fig.tight_layout()
-    save(fig, out, written)
+        return shown
+
+    plot_path_panels(points, panels, draw, "mixed EHL against the statistical lubricated cycle along the path", title,
+                     out, written)
 
 
 def plot_contact(f, mesh, title, out, written):
     if "mixed_ehl/profiles" not in f:
         note("no /mixed_ehl/profiles (contact.pressure_profiles = \"none\"?): skipped " + out)
         return
-    profiles = []
-    for name, g in f["mixed_ehl/profiles"].items():
-        if isinstance(g, h5py.Group) and "x_m" in g:
-            profiles.append((int(g.attrs.get("position", name.split("_", 1)[1])), text(g.attrs.get("point", "")),
-                             float(g.attrs.get("s_m", np.nan)), g))
+    profiles = profiles_in(f["mixed_ehl/profiles"], lambda name, g: isinstance(g, h5py.Group) and "x_m" in g)
     if not profiles:
         note("/mixed_ehl/profiles holds none: skipped " + out)
         return
-    profiles.sort(key=lambda p: p[0])
     kept = len(profiles)
-    if kept > MAX_PROFILES:
-        named = [p for p in profiles if p[1]]
-        pick = np.unique(np.linspace(0, kept - 1, MAX_PROFILES).round().astype(int))
-        profiles = named if 0 < len(named) <= MAX_PROFILES else [profiles[i] for i in pick]
+    profiles, picked = pick_profiles(profiles, MAX_PROFILES)
+    if picked:
         note(f"{kept} profiles kept; drawing {len(profiles)}")
     fig, axes = plt.subplots(len(profiles), 2, figsize=(11.0, 2.0 * len(profiles) + 0.8), dpi=110, squeeze=False)
     for row, (position, point, s_m, g) in enumerate(profiles):
         x = g["x_m"][()]
         b = float(mesh["hertz_halfwidth_m"][position]) if "hertz_halfwidth_m" in mesh else 1.0
         xb = x / b
-        head = f"{point + ': ' if point else ''}position {position}, s = {s_m * 1e3:.2f} mm"
+        head = profile_heading(position, point, s_m)
         ax_p, ax_h = axes[row]
         for instant, style in (("peak", "C0-"), ("middle", "C2-")):
             if f"{instant}_pressure_Pa" not in g:
@@ -186,46 +160,16 @@ def plot_contact(f, mesh, title, out, written):
     save(fig, out, written)
 
 
+def draw(f, a, prefix, written):
+    groups = {g: read_group(f, g) for g in ("mesh", "mixed_ehl", "lubrication", "contact")}
+    s = groups["mesh"]["s_m"] * 1e3
+    title = describe(f, a.results, details)
+    plot_path(s, path_points(f), groups, title, f"{prefix}-path.png", written)
+    plot_contact(f, groups["mesh"], title, f"{prefix}-contact.png", written)
+
+
 def main(argv):
-    if len(argv) == 1:
-        print(__doc__.strip(), file=sys.stderr)
-        return 2
-    doc = __doc__.strip().splitlines()
-    usage = "%(prog)s " + next(line for line in doc if line.startswith("Usage: ")).split(" ", 2)[2]
-    p = argparse.ArgumentParser(prog="scripts/" + NAME, usage=usage,
-                                formatter_class=argparse.RawDescriptionHelpFormatter,
-                                description="\n".join(line for line in doc if not line.startswith("Usage: ")))
-    p.add_argument("results", metavar="RESULTS.h5")
-    p.add_argument("-o", "--output", metavar="PREFIX", help="output prefix (default: RESULTS without .h5)")
-    a = p.parse_args(argv[1:])
-    prefix = a.output or (a.results[:-3] if a.results.endswith(".h5") else a.results)
-    try:
-        f = h5py.File(a.results, "r")
-    except OSError as e:
-        print(f"{NAME}: cannot read {a.results}: {e}", file=sys.stderr)
-        return 2
-    written = []
-    with f:
-        if "mesh" not in f or "s_m" not in f["mesh"]:
-            print(f"{NAME}: {a.results} has no /mesh/s_m: not a `geartrib run` result", file=sys.stderr)
-            return 2
-        fidelity = text(f["meta"].attrs.get("fidelity", "")) if "meta" in f else ""
-        if fidelity != "mixed_ehl":
-            print(f"{NAME}: {a.results} ran contact.fidelity = \"{fidelity}\", not \"mixed_ehl\"; "
-                  "plot it with scripts/plot_mesh.py or scripts/plot_deterministic.py", file=sys.stderr)
-            return 2
-        groups = {g: read_group(f, g) for g in ("mesh", "mixed_ehl", "lubrication", "contact")}
-        s = groups["mesh"]["s_m"] * 1e3
-        points = [(q, f["mesh"].attrs[f"s_{q}_m"] * 1e3) for q in "ABCDE" if f"s_{q}_m" in f["mesh"].attrs]
-        title = describe(f, a.results)
-        outdir = os.path.dirname(prefix)
-        if outdir:
-            os.makedirs(outdir, exist_ok=True)
-        plot_path(s, points, groups, title, f"{prefix}-path.png", written)
-        plot_contact(f, groups["mesh"], title, f"{prefix}-contact.png", written)
-    for out in written:
-        print(f"wrote {out}")
-    return 0
+    return plot_script(argv, __doc__, NAME, "mixed_ehl", "scripts/plot_mesh.py or scripts/plot_deterministic.py", draw)
 
 
 if __name__ == "__main__":

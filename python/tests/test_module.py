@@ -223,6 +223,164 @@ def test_deterministic_run_equals_the_command(tool, tmp_path, deterministic):
         for name, value in running_in.attrs.items():
             assert (value.decode() if isinstance(value, bytes) else value) == ri[name], name
 
+
+# -- the mixed-EHL fidelity ----------------------------------------------------------------------
+
+MIXED_EHL = "gears/m6z30-mixed-ehl.toml"
+# A short run (~1.5 s): the shipped flanks with a 30 um correlation length (the shipped 10 um does
+# not converge: docs/guide), profiles and nodes every 2 um, windows of one contact width, A, C and E.
+MIXED_EHL_SETS = {"pinion.flank.profile.correlation_length": "30um",
+                  "wheel.flank.profile.correlation_length": "30um",
+                  "pinion.flank.profile.spacing": "2um", "wheel.flank.profile.spacing": "2um",
+                  "mixed_ehl.grid_spacing": "2um", "mixed_ehl.window": "1"}
+MIXED_EHL_POSITIONS = 3
+# Each window series' unit by its name's ending, the longer endings first (the rest are ratios,
+# counts or codes: "1").
+EHL_UNITS = {"_N_per_m": "N/m", "_W_per_m2": "W/m^2", "_m": "m", "_Pa": "Pa", "_K": "K", "_s": "s"}
+EHL_PROFILE_UNITS = {"pressure_Pa": "Pa", "film_m": "m", "shear_Pa": "Pa", "state": "1"}
+
+
+@pytest.fixture(scope="module")
+def mixed_ehl():
+    """The mixed-EHL case's run as a dict of arrays."""
+    return gt.run(gt.load_case(MIXED_EHL).set(MIXED_EHL_SETS), positions=MIXED_EHL_POSITIONS, as_dict=True)
+
+
+def ehl_series(r):
+    """The windows' series (group mixed_ehl) by name; ehl_regime is the statistical cycle's (/lubrication)."""
+    return sorted(k for k in r["units"] if k.startswith("ehl_") and k != "ehl_regime")
+
+
+def path_mean(r, name):
+    """A series' mean over the path as the run takes it: the trapezoidal rule over s."""
+    s = r["s_m"]
+    return float(np.sum(0.5 * (r[name][1:] + r[name][:-1]) * np.diff(s)) / (s[-1] - s[0]))
+
+
+def test_mixed_ehl_run_has_its_parts(mixed_ehl):
+    """The windows' series over the positions with the units their names say, the statistical model
+    beside them, and the summary's extremes and path means those of the series."""
+    r = mixed_ehl
+    n = r["s_m"].size
+    assert n == MIXED_EHL_POSITIONS and r["attrs"]["fidelity"] == "mixed_ehl"
+    series = ehl_series(r)
+    assert len(series) >= 25
+    for name in series:
+        assert r[name].shape == (n,), name
+        assert np.all(np.isfinite(r[name])), name
+        unit = next((u for end, u in EHL_UNITS.items() if name.endswith(end)), "1")
+        assert r["units"][name] == unit, name
+    assert "statistical_real_area_ratio" in r["units"] and r["statistical_real_area_ratio"].shape == (n,)
+    s = r["attrs"]["mixed_ehl"]
+    assert s["grid_spacing_m"] == pytest.approx(2e-6, rel=1e-12) and s["window_contact_widths"] == 1.0
+    # Extremes and sums are the series' own, exactly; the means are the series' trapezoidal mean
+    # over s, to rounding (a few terms: 1e-12).
+    assert s["max_asperity_share"] == r["ehl_asperity_share_max"].max()
+    assert s["min_film_m"] == r["ehl_min_film_min_m"].min()
+    assert s["max_peak_pressure_Pa"] == r["ehl_peak_pressure_max_Pa"].max()
+    assert s["max_flash_temperature_K"] == r["ehl_flash_temperature_max_K"].max()
+    assert s["max_load_error"] == r["ehl_load_error_max"].max()
+    assert s["nodes_max"] == r["ehl_nodes"].max() and s["time_steps"] == r["ehl_time_steps"].sum()
+    assert s["mean_asperity_share"] == pytest.approx(path_mean(r, "ehl_asperity_share_mean"), rel=1e-12, abs=1e-300)
+    assert s["mean_friction_coefficient"] == pytest.approx(path_mean(r, "ehl_friction_coefficient_mean"), rel=1e-12)
+
+
+def test_mixed_ehl_shares_and_extremes_are_ordered(mixed_ehl):
+    """Shares and fractions lie in [0, 1] with each window's mean at most its maximum; films, peak
+    pressure, friction and flash temperature likewise; the statistical cycle's asperity and film
+    shares of the load add up to one; every window carries its load to the solver's tolerance."""
+    r = mixed_ehl
+    for q in ("asperity_share", "contact_fraction"):
+        mean, top = r[f"ehl_{q}_mean"], r[f"ehl_{q}_max"]
+        assert np.all((0 <= mean) & (mean <= top) & (top <= 1)), q
+    for q in ("real_area_ratio_max", "above_hardness_fraction_max"):
+        assert np.all((0 <= r[f"ehl_{q}"]) & (r[f"ehl_{q}"] <= 1)), q
+    for q in ("peak_pressure_{}_Pa", "friction_coefficient_{}", "flash_temperature_{}_K", "heat_flux_peak_{}_W_per_m2"):
+        assert np.all((0 <= r["ehl_" + q.format("mean")]) & (r["ehl_" + q.format("mean")] <= r["ehl_" + q.format("max")])), q
+    for q in ("min_film", "central_film"):
+        assert np.all(r[f"ehl_{q}_min_m"] <= r[f"ehl_{q}_mean_m"]), q
+    assert np.all(r["ehl_min_film_mean_m"] <= r["ehl_central_film_mean_m"])
+    shares = r["asperity_load_share"]
+    assert np.all((0 <= shares) & (shares <= 1)) and np.any(shares > 0)  # the rough flanks touch (JGP)
+    assert np.allclose(shares + r["film_load_share"], 1.0, rtol=0, atol=1e-15)  # one load, two carriers
+    assert np.all(r["ehl_load_error_max"] <= r["attrs"]["mixed_ehl"]["tolerance"])
+    assert np.all(r["ehl_time_steps"] > 0) and np.all(r["ehl_window_s"] > 0)
+
+
+def test_mixed_ehl_profiles_carry_the_line_load(mixed_ehl):
+    """The profiles through the contact at A, C and E (the points kept): each on its own uniform
+    grid over [-inlet b, outlet b] (nodes at the elements' centres), its pressure summed over the
+    nodes (constant-pressure elements; the ends are the boundary's zero pressure, so the trapezoidal
+    rule gives the same) equal to the position's line load within the window's load error, which
+    the run computes the same way from the pressures (<= the solver's tolerance 1e-6) and rounding
+    over a few hundred terms (1e-13); the peak instant's highest pressure is the window's highest."""
+    r = mixed_ehl
+    s = r["attrs"]["mixed_ehl"]
+    kept = sorted(int(k.rsplit("_", 1)[1]) for k in r if k.startswith("mixed_ehl_x_m_"))
+    assert kept == [0, 1, 2]  # A, C and E: contact.pressure_profiles = "points"
+    for k in kept:
+        x = r[f"mixed_ehl_x_m_{k}"]
+        assert r["units"][f"mixed_ehl_x_m_{k}"] == "m" and x.size == r["ehl_nodes"][k]
+        dx = x[1] - x[0]
+        assert np.allclose(np.diff(x), dx, rtol=1e-9, atol=0) and dx <= s["grid_spacing_m"] * (1 + 1e-12)
+        b = r["hertz_halfwidth_m"][k]
+        assert x[0] - 0.5 * dx == pytest.approx(-s["inlet_halfwidths"] * b, rel=1e-9)
+        assert x[-1] + 0.5 * dx == pytest.approx(s["outlet_halfwidths"] * b, rel=1e-9)
+        w = r["line_load_N_per_m"][k]
+        for instant in ("peak", "middle"):
+            arrays = {q: r[f"mixed_ehl_{instant}_{q}_{k}"] for q in EHL_PROFILE_UNITS}
+            for q, unit in EHL_PROFILE_UNITS.items():
+                assert arrays[q].shape == x.shape and r["units"][f"mixed_ehl_{instant}_{q}_{k}"] == unit, (q, k)
+            p = arrays["pressure_Pa"]
+            assert np.all(p >= 0) and p[0] == 0 and p[-1] == 0
+            assert set(np.unique(arrays["state"])) <= {0, 1, 2}  # fluid, cavitated, contact
+            load = p.sum() * dx
+            assert abs(load - w) <= (r["ehl_load_error_max"][k] + 1e-13) * w, (instant, k)
+            assert np.trapz(p, x) == pytest.approx(load, rel=1e-13)
+            assert p.max() <= r["ehl_peak_pressure_max_Pa"][k]
+        assert r[f"mixed_ehl_peak_pressure_Pa_{k}"].max() == r["ehl_peak_pressure_max_Pa"][k]
+
+
+def test_mixed_ehl_run_as_xarray():
+    xr = pytest.importorskip("xarray")
+    ds = gt.run(gt.load_case(MIXED_EHL).set(MIXED_EHL_SETS), positions=MIXED_EHL_POSITIONS)
+    assert isinstance(ds, xr.Dataset)
+    assert ds.ehl_min_film_min_m.dims == ("s_m",) and ds.ehl_min_film_min_m.attrs["group"] == "mixed_ehl"
+    assert ds.ehl_min_film_min_m.attrs["units"] == "m"
+    profile = ds.mixed_ehl_peak_pressure_Pa_1
+    assert profile.dims == ("mixed_ehl_x_m_1",) and profile.attrs["units"] == "Pa"
+    assert ds.attrs["mixed_ehl.tolerance"] == 1e-6 and ds.attrs["mixed_ehl.viscosity_law"] == "roelands"
+
+
+def test_mixed_ehl_run_equals_the_command(tool, tmp_path, mixed_ehl):
+    """The command's HDF5 /mixed_ehl (series, profiles and attributes but the windows' wall times)
+    equals the module's arrays and summary exactly."""
+    path = tmp_path / "e.h5"
+    sets = [a for k, v in MIXED_EHL_SETS.items() for a in ("--set", f"{k}={v}")]
+    tool("run", MIXED_EHL, "--positions", MIXED_EHL_POSITIONS, *sets, "-q", "-o", path)
+    r = mixed_ehl
+    with h5py.File(path) as f:
+        g = f["mixed_ehl"]
+        names = [n for n, item in g.items() if isinstance(item, h5py.Dataset)]
+        assert sorted(names) == ehl_series(r)
+        for name in names:
+            assert np.array_equal(g[name][()], r[name]), name
+            assert g[name].attrs["units"].decode() == r["units"][name], name
+        timings = {"windows_seconds", "windows_transform_seconds"}  # wall times: this run's own
+        s = r["attrs"]["mixed_ehl"]
+        for name, value in g.attrs.items():
+            if name == "meaning" or name in timings:
+                continue
+            assert s[name] == (value.decode() if isinstance(value, bytes) else value), name
+        assert sorted(set(g.attrs) - timings - {"meaning"}) == sorted(set(s) - timings)
+        for item in g["profiles"].values():
+            k = int(item.attrs["position"])
+            assert np.array_equal(item["x_m"][()], r[f"mixed_ehl_x_m_{k}"]), k
+            for instant in ("peak", "middle"):
+                for q in EHL_PROFILE_UNITS:
+                    assert np.array_equal(item[f"{instant}_{q}"][()], r[f"mixed_ehl_{instant}_{q}_{k}"]), (k, q)
+        assert len(g["profiles"]) == 3
+
 # -- kinematics and asperity laws ----------------------------------------------------------------
 
 def test_kinematics_equals_the_command(tool):

@@ -59,13 +59,18 @@ struct Options {
   std::string output, series;
   CsvOption csv;
   bool quiet = false;
+
+  bool rough() const { return !waviness.empty() || !ridge.empty(); }
+  // The roughness's option (--waviness and --ridge exclude each other) and its two lengths.
+  std::string roughness_option() const { return ridge.empty() ? "--waviness" : "--ridge"; }
+  const std::vector<std::string>& roughness() const { return ridge.empty() ? waviness : ridge; }
 };
 
-double quantity(const std::string& option, const std::string& text, Dimension d) {
-  return quantity_option(option, text, d);
-}
+// The run's texts (name, value: the inputs' files, the models chosen), as the result file holds them.
+using Texts = decltype(io::LineEhlFile::texts);
+
 double positive(const std::string& option, const std::string& text, Dimension d) {
-  const double v = quantity(option, text, d);
+  const double v = quantity_option(option, text, d);
   if (!(v > 0.0)) throw std::invalid_argument(fmt::format("{} '{}': must be positive", option, text));
   return v;
 }
@@ -85,8 +90,8 @@ std::string option_of(const std::string& key, const Options& o) {
                                                              {"film_floor", "--film-floor"},
                                                              {"hardness", "--hardness"},
                                                              {"boundary_friction", "--boundary-friction"},
-                                                             {"amplitude", o.ridge.empty() ? "--waviness" : "--ridge"},
-                                                             {"length", o.ridge.empty() ? "--waviness" : "--ridge"},
+                                                             {"amplitude", o.roughness_option()},
+                                                             {"length", o.roughness_option()},
                                                              {"window", "--window"},
                                                              {"courant", "--time-step"}};
   const auto it = kFields.find(key);
@@ -96,7 +101,7 @@ std::string option_of(const std::string& key, const Options& o) {
 }
 
 // The solids: E* and the softer surface's hardness (infinite: none given).
-void solids(const Options& o, me::LineEhlSpec& s, std::vector<std::pair<std::string, std::string>>& texts) {
+void solids(const Options& o, me::LineEhlSpec& s, Texts& texts) {
   if (!o.materials.empty()) {
     if (o.materials.size() > 2) missing("--materials takes one file (both bodies) or two");
     const Material m1 = io::load_material(o.materials.front());
@@ -113,14 +118,14 @@ void solids(const Options& o, me::LineEhlSpec& s, std::vector<std::pair<std::str
 }
 
 // The oil at its inlet: eta_0 and alpha given, or a lubricant file at a temperature.
-void oil(const Options& o, me::Fluid& f, bool needs_alpha, std::vector<std::pair<std::string, std::string>>& texts) {
+void oil(const Options& o, me::Fluid& f, bool needs_alpha, Texts& texts) {
   f.viscosity_law = choice_from_name(me::viscosity_law_choices(), o.viscosity_law, "viscosity law");
   f.flow = choice_from_name(me::flow_model_choices(), o.flow, "flow model");
   f.compressible = !o.incompressible;
   if (!o.lubricant.empty()) {
     if (o.temperature.empty()) missing("--lubricant needs --oil-temperature");
     const lubrication::Lubricant l = io::load_lubricant(o.lubricant);
-    const double t = quantity("--oil-temperature", o.temperature, Dimension::temperature);
+    const double t = quantity_option("--oil-temperature", o.temperature, Dimension::temperature);
     const lubrication::TemperatureRange range = lubrication::operating_range(l);
     if (!range.contains(t))
       throw std::invalid_argument(
@@ -138,7 +143,7 @@ void oil(const Options& o, me::Fluid& f, bool needs_alpha, std::vector<std::pair
     f.viscosity = positive("--viscosity", o.viscosity, Dimension::dynamic_viscosity);
     if (needs_alpha) {
       if (o.alpha.empty()) missing("--viscosity needs --alpha (the pressure-viscosity coefficient; 0 for none)");
-      f.pressure_viscosity = quantity("--alpha", o.alpha, Dimension::inverse_pressure);
+      f.pressure_viscosity = quantity_option("--alpha", o.alpha, Dimension::inverse_pressure);
     }
   }
   if (!o.eyring_stress.empty()) f.eyring_stress = positive("--eyring-stress", o.eyring_stress, Dimension::pressure);
@@ -151,7 +156,7 @@ void set_speeds(me::ContactInstant& c, double u, double slide_roll) {
 }
 
 // The contact: dimensional, or the groups realised on R, E* and eta_0 (E' = 2 E*).
-me::LineEhlSpec make_spec(const Options& o, std::vector<std::pair<std::string, std::string>>& texts) {
+me::LineEhlSpec make_spec(const Options& o, Texts& texts) {
   me::LineEhlSpec s;
   s.options = o.solver;
   if (!o.film_floor.empty()) s.options.film_floor = positive("--film-floor", o.film_floor, Dimension::length);
@@ -180,10 +185,10 @@ me::LineEhlSpec make_spec(const Options& o, std::vector<std::pair<std::string, s
     if (!o.load) missing("the contact: --load W (N/m), or --groups W,U,G, or --moes M,L with --load");
     c.line_load = *o.load;
     if (!o.speed.empty()) {
-      set_speeds(c, quantity("--speed", o.speed, Dimension::speed), o.slide_roll);
+      set_speeds(c, quantity_option("--speed", o.speed, Dimension::speed), o.slide_roll);
     } else if (!o.speed1.empty() && !o.speed2.empty()) {
-      c.speed1 = quantity("--speed1", o.speed1, Dimension::speed);
-      c.speed2 = quantity("--speed2", o.speed2, Dimension::speed);
+      c.speed1 = quantity_option("--speed1", o.speed1, Dimension::speed);
+      c.speed2 = quantity_option("--speed2", o.speed2, Dimension::speed);
     } else {
       missing("the speeds: --speed U (the mean of the surfaces') [--slide-roll S] or --speed1 and --speed2");
     }
@@ -196,13 +201,13 @@ me::LineEhlSpec make_spec(const Options& o, std::vector<std::pair<std::string, s
                     "positive (--speed, --slide-roll, --speed1, --speed2)",
                     c.speed1, c.speed2));
   // The roughness.
-  const std::vector<std::string>& r = o.waviness.empty() ? o.ridge : o.waviness;
-  if (!r.empty()) {
-    const std::string option = o.waviness.empty() ? "--ridge" : "--waviness";
-    if (r.size() != 2)
-      missing(option + " takes two lengths: " + (o.waviness.empty() ? "HEIGHT,WIDTH" : "AMPLITUDE,WAVELENGTH"));
-    s.roughness.shape = o.waviness.empty() ? me::RoughnessShape::ridge : me::RoughnessShape::waviness;
-    s.roughness.amplitude = quantity(option, r[0], Dimension::length);
+  if (o.rough()) {
+    const std::vector<std::string>& r = o.roughness();
+    const std::string option = o.roughness_option();
+    const bool ridge = !o.ridge.empty();
+    if (r.size() != 2) missing(option + " takes two lengths: " + (ridge ? "HEIGHT,WIDTH" : "AMPLITUDE,WAVELENGTH"));
+    s.roughness.shape = ridge ? me::RoughnessShape::ridge : me::RoughnessShape::waviness;
+    s.roughness.amplitude = quantity_option(option, r[0], Dimension::length);
     s.roughness.length = positive(option, r[1], Dimension::length);
     s.roughness.on = choice_from_name(me::rough_surfaces_choices(), o.surfaces, "surface");
     texts.emplace_back("roughness", choice_name(me::roughness_shape_choices(), s.roughness.shape));
@@ -355,12 +360,12 @@ bool is_hdf5(const std::string& file) {
 }
 
 void run(const Options& o) {
-  if (o.steady && o.waviness.empty() && o.ridge.empty()) missing("--steady needs a roughness (--waviness or --ridge)");
-  if ((o.window > 0.0 || o.courant != 1.0) && (o.waviness.empty() && o.ridge.empty()))
+  if (o.steady && !o.rough()) missing("--steady needs a roughness (--waviness or --ridge)");
+  if ((o.window > 0.0 || o.courant != 1.0) && !o.rough())
     missing("--window and --time-step need a roughness (--waviness or --ridge) to move");
-  if (!o.series.empty() && (o.steady || (o.waviness.empty() && o.ridge.empty())))
+  if (!o.series.empty() && (o.steady || !o.rough()))
     missing("--series needs a transient: a roughness (--waviness or --ridge) without --steady");
-  std::vector<std::pair<std::string, std::string>> texts;
+  Texts texts;
   me::LineEhlSpec spec = make_spec(o, texts);
   // Every target checked before any work; written all or none.
   io::OutputSet outputs;
@@ -390,8 +395,9 @@ void run(const Options& o) {
   if (!o.series.empty()) outputs.add_text(o.series, io::format_csv(series_table(r)));
   std::string head;
   for (const auto& [name, value] : texts) head += fmt::format("# {}: {}\n", name, value);
-  if (o.csv.to_file()) outputs.add_text(o.csv.file, head + io::format_csv(summary));
-  if (!o.quiet) outputs.add_stdout(o.csv.in_place() ? head + io::format_csv(summary) : head + io::format_text(summary));
+  const std::string csv = head + io::format_csv(summary);
+  if (o.csv.to_file()) outputs.add_text(o.csv.file, csv);
+  if (!o.quiet) outputs.add_stdout(o.csv.in_place() ? csv : head + io::format_text(summary));
   outputs.commit();
 }
 

@@ -1,5 +1,6 @@
 #include "contact/deterministic_contact.hpp"
 
+#include "contact/position_threads.hpp"
 #include "core/keyed_error.hpp"
 
 #include "core/maximize.hpp"
@@ -7,12 +8,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <mutex>
 #include <stdexcept>
-#include <thread>
 
 namespace geartrib::contact {
 
@@ -216,82 +214,68 @@ MeshPass mesh_pass(const FlankTrack& pinion, const FlankTrack& wheel, const std:
   out.strips.resize(positions.size());
   out.plastic_pinion.assign(pinion.profile.z.size(), 0.0);
   out.plastic_wheel.assign(wheel.profile.z.size(), 0.0);
-  threads = std::clamp(threads, 1, std::max(1, n));
-  std::atomic<int> next{0}, done{0};
   std::mutex merge;
-  std::exception_ptr failure;
-  std::atomic<bool> failed{false};
   const double share1 = options.pinion_plastic_share, share2 = 1.0 - share1;
-  auto work = [&](bool reports) {
-    try {
-      const StripSolver solver(composite_modulus, strip_half_length, options);
-      const HalfPlaneGrid& g = solver.grid();
-      std::vector<double> d1(out.plastic_pinion.size(), 0.0), d2(out.plastic_wheel.size(), 0.0);
-      // The plastic deformation at a flank's points: linear between the element centres (a
-      // piecewise-constant one would leave steps of the element size on the finer profile).
-      // direction: +1 when sigma = sigma_c + x (wheel), -1 when sigma = sigma_c - x (pinion).
-      auto lay = [&g](const FlankTrack& t, double sigma_c, int direction, const std::vector<double>& d, int jlo,
-                      int jhi, double share, std::vector<double>& into) {
-        const double h = t.profile.spacing;
-        const double x_lo = g.x(std::max(jlo - 1, 0)), x_hi = g.x(std::min(jhi + 1, g.size - 1));
-        const double s_lo = direction > 0 ? sigma_c + x_lo : sigma_c - x_hi;
-        const double s_hi = direction > 0 ? sigma_c + x_hi : sigma_c - x_lo;
-        const auto last = static_cast<long>(t.profile.z.size()) - 1;
-        const long k0 = std::max(0L, static_cast<long>(std::ceil((s_lo - t.start) / h)));
-        const long k1 = std::min(last, static_cast<long>(std::floor((s_hi - t.start) / h)));
-        for (long k = k0; k <= k1; ++k) {
-          const double x = direction * (t.start + k * h - sigma_c);
-          const double f = (x - g.x(0)) / g.spacing;
-          const int j = std::clamp(static_cast<int>(std::floor(f)), 0, g.size - 2);
-          const double w = std::clamp(f - j, 0.0, 1.0);
-          const double dk =
-              share * ((1.0 - w) * d[static_cast<std::size_t>(j)] + w * d[static_cast<std::size_t>(j + 1)]);
-          auto& slot = into[static_cast<std::size_t>(k)];
-          slot = std::max(slot, dk);
+  run_in_threads(
+      threads, n,
+      [&](ThreadItems& items) {
+        const StripSolver solver(composite_modulus, strip_half_length, options);
+        const HalfPlaneGrid& g = solver.grid();
+        std::vector<double> d1(out.plastic_pinion.size(), 0.0), d2(out.plastic_wheel.size(), 0.0);
+        // The plastic deformation at a flank's points: linear between the element centres (a
+        // piecewise-constant one would leave steps of the element size on the finer profile).
+        // direction: +1 when sigma = sigma_c + x (wheel), -1 when sigma = sigma_c - x (pinion).
+        auto lay = [&g](const FlankTrack& t, double sigma_c, int direction, const std::vector<double>& d, int jlo,
+                        int jhi, double share, std::vector<double>& into) {
+          const double h = t.profile.spacing;
+          const double x_lo = g.x(std::max(jlo - 1, 0)), x_hi = g.x(std::min(jhi + 1, g.size - 1));
+          const double s_lo = direction > 0 ? sigma_c + x_lo : sigma_c - x_hi;
+          const double s_hi = direction > 0 ? sigma_c + x_hi : sigma_c - x_lo;
+          const auto last = static_cast<long>(t.profile.z.size()) - 1;
+          const long k0 = std::max(0L, static_cast<long>(std::ceil((s_lo - t.start) / h)));
+          const long k1 = std::min(last, static_cast<long>(std::floor((s_hi - t.start) / h)));
+          for (long k = k0; k <= k1; ++k) {
+            const double x = direction * (t.start + k * h - sigma_c);
+            const double f = (x - g.x(0)) / g.spacing;
+            const int j = std::clamp(static_cast<int>(std::floor(f)), 0, g.size - 2);
+            const double w = std::clamp(f - j, 0.0, 1.0);
+            const double dk =
+                share * ((1.0 - w) * d[static_cast<std::size_t>(j)] + w * d[static_cast<std::size_t>(j + 1)]);
+            auto& slot = into[static_cast<std::size_t>(k)];
+            slot = std::max(slot, dk);
+          }
+        };
+        for (int i = items.take(); i >= 0; i = items.take()) {
+          const auto ui = static_cast<std::size_t>(i);
+          const bool keep_i = ui < keep.size() && keep[ui];
+          DeterministicStrip st;
+          try {
+            st = solver.solve(pinion, wheel, positions[ui], true);
+          } catch (const std::runtime_error& e) {
+            // Where, and the key that changes what the solves must resolve: their tolerance is relative to
+            // the gap's relief across the strip (its parabola grows with the strip's length squared).
+            throw std::runtime_error(fmt::format(
+                "at position {} of {} (s = {:.6g} mm, line load {:.6g} N/m): {}; a shorter strip "
+                "(contact.strip_halfwidths) or coarser elements (contact.element_size) ask less of the solves",
+                i + 1, n, positions[ui].path * 1e3, positions[ui].line_load, e.what()));
+          }
+          int jlo = g.size, jhi = -1;
+          for (int j = 0; j < g.size; ++j)
+            if (st.plastic[static_cast<std::size_t>(j)] > 0.0) jlo = std::min(jlo, j), jhi = j;
+          if (jhi >= 0) {
+            if (share1 > 0.0) lay(pinion, positions[ui].sigma_pinion, -1, st.plastic, jlo, jhi, share1, d1);
+            if (share2 > 0.0) lay(wheel, positions[ui].sigma_wheel, +1, st.plastic, jlo, jhi, share2, d2);
+          }
+          st.plastic = {};  // laid on the flanks: no output keeps it
+          if (!keep_i) st.pressure = {};
+          out.strips[ui] = std::move(st);
+          items.finished();
         }
-      };
-      for (int i = next++; i < n && !failed; i = next++) {
-        const auto ui = static_cast<std::size_t>(i);
-        const bool keep_i = ui < keep.size() && keep[ui];
-        DeterministicStrip st;
-        try {
-          st = solver.solve(pinion, wheel, positions[ui], true);
-        } catch (const std::runtime_error& e) {
-          // Where, and the key that changes what the solves must resolve: their tolerance is relative to
-          // the gap's relief across the strip (its parabola grows with the strip's length squared).
-          throw std::runtime_error(fmt::format(
-              "at position {} of {} (s = {:.6g} mm, line load {:.6g} N/m): {}; a shorter strip "
-              "(contact.strip_halfwidths) or coarser elements (contact.element_size) ask less of the solves",
-              i + 1, n, positions[ui].path * 1e3, positions[ui].line_load, e.what()));
-        }
-        int jlo = g.size, jhi = -1;
-        for (int j = 0; j < g.size; ++j)
-          if (st.plastic[static_cast<std::size_t>(j)] > 0.0) jlo = std::min(jlo, j), jhi = j;
-        if (jhi >= 0) {
-          if (share1 > 0.0) lay(pinion, positions[ui].sigma_pinion, -1, st.plastic, jlo, jhi, share1, d1);
-          if (share2 > 0.0) lay(wheel, positions[ui].sigma_wheel, +1, st.plastic, jlo, jhi, share2, d2);
-        }
-        st.plastic = {};  // laid on the flanks: no output keeps it
-        if (!keep_i) st.pressure = {};
-        out.strips[ui] = std::move(st);
-        const int finished = ++done;
-        if (reports && progress) progress(finished, n);
-      }
-      const std::lock_guard lock(merge);
-      for (std::size_t k = 0; k < d1.size(); ++k) out.plastic_pinion[k] = std::max(out.plastic_pinion[k], d1[k]);
-      for (std::size_t k = 0; k < d2.size(); ++k) out.plastic_wheel[k] = std::max(out.plastic_wheel[k], d2[k]);
-    } catch (...) {
-      const std::lock_guard lock(merge);
-      if (!failure) failure = std::current_exception();
-      failed = true;
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work, false);
-  work(true);
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
-  if (progress) progress(n, n);
+        const std::lock_guard lock(merge);
+        for (std::size_t k = 0; k < d1.size(); ++k) out.plastic_pinion[k] = std::max(out.plastic_pinion[k], d1[k]);
+        for (std::size_t k = 0; k < d2.size(); ++k) out.plastic_wheel[k] = std::max(out.plastic_wheel[k], d2[k]);
+      },
+      progress);
   for (double d : out.plastic_pinion) out.max_new_plastic = std::max(out.max_new_plastic, d);
   for (double d : out.plastic_wheel) out.max_new_plastic = std::max(out.max_new_plastic, d);
   return out;

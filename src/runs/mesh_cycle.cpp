@@ -10,6 +10,7 @@
 #include "contact/fidelity_registry.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
+#include "contact/position_threads.hpp"
 #include "contact/run_summary.hpp"
 #include "core/keyed_error.hpp"
 #include "gear/gear_mesh.hpp"
@@ -511,7 +512,7 @@ void check_budget(const Case& c, const contact::FlankSpan& span, const int teeth
   w.kept_profiles = cs.pressure_profiles == PressureProfiles::all      ? span.positions
                     : cs.pressure_profiles == PressureProfiles::points ? std::min(5, span.positions)
                                                                        : 0;
-  w.threads = contact::strip_threads(cs, span.positions);
+  w.threads = contact::position_threads(cs, span.positions);
   w.cores = std::min(w.threads, std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
   const contact::DeterministicCost cost = contact::deterministic_cost(span, w);
   const io::ResourceBudget budget = io::resource_budget();

@@ -1,5 +1,6 @@
 #include "contact/deterministic/mesh_deterministic.hpp"
 
+#include "contact/position_threads.hpp"
 #include "contact/series_columns.hpp"
 #include "contact/stage_clock.hpp"
 #include "core/keyed_error.hpp"
@@ -12,7 +13,6 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <thread>
 
 namespace geartrib::contact {
 
@@ -226,11 +226,6 @@ double strip_solve_seconds(int elements) {
   return kSeconds * std::pow(std::max(elements, 1) / kElements, kExponent);
 }
 
-int strip_threads(const ContactSettings& cs, int positions) {
-  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  return std::clamp(cs.threads > 0 ? cs.threads : hardware, 1, std::max(1, positions));
-}
-
 DeterministicCost deterministic_cost(const FlankSpan& span, const DeterministicWork& w) {
   // Bytes, measured with /usr/bin/time's peak RSS on the shipped case (docs/reference/performance.md#budgets):
   // a flank profile 8 a point (its heights); a kept pressure profile 24 an element (its pressure, the
@@ -395,7 +390,7 @@ void run_meshes(const FidelityInputs& in, BoundaryElements::State& st, const std
                     "than a run can count ({})",
                     planned, per_round, n, std::numeric_limits<int>::max()));
   const int total_solves = static_cast<int>(all_solves);
-  const int threads = strip_threads(in.contact, n);
+  const int threads = position_threads(in.contact, n);
   int solved = 0;
   auto pass = [&](const FlankTrack& p, const FlankTrack& w, bool first) {
     MeshPass m = mesh_pass(p, w, positions, in.mesh.composite_modulus(), st.span.strip_half_length, st.options,

@@ -100,9 +100,6 @@ DeterministicOptions deterministic_options(const ContactSettings& cs, const Mate
 // One strip solve's time on one core [s] for `elements` boundary elements.
 double strip_solve_seconds(int elements);
 DeterministicCost deterministic_cost(const FlankSpan& span, const DeterministicWork& work);
-// The threads a deterministic run solves its strips on: contact.threads, or the hardware's when 0,
-// at least 1 and at most one a position.
-int strip_threads(const ContactSettings& cs, int positions);
 
 namespace deterministic {
 

@@ -1,6 +1,7 @@
 #include "contact/mixed_ehl/mesh_mixed_ehl.hpp"
 
 #include "contact/mesh_lubrication.hpp"
+#include "contact/position_threads.hpp"
 #include "contact/series_columns.hpp"
 #include "contact/stage_clock.hpp"
 #include "core/keyed_error.hpp"
@@ -9,13 +10,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <limits>
-#include <mutex>
 #include <optional>
-#include <thread>
 
 namespace geartrib::contact::mixed_ehl {
 
@@ -444,46 +441,31 @@ MixedEhl::Solution MixedEhl::solve(const FidelityInputs& in, State& st, const st
                       "the mixed-EHL film has no load to carry there; run the static load sharing",
                       k + 1, n, p.s[static_cast<std::size_t>(k)] * 1e3));
   out.windows.resize(p.size());
-  const int threads = strip_threads(cs, n);
-  std::atomic<int> next{0}, done{0};
-  std::atomic<bool> failed{false};
-  std::mutex merge;
-  std::exception_ptr failure;
-  auto work = [&](bool reports) {
-    try {
-      for (int i = next++; i < n && !failed; i = next++) {
-        const auto k = static_cast<std::size_t>(i);
-        WindowSetup w = base;
-        w.instant = instant_at(p, k);
-        w.solver.nodes = nodes_for(o.solver, p.half_width[k], st.grid_spacing);
-        w.sigma_pinion = st.sigma[0][k];
-        w.sigma_wheel = st.sigma[1][k];
-        w.keep_profile = keep[k];
-        try {
-          out.windows[k] = solve_window(st.flanks.pinion.front(), st.flanks.wheel.front(), w);
-        } catch (const WindowFailure& e) {
-          throw window_refusal(e, p, k, names[k]);
+  run_in_threads(
+      position_threads(cs, n), n,
+      [&](ThreadItems& items) {
+        for (int i = items.take(); i >= 0; i = items.take()) {
+          const auto k = static_cast<std::size_t>(i);
+          WindowSetup w = base;
+          w.instant = instant_at(p, k);
+          w.solver.nodes = nodes_for(o.solver, p.half_width[k], st.grid_spacing);
+          w.sigma_pinion = st.sigma[0][k];
+          w.sigma_wheel = st.sigma[1][k];
+          w.keep_profile = keep[k];
+          try {
+            out.windows[k] = solve_window(st.flanks.pinion.front(), st.flanks.wheel.front(), w);
+          } catch (const WindowFailure& e) {
+            throw window_refusal(e, p, k, names[k]);
+          }
+          if (out.windows[k].profile) {
+            out.windows[k].profile->position = i;
+            out.windows[k].profile->point = names[k];
+            out.windows[k].profile->s = p.s[k];
+          }
+          items.finished();
         }
-        if (out.windows[k].profile) {
-          out.windows[k].profile->position = i;
-          out.windows[k].profile->point = names[k];
-          out.windows[k].profile->s = p.s[k];
-        }
-        const int finished = ++done;
-        if (reports && in.progress) in.progress(finished, n);
-      }
-    } catch (...) {
-      const std::lock_guard lock(merge);
-      if (!failure) failure = std::current_exception();
-      failed = true;
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work, false);
-  work(true);
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
-  if (in.progress) in.progress(n, n);
+      },
+      in.progress);
   clock.lap("mixed_ehl_windows");
   if (o.whole_path) {
     try {
