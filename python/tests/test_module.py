@@ -293,7 +293,7 @@ def test_mixed_ehl_shares_and_extremes_are_ordered(mixed_ehl):
     for q in ("asperity_share", "contact_fraction"):
         mean, top = r[f"ehl_{q}_mean"], r[f"ehl_{q}_max"]
         assert np.all((0 <= mean) & (mean <= top) & (top <= 1)), q
-    for q in ("real_area_ratio_max", "above_hardness_fraction_max"):
+    for q in ("real_area_ratio_max", "yield_fraction_max"):
         assert np.all((0 <= r[f"ehl_{q}"]) & (r[f"ehl_{q}"] <= 1)), q
     for q in ("peak_pressure_{}_Pa", "friction_coefficient_{}", "flash_temperature_{}_K", "heat_flux_peak_{}_W_per_m2"):
         assert np.all((0 <= r["ehl_" + q.format("mean")]) & (r["ehl_" + q.format("mean")] <= r["ehl_" + q.format("max")])), q
