@@ -344,9 +344,9 @@ TEST(MixedEhlLine, FilmsStayPositiveAsRoughSurfacesSlideThroughContact) {
 }
 
 // Elastic-perfectly-plastic surfaces: with the softer surface's hardness given, the same sliding
-// roughness's pressure is held at it (the regularised yield lets it exceed the hardness by ~0.1 %
-// per film unit b^2/R of flattening: 1 % allows ten), the surfaces yield at some nodes and the
-// load is carried at every step.
+// roughness's pressure never passes it (the pressure-flattening graph's pressure is at most the
+// hardness by construction; 1e-12 for rounding), the surfaces yield at some nodes and the load is
+// carried at every step. Elastic, the same roughness raised the pressure past 10 p_H = 3.9 GPa.
 TEST(MixedEhlLine, PressureIsHeldAtTheHardness) {
   const ContactInstant& c = kPointA;
   EhlOptions o;
@@ -360,7 +360,7 @@ TEST(MixedEhlLine, PressureIsHeldAtTheHardness) {
   double yielding = 0.0;
   for (int k = 1; k <= 90; ++k) {
     const EhlField& f = s.step(c, sliding_roughness(g, c, 1.5e-6 * std::min(1.0, k / 30.0), k * dt), dt);
-    EXPECT_LT(f.peak_pressure, 1.01 * o.hardness) << "step " << k;
+    EXPECT_LE(f.peak_pressure, o.hardness * (1.0 + 1e-12)) << "step " << k;
     ASSERT_NEAR(f.line_load / c.line_load, 1.0, 1e-5);
     yielding = std::max(yielding, f.yield_fraction);
   }

@@ -838,11 +838,14 @@ struct LineEhlSolver::Impl {
       f.film[s] = h;
       f.flattening[s] = U[s] * film_scale;
       f.yields[s] = plastic_on && Q[s] > yield_level();  // past the yield's corner
-      // The domain's two end nodes hold the pressure at zero: their film is the gap, not a contact.
-      const bool contact = h < options.film_floor && i > 0 && i + 1 < n;
+      // The domain's two end nodes hold the pressure at zero: their film is the gap (the flanks'
+      // heights may overlap there), neither a contact nor a film that shears.
+      const bool end = i == 0 || i + 1 == n;
+      const bool contact = h < options.film_floor && !end;
       f.state[s] = contact ? NodeState::contact : (P[s] > 0.0 ? NodeState::fluid : NodeState::cavitated);
       double tau = 0.0;
-      if (contact) {  // the contacts' pressure and the film's between them: boundary friction
+      if (end) {
+      } else if (contact) {  // the contacts' pressure and the film's between them: boundary friction
         tau = options.boundary_friction * p;
         boundary_friction += tau * grid.spacing;
         contact_load += p * grid.spacing;
