@@ -5,6 +5,8 @@ positions) on six flank sets, and its effective-roughness factor k fitted with C
 
 Usage: validation/mixed-ehl-closure/check.py GEARTRIB [--group quick|long] [--fit TOOL] [--write]
        validation/mixed-ehl-closure/check.py --table      (the README's tables from the stored CSVs)
+       validation/mixed-ehl-closure/check.py GEARTRIB --refit SET RUN.csv   (k of SET against another
+         mixed-EHL run of it, e.g. at another mixed_ehl.film_floor; prints the fit tool's rows)
 --group long (expected-long.csv, about 8 min on two cores): the mixed-EHL run of each flank set, its
   time means and extremes at A..E and along the path beside the statistical cycle of the same run.
 --group quick (expected.csv, the default, about 15 s): the refusals (smooth flanks, traction curves),
@@ -214,6 +216,62 @@ def scaled_sets(name, k, tmp, patches):
     return sets
 
 
+def submit_scan(binary, pool, bulk, tmp):
+    """The statistical cycle of each set in bulk (name -> bulk temperature [K]) with its heights x k,
+    at every k of K_GRID: futures keyed (name, j)."""
+    patches = {}
+    for g in GEARS:
+        patches[g] = os.path.join(tmp, f"{g}-patch.csv")
+        subprocess.run([binary, "surface", "clean", f"gears/surfaces/{g}-flank.h5", "--form", "0", "-o", patches[g]],
+                       cwd=ROOT, check=True, capture_output=True)
+    jobs = {}
+    for name, t in bulk.items():
+        case, sets, _ = SETS[name]
+        for j, k in enumerate(K_GRID):
+            scaled = [*STATISTICAL, f"bulk_temperature={t}K", *scaled_sets(name, k, tmp, patches)]
+            jobs[(name, j)] = pool.submit(geartrib, binary, case, sets, os.path.join(tmp, f"{name}-k{j}"), scaled)
+    return jobs
+
+
+def collect(jobs):
+    results = {}
+    for job, future in jobs.items():
+        rc, got, _ = future.result()
+        if rc != 0:
+            raise RuntimeError(f"{job}: {got}")
+        results[job] = got
+    return results
+
+
+def run_fit(fit_tool, results, targets, tmp):
+    """geartrib_closure_fit on the scan's results and targets[(name, observable)] (11 positions' values):
+    its result rows."""
+    response, target = os.path.join(tmp, "response.csv"), os.path.join(tmp, "target.csv")
+    with open(response, "w") as r, open(target, "w") as t:
+        r.write("set,observable,position,k,value\n")
+        t.write("set,observable,position,value\n")
+        for (name, obs), values in targets.items():
+            closure = FIT_OBSERVABLES[obs][1]
+            for i, value in enumerate(values):
+                t.write(f"{name},{obs},{i},{value}\n")
+                for j, k in enumerate(K_GRID):
+                    r.write(f"{name},{obs},{i},{k:.17g},{results[(name, j)][i][closure]}\n")
+    out = subprocess.run([fit_tool, response, target], capture_output=True, text=True, check=True).stdout
+    return list(csv.DictReader(out.splitlines()))
+
+
+def refit(binary, fit_tool, name, run_csv):
+    """The fit of k for one set against another mixed-EHL run of it (its CSV), e.g. at another film
+    floor: the closure scanned at that run's bulk temperature."""
+    got = read_rows(run_csv)
+    with tempfile.TemporaryDirectory() as tmp, concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        results = collect(submit_scan(binary, pool, {name: f"{bulk_temperature(got[0]):.10g}"}, tmp))
+        targets = {(name, obs): [float(r[ehl]) for r in got] for obs, (ehl, _) in FIT_OBSERVABLES.items()}
+        for f in run_fit(fit_tool, results, targets, tmp):
+            print(",".join(f.values()))
+    return 0
+
+
 def stored_long():
     """The long group's stored table: (key, quantity) -> model value."""
     table = expected_table.read(os.path.join(HERE, "expected-long.csv"))[1]
@@ -229,27 +287,14 @@ def quick_rows(binary, fit_tool, tmp):
     rows.append(row("all sets", "traction curve [message]", message, "=",
                     "the lubricant has no measured traction curves: refused (exit 2), recorded"))
 
-    patches = {}
-    for g in GEARS:
-        patches[g] = os.path.join(tmp, f"{g}-patch.csv")
-        subprocess.run([binary, "surface", "clean", f"gears/surfaces/{g}-flank.h5", "--form", "0", "-o", patches[g]],
-                       cwd=ROOT, check=True, capture_output=True)
     jobs = {}
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
         for name, (case, sets, _) in SETS.items():
-            bulk = stored[(name, "bulk temperature [K]")]
             for v, extra in VARIANTS.items():
                 out = os.path.join(tmp, f"{name}-{v}".replace(" ", "_"))
                 jobs[(name, v)] = pool.submit(geartrib, binary, case, sets, out, [*STATISTICAL, *extra])
-            for j, k in enumerate(K_GRID):
-                scaled = [*STATISTICAL, f"bulk_temperature={bulk}K", *scaled_sets(name, k, tmp, patches)]
-                jobs[(name, j)] = pool.submit(geartrib, binary, case, sets, os.path.join(tmp, f"{name}-k{j}"), scaled)
-        results = {}
-        for job, future in jobs.items():
-            rc, got, _ = future.result()
-            if rc != 0:
-                raise RuntimeError(f"{job}: {got}")
-            results[job] = got
+        jobs.update(submit_scan(binary, pool, {n: stored[(n, "bulk temperature [K]")] for n in SETS}, tmp))
+        results = collect(jobs)
 
     for name in SETS:
         default = results[(name, "default")]
@@ -277,21 +322,12 @@ def quick_rows(binary, fit_tool, tmp):
 
 
 def fit_rows(fit_tool, results, stored, tmp):
-    response, target = os.path.join(tmp, "response.csv"), os.path.join(tmp, "target.csv")
-    with open(response, "w") as r, open(target, "w") as t:
-        r.write("set,observable,position,k,value\n")
-        t.write("set,observable,position,value\n")
-        for name in SETS:
-            for obs, (ehl, closure) in FIT_OBSERVABLES.items():
-                label = dict(EHL)[ehl]
-                for i in range(11):
-                    t.write(f"{name},{obs},{i},{stored[(key(name, i), label)]}\n")
-                    for j, k in enumerate(K_GRID):
-                        r.write(f"{name},{obs},{i},{k:.17g},{results[(name, j)][i][closure]}\n")
-    out = subprocess.run([fit_tool, response, target], capture_output=True, text=True, check=True).stdout
+    targets = {(name, obs): [stored[(key(name, i), dict(EHL)[ehl])] for i in range(11)]
+               for name in SETS for obs, (ehl, _) in FIT_OBSERVABLES.items()}
+    fits = run_fit(fit_tool, results, targets, tmp)
     rows = []
     why = ("Ceres fit on the stored targets and the closure's tabulated response (deterministic: rel 1e-6)")
-    for f in csv.DictReader(out.splitlines()):
+    for f in fits:
         k = f"fit {f['set']} {f['observable']}"
         rows.append(row(k, "k [1]", float(f["k"]), "rel 1e-6", why))
         se = float(f["std_error"])
@@ -406,6 +442,9 @@ def main(argv):
         return 2
     fit_tool = (os.path.abspath(argv[argv.index("--fit") + 1]) if "--fit" in argv
                 else os.path.join(os.path.dirname(binary), "validation", "geartrib_closure_fit"))
+    if "--refit" in argv:
+        i = argv.index("--refit")
+        return refit(binary, fit_tool, argv[i + 1], os.path.abspath(argv[i + 2]))
     with tempfile.TemporaryDirectory() as tmp:
         rows = long_rows(binary, tmp) if group == "long" else quick_rows(binary, fit_tool, tmp)
     name = "expected-long.csv" if group == "long" else "expected.csv"
