@@ -5,6 +5,7 @@
 #include "contact/deterministic/mesh_deterministic.hpp"
 #include "contact/deterministic_contact.hpp"
 #include "contact/mesh_contact.hpp"
+#include "flank_tracks.hpp"
 #include "gear/gear_mesh.hpp"
 #include "reference_solutions.hpp"
 #include "runs/mesh_cycle.hpp"
@@ -41,11 +42,8 @@ const double kB = reference::hertz_line_half_width(kLineLoad, kRadius, kEstar); 
 // plane strain, nu = 0.3, maximised on a 1e-5 b comb): 0.5575 p0 at 0.7043 b.
 constexpr double kVonMisesRatio = 0.5575, kVonMisesDepth = 0.7043;
 
-// A flank of `points` heights `spacing` apart starting at sigma = start.
-FlankTrack track(double start, double spacing, std::vector<double> z) { return {{spacing, std::move(z)}, start}; }
-FlankTrack flat(double start, double spacing, std::size_t points) {
-  return track(start, spacing, std::vector<double>(points, 0.0));
-}
+using test::flat;
+using test::track;
 // Smooth flanks covering +-300 um about the contact points (the strips reach +-1.5 b = 204 um).
 FlankTrack flat_pinion() { return flat(kSigmaP - 300e-6, 0.5e-6, 1201); }
 FlankTrack flat_wheel() { return flat(kSigmaW - 300e-6, 0.5e-6, 1201); }
@@ -223,21 +221,12 @@ TEST(DeterministicGap, FlanksRollThroughTheStripInOppositeDirections) {
   const HalfPlaneGrid& g = solver.grid();
   const double e = g.spacing;
   ASSERT_EQ(g.size, 122);  // 2 ceil(60.3): element edges at whole micrometres from -61 to 61 um
-  // tent(u) = A max(0, 1 - |u - c|/L) in the flank's own coordinate u = sigma - start, and its
-  // integral from -infinity.
-  auto tent_integral = [&](double u, double c) {
-    const double v = std::clamp((u - c) / half, -1.0, 1.0);
-    return a_height * half * (v <= 0.0 ? 0.5 * (1.0 + v) * (1.0 + v) : 1.0 - 0.5 * (1.0 - v) * (1.0 - v));
-  };
+  // tent(u) = A max(0, 1 - |u - c|/L) in the flank's own coordinate u = sigma - start.
+  const test::Tent tent{a_height, half};
   const std::size_t points = 1001;  // 250 um of profile
   const double lead = 125e-6;       // the contact point's distance from the profile's start
-  auto bumped = [&](double sigma_c, double offset) {
-    std::vector<double> z(points);
-    for (std::size_t k = 0; k < points; ++k)
-      z[k] = a_height * std::max(0.0, 1.0 - std::abs(static_cast<double>(k) * h - (lead + offset)) / half);
-    return track(sigma_c - lead, h, z);
-  };
-  const FlankTrack p = bumped(kSigmaP, c1), w = bumped(kSigmaW, c2);
+  const FlankTrack p = tent.track(kSigmaP - lead, h, points, lead + c1);
+  const FlankTrack w = tent.track(kSigmaW - lead, h, points, lead + c2);
   const FlankTrack p0 = flat(kSigmaP - lead, h, points), w0 = flat(kSigmaW - lead, h, points);
   const StripPosition at{kLineLoad, kRadius, kB, kSigmaP, kSigmaW};
   const std::vector<double> gp = solver.gap(p, w0, at), gw = solver.gap(p0, w, at);
@@ -247,10 +236,7 @@ TEST(DeterministicGap, FlanksRollThroughTheStripInOppositeDirections) {
     const auto k = static_cast<std::size_t>(j);
     const double x = g.x(j), parabola = x * x / (2.0 * kRadius) + e * e / (24.0 * kRadius);
     // Pinion: sigma1 = sigma1c - x, u = lead - x; wheel: u = lead + x.
-    const double bump_p =
-        (tent_integral(lead - x + 0.5 * e, lead + c1) - tent_integral(lead - x - 0.5 * e, lead + c1)) / e;
-    const double bump_w =
-        (tent_integral(lead + x + 0.5 * e, lead + c2) - tent_integral(lead + x - 0.5 * e, lead + c2)) / e;
+    const double bump_p = tent.mean(lead - x, e, lead + c1), bump_w = tent.mean(lead + x, e, lead + c2);
     EXPECT_NEAR(gp[k], parabola - bump_p, 1e-15) << x;
     EXPECT_NEAR(gw[k], parabola - bump_w, 1e-15) << x;
     touched_p += bump_p > 1e-3 * a_height, touched_w += bump_w > 1e-3 * a_height;

@@ -8,6 +8,7 @@
 #include "config/case_records.hpp"
 #include "config/input_error.hpp"
 #include "contact/mesh_contact.hpp"
+#include "flank_tracks.hpp"
 #include "reference_solutions.hpp"
 #include "runs/mesh_cycle.hpp"
 #include "test_support.hpp"
@@ -30,7 +31,7 @@ namespace {
 constexpr double kEstar = 113.19e9;
 constexpr double kSigmaP = 0.02, kSigmaW = 0.03;  // the contact points' arcs [m]
 
-FlankTrack track(double start, double spacing, std::vector<double> z) { return {{spacing, std::move(z)}, start}; }
+using test::flat;
 
 const std::filesystem::path& mixed_case() {
   static const std::filesystem::path p = test::source_dir() / "gears/m6z30-mixed-ehl.toml";
@@ -77,19 +78,10 @@ TEST(MixedEhlHeights, EachFlankMovesThroughTheContactAtItsOwnSpeed) {
   const double h = 0.5e-6, lead = 300e-6;
   const std::size_t points = 1201;
   const HalfPlaneGrid grid{-100e-6, 1e-6, 200};
-  auto tent_integral = [&](double u, double c) {  // int_{-inf}^{u} A max(0, 1 - |v - c|/L) dv
-    const double v = std::clamp((u - c) / half, -1.0, 1.0);
-    return a * half * (v <= 0.0 ? 0.5 * (1.0 + v) * (1.0 + v) : 1.0 - 0.5 * (1.0 - v) * (1.0 - v));
-  };
-  auto bumped = [&](double sigma_c, double offset) {
-    std::vector<double> z(points);
-    for (std::size_t k = 0; k < points; ++k)
-      z[k] = a * std::max(0.0, 1.0 - std::abs(static_cast<double>(k) * h - (lead + offset)) / half);
-    return track(sigma_c - lead, h, z);
-  };
-  const FlankTrack pinion = bumped(kSigmaP, c1), wheel = bumped(kSigmaW, c2);
-  const FlankTrack flat_p = track(kSigmaP - lead, h, std::vector<double>(points, 0.0));
-  const FlankTrack flat_w = track(kSigmaW - lead, h, std::vector<double>(points, 0.0));
+  const test::Tent tent{a, half};
+  const FlankTrack pinion = tent.track(kSigmaP - lead, h, points, lead + c1);
+  const FlankTrack wheel = tent.track(kSigmaW - lead, h, points, lead + c2);
+  const FlankTrack flat_p = flat(kSigmaP - lead, h, points), flat_w = flat(kSigmaW - lead, h, points);
   const double e = grid.spacing;
   for (double t : {0.0, 4e-6, 1e-5}) {
     std::vector<double> hp, hw;
@@ -101,8 +93,8 @@ TEST(MixedEhlHeights, EachFlankMovesThroughTheContactAtItsOwnSpeed) {
       const double x = grid.x(j);
       // The pinion's own coordinate u = sigma - start = lead + u1 t - x; the wheel's lead - u2 t + x.
       const double up = lead + u1 * t - x, uw = lead - u2 * t + x;
-      EXPECT_NEAR(hp[k], (tent_integral(up + 0.5 * e, lead + c1) - tent_integral(up - 0.5 * e, lead + c1)) / e, 1e-15);
-      EXPECT_NEAR(hw[k], (tent_integral(uw + 0.5 * e, lead + c2) - tent_integral(uw - 0.5 * e, lead + c2)) / e, 1e-15);
+      EXPECT_NEAR(hp[k], tent.mean(up, e, lead + c1), 1e-15);
+      EXPECT_NEAR(hw[k], tent.mean(uw, e, lead + c2), 1e-15);
       if (hp[k] > hp[static_cast<std::size_t>(peak_p)]) peak_p = j;
       if (hw[k] > hw[static_cast<std::size_t>(peak_w)]) peak_w = j;
     }
@@ -128,8 +120,7 @@ TEST(MixedEhlWindow, SmoothFlanksStaySteadyThroughTheWindow) {
   w.thermal_coefficient[0] = w.thermal_coefficient[1] = 1.2e4;
   w.subsurface = true;
   w.keep_profile = true;
-  const FlankTrack pinion = track(kSigmaP - 2e-3, 1e-6, std::vector<double>(4001, 0.0));
-  const FlankTrack wheel = track(kSigmaW - 2e-3, 1e-6, std::vector<double>(4001, 0.0));
+  const FlankTrack pinion = flat(kSigmaP - 2e-3, 1e-6, 4001), wheel = flat(kSigmaW - 2e-3, 1e-6, 4001);
   const WindowResult r = solve_window(pinion, wheel, w);
   const double b = reference::hertz_line_half_width(w.instant.line_load, w.instant.radius, kEstar);
   EXPECT_NEAR(r.half_width, b, 1e-12 * b);

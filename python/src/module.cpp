@@ -106,13 +106,18 @@ py::dict result_dict(const contact::MeshContactResult& r) {
   // Deterministic runs: the statistical model on the same flanks (empty otherwise), the pressure
   // across the strip at the positions kept (empty: none kept) and the running-in (when run).
   d["statistical"] = series_list(r.statistical);
-  py::list profiles;
-  for (const auto& p : r.pressure_profiles) {
+  // A kept profile's place on the path and its abscissae.
+  auto located = [](const auto& p) {
     py::dict q;
     q["position"] = p.position;
     q["point"] = p.point;
     q["s_m"] = p.s;
     q["x_m"] = to_array(p.x);
+    return q;
+  };
+  py::list profiles;
+  for (const auto& p : r.pressure_profiles) {
+    py::dict q = located(p);
     q["pressure_Pa"] = to_array(p.pressure);
     profiles.append(q);
   }
@@ -121,11 +126,7 @@ py::dict result_dict(const contact::MeshContactResult& r) {
   d["mixed_ehl"] = series_list(r.mixed_ehl);
   py::list ehl_profiles;
   for (const auto& p : r.ehl_profiles) {
-    py::dict q;
-    q["position"] = p.position;
-    q["point"] = p.point;
-    q["s_m"] = p.s;
-    q["x_m"] = to_array(p.x);
+    py::dict q = located(p);
     for (const auto& [name, at] : {std::pair{"peak", &p.peak}, std::pair{"middle", &p.middle}}) {
       const std::string k = name;
       q[py::str(k + "_time_s")] = at->time;

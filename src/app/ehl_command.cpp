@@ -132,11 +132,7 @@ void oil(const Options& o, me::Fluid& f, bool needs_alpha, Texts& texts) {
           fmt::format("--oil-temperature '{}': {:.2f} degC is outside {}'s range {:.1f} to "
                       "{:.1f} degC (its data widened as a run allows)",
                       o.temperature, t - 273.15, o.lubricant, range.lo - 273.15, range.hi - 273.15));
-    const lubrication::OilState state = lubrication::oil_state(l, t);
-    f.viscosity = state.dynamic_viscosity;
-    f.pressure_viscosity = state.pressure_viscosity;
-    f.eyring_stress = state.eyring_stress;
-    f.limiting_shear_coefficient = state.limiting_shear_coefficient;
+    f.set_oil_state(lubrication::oil_state(l, t));
     texts.emplace_back("lubricant", o.lubricant);
   } else {
     if (o.viscosity.empty()) missing("the oil: --viscosity ETA (and --alpha) or --lubricant FILE --oil-temperature T");

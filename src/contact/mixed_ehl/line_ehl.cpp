@@ -2,6 +2,7 @@
 
 #include "contact/toeplitz_convolution.hpp"
 #include "core/keyed_error.hpp"
+#include "lubrication/lubricant.hpp"
 
 #include <algorithm>
 #include <array>
@@ -173,12 +174,18 @@ constexpr int kLineSearchHalvings = 10;
 constexpr double kYieldCorner = 1e-3;
 constexpr double kMeritGrowth = 1e8;
 constexpr int kMaxStepHalvings = 6;                // a failed time step retried as up to 64 substeps
-constexpr double kMinHomotopyStride = 1.0 / 64.0;  // the roughness's smallest step in a steady solve's homotopy  // a
-                                                   // failed time step retried as up to 16 substeps
+constexpr double kMinHomotopyStride = 1.0 / 64.0;  // the roughness's smallest step in a steady solve's homotopy
 }  // namespace
 
 std::span<const NamedChoice<ViscosityLaw>> viscosity_law_choices() { return kViscosityLaws; }
 std::span<const NamedChoice<FlowModel>> flow_model_choices() { return kFlowModels; }
+
+void Fluid::set_oil_state(const lubrication::OilState& oil) {
+  viscosity = oil.dynamic_viscosity;
+  pressure_viscosity = oil.pressure_viscosity;
+  eyring_stress = oil.eyring_stress;
+  limiting_shear_coefficient = oil.limiting_shear_coefficient;
+}
 
 double Fluid::viscosity_at(double p) const {
   const double q = std::max(p, 0.0);
@@ -243,7 +250,7 @@ struct LineEhlSolver::Impl {
   std::vector<double> band;                         // D(0), D(1): the second difference of -K^/pi over dx^2 at 0, +-1
   // State (dimensionless).
   // The unknowns are Q and H: Q the pressure's parameter along the elastic-perfectly-plastic
-  // graph (pressure_of), P = p(Q) the pressure, U = u(Q) the surfaces' plastic flattening.
+  // graph (derive_pressure), P = p(Q) the pressure, U = u(Q) the surfaces' plastic flattening.
   std::vector<double> Q, P, dP, U, dU;
   std::vector<double> H, mass_old;              // mass_old: rho H at the last time
   std::vector<double> mass_older, mass_target;  // rho H a step before; the time derivative's known part
@@ -380,7 +387,7 @@ struct LineEhlSolver::Impl {
   }
   bool plastic_on = false;  // a finite hardness
 
-  // eps and its derivatives, rho and its derivative, at every node.
+  // The mobility and its derivatives, rho and its derivative, at every node.
   void coefficients(const ContactInstant& c) {
     const double floor =
         kEpsilonFloor * (c.entrainment() / reference.entrainment()) * dx * options.film_floor / film_scale;
@@ -449,8 +456,8 @@ struct LineEhlSolver::Impl {
     // Venner & Lubrecht's discretisation (Multilevel Methods in Lubrication, 2000, ch. 9): first
     // order in both damped the roughness's film waves to a few per cent of their amplitude.
     double squeeze = 0.0;
+    const double dT = dt * reference.entrainment() / b;
     if (dt > 0.0) {
-      const double dT = dt * reference.entrainment() / b;
       if (last_dt > 0.0 && !first_order) {
         const double omega = dt / last_dt;
         const double a0 = (1.0 + 2.0 * omega) / ((1.0 + omega) * dT), a1 = -(1.0 + omega) / dT,
@@ -556,24 +563,20 @@ struct LineEhlSolver::Impl {
     // Fixed through the solve, so the Jacobian stays exact.
     second_order.assign(static_cast<std::size_t>(n), 0);
     const double thick = kSecondOrderFilms * options.film_floor / film_scale;
-    {
-      for (int i = 2; i < n; ++i) {
-        const auto k = static_cast<std::size_t>(i);
-        second_order[k] = !first_order && std::min({H[k], H[k - 1], H[k - 2]}) > thick;
-      }
+    for (int i = 2; i < n; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      second_order[k] = !first_order && std::min({H[k], H[k - 1], H[k - 2]}) > thick;
     }
     // Where the Couette term is first order (near a contact) so is the time derivative: backward
     // Euler, M^{n+1} = M^n - dT u dM/dX. BDF2's M^{n+1} = (4 M^n - M^{n-1})/3 + ... turns a film
     // that thins fast as an asperity closes (M^{n-1} > 4 M^n) negative; upwind with backward
     // Euler keeps the carried content positive (a monotone scheme, LeVeque, Finite Volume
     // Methods for Hyperbolic Problems, 2002, sec. 8.3).
+    // (Nodes 0 and 1 have no second-order upwind stencil: their film decides.)
     squeeze_at.assign(static_cast<std::size_t>(n), squeeze);
-    if (dt > 0.0) {
-      const double backward_euler = b / (dt * reference.entrainment());
+    if (dt > 0.0)
       for (std::size_t i = 0; i < squeeze_at.size(); ++i)
-        if (!second_order[i] && (i >= 2 || first_order || H[i] <= thick))
-          squeeze_at[i] = backward_euler, mass_target[i] = mass_old[i];
-    }
+        if (!second_order[i] && (i >= 2 || H[i] <= thick)) squeeze_at[i] = 1.0 / dT, mass_target[i] = mass_old[i];
     double merit = assemble(true), forcing = kMaxForcing;
     for (; it < options.max_iterations; ++it) {
       // -dRes/dH0 through H_0 and H_{n-1} (both move by dH0).
@@ -844,12 +847,11 @@ struct LineEhlSolver::Impl {
       const bool contact = h < options.film_floor && !end;
       f.state[s] = contact ? NodeState::contact : (P[s] > 0.0 ? NodeState::fluid : NodeState::cavitated);
       double tau = 0.0;
-      if (end) {
-      } else if (contact) {  // the contacts' pressure and the film's between them: boundary friction
+      if (contact) {  // the contacts' pressure and the film's between them: boundary friction
         tau = options.boundary_friction * p;
         boundary_friction += tau * grid.spacing;
         contact_load += p * grid.spacing;
-      } else {
+      } else if (!end) {
         const double eta = fluid.viscosity_at(p);
         const double rate = eta * slide / h;  // Newtonian Couette shear stress [Pa]
         tau = fluid.flow == FlowModel::eyring ? fluid.eyring_stress * std::asinh(rate / fluid.eyring_stress) : rate;

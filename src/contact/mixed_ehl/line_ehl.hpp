@@ -23,9 +23,9 @@
 // differential form (Evans & Hughes, Proc. IMechE C 214, 2000; Holmes, Evans & Snidle, J. Tribol. 125, 2003):
 //   (H_{i+1} - 2 H_i + H_{i-1})/dX^2 = R_ref/R + sum_j D_ij P_j - d2r_i,
 // D the second difference of the displacement's influence coefficients, which fall as 1/k^2.
-// Newton's method on (P_i, H_i) and h0 with the exact Jacobian, solved by GMRES preconditioned with
-// its block-tridiagonal part (D's three central diagonals) bordered by the load row; the rest of D
-// applied by FFT; the film at the two ends from the integral form (docs/theory/mixed-ehl.md).
+// Newton's method on (Q_i, H_i) and h0 (Q the pressure's parameter, P without a hardness) with the exact Jacobian,
+// solved by GMRES preconditioned with its block-tridiagonal part (D's three central diagonals) bordered by the load
+// row; the rest of D applied by FFT; the film at the two ends from the integral form (docs/theory/mixed-ehl.md).
 //
 // Cavitation: Reynolds' condition (p = 0 and dp/dx = 0 at the film's rupture) by the penalty
 // method (Wu, Quart. Appl. Math. 44, 1986): where p < 0 the residual gains -kappa p, kappa large,
@@ -62,6 +62,10 @@
 #include <span>
 #include <vector>
 
+namespace geartrib::lubrication {
+struct OilState;
+}
+
 namespace geartrib::contact::mixed_ehl {
 
 enum class ViscosityLaw { roelands, barus };
@@ -79,11 +83,12 @@ struct Fluid {
   ViscosityLaw viscosity_law = ViscosityLaw::roelands;
   bool compressible = true;  // Dowson-Higginson density; false: constant density
   FlowModel flow = FlowModel::newtonian;
-  double eyring_stress = 5e6;                 // tau_0 [Pa] (Ree-Eyring flow and the film's shear)
-  double limiting_shear_coefficient = 0.075;  // the film's shear stress at most Lambda p [-]
-  double viscosity_at(double p) const;        // eta(p) [Pa s]
-  double density_ratio(double p) const;       // rho(p)/rho_0
-  void validate() const;                      // throws core::KeyedError naming the field
+  double eyring_stress = 5e6;                            // tau_0 [Pa] (Ree-Eyring flow and the film's shear)
+  double limiting_shear_coefficient = 0.075;             // the film's shear stress at most Lambda p [-]
+  void set_oil_state(const lubrication::OilState& oil);  // eta_0, alpha, tau_0 and Lambda of an oil at its temperature
+  double viscosity_at(double p) const;                   // eta(p) [Pa s]
+  double density_ratio(double p) const;                  // rho(p)/rho_0
+  void validate() const;                                 // throws core::KeyedError naming the field
 };
 
 // The contact at one instant.

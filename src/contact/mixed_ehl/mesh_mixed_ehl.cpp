@@ -251,16 +251,12 @@ int nodes_for(const EhlOptions& o, double b, double spacing) {
 // The oil as the line solver takes it: the lubricated stage's, at the flanks' bulk temperature.
 Fluid fluid_of(const FidelityInputs& in) {
   if (!in.film) throw std::logic_error("mixed EHL: solve() without the lubricated stage");
-  const lubrication::OilState& oil = in.film->bulk_oil();
   const MixedEhlOptions& o = in.contact.mixed_ehl;
   Fluid f;
-  f.viscosity = oil.dynamic_viscosity;
-  f.pressure_viscosity = oil.pressure_viscosity;
+  f.set_oil_state(in.film->bulk_oil());
   f.viscosity_law = o.viscosity_law;
   f.compressible = o.compressible;
   f.flow = o.flow;
-  f.eyring_stress = oil.eyring_stress;
-  f.limiting_shear_coefficient = oil.limiting_shear_coefficient;
   return f;
 }
 
