@@ -263,7 +263,7 @@ check ehl-window 2 "key 'mixed_ehl.window' = 0.5: must lie in \[1, 1000\]" -- \
   "$bin" run gears/m6z30-mixed-ehl.toml --set mixed_ehl.window=0.5 -o "$tmp/ehl-bad.h5" -q
 check ehl-grid 2 "key 'mixed_ehl.grid_spacing' = 2 um: coarser than the 1 um spacing of pinion.flank.profile.spacing" -- \
   "$bin" run gears/m6z30-mixed-ehl.toml --set mixed_ehl.grid_spacing=2um -o "$tmp/ehl-bad.h5" -q
-check ehl-not-converged 2 "key 'mixed_ehl.tolerance' = 1e-17: at position 1 of 3 \(s = 16.1376 mm, point A, .*the steady start of its window: mixed EHL: not converged.*a looser tolerance \(mixed_ehl.tolerance\)" -- \
+check ehl-not-converged 2 "key 'mixed_ehl.tolerance' = 1e-17: at position 1 of 3 \(s = 16.1376 mm, point A, .*the start of its window \(the steady contact and the lead-in\): mixed EHL: not converged.*a looser tolerance \(mixed_ehl.tolerance\)" -- \
   "$bin" run gears/m6z30-mixed-ehl.toml --positions 3 --set threads=1 --set mixed_ehl.tolerance=1e-17 \
   --set pinion.flank.profile.spacing=2um --set wheel.flank.profile.spacing=2um --set mixed_ehl.grid_spacing=2um \
   -o "$tmp/ehl-bad.h5" -q

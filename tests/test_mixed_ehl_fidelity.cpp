@@ -107,7 +107,8 @@ TEST(MixedEhlWindow, SmoothFlanksStaySteadyThroughTheWindow) {
   // Flat flanks: every instant of the window is the steady problem again, so the time means equal
   // the extremes (to 1e-6: each instant converges to 1e-8 of p_H, and the squeeze term sees only
   // the film's Newton residue) and the load is carried at every step. No asperity touches; the
-  // sliding's heat gives the same flash temperature at every instant.
+  // sliding's heat gives the same flash temperature at every instant. Started from the steady
+  // contact (lead_in 0) or after a lead-in (its 4 b/u in steps of the window's), the same window.
   WindowSetup w;
   w.fluid.viscosity = 0.05;
   w.fluid.pressure_viscosity = 2e-8;
@@ -121,8 +122,16 @@ TEST(MixedEhlWindow, SmoothFlanksStaySteadyThroughTheWindow) {
   w.subsurface = true;
   w.keep_profile = true;
   const FlankTrack pinion = flat(kSigmaP - 2e-3, 1e-6, 4001), wheel = flat(kSigmaW - 2e-3, 1e-6, 4001);
+  w.lead_in = 0.0;
+  const WindowResult steady = solve_window(pinion, wheel, w);
+  EXPECT_EQ(steady.lead_in_steps, 0);
+  w.lead_in = 4.0;
   const WindowResult r = solve_window(pinion, wheel, w);
   const double b = reference::hertz_line_half_width(w.instant.line_load, w.instant.radius, kEstar);
+  EXPECT_EQ(r.lead_in_steps, static_cast<int>(std::ceil(4.0 * b / (3.0 * r.dt))));  // u = 3 m/s
+  EXPECT_NEAR(steady.central_film_mean, r.central_film_mean, 1e-6 * r.central_film_mean);
+  EXPECT_NEAR(steady.min_film_mean, r.min_film_mean, 1e-6 * r.min_film_mean);
+  EXPECT_NEAR(steady.flash_mean, r.flash_mean, 1e-6 * r.flash_mean);
   EXPECT_NEAR(r.half_width, b, 1e-12 * b);
   EXPECT_NEAR(r.duration, 2.0 * b / 2.0, 1e-12 * r.duration);  // one contact width at the slower speed
   EXPECT_GE(r.steps, static_cast<int>(r.duration * 4.0 / (2.0 * r.spacing)));
@@ -154,7 +163,8 @@ TEST(MixedEhlCase, KeysParseIntoTheOptions) {
                        {"mixed_ehl.compressible", "false"},
                        {"mixed_ehl.film_floor", "3 nm"},
                        {"mixed_ehl.boundary_friction", "0.12"},
-                       {"mixed_ehl.whole_path", "true"}});
+                       {"mixed_ehl.whole_path", "true"},
+                       {"mixed_ehl.lead_in", "6"}});
   const MixedEhlOptions& o = c.contact.mixed_ehl;
   EXPECT_EQ(c.contact.fidelity, ContactFidelity::mixed_ehl);
   EXPECT_DOUBLE_EQ(o.grid_spacing, 0.5e-6);
@@ -169,11 +179,13 @@ TEST(MixedEhlCase, KeysParseIntoTheOptions) {
   EXPECT_DOUBLE_EQ(o.solver.film_floor, 3e-9);
   EXPECT_DOUBLE_EQ(o.solver.boundary_friction, 0.12);
   EXPECT_TRUE(o.whole_path);
+  EXPECT_DOUBLE_EQ(o.lead_in, 6.0);
   // The defaults as the case file states them.
   const MixedEhlOptions& d = load({}).contact.mixed_ehl;
   EXPECT_EQ(d.grid_spacing, 0.0);
   EXPECT_EQ(d.window, 2.0);
   EXPECT_EQ(d.time_step, 1.0);
+  EXPECT_EQ(d.lead_in, 4.0);
   EXPECT_EQ(d.viscosity_law, ViscosityLaw::roelands);
   EXPECT_FALSE(d.whole_path);
 }
@@ -182,6 +194,8 @@ TEST(MixedEhlCase, RefusalsNameTheirKey) {
   // The loader's ranges, which mirror the options' rules (the line solver's: an inlet of at least 1.5 b).
   EXPECT_EQ(refused_key([] { load({{"mixed_ehl.window", "0.5"}}); }), "mixed_ehl.window");  // shorter than the contact
   EXPECT_EQ(refused_key([] { load({{"mixed_ehl.time_step", "0"}}); }), "mixed_ehl.time_step");
+  EXPECT_EQ(refused_key([] { load({{"mixed_ehl.lead_in", "-1"}}); }), "mixed_ehl.lead_in");
+  EXPECT_EQ(refused_key([] { load({{"mixed_ehl.lead_in", "101"}}); }), "mixed_ehl.lead_in");
   EXPECT_EQ(refused_key([] { load({{"mixed_ehl.tolerance", "0.5"}}); }), "mixed_ehl.tolerance");
   EXPECT_EQ(refused_key([] { load({{"mixed_ehl.viscosity_law", "linear"}}); }), "mixed_ehl.viscosity_law");
   EXPECT_EQ(refused_key([] { load({{"mixed_ehl.flow", "bingham"}}); }), "mixed_ehl.flow");

@@ -52,14 +52,15 @@ def _number(text):
 
 
 def within(value, target, spec):
-    """True when value is within spec (the tolerance grammar above) of target; texts only by '='."""
+    """True when value is within spec (the tolerance grammar above) of target; a text only equal to
+    the same text, under any spec (a number's tolerance on a value that is not a number, such as
+    "undefined", asks that it stay that text)."""
     spec = spec.strip()
-    if spec == "=":
-        a, b = _number(fmt(value)), _number(fmt(target))
-        return a == b if a is not None and b is not None else fmt(value) == fmt(target)
     a, b = _number(fmt(value)), _number(fmt(target))
     if a is None or b is None:
-        return False
+        return a is None and b is None and fmt(value) == fmt(target)
+    if spec == "=":
+        return a == b
     d = abs(a - b)
     if spec.endswith("%"):
         return d <= float(spec[:-1]) / 100.0 * abs(b)

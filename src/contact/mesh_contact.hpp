@@ -109,7 +109,7 @@ struct MixedEhlSummary {
   double compressible = 1.0;
   double grid_spacing = 0.0;  // as run (the automatic one when not given) [m]
   double nodes_max = 0.0;     // at the largest contact
-  double window = 0.0, time_step = 0.0, tolerance = 0.0, inlet = 0.0, outlet = 0.0;
+  double window = 0.0, time_step = 0.0, tolerance = 0.0, inlet = 0.0, outlet = 0.0, lead_in = 0.0;
   double film_floor = 0.0, boundary_friction = 0.0, hardness = 0.0;
   double eta = 0.0, alpha = 0.0, eyring_stress = 0.0, limiting_shear_coefficient = 0.0;  // the oil as run
   double steps = 0.0;                                                                    // time steps of all windows

@@ -127,6 +127,7 @@ Summary mixed_ehl_summary(const MixedEhlSummary& m) {
              {"inlet_halfwidths", "1", m.inlet},
              {"outlet_halfwidths", "1", m.outlet},
              {"window_contact_widths", "1", m.window},
+             {"lead_in_halfwidths", "1", m.lead_in},
              {"time_step_courant", "1", m.time_step},
              {"tolerance", "1", m.tolerance},
              {"film_floor_m", "m", m.film_floor},

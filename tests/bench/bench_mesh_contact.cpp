@@ -155,7 +155,7 @@ void cycle_deterministic(benchmark::State& state) {
 // One window at the single pair's B-side position (4 of 11) of gears/m6z30-mixed-ehl.toml, the oil
 // at its 70 degC inlet, flanks ground at Rq 10 nm (the thick film) on 0.25 um profiles, two
 // contact widths at Courant 1, with its flash temperature and subsurface stress: the nodes over
-// [-4 b, 1.5 b] in the argument.
+// [-4 b, 1.5 b] in the first argument, the lead-in (mixed_ehl.lead_in, b/u) in the second.
 void ehl_window(benchmark::State& state) {
   const Setup& s = setup();
   contact::PathOptions po;
@@ -171,6 +171,7 @@ void ehl_window(benchmark::State& state) {
   w.fluid.limiting_shear_coefficient = oil.limiting_shear_coefficient;
   w.composite_modulus = s.mesh.composite_modulus();
   w.solver.nodes = static_cast<int>(state.range(0));
+  w.lead_in = static_cast<double>(state.range(1));
   w.solver.hardness = std::min(s.c.pinion.material.hardness, s.c.wheel.material.hardness);
   w.instant = {p.line_load[k], p.radius[k], p.v1[k], p.v2[k]};
   w.sigma_pinion = sigma[0][k], w.sigma_wheel = sigma[1][k];
@@ -197,7 +198,12 @@ void cycle_mixed_ehl(benchmark::State& state) {
 }
 }  // namespace
 
-BENCHMARK(ehl_window)->Arg(1024)->Arg(2048)->ArgName("nodes")->Unit(benchmark::kMillisecond);
+BENCHMARK(ehl_window)
+    ->Args({1024, 4})
+    ->Args({2048, 4})
+    ->Args({2048, 0})
+    ->ArgNames({"nodes", "lead_in"})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(cycle_mixed_ehl)->Unit(benchmark::kMillisecond);
 BENCHMARK(cycle_deterministic)
     ->Arg(2000)

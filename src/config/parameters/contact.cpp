@@ -175,6 +175,15 @@ void declare_contact(ParameterRows& table) {
           "Mixed EHL: the transient window at each position, in contact widths 2b travelled by the slower surface "
           "(at least 1: its roughness crosses the whole contact); the time means and extremes are over it");
   add(number(
+          "mixed_ehl.lead_in", [](auto& c, int) -> auto& { return c.contact.mixed_ehl.lead_in; }))
+      .range(0.0, MixedEhlOptions::kMaxLeadIn)
+      .field("contact.mixed_ehl.lead_in")
+      .ladder({"0", "1", "2", "4", "8"})
+      .doc(
+          "Mixed EHL: the window's lead-in, in Hertz half-widths b travelled at the entrainment speed: time steps from "
+          "the smooth contact with the roughness growing over its first half, so that the window starts from the "
+          "state the moving surfaces leave (0: from the steady rough contact at the window's start)");
+  add(number(
           "mixed_ehl.time_step", [](auto& c, int) -> auto& { return c.contact.mixed_ehl.time_step; }))
       .range(0.0, 100.0, true, false)
       .field("contact.mixed_ehl.time_step")

@@ -77,6 +77,11 @@ inline constexpr double kRoelandsPressure = 1.96e8;    // p0 [Pa]
 inline constexpr double kRoelandsViscosity = 6.31e-5;  // eta_inf [Pa s] (ln eta_inf = -9.67)
 
 // The oil in the contact at its inlet temperature.
+// ln(eta/eta_0) at a pressure and its slope d ln(eta)/dp [1/Pa] (0 where the exponent is capped).
+struct ViscosityExponent {
+  double value = 0.0, slope = 0.0;
+};
+
 struct Fluid {
   double viscosity = 0.0;           // eta_0 [Pa s]
   double pressure_viscosity = 0.0;  // alpha [1/Pa]
@@ -87,6 +92,7 @@ struct Fluid {
   double limiting_shear_coefficient = 0.075;             // the film's shear stress at most Lambda p [-]
   void set_oil_state(const lubrication::OilState& oil);  // eta_0, alpha, tau_0 and Lambda of an oil at its temperature
   double viscosity_at(double p) const;                   // eta(p) [Pa s]
+  ViscosityExponent viscosity_exponent(double p) const;  // ln(eta(p)/eta_0) and its slope
   double density_ratio(double p) const;                  // rho(p)/rho_0
   void validate() const;                                 // throws core::KeyedError naming the field
 };

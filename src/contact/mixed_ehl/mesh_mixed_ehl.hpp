@@ -41,6 +41,7 @@ struct WindowSetup {
   double sigma_pinion = 0.0, sigma_wheel = 0.0;  // the contact points' arcs at the window's start [m]
   double window = 2.0;                           // contact widths 2b travelled by the slower surface
   double time_step = 1.0;                        // Courant number: dt = time_step dx / max(u1, u2)
+  double lead_in = 4.0;                          // b travelled at the entrainment speed before it (0: steady start)
   double thermal_coefficient[2] = {0.0, 0.0};    // B = sqrt(k rho c) of the pinion and the wheel
   double poisson_ratio = 0.3;                    // of the softer flank, whose subsurface stress is computed
   bool pinion_softer = true;
@@ -66,7 +67,7 @@ struct WindowResult {
   double half_width = 0.0;  // the instant's Hertz b [m]
   int steps = 0;
   double duration = 0.0, dt = 0.0;  // [s]
-  int lead_in_steps = 0;            // time steps before t = 0 where the steady start failed (solve_window)
+  int lead_in_steps = 0;            // the lead-in's time steps before t = 0 (0: the steady rough start)
   double central_film_mean = 0.0, central_film_min = 0.0, min_film_mean = 0.0, min_film_min = 0.0;  // [m]
   double contact_fraction_mean = 0.0, contact_fraction_max = 0.0;  // the solver's, nodes within |x| <= b
   double asperity_share_mean = 0.0, asperity_share_max = 0.0;
@@ -100,16 +101,17 @@ struct WholePath {
   double load_error_max = 0.0;
 };
 
-inline constexpr std::array<std::string_view, 17> kKeys = {
+inline constexpr std::array<std::string_view, 18> kKeys = {
     "contact.positions",      "contact.outputs",         "contact.pressure_profiles",
     "contact.threads",        "mixed_ehl.grid_spacing",  "mixed_ehl.inlet",
     "mixed_ehl.outlet",       "mixed_ehl.window",        "mixed_ehl.time_step",
     "mixed_ehl.tolerance",    "mixed_ehl.viscosity_law", "mixed_ehl.flow",
     "mixed_ehl.compressible", "mixed_ehl.film_floor",    "mixed_ehl.boundary_friction",
-    "mixed_ehl.whole_path",   "asperity.model"};
-inline constexpr std::array<TradeKnob, 5> kKnobs = {TradeKnob{"positions", "contact.positions"},
+    "mixed_ehl.whole_path",   "mixed_ehl.lead_in",       "asperity.model"};
+inline constexpr std::array<TradeKnob, 6> kKnobs = {TradeKnob{"positions", "contact.positions"},
                                                     {"grid_spacing", "mixed_ehl.grid_spacing"},
                                                     {"window", "mixed_ehl.window"},
+                                                    {"lead_in", "mixed_ehl.lead_in"},
                                                     {"time_step", "mixed_ehl.time_step"},
                                                     {"tolerance", "mixed_ehl.tolerance"}};
 inline constexpr std::array<OutputGroup, 5> kGroups = {
