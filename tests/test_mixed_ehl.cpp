@@ -291,13 +291,46 @@ TEST(MixedEhlLine, SubsurfaceMaximumIsHertzsBelowTheAxis) {
   const double z_star = 0.5 * (lo + hi), vm_star = axis(z_star);
   EXPECT_NEAR(vm_star / p0, 0.557, 1e-3);  // the published value to its three digits
   EXPECT_NEAR(z_star / b, 0.70, 0.01);
-  const StressMaximum m = subsurface_maximum(grid, p, q, nu, 1.5 * b, 75, 1);
+  const StressMaximum m = subsurface_maximum(grid, p, q, nu, 1.5 * b, 75);
   // The pressure as element values by their midpoints (the square-root edge within an element)
   // and the scan's depth step 0.02 b at the curve's flat top: 1e-3 (measured 2e-5); the depth
   // to the step, x to an element.
   EXPECT_NEAR(m.von_mises / vm_star, 1.0, 1e-3);
   EXPECT_NEAR(m.depth / b, z_star / b, 0.02);
   EXPECT_NEAR(m.x, 0.0, grid.spacing);
+}
+
+// The scan's convolutions equal the strips' direct sum: a rough pressure with a traction of either
+// sign, every loaded node's column at every depth, the maximum found by direct summation (to 1e-12
+// of it: FFT rounding).
+TEST(MixedEhlLine, SubsurfaceMaximumEqualsTheDirectSum) {
+  const int n = 81;
+  const HalfPlaneGrid grid{-40e-6, 1e-6, n};
+  std::vector<double> p(static_cast<std::size_t>(n), 0.0), q(static_cast<std::size_t>(n), 0.0);
+  for (int i = 10; i < 70; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    p[k] = 1e9 * (1.0 + 0.5 * std::sin(0.7 * i) + 0.3 * std::cos(1.9 * i));
+    q[k] = 0.08 * p[k] * (i < 40 ? 1.0 : -1.0);
+  }
+  const double nu = 0.3, depth = 30e-6;
+  const int depths = 12;
+  double best = 0.0;
+  for (int i = 10; i < 70; ++i)
+    for (int d = 1; d <= depths; ++d) {
+      const double z = depth * d / depths;
+      geartrib::contact::PlaneStrainStress s;
+      for (int j = 0; j < n; ++j) {
+        const double xi = grid.x(i) - grid.x(j);
+        const auto e = geartrib::contact::uniform_strip_stress(xi, z, 0.5e-6, p[static_cast<std::size_t>(j)], nu);
+        const auto t = uniform_strip_shear_stress(xi, z, 0.5e-6, q[static_cast<std::size_t>(j)]);
+        s.xx += e.xx + t.xx, s.zz += e.zz + t.zz, s.xz += e.xz + t.xz;
+      }
+      s.yy = nu * (s.xx + s.zz);
+      best = std::max(best, s.von_mises());
+    }
+  const StressMaximum m = subsurface_maximum(grid, p, q, nu, depth, depths);
+  EXPECT_NEAR(m.von_mises, best, 1e-12 * best);
+  EXPECT_THROW(subsurface_maximum(grid, p, q, nu, depth, 0), std::invalid_argument);
 }
 
 // Refusals name their field.

@@ -1255,42 +1255,58 @@ PlaneStrainStress uniform_strip_shear_stress(double x, double z, double half_wid
 }
 
 StressMaximum subsurface_maximum(const HalfPlaneGrid& grid, std::span<const double> pressure,
-                                 std::span<const double> traction, double poisson_ratio, double max_depth, int depths,
-                                 int stride) {
+                                 std::span<const double> traction, double poisson_ratio, double max_depth, int depths) {
   if (static_cast<int>(pressure.size()) != grid.size || static_cast<int>(traction.size()) != grid.size)
     throw std::invalid_argument("subsurface_maximum: one pressure and traction per element");
-  if (depths < 1 || stride < 1 || !(max_depth > 0.0))
-    throw std::invalid_argument("subsurface_maximum: positive depths, stride and depth");
+  if (depths < 1 || !(max_depth > 0.0)) throw std::invalid_argument("subsurface_maximum: positive depths and depth");
   StressMaximum best;
   const double a = 0.5 * grid.spacing;
-  // Only where the surface is loaded, and a contact width around it.
+  // Only where the surface is loaded (the columns and the loads alike).
   int first = grid.size, last = -1;
+  bool sheared = false;
   for (int j = 0; j < grid.size; ++j)
     if (pressure[static_cast<std::size_t>(j)] != 0.0 || traction[static_cast<std::size_t>(j)] != 0.0) {
       first = std::min(first, j);
       last = std::max(last, j);
+      sheared = sheared || traction[static_cast<std::size_t>(j)] != 0.0;
     }
   if (last < 0) return best;
-  for (int i = first; i <= last; i += stride) {
-    const double x = grid.x(i);
-    for (int d = 1; d <= depths; ++d) {
-      const double z = max_depth * d / depths;
-      PlaneStrainStress s;
-      for (int j = first; j <= last; ++j) {
-        const double p = pressure[static_cast<std::size_t>(j)], q = traction[static_cast<std::size_t>(j)];
-        const double xi = x - grid.x(j);
-        if (p != 0.0) {
-          const PlaneStrainStress e = uniform_strip_stress(xi, z, a, p, poisson_ratio);
-          s.xx += e.xx, s.zz += e.zz, s.xz += e.xz;
-        }
-        if (q != 0.0) {
-          const PlaneStrainStress e = uniform_strip_shear_stress(xi, z, a, q);
-          s.xx += e.xx, s.zz += e.zz, s.xz += e.xz;
-        }
+  const int m = last - first + 1;
+  const auto size = static_cast<std::size_t>(m);
+  const double* p = pressure.data() + first;
+  const double* q = traction.data() + first;
+  // Per depth: the unit strip's stresses at every offset (i - j) dx, then sigma_c(x_i) = sum_j
+  // (K_c^p(i - j) p_j + K_c^q(i - j) q_j) for c = xx, zz, xz, by DC-FFT.
+  std::vector<std::array<std::vector<double>, 3>> kernels(sheared ? 2 : 1);
+  for (auto& k : kernels)
+    for (auto& c : k) c.assign(2 * size - 1, 0.0);
+  std::array<std::vector<double>, 3> sum, part;
+  for (auto& c : sum) c.assign(size, 0.0);
+  for (auto& c : part) c.assign(size, 0.0);
+  for (int d = 1; d <= depths; ++d) {
+    const double z = max_depth * d / depths;
+    for (int k = -(m - 1); k <= m - 1; ++k) {
+      const auto at = static_cast<std::size_t>(k + m - 1);
+      const PlaneStrainStress e = uniform_strip_stress(k * grid.spacing, z, a, 1.0, poisson_ratio);
+      kernels[0][0][at] = e.xx, kernels[0][1][at] = e.zz, kernels[0][2][at] = e.xz;
+      if (sheared) {
+        const PlaneStrainStress t = uniform_strip_shear_stress(k * grid.spacing, z, a, 1.0);
+        kernels[1][0][at] = t.xx, kernels[1][1][at] = t.zz, kernels[1][2][at] = t.xz;
       }
+    }
+    for (std::size_t c = 0; c < 3; ++c) {
+      ToeplitzConvolution(kernels[0][c], m, false).apply(p, sum[c].data());
+      if (sheared) {
+        ToeplitzConvolution(kernels[1][c], m, false).apply(q, part[c].data());
+        for (std::size_t i = 0; i < size; ++i) sum[c][i] += part[c][i];
+      }
+    }
+    for (std::size_t i = 0; i < size; ++i) {
+      PlaneStrainStress s;
+      s.xx = sum[0][i], s.zz = sum[1][i], s.xz = sum[2][i];
       s.yy = poisson_ratio * (s.xx + s.zz);
       const double vm = s.von_mises();
-      if (vm > best.von_mises) best = {vm, z, x};
+      if (vm > best.von_mises) best = {vm, z, grid.x(first + static_cast<int>(i))};
     }
   }
   return best;

@@ -193,15 +193,16 @@ std::vector<double> flash_temperature(const HalfPlaneGrid& grid, std::span<const
 // body's surface), by integrating Johnson's tangential line load (Contact Mechanics eq. 2.19):
 // compression negative.
 PlaneStrainStress uniform_strip_shear_stress(double x, double z, double half_width, double traction);
-// The von Mises maximum below the grid under pressure and traction: over depths (0, max_depth]
-// and every x of the grid where `stride` divides the node index.
+// The von Mises maximum below the grid under pressure and traction (constant on each node's
+// element): over `depths` depths evenly in (0, max_depth] and every node's x from the first loaded
+// node to the last, each depth's stresses at all of them one Toeplitz convolution of the loads
+// with the strips' stresses (DC-FFT).
 struct StressMaximum {
   double von_mises = 0.0;  // [Pa]
   double depth = 0.0;      // [m]
   double x = 0.0;          // [m]
 };
 StressMaximum subsurface_maximum(const HalfPlaneGrid& grid, std::span<const double> pressure,
-                                 std::span<const double> traction, double poisson_ratio, double max_depth, int depths,
-                                 int stride);
+                                 std::span<const double> traction, double poisson_ratio, double max_depth, int depths);
 
 }  // namespace geartrib::contact::mixed_ehl

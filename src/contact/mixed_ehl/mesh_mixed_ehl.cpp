@@ -34,12 +34,12 @@ void MixedEhlOptions::validate() const {
 
 namespace {
 
-// The subsurface stress: columns across the loaded nodes, and two scans in depth: to 1.5 b (the
-// Hertzian maximum lies at 0.70-0.78 b, nearer with traction) in 48 steps of 0.031 b (the von
-// Mises curve's flat top: its maximum within ~1e-3), and to 16 node spacings in steps of one (the
-// asperities' stresses lie within a few contact spots' widths). Each point sums every loaded
-// node's strip (subsurface_maximum): 96 x 64 points cost ~0.15 s on 200 loaded nodes.
-constexpr int kStressColumns = 96, kDeepDepths = 48, kShallowDepths = 16;
+// The subsurface stress below every loaded node, in two scans in depth: to 1.5 b (the Hertzian
+// maximum lies at 0.70-0.78 b, nearer with traction) in 48 steps of 0.031 b (the von Mises curve's
+// flat top: its maximum within ~1e-3), and to 16 node spacings in steps of one (the asperities'
+// stresses lie within a few contact spots' widths); each depth one convolution of the loads
+// (subsurface_maximum).
+constexpr int kDeepDepths = 48, kShallowDepths = 16;
 constexpr double kDeepDepth = 1.5;
 
 double state_code(NodeState s) { return static_cast<double>(static_cast<int>(s)); }
@@ -72,9 +72,8 @@ StressMaximum stress_maximum(const HalfPlaneGrid& grid, const std::vector<double
   const HalfPlaneGrid g = sub_grid(grid, first, last);
   const auto m = static_cast<std::size_t>(g.size);
   const std::span<const double> p(pressure.data() + first, m), q(traction.data() + first, m);
-  const int stride = std::max(1, g.size / kStressColumns);
-  const StressMaximum deep = subsurface_maximum(g, p, q, nu, kDeepDepth * half_width, kDeepDepths, stride);
-  const StressMaximum shallow = subsurface_maximum(g, p, q, nu, kShallowDepths * grid.spacing, kShallowDepths, stride);
+  const StressMaximum deep = subsurface_maximum(g, p, q, nu, kDeepDepth * half_width, kDeepDepths);
+  const StressMaximum shallow = subsurface_maximum(g, p, q, nu, kShallowDepths * grid.spacing, kShallowDepths);
   return shallow.von_mises > deep.von_mises ? shallow : deep;
 }
 
