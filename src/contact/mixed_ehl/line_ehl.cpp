@@ -178,6 +178,13 @@ struct CoarseSpace {
   double hat(std::size_t J, std::size_t k) const {
     return J == owner[k] ? 1.0 - weight[k] : J == owner[k] + 1 ? weight[k] : 0.0;
   }
+  // R (= P^T) of a value at fine row k, part p (0: Q's row, 1: H's), added into a coarse vector.
+  template <class Coarse>
+  void restrict_add(std::size_t k, std::size_t p, double value, Coarse&& c) const {
+    const auto I = static_cast<Eigen::Index>(2 * owner[k] + p);
+    c[I] += (1.0 - weight[k]) * value;
+    c[I + 2] += weight[k] * value;
+  }
   void prolong(const Eigen::VectorXd& c, std::span<double> fine) const {
     for (std::size_t k = 0; k < m; ++k) {
       const auto I = static_cast<Eigen::Index>(2 * owner[k]);
@@ -189,12 +196,7 @@ struct CoarseSpace {
   }
   void restrict_to(std::span<const double> fine, Eigen::VectorXd& c) const {
     c.setZero(static_cast<Eigen::Index>(2 * nc + 1));
-    for (std::size_t k = 0; k < m; ++k) {
-      const auto I = static_cast<Eigen::Index>(2 * owner[k]);
-      const double w = weight[k];
-      c[I] += (1.0 - w) * fine[2 * k], c[I + 2] += w * fine[2 * k];
-      c[I + 1] += (1.0 - w) * fine[2 * k + 1], c[I + 3] += w * fine[2 * k + 1];
-    }
+    for (std::size_t k = 0; k < m; ++k) restrict_add(k, 0, fine[2 * k], c), restrict_add(k, 1, fine[2 * k + 1], c);
     c[static_cast<Eigen::Index>(2 * nc)] = fine[2 * m];
   }
 };
@@ -335,8 +337,8 @@ struct LineEhlSolver::Impl {
       kernel[static_cast<std::size_t>(n - 1 + m)] = kernel[static_cast<std::size_t>(n - 1 - m)] =
           log_antiderivative(m * dx + 0.5 * dx) - log_antiderivative(m * dx - 0.5 * dx);
     deflection = std::make_unique<ToeplitzConvolution>(kernel, n, false);
-    auto k = [&](int m) { return kernel[static_cast<std::size_t>(n - 1 + std::abs(m))]; };
-    band = {-(k(1) - 2.0 * k(0) + k(-1)) / (kPi * dx * dx), -(k(2) - 2.0 * k(1) + k(0)) / (kPi * dx * dx)};
+    band = {-(kernel_at(1) - 2.0 * kernel_at(0) + kernel_at(-1)) / (kPi * dx * dx),
+            -(kernel_at(2) - 2.0 * kernel_at(1) + kernel_at(0)) / (kPi * dx * dx)};
     build_coarse_space();
     for (auto* v : {&Q, &P, &dP, &U, &dU}) v->assign(static_cast<std::size_t>(n), 0.0);
     std::fill(dP.begin(), dP.end(), 1.0);
@@ -367,10 +369,7 @@ struct LineEhlSolver::Impl {
     const double scale = 1.0 / (dx * dx * kPi);
     for (std::size_t k = 0; k < coarse.m; ++k) {
       const auto i = static_cast<Eigen::Index>(k + 1);
-      const double value = (g[i + 1] - 2.0 * g[i] + g[i - 1]) * scale;
-      const auto I = static_cast<Eigen::Index>(2 * coarse.owner[k] + 1);
-      out[I] += (1.0 - coarse.weight[k]) * value;
-      out[I + 2] += coarse.weight[k] * value;
+      coarse.restrict_add(k, 1, (g[i + 1] - 2.0 * g[i] + g[i - 1]) * scale, out);
     }
   }
 
@@ -407,10 +406,8 @@ struct LineEhlSolver::Impl {
     const std::size_t m = coarse.m, nc = coarse.nc;
     const auto N = static_cast<Eigen::Index>(2 * nc + 1);
     coarse_matrix.setZero(N, N);
-    auto add_row = [&](std::size_t k, int p, Eigen::Index column, double value) {  // R: fine row k, part p
-      const auto I = static_cast<Eigen::Index>(2 * coarse.owner[k] + static_cast<std::size_t>(p));
-      coarse_matrix(I, column) += (1.0 - coarse.weight[k]) * value;
-      coarse_matrix(I + 2, column) += coarse.weight[k] * value;
+    auto add_row = [&](std::size_t k, std::size_t p, Eigen::Index column, double value) {
+      coarse.restrict_add(k, p, value, coarse_matrix.col(column));
     };
     for (std::size_t colour = 0; colour < 3; ++colour)
       for (int q = 0; q < 2; ++q) {
