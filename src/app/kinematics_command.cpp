@@ -108,8 +108,8 @@ void add_kinematics_command(CLI::App& app) {
       cmd->add_option("--positions", o->positions, "N equally spaced positions from A to E instead of named points")
           ->check(CLI::Range(2, 100000));
   pts->excludes(pos);
-  cmd->add_option("--load-sharing", o->load_sharing, "iso or stiffness: shorthand for --set mesh.load_sharing=...")
-      ->check(CLI::IsMember({"iso", "stiffness"}));
+  cmd->add_option("--load-sharing", o->load_sharing, "iso, stiffness or compatibility: shorthand for --set mesh.load_sharing=...")
+      ->check(CLI::IsMember({"iso", "stiffness", "compatibility"}));
   add_table_options(cmd, o->table);
   cmd->add_flag("--summary", o->summary, "name,value rows: geometry, contact ratio, mesh stiffness, ISO stiffness");
   cmd->callback([o] { run(*o); });

@@ -4,7 +4,9 @@
 #include "config/case_records.hpp"
 #include "contact/fidelity_registry.hpp"
 #include "core/keyed_error.hpp"
+#include "gear/iso6336_stiffness.hpp"
 #include "gear/spur_pair.hpp"
+#include "gear/tooth_contact.hpp"
 #include "surface/flank_profile.hpp"
 #include "surface/profile_synthesis.hpp"
 #include "surface/rough_surface.hpp"
@@ -126,7 +128,14 @@ void prepare_gear_pair(Case& c) {
     const gear::SpurPair pair(c.gear_pair);
     for (const auto& w : pair.warnings())
       add_warning(c, fmt::format("{}: warning: key '{}': {}", location_of(c, w.key).text(), w.key, w.message));
+    // The profile modifications must lie on the flanks (a relief off the flank or across it).
+    if (c.mesh.load_sharing == gear::LoadSharing::compatibility) {
+      const double line_load = c.operating.pinion_torque / pair.pinion().pitch_radius / c.gear_pair.face_width;
+      for (int g = 0; g < 2; ++g)
+        gear::FlankModification(pair, g, c.mesh.modification[g], gear::iso_effective_relief(pair, line_load));
+    }
   } catch (const gear::GeometryError& e) {
+    if (e.key().find("_relief.") != std::string::npos) throw located_error_as_written(c, e.key(), e.what());
     for (const Parameter& p : case_parameters()) {
       if (p.key.rfind("gear_pair.", 0) != 0 || !given(c, p.key)) continue;
       const double v = p.get(c, -1).number;

@@ -128,10 +128,9 @@ void MeshLubrication::pitch_and_iso() {
   iso_geometry_.gamma_e = pair.flank(path.e).roll_parameter;
   iso_x_m_ = lub::iso_thermo_elastic_factor(reduced_modulus_, thermal_coefficient_[0], thermal_coefficient_[1]);
   // C_eff = F_t/(b cos alpha_t c_gamma) (ISO/TR 13989-1 B.1), c_gamma_alpha of ISO 6336-1 method B;
-  // no tip relief is modelled (C_a = 0).
-  const gear::IsoMeshStiffness c_gamma = gear::iso6336_mesh_stiffness(pair, pitch_.tangential_load);
-  iso_effective_relief_ =
-      c_gamma.mesh > 0.0 ? pitch_.tangential_load / (std::cos(iso_geometry_.reference_angle) * c_gamma.mesh) : 0.0;
+  // C_a the wheel's tip relief under the compatibility sharing (0 otherwise: unmodified flanks).
+  iso_effective_relief_ = gear::iso_effective_relief(pair, pitch_.tangential_load);
+  if (const gear::LoadedToothContact* contact = mesh.tooth_contact()) iso_tip_relief_ = contact->flank(1).tip_amount();
 }
 
 void MeshLubrication::bulk_temperature() {
@@ -207,7 +206,7 @@ double MeshLubrication::iso_flash(const PathPoint& p) const {
   const bool single = p.load_sharing_factor >= 1.0;
   const double x_gamma = gear::iso_load_sharing_factor(pair.path(), p.s, single);
   return lub::iso_flash_temperature(iso_flash_mu_, iso_x_m_,
-                                    lub::iso_approach_factor(iso_geometry_, gamma, iso_effective_relief_, 0.0),
+                                    lub::iso_approach_factor(iso_geometry_, gamma, iso_effective_relief_, iso_tip_relief_),
                                     lub::iso_geometry_factor(iso_geometry_, gamma), x_gamma, pitch_.tangential_load,
                                     pitch_.pitch_line_speed, iso_geometry_.center_distance);
 }

@@ -128,6 +128,7 @@ class MeshLubrication {
   double iso_flash_mu_ = 0.0;  // ISO/TS 6336-20 mu_m (its flash-temperature method)
   double bulk_law_mu_ = 0.0;   // the bulk estimate's law's
   double iso_x_m_ = 0.0, iso_effective_relief_ = 0.0;
+  double iso_tip_relief_ = 0.0;  // C_a: the wheel's tip relief [m] (compatibility sharing)
   lubrication::IsoFlashGeometry iso_geometry_;
   lubrication::TemperatureRange oil_range_;  // where the lubricant's laws hold
   double bulk_temperature_ = 0.0;

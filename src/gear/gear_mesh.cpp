@@ -12,19 +12,35 @@ ToothMaterial tooth_material(const Material& m) { return {m.youngs_modulus, m.po
 
 void MeshSettings::validate() const {
   if (positions < 2) throw core::KeyedError("positions", "at least 2 positions sample a base pitch");
+  for (int g = 0; g < 2; ++g) {
+    const std::string prefix = fmt::format("modification[{}].", g);
+    try {
+      modification[g].validate();
+    } catch (const core::KeyedError& e) {
+      throw core::KeyedError(prefix + e.key(), e.what());
+    }
+    if (modification[g].any() && load_sharing != LoadSharing::compatibility)
+      throw core::KeyedError(prefix + (modification[g].tip_design != ReliefDesign::given ? "tip_design" : "tip.amount"),
+                             "profile modifications act through load_sharing = \"compatibility\"; the load sharing "
+                             "is " + std::string(to_string(load_sharing)));
+  }
 }
 
 GearMesh::GearMesh(const GearPairSpec& spec, const Material& pinion, const Material& wheel,
                    const MeshSettings& settings, double pinion_torque, double pinion_speed)
-    : composite_modulus_(geartrib::composite_modulus(pinion, wheel)),
+    : composite_modulus_((settings.validate(), geartrib::composite_modulus(pinion, wheel))),
       pinion_speed_(pinion_speed),
       pinion_torque_(pinion_torque),
       pair_(spec),
       stiffness_(pair_, tooth_material(pinion), tooth_material(wheel), composite_modulus_, settings.plane_strain),
+      tooth_contact_(settings.load_sharing == LoadSharing::compatibility
+                         ? std::optional<LoadedToothContact>(std::in_place, pair_, stiffness_, tooth_material(pinion),
+                                                             tooth_material(wheel), composite_modulus_,
+                                                             settings.modification, settings.hertz_approach,
+                                                             iso_effective_relief(pair_, tangential_line_load()))
+                         : std::nullopt),
       analysis_(pair_, stiffness_, settings.load_sharing, pinion_torque / pair_.pinion().base_radius,
-                composite_modulus_) {
-  settings.validate();
-}
+                composite_modulus_, tooth_contact()) {}
 
 IsoStiffnessComparison GearMesh::iso_comparison(int positions) const {
   IsoStiffnessComparison k;

@@ -7,20 +7,27 @@
 #include "gear/load_sharing.hpp"
 #include "gear/mesh_analysis.hpp"
 #include "gear/spur_pair.hpp"
+#include "gear/tooth_contact.hpp"
 #include "gear/tooth_stiffness.hpp"
 #include "material/material.hpp"
 
+#include <optional>
 #include <string>
 
 namespace geartrib::gear {
 
 // Mesh-cycle settings: how the load is shared between simultaneous tooth pairs, how many
-// positions sample one base pitch, and the beam model of the tooth stiffness.
+// positions sample one base pitch, the beam model of the tooth stiffness, and (for the
+// compatibility sharing) each gear's profile modifications and the Hertzian approach.
 struct MeshSettings {
   LoadSharing load_sharing = LoadSharing::iso;
   int positions = 64;        // samples of one base pitch of pinion rotation
   bool plane_strain = true;  // tooth beam in plane strain (wide face) or plane stress
-  void validate() const;     // throws core::KeyedError naming the field
+  ProfileModification modification[2];  // pinion, wheel; only the compatibility sharing reads them
+  HertzApproach hertz_approach = HertzApproach::weber_banaschek;
+  // throws core::KeyedError naming the field ("modification[0].tip.amount"); modifications under
+  // another sharing than compatibility are refused (they would change nothing).
+  void validate() const;
 };
 
 // The potential-energy mesh stiffness over one base pitch beside ISO 6336-1's c_gamma_alpha b
@@ -55,6 +62,8 @@ class GearMesh {
   const SpurPair& pair() const { return pair_; }
   const MeshStiffnessModel& stiffness() const { return stiffness_; }
   const MeshAnalysis& analysis() const { return analysis_; }
+  // The loaded tooth contact of the compatibility sharing; null under another sharing.
+  const LoadedToothContact* tooth_contact() const { return tooth_contact_ ? &*tooth_contact_ : nullptr; }
   double composite_modulus() const { return composite_modulus_; }
   double pinion_speed() const { return pinion_speed_; }
   // F_bn = T1 / r_b1 [N]
@@ -70,6 +79,7 @@ class GearMesh {
   double pinion_torque_;
   SpurPair pair_;
   MeshStiffnessModel stiffness_;
+  std::optional<LoadedToothContact> tooth_contact_;
   MeshAnalysis analysis_;
 };
 

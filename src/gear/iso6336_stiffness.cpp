@@ -24,4 +24,9 @@ IsoMeshStiffness iso6336_mesh_stiffness(const SpurPair& pair, double line_load) 
   return r;
 }
 
+double iso_effective_relief(const SpurPair& pair, double tangential_line_load) {
+  const double c_gamma = iso6336_mesh_stiffness(pair, tangential_line_load).mesh;
+  return c_gamma > 0.0 ? tangential_line_load / (std::cos(pair.spec().pressure_angle) * c_gamma) : 0.0;
+}
+
 }  // namespace geartrib::gear

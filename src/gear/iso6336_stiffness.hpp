@@ -21,4 +21,8 @@ inline constexpr double kIsoFullLineLoad = 100e3;  // 100 N/mm
 // C_M = 0.8 (solid disc), C_R = 1 (solid), C_B from the basic rack dedendum and angle.
 IsoMeshStiffness iso6336_mesh_stiffness(const SpurPair& pair, double tangential_line_load);
 
+// The effective tip relief C_eff = (F_t/b)/(cos alpha_t c_gamma_alpha) [m] (ISO/TR 13989-1 B.1,
+// ISO/TS 6336-20): the relief that the mesh's deflection at this load takes up.
+double iso_effective_relief(const SpurPair& pair, double tangential_line_load);
+
 }  // namespace geartrib::gear

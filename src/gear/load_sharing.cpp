@@ -8,7 +8,8 @@ namespace geartrib::gear {
 
 namespace {
 constexpr NamedChoice<LoadSharing> kLoadSharingNames[] = {{LoadSharing::iso, "iso"},
-                                                          {LoadSharing::stiffness, "stiffness"}};
+                                                          {LoadSharing::stiffness, "stiffness"},
+                                                          {LoadSharing::compatibility, "compatibility"}};
 }  // namespace
 
 std::span<const NamedChoice<LoadSharing>> load_sharing_choices() { return kLoadSharingNames; }
@@ -39,6 +40,8 @@ std::vector<double> load_shares(const PathOfContact& p, const std::vector<double
   for (double s : positions) {
     if (method == LoadSharing::iso) {
       w.push_back(positions.size() == 1 ? 1.0 : iso_load_sharing_factor(p, s));
+    } else if (method == LoadSharing::compatibility) {
+      throw std::invalid_argument("load_shares: compatibility sharing is solved by LoadedToothContact");
     } else {
       if (!stiffness) throw std::invalid_argument("load_shares: stiffness sharing needs the mesh stiffness model");
       w.push_back(stiffness->pair(s).stiffness);

@@ -10,13 +10,16 @@
 namespace geartrib::gear {
 
 MeshAnalysis::MeshAnalysis(const SpurPair& pair, const MeshStiffnessModel& stiffness, LoadSharing method,
-                           double normal_force, double composite_modulus)
+                           double normal_force, double composite_modulus, const LoadedToothContact* contact)
     : pair_(pair),
       stiffness_(stiffness),
       method_(method),
       normal_force_(normal_force),
-      composite_modulus_(composite_modulus) {
+      composite_modulus_(composite_modulus),
+      contact_(contact) {
   if (!(normal_force >= 0.0)) throw std::invalid_argument("normal force must be >= 0");
+  if (method == LoadSharing::compatibility && !contact)
+    throw std::invalid_argument("compatibility load sharing needs the loaded tooth contact");
 }
 
 PairLoad MeshAnalysis::pair_load(double s, double w) const {
@@ -48,9 +51,30 @@ MeshInstant MeshAnalysis::at(double s, bool single_side, PairStiffness stiffness
              (at_d && std::abs(x - p.a) <= tol && std::abs(s - p.a) > tol);
     });
   }
-  const std::vector<double> shares = load_shares(p, positions, method_, &stiffness_);
   MeshInstant m;
   const double width = pair_.spec().face_width;
+  if (method_ == LoadSharing::compatibility) {
+    // A vanishing load (a millionth of a newton) stands for zero: the pairs nearest contact share it.
+    const double force = normal_force_ > 0.0 ? normal_force_ : 1e-6;
+    const std::vector<PairContact> contacts = contact_->pairs(positions);
+    const CompatibilitySolution sol = solve_compatibility(contacts, force);
+    double sum = 0.0;
+    for (double f : sol.loads) sum += f;
+    m.transmission_error = sol.approach;
+    m.hertz_in_range = sol.hertz_in_range;
+    m.mesh_stiffness = sol.tangent_stiffness;
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+      const double share = sol.loads[i] / sum;
+      PairLoad l = pair_load(positions[i], share * normal_force_ / width);
+      l.share = share;
+      l.separation = contacts[i].separation;
+      if (sol.loads[i] > 0.0)
+        l.stiffness = 1.0 / (contacts[i].compliance + contacts[i].hertz.slope(sol.loads[i]));
+      m.pairs.push_back(l);
+    }
+    return m;
+  }
+  const std::vector<double> shares = load_shares(p, positions, method_, &stiffness_);
   for (std::size_t i = 0; i < positions.size(); ++i) {
     PairLoad l = pair_load(positions[i], shares[i] * normal_force_ / width);
     l.share = shares[i];

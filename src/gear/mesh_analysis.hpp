@@ -4,6 +4,7 @@
 
 #include "gear/load_sharing.hpp"
 #include "gear/spur_pair.hpp"
+#include "gear/tooth_contact.hpp"
 #include "gear/tooth_stiffness.hpp"
 
 #include <vector>
@@ -16,12 +17,17 @@ struct PairLoad {
   double line_load = 0.0;         // normal load per unit face width [N/m]
   double hertz_peak = 0.0;        // Hertz line-contact peak pressure p0 = 2 w/(pi b_H) [Pa]
   double hertz_half_width = 0.0;  // b_H = sqrt(4 w R/(pi E_t)) [m]
-  double stiffness = 0.0;         // tooth-pair stiffness [N/m]
+  double stiffness = 0.0;         // tooth-pair stiffness [N/m]; under compatibility its tangent at the load
+  double separation = 0.0;        // e_j: the flanks' modifications at the contact (compatibility) [m]
 };
 
 struct MeshInstant {
   std::vector<PairLoad> pairs;  // every pair in contact, in order of s
   double mesh_stiffness = 0.0;  // sum of the pair stiffnesses [N/m]
+  // Under compatibility: the common approach delta, the static transmission error along the line
+  // of action [m]; and whether every loaded pair's Hertzian approach was within its model's range.
+  double transmission_error = 0.0;
+  bool hertz_in_range = true;
   // The pair whose contact is at s (nearest it): the one `at(s)` was asked about.
   const PairLoad& pair_at(double s) const;
 };
@@ -33,13 +39,16 @@ struct MeshStiffnessStats {
 
 class MeshAnalysis {
  public:
-  // normal_force: the total normal tooth force F_bn = T1/r_b1 [N]; composite_modulus E_t [Pa].
+  // normal_force: the total normal tooth force F_bn = T1/r_b1 [N]; composite_modulus E_t [Pa];
+  // `contact` the loaded tooth contact, needed by (and only read under) LoadSharing::compatibility.
   MeshAnalysis(const SpurPair& pair, const MeshStiffnessModel& stiffness, LoadSharing method, double normal_force,
-               double composite_modulus);
+               double composite_modulus, const LoadedToothContact* contact = nullptr);
 
   // The mesh when one pair is at s. single_side: at B and D take the single-pair side of the
   // jump (the neighbour at E or A has just left or not yet arrived). PairStiffness::omitted
-  // leaves the stiffnesses 0 unless the load sharing needs them (ISO sharing does not).
+  // leaves the stiffnesses 0 unless the load sharing needs them (ISO sharing does not). Under
+  // compatibility a pair whose separation exceeds the approach carries nothing (share 0); at zero
+  // load the shares are those of a vanishing load.
   enum class PairStiffness { computed, omitted };
   MeshInstant at(double s, bool single_side = false, PairStiffness stiffness = PairStiffness::computed) const;
   // Hertz values of a pair at s carrying line load w.
@@ -58,6 +67,7 @@ class MeshAnalysis {
   LoadSharing method_;
   double normal_force_;
   double composite_modulus_;
+  const LoadedToothContact* contact_;
 };
 
 }  // namespace geartrib::gear
