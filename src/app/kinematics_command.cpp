@@ -1,5 +1,6 @@
 // `geartrib kinematics`: the spur pair along its line of action: geometry, load sharing,
 // curvature, Hertz line contact, rolling and sliding, mesh stiffness.
+#include "contact/run_summary.hpp"
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
 #include "runs/kinematics_table.hpp"
@@ -71,6 +72,14 @@ void run_summary(const Options& o, const Case& c, const gear::GearMesh& mesh, io
   t.add_row("iso_c_prime_N_per_m_um", {iso.single * to_n_per_m_um});
   t.add_row("iso_c_gamma_alpha_N_per_m_um", {iso.mesh * to_n_per_m_um});
   t.add_row("mean_mesh_stiffness_over_iso_c_gamma_alpha", {comparison.ratio});
+  if (mesh.tooth_contact()) {
+    // The loaded tooth contact over one base pitch: the same names as the run's /mesh attributes.
+    t.add_row("iso_effective_tip_relief_m", {gear::iso_effective_relief(pair, mesh.tangential_line_load())});
+    for (int i = 0; i < 2; ++i)
+      t.add_row(std::string(i == 0 ? "pinion" : "wheel") + "_tip_relief_m", {mesh.tooth_contact()->flank(i).tip_amount()});
+    for (const auto& v : contact::tooth_contact_summary(mesh.analysis().transmission_error_stats(mesh.cycle_positions())).values)
+      t.add_row(v.name, {v.value});
+  }
   emit_table(t, o.table, outputs);
 }
 

@@ -48,6 +48,7 @@ void add_path_series(const PathState& p, std::vector<Series>& g) {
   g.push_back({"sliding_m_per_s", "m/s", p.sliding});
   g.push_back({"srr", "1", p.slide_to_roll});
   if (!p.stiffness.empty()) g.push_back({"mesh_stiffness_N_per_m", "N/m", p.stiffness});
+  if (!p.transmission_error.empty()) g.push_back({"transmission_error_m", "m", p.transmission_error});
   if (!p.dynamic_factor.empty()) g.push_back({"dynamic_load_factor", "1", p.dynamic_factor});
 }
 
@@ -110,6 +111,10 @@ MeshContactResult run_mesh_contact(const MeshCycleInputs& in) {
   r.fidelity = std::string(in.contact.fidelity.name());
   const PathState path = path_stage(in, clock);
   add_path_series(path, r.mesh);
+  if (in.mesh.tooth_contact()) {
+    r.tooth_contact = in.mesh.analysis().transmission_error_stats(in.mesh.cycle_positions());
+    clock.lap("tooth_contact");
+  }
   visit_fidelity(in.contact.fidelity.name(), [&]<class F>(FidelityTag<F>) { run_stages<F>(in, path, clock, r); });
   return r;
 }

@@ -187,6 +187,7 @@ struct MeshContactResult {
   surface::EquivalentSurface surface;
   double plasticity_index = 0.0;
   gear::PathOfContact path;
+  std::optional<gear::TransmissionErrorStats> tooth_contact;  // compatibility sharing: over one base pitch
   std::string asperity_model;
   std::string fidelity;
   // Findings that make a result doubtful (e.g. a real area larger than the nominal one).

@@ -5,7 +5,7 @@ namespace geartrib::contact {
 namespace {
 
 gear::MeshAnalysis::PairStiffness pair_stiffness(const gear::GearMesh& mesh, const PathOptions& o) {
-  const bool stiffness = o.stiffness || mesh.analysis().method() == gear::LoadSharing::stiffness;
+  const bool stiffness = o.stiffness || mesh.analysis().method() != gear::LoadSharing::iso;
   return stiffness ? gear::MeshAnalysis::PairStiffness::computed : gear::MeshAnalysis::PairStiffness::omitted;
 }
 
@@ -53,6 +53,7 @@ PathState path_state(const gear::GearMesh& mesh, const PathOptions& o) {
     p.sliding.push_back(k.sliding);
     p.slide_to_roll.push_back(k.slide_to_roll);
     if (stiffness == gear::MeshAnalysis::PairStiffness::computed) p.stiffness.push_back(m.mesh_stiffness);
+    if (mesh.tooth_contact()) p.transmission_error.push_back(m.transmission_error);
   }
   if (o.named_points) add_named_points(p, mesh, stiffness);
   return p;

@@ -23,6 +23,22 @@ Summary path_summary(const gear::PathOfContact& p) {
            {"contact_ratio", "1", p.contact_ratio}}};
 }
 
+Summary tooth_contact_summary(const gear::TransmissionErrorStats& t) {
+  return {{},
+          {{"transmission_error_mean_m", "m", t.mean},
+           {"transmission_error_peak_to_peak_m", "m", t.peak_to_peak},
+           {"transmission_error_min_m", "m", t.min},
+           {"transmission_error_max_m", "m", t.max},
+           {"effective_mesh_stiffness_mean_N_per_m", "N/m", t.stiffness_mean},
+           {"effective_mesh_stiffness_min_N_per_m", "N/m", t.stiffness_min},
+           {"effective_mesh_stiffness_max_N_per_m", "N/m", t.stiffness_max},
+           {"loaded_start_m", "m", t.loaded_start},
+           {"loaded_end_m", "m", t.loaded_end},
+           {"effective_contact_ratio", "1", t.effective_contact_ratio},
+           {"contact_lost", "1", flag(t.contact_lost)},
+           {"hertz_approach_in_range", "1", flag(t.hertz_in_range)}}};
+}
+
 Summary surface_summary(const MeshContactResult& r) {
   return {{{"asperity_model", r.asperity_model}, {"fidelity", r.fidelity}},
           {{"summit_density_per_m2", "1/m^2", r.surface.summit_density},

@@ -28,6 +28,11 @@ struct Summary {
 
 // The path of contact: s_A_m .. s_E_m, base_pitch_m, contact_ratio (/mesh's attributes).
 Summary path_summary(const gear::PathOfContact& p);
+// The loaded tooth contact over one base pitch (compatibility sharing; /mesh's attributes):
+// transmission_error_mean_m, _peak_to_peak_m, _min_m, _max_m, the effective mesh stiffness's
+// mean, min and max, loaded_start_m, loaded_end_m, effective_contact_ratio, contact_lost,
+// hertz_approach_in_range.
+Summary tooth_contact_summary(const gear::TransmissionErrorStats& t);
 // The models run and the equivalent surface: asperity_model, fidelity; the summits' density,
 // radius and sigma, the surface's sigma, the summits' mean height, the plasticity index (/meta's).
 Summary surface_summary(const MeshContactResult& r);

@@ -31,6 +31,7 @@ GearMesh::GearMesh(const GearPairSpec& spec, const Material& pinion, const Mater
     : composite_modulus_((settings.validate(), geartrib::composite_modulus(pinion, wheel))),
       pinion_speed_(pinion_speed),
       pinion_torque_(pinion_torque),
+      cycle_positions_(settings.positions),
       pair_(spec),
       stiffness_(pair_, tooth_material(pinion), tooth_material(wheel), composite_modulus_, settings.plane_strain),
       tooth_contact_(settings.load_sharing == LoadSharing::compatibility

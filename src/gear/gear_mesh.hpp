@@ -66,6 +66,7 @@ class GearMesh {
   const LoadedToothContact* tooth_contact() const { return tooth_contact_ ? &*tooth_contact_ : nullptr; }
   double composite_modulus() const { return composite_modulus_; }
   double pinion_speed() const { return pinion_speed_; }
+  int cycle_positions() const { return cycle_positions_; }  // mesh.positions: samples of one base pitch
   // F_bn = T1 / r_b1 [N]
   double normal_force() const { return analysis_.normal_force(); }
   // ISO's tangential line load F_t/b = T1/(r1 b) [N/m].
@@ -77,6 +78,7 @@ class GearMesh {
   double composite_modulus_;
   double pinion_speed_;
   double pinion_torque_;
+  int cycle_positions_;
   SpurPair pair_;
   MeshStiffnessModel stiffness_;
   std::optional<LoadedToothContact> tooth_contact_;

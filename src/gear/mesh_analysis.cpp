@@ -106,4 +106,50 @@ MeshStiffnessStats MeshAnalysis::stiffness_stats(int n) const {
   return s;
 }
 
+TransmissionErrorStats MeshAnalysis::transmission_error_stats(int n) const {
+  if (method_ != LoadSharing::compatibility)
+    throw std::logic_error("the transmission error needs the compatibility load sharing");
+  const auto instants = cycle(n);
+  TransmissionErrorStats t;
+  t.min = t.max = instants.front().transmission_error;
+  t.stiffness_min = t.stiffness_max = instants.front().mesh_stiffness;
+  for (const MeshInstant& m : instants) {
+    t.mean += m.transmission_error / n;
+    t.min = std::min(t.min, m.transmission_error);
+    t.max = std::max(t.max, m.transmission_error);
+    t.stiffness_mean += m.mesh_stiffness / n;
+    t.stiffness_min = std::min(t.stiffness_min, m.mesh_stiffness);
+    t.stiffness_max = std::max(t.stiffness_max, m.mesh_stiffness);
+    t.hertz_in_range = t.hertz_in_range && m.hertz_in_range;
+  }
+  t.peak_to_peak = t.max - t.min;
+  // Where the tracked pair carries load: from each end of the path inwards to its first loaded
+  // position, then bisected (its share rises from 0 where its separation meets the approach).
+  const PathOfContact& p = pair_.path();
+  auto loaded = [&](double s) { return at(s).pair_at(s).share > 0.0; };
+  auto edge = [&](double from, double to) {
+    if (loaded(from)) return from;
+    const int steps = 4 * n;
+    double outside = from, inside = to;
+    for (int i = 1; i <= steps; ++i) {
+      const double s = from + (to - from) * i / steps;
+      if (loaded(s)) {
+        inside = s;
+        break;
+      }
+      outside = s;
+    }
+    while (std::abs(inside - outside) > 1e-12 * p.line_length) {
+      const double mid = 0.5 * (inside + outside);
+      (loaded(mid) ? inside : outside) = mid;
+    }
+    return inside;
+  };
+  t.loaded_start = edge(p.a, p.c);
+  t.loaded_end = edge(p.e, p.c);
+  t.effective_contact_ratio = (t.loaded_end - t.loaded_start) / p.base_pitch;
+  t.contact_lost = t.loaded_start > p.a || t.loaded_end < p.e;
+  return t;
+}
+
 }  // namespace geartrib::gear

@@ -37,6 +37,16 @@ struct MeshStiffnessStats {
   double mean = 0.0, min = 0.0, max = 0.0;
 };
 
+// The loaded tooth contact over one base pitch (compatibility sharing).
+struct TransmissionErrorStats {
+  double mean = 0.0, min = 0.0, max = 0.0, peak_to_peak = 0.0;  // static transmission error delta [m]
+  double stiffness_mean = 0.0, stiffness_min = 0.0, stiffness_max = 0.0;  // effective (tangent) mesh stiffness [N/m]
+  double loaded_start = 0.0, loaded_end = 0.0;  // s where a pair begins and ends carrying load [m]
+  double effective_contact_ratio = 0.0;         // (loaded_end - loaded_start)/p_b
+  bool contact_lost = false;    // a pair within A..E carries nothing at some position
+  bool hertz_in_range = true;   // every loaded pair's Hertzian approach within its model's range
+};
+
 class MeshAnalysis {
  public:
   // normal_force: the total normal tooth force F_bn = T1/r_b1 [N]; composite_modulus E_t [Pa];
@@ -57,6 +67,9 @@ class MeshAnalysis {
   std::vector<MeshInstant> cycle(int n) const;
   // The mesh stiffness over cycle(n).
   MeshStiffnessStats stiffness_stats(int n) const;
+  // Under compatibility: the transmission error and effective stiffness over cycle(n), and where
+  // a pair carries load (its ends bisected to 1e-12 of the path); throws under another sharing.
+  TransmissionErrorStats transmission_error_stats(int n) const;
 
   double normal_force() const { return normal_force_; }
   LoadSharing method() const { return method_; }

@@ -72,19 +72,80 @@ MeshDynamics::MeshDynamics(const GearMesh& mesh, const DynamicsSettings& setting
   }
   mean_stiffness_ = integral / p.base_pitch;
   damping_ = 2.0 * settings_.damping_ratio * std::sqrt(mean_stiffness_ * mass_);
+  backlash_ = settings_.backlash > 0.0 ? settings_.backlash : std::numeric_limits<double>::infinity();
+  contact_ = mesh.tooth_contact();
+  if (contact_) {
+    // One pair's stiffness along A..E, smooth there: 257 samples, a cubic B-spline.
+    const int n = 257;
+    const double h = p.length / (n - 1);
+    std::vector<double> k(n);
+    for (int i = 0; i < n; ++i) k[static_cast<std::size_t>(i)] = mesh.stiffness().pair(p.a + i * h).stiffness;
+    pair_stiffness_.emplace(k.begin(), k.end(), p.a, h);
+  }
+}
+
+double MeshDynamics::pair_stiffness_at(double s) const {
+  const PathOfContact& p = mesh_.pair().path();
+  return (*pair_stiffness_)(std::clamp(s, p.a, p.e));
+}
+
+std::vector<double> MeshDynamics::positions(double u) const {
+  const PathOfContact& p = mesh_.pair().path();
+  std::vector<double> out;
+  for (double s = p.a + u; s <= p.e + 1e-12 * p.line_length; s += p.base_pitch) out.push_back(s);
+  return out;
+}
+
+CompatibilitySolution MeshDynamics::linear_solve(const std::vector<double>& at, std::size_t first) const {
+  std::vector<PairContact> pairs = contact_->pairs(at);
+  pairs.erase(pairs.begin(), pairs.begin() + static_cast<std::ptrdiff_t>(first));
+  for (PairContact& c : pairs) c.hertz.model = HertzApproach::linear;  // the stiffness model's pairs
+  return solve_compatibility(pairs, mesh_.normal_force());
+}
+
+double MeshDynamics::elastic_force(double x, double u) const {
+  if (!contact_) {
+    const double g = x > 0.0 ? x : (x <= -backlash_ ? x + backlash_ : 0.0);
+    return stiffness(u) * g;
+  }
+  const PathOfContact& p = mesh_.pair().path();
+  double f = 0.0;
+  int j = 0;
+  for (double s = p.a + u; s <= p.e + 1e-12 * p.line_length; s += p.base_pitch, ++j)
+    f += pair_stiffness_at(s) * std::max(0.0, x - contact_->separation(s, j));
+  if (x <= -backlash_) f += stiffness(u) * (x + backlash_);  // the back flanks: unmodified
+  return f;
+}
+
+double MeshDynamics::static_deflection(double u) const {
+  if (!contact_) return mesh_.normal_force() / stiffness(u);
+  return linear_solve(positions(u), 0).approach;
 }
 
 double MeshDynamics::natural_frequency() const { return std::sqrt(mean_stiffness_ / mass_) / (2.0 * kPi); }
 
 double MeshDynamics::quasi_static_peak() const {
   const double force = mesh_.normal_force();
-  if (segments_.size() < 2) return force;  // no step within the cycle
-  const double pb = mesh_.pair().path().base_pitch;
-  const double k_double_end = segments_[0](segment_end_[0]), k_single_start = segments_[1](segment_start_[1]);
-  const double k_single_end = segments_[1](segment_end_[1]), k_double_start = segments_[0](0.0);
-  (void)pb;
   const double zeta = settings_.damping_ratio;
   const double overshoot = std::exp(-zeta * kPi / std::sqrt(1.0 - zeta * zeta));
+  if (contact_) {
+    double at_d = force, at_b = force;
+    // Entry at A (u = 0): the pairs ahead carry F at x0; the entering pair adds k_A (x0 - e_A)+.
+    const std::vector<double> entry = positions(0.0);
+    if (entry.size() >= 2) {
+      const double x0 = linear_solve(entry, 1).approach;
+      at_d = force + pair_stiffness_at(entry[0]) * std::max(0.0, x0 - contact_->separation(entry[0], 0));
+    }
+    // Exit at E (u = B - A): the leaving pair's static load returns with the overshoot.
+    const PathOfContact& p = mesh_.pair().path();
+    const std::vector<double> exit = positions(split_);
+    if (split_ > 0.0 && exit.size() >= 2 && exit.back() >= p.e - 1e-9 * p.line_length)
+      at_b = force + linear_solve(exit, 0).loads.back() * overshoot;
+    return std::max({force, at_b, at_d});
+  }
+  if (segments_.size() < 2) return force;  // no step within the cycle
+  const double k_double_end = segments_[0](segment_end_[0]), k_single_start = segments_[1](segment_start_[1]);
+  const double k_single_end = segments_[1](segment_end_[1]), k_double_start = segments_[0](0.0);
   const double at_b = force * (1.0 + (1.0 - k_single_start / k_double_end) * overshoot);  // softening step
   const double at_d = force * k_double_start / k_single_end;                              // stiffening step
   return std::max({force, at_b, at_d});
@@ -119,15 +180,12 @@ SteadyCycle MeshDynamics::steady_cycle(const OdeIntegrator& integrator, double p
   const double force = mesh_.normal_force();
   const double x_static = force / mean_stiffness_;
   const double omega_n = 2.0 * kPi * natural_frequency();
-  // No backlash given: no back-flank contact.
-  const double backlash = settings_.backlash > 0.0 ? settings_.backlash : std::numeric_limits<double>::infinity();
-  auto contact = [backlash](double x) { return x > 0.0 ? x : (x <= -backlash ? x + backlash : 0.0); };
   OdeSystem sys;
   sys.size = 2;
   sys.rhs = [&](double t, const std::vector<double>& y, std::vector<double>& dy) {
     dy.resize(2);
     dy[0] = y[1];
-    dy[1] = (force - damping_ * y[1] - stiffness(velocity * t) * contact(y[0])) / mass_;
+    dy[1] = (force - damping_ * y[1] - elastic_force(y[0], velocity * t)) / mass_;
   };
   OdeTolerances tol = settings_.tolerances;
   if (!(tol.absolute > 0.0)) tol.absolute = tol.relative * x_static;
@@ -140,7 +198,7 @@ SteadyCycle MeshDynamics::steady_cycle(const OdeIntegrator& integrator, double p
   c.period = period;
   c.mesh_frequency = 1.0 / period;
   c.static_force = force;
-  std::vector<double> y{force / stiffness(0.0), 0.0};
+  std::vector<double> y{static_deflection(0.0), 0.0};
   std::vector<std::vector<double>> samples;
   double late_peak = 0.0;  // largest mesh force over the last cycles, for an aperiodic response
   for (int cycle = 1; cycle <= settings_.max_cycles; ++cycle) {
@@ -162,8 +220,8 @@ SteadyCycle MeshDynamics::steady_cycle(const OdeIntegrator& integrator, double p
     if (cycle > settings_.max_cycles - 100)
       for (int i = 0; i < m; ++i) {
         const double x = samples[static_cast<std::size_t>(i)][0], v = samples[static_cast<std::size_t>(i)][1];
-        const double g = contact(x);
-        if (g != 0.0) late_peak = std::max(late_peak, stiffness(velocity * period * i / m) * g + damping_ * v);
+        const double fe = elastic_force(x, velocity * period * i / m);
+        if (fe != 0.0) late_peak = std::max(late_peak, fe + damping_ * v);
       }
     const double steady = settings_.steady_tolerance > 0.0 ? settings_.steady_tolerance : 100.0 * tol.relative;
     if (change < steady) break;
@@ -173,16 +231,24 @@ SteadyCycle MeshDynamics::steady_cycle(const OdeIntegrator& integrator, double p
     const double t = period * i / m, u = velocity * t;
     const double x = samples[static_cast<std::size_t>(i)][0], v = samples[static_cast<std::size_t>(i)][1];
     const double k = stiffness(u);
-    const double g = contact(x);
-    const double f = g != 0.0 ? k * g + damping_ * v : 0.0;
+    const double fe = elastic_force(x, u);
+    const double f = fe != 0.0 ? fe + damping_ * v : 0.0;
     c.time.push_back(t);
     c.position.push_back(p.a + u);
     c.stiffness.push_back(k);
     c.deflection.push_back(x);
-    c.static_deflection.push_back(force / k);
+    c.static_deflection.push_back(static_deflection(u));
     c.force.push_back(f);
     c.dynamic_factor = std::max(c.dynamic_factor, f / force);
-    c.contact_lost = c.contact_lost || x <= 0.0;
+    // Contact is lost where no pair touches: x <= 0, or per pair x at or below every separation.
+    double least = 0.0;
+    if (contact_) {
+      const std::vector<double> at = positions(u);
+      least = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < at.size(); ++j)
+        least = std::min(least, contact_->separation(at[j], static_cast<int>(j)));
+    }
+    c.contact_lost = c.contact_lost || x <= least;
   }
   if (!c.periodic) c.dynamic_factor = std::max(c.dynamic_factor, late_peak / force);
   c.dynamic_factor_quasi_static = c.dynamic_factor * force / quasi_static_peak();
@@ -199,7 +265,13 @@ double MeshDynamics::pair_force(const SteadyCycle& cycle, double s) const {
   const std::size_t j = (i + 1) % cycle.force.size();
   const double t = x - std::floor(x);
   const double mesh_force = (1.0 - t) * cycle.force[i] + t * cycle.force[j];
-  return mesh_.stiffness().pair(s).stiffness / stiffness(u) * mesh_force;
+  if (!contact_) return mesh_.stiffness().pair(s).stiffness / stiffness(u) * mesh_force;
+  // Per pair: its elastic force's part of the mesh's (the damping shared alike).
+  const double deflection = (1.0 - t) * cycle.deflection[i] + t * cycle.deflection[j];
+  const int k = static_cast<int>(std::floor((s - p.a) / p.base_pitch + 1e-12));
+  const double own = pair_stiffness_at(s) * std::max(0.0, deflection - contact_->separation(s, k));
+  const double all = elastic_force(deflection, u);
+  return all > 0.0 ? own / all * mesh_force : 0.0;
 }
 
 }  // namespace geartrib::gear

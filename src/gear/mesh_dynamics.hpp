@@ -2,8 +2,11 @@
 //   m_e x'' + c x' + k(t) g(x) = F,   x = r_b1 theta1 - r_b2 theta2 (mesh deflection),
 // m_e = I1 I2/(I1 r_b2^2 + I2 r_b1^2), k(t) the time-varying mesh stiffness of the
 // potential-energy model, c = 2 zeta sqrt(k_mean m_e), F = T1/r_b1, and g(x) = x in contact,
-// 0 when the teeth separate (x <= 0), x + backlash on the back flanks (x <= -backlash). The
-// stiffness jumps at B and D (pairs entering/leaving) are integration boundaries, not smoothed.
+// 0 when the teeth separate (x <= 0), x + backlash on the back flanks (x <= -backlash). Under the
+// compatibility sharing each pair is its own contact with its separation e_j (profile
+// modifications, gear/tooth_contact.hpp): k(t) g(x) becomes sum_j k_j(t) (x - e_j(t))+ (Velex &
+// Maatar 1996), so a relief's pair enters and leaves gradually. The stiffness jumps at B and D
+// (pairs entering/leaving) are integration boundaries, not smoothed.
 // Integrated cycle after cycle to a periodic steady state through an OdeIntegrator.
 #pragma once
 
@@ -13,6 +16,7 @@
 
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -48,7 +52,7 @@ struct SteadyCycle {
   std::vector<double> position;           // s of the pair that entered at A at time 0 [m], in [A, A + p_b)
   std::vector<double> stiffness;          // mesh stiffness [N/m]
   std::vector<double> deflection;         // x [m]
-  std::vector<double> static_deflection;  // F/k (static transmission error) [m]
+  std::vector<double> static_deflection;  // the static transmission error: F/k, or under compatibility its solve [m]
   std::vector<double> force;              // dynamic mesh force k g(x) + c x' (0 when separated) [N]
   double static_force = 0.0;              // F [N]
   double dynamic_factor = 0.0;            // max force / F
@@ -75,9 +79,16 @@ class MeshDynamics {
   // stiffness steps make engagement impulsive. At D (a pair enters, k rises from k1 to k2) the
   // force jumps to F k2/k1; at B (k falls) the deflection overshoots, peak
   // F (1 + (1 - k1/k2) exp(-zeta pi/sqrt(1 - zeta^2))); the transients decay between the steps.
+  // Per pair (compatibility): the entering pair adds k_A (x0 - e_A)+ to F, x0 the static deflection
+  // just before; the leaving pair's static load F_E returns as F + F_E exp(...) at B. A relief
+  // that takes up the deflection leaves F: no impulse.
   double quasi_static_peak() const;
   // Mesh stiffness at offset u in [0, p_b) of the cycle (pair positions A + u and A + u + p_b).
   double stiffness(double u) const;
+  // The elastic mesh force at deflection x and offset u [N]: k(u) g(x), or per pair.
+  double elastic_force(double x, double u) const;
+  // The static transmission error at offset u [m] (the dynamics' linear pair stiffnesses).
+  double static_deflection(double u) const;
 
   // The pinion speeds [rad/s] where the model is integrated: mesh frequency from 1e-5 to 1e3 times
   // the natural frequency. Below, the cycle is quasi-static (the dynamic factor is the
@@ -100,6 +111,15 @@ class MeshDynamics {
   double split_ = 0.0;  // u where the second pair leaves (B - A)
   std::vector<boost::math::interpolators::cardinal_cubic_b_spline<double>> segments_;
   std::vector<double> segment_start_, segment_end_;
+  // Per-pair contact (compatibility sharing): the pair stiffness along A..E and the separations.
+  const LoadedToothContact* contact_ = nullptr;
+  std::optional<boost::math::interpolators::cardinal_cubic_b_spline<double>> pair_stiffness_;
+  double backlash_ = 0.0;
+  double pair_stiffness_at(double s) const;
+  // The pairs at offset u: positions A + u + j p_b within [A, E], j = 0 the last to enter.
+  std::vector<double> positions(double u) const;
+  // The static solve with the dynamics' linear pairs at `positions` (a subset from `first`).
+  CompatibilitySolution linear_solve(const std::vector<double>& positions, std::size_t first) const;
 };
 
 }  // namespace geartrib::gear

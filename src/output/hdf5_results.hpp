@@ -1,6 +1,8 @@
 // The mesh-cycle results as HDF5 (readable with h5py):
 //   /mesh/<name>, /contact/<name>   1-D float64 datasets over the positions, attribute "units"
-//   /mesh attributes                s_A_m .. s_E_m, base_pitch_m, contact_ratio
+//   /mesh attributes                s_A_m .. s_E_m, base_pitch_m, contact_ratio; under the
+//                                   compatibility sharing the transmission error's and the
+//                                   loaded contact's (contact::tooth_contact_summary)
 //   /scene                          the case file's text with the --set changes (string), attribute "file"
 //   /parameters/key, value, origin  every declared key as it ran (value with SI unit; origin
 //                                   "file:line", "--set" or "default")

@@ -8,7 +8,9 @@ namespace geartrib::runs {
 
 namespace {
 
-io::Table empty_table() {
+// Under the compatibility sharing two more columns: the tracked pair's separation and the
+// transmission error.
+io::Table empty_table(const gear::GearMesh& mesh) {
   io::Table t;
   t.header = {"point",
               "s_m",
@@ -31,7 +33,10 @@ io::Table empty_table() {
               "pair_stiffness_N_per_m",
               "mesh_stiffness_N_per_m",
               "pairs_in_contact"};
-
+  if (mesh.tooth_contact()) {
+    t.header.push_back("separation_m");
+    t.header.push_back("transmission_error_m");
+  }
   return t;
 }
 
@@ -47,7 +52,7 @@ void add_row(io::Table& t, const gear::GearMesh& mesh, const std::string& label,
   const gear::FlankGeometry f = pair.flank(s);
   const gear::FlankKinematics k = pair.kinematics(s, mesh.pinion_speed());
   const gear::PairLoad single = mesh.analysis().pair_load(s, mesh.normal_force() / pair.spec().face_width);
-  t.add_row(label, {s,
+  std::vector<double> row{s,
                     f.roll_parameter,
                     f.radius_pinion,
                     f.radius_wheel,
@@ -66,14 +71,19 @@ void add_row(io::Table& t, const gear::GearMesh& mesh, const std::string& label,
                     k.specific_sliding_wheel,
                     own->stiffness,
                     m.mesh_stiffness,
-                    static_cast<double>(m.pairs.size())});
+                    static_cast<double>(m.pairs.size())};
+  if (mesh.tooth_contact()) {
+    row.push_back(own->separation);
+    row.push_back(m.transmission_error);
+  }
+  t.add_row(label, row);
 }
 
 }  // namespace
 
 io::Table kinematics_table(const gear::GearMesh& mesh, const std::vector<std::string>& points) {
   const auto& p = mesh.pair().path();
-  io::Table t = empty_table();
+  io::Table t = empty_table(mesh);
   const std::vector<std::string> names = points.empty() ? std::vector<std::string>{"A", "B", "C", "D", "E"} : points;
   for (const auto& name : names) {
     double s = 0.0;
@@ -92,7 +102,7 @@ io::Table kinematics_table(const gear::GearMesh& mesh, int positions) {
   if (positions < 2 || positions > kMaxKinematicsPositions)
     throw std::invalid_argument("positions must lie in [2, " + std::to_string(kMaxKinematicsPositions) + "]");
   const auto& p = mesh.pair().path();
-  io::Table t = empty_table();
+  io::Table t = empty_table(mesh);
   for (int i = 0; i < positions; ++i) add_row(t, mesh, std::to_string(i), p.a + p.length * i / (positions - 1), false);
   return t;
 }

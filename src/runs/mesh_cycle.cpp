@@ -565,6 +565,7 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
     for (const auto& v : sum.values) scalar(group + " attribute " + v.name, v.value);
   };
   summary("/mesh", contact::path_summary(r.path));
+  if (r.tooth_contact) summary("/mesh", contact::tooth_contact_summary(*r.tooth_contact));
   summary("/meta", contact::surface_summary(r));
   summary("/contact/validity", contact::validity_summary(r));
   if (r.mixed_ehl_summary) summary("/mixed_ehl", contact::mixed_ehl_summary(*r.mixed_ehl_summary));

@@ -23,7 +23,9 @@ SweepPoint run_sweep_point(const CaseLoader& load, const std::vector<io::CaseCha
     p.regime = r.regime;
     p.verdict = r.verdict;
     p.flag_counts = contact::validity_summary(r).values;
-    if (r.lubrication_summary) p.summary = contact::lubrication_summary(*r.lubrication_summary).values;
+    if (r.tooth_contact) p.summary = contact::tooth_contact_summary(*r.tooth_contact).values;
+    if (r.lubrication_summary)
+      for (auto& v : contact::lubrication_summary(*r.lubrication_summary).values) p.summary.push_back(std::move(v));
     for (const auto* group : r.groups())
       for (const auto& q : *group) {
         if (q.name == "s_m" || q.name == "roll_angle_rad") continue;                  // the path itself
