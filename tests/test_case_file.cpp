@@ -690,3 +690,43 @@ TEST_F(BadInput, MaterialPathMustBeABoundedRegularFile) {
   // The case file itself.
   EXPECT_THROW(io::prepare_case(io::load_case("/dev/zero")), io::InputError);
 }
+
+// Profile modifications: a negative amount, a relief across the active flank, both starts given,
+// and a modification under a sharing that ignores it are refused at their key and line.
+TEST_F(BadInput, ProfileModificationsRefusedAtTheirKeyAndLine) {
+  const std::string sharing = "load_sharing = \"iso\"";
+  edit("gears/m6z30.toml", sharing, "load_sharing = \"compatibility\"");
+  const std::string case_file = "gears/m6z30.toml";
+  auto with_relief = [&](const std::string& body) {
+    std::ofstream(dir_ / case_file, std::ios::app) << "\n[pinion.tip_relief]\n" << body;
+  };
+  with_relief("amount = \"-5 um\"\nlength = \"4 mm\"\n");
+  io::InputError e = load_error();
+  EXPECT_EQ(e.key(), "pinion.tip_relief.amount");
+  EXPECT_EQ(e.line(), line_of(case_file, "amount = \"-5 um\""));
+  EXPECT_EQ(e.value(), "\"-5 um\"");
+  SetUp();
+  edit(case_file, sharing, "load_sharing = \"compatibility\"");
+  with_relief("amount = \"5 um\"\nlength = \"30 mm\"\n");  // the active flank: 29 mm of roll
+  e = load_error();
+  EXPECT_EQ(e.key(), "pinion.tip_relief.length");
+  EXPECT_EQ(e.line(), line_of(case_file, "length = \"30 mm\""));
+  EXPECT_NE(e.rule().find("longer than the active flank"), std::string::npos) << e.rule();
+  SetUp();
+  edit(case_file, sharing, "load_sharing = \"compatibility\"");
+  with_relief("amount = \"5 um\"\nlength = \"4 mm\"\nstart_diameter = \"190 mm\"\n");
+  e = load_error();
+  EXPECT_EQ(e.key(), "pinion.tip_relief.length");
+  EXPECT_NE(e.rule().find("not both"), std::string::npos) << e.rule();
+  SetUp();
+  with_relief("amount = \"5 um\"\nlength = \"4 mm\"\n");  // under ISO sharing
+  e = load_error();
+  EXPECT_EQ(e.key(), "pinion.tip_relief.amount");
+  EXPECT_NE(e.rule().find("compatibility"), std::string::npos) << e.rule();
+  SetUp();
+  edit(case_file, sharing, "load_sharing = \"compatibility\"");
+  with_relief("amount = \"5 um\"\nstart_diameter = \"200 mm\"\n");  // beyond the 192 mm tip
+  e = load_error();
+  EXPECT_EQ(e.key(), "pinion.tip_relief.start_diameter");
+  EXPECT_NE(e.rule().find("off the flank"), std::string::npos) << e.rule();
+}

@@ -1,5 +1,6 @@
 // Loaded tooth contact: profile modifications, the Hertzian approach of the line contact, and the
 // load from load-deflection compatibility (gear/tooth_contact.hpp).
+#include "contact/half_plane_bem.hpp"
 #include "gear/gear_mesh.hpp"
 #include "test_support.hpp"
 
@@ -177,6 +178,39 @@ TEST(ToothContact, WeberBanaschekIsTheHalfPlanesApproachForSmallContacts) {
   const double step = 1e-4 * force;
   EXPECT_NEAR(h.slope(force), (h.approach(force + step) - h.approach(force - step)) / (2.0 * step),
               1e-7 * h.slope(force));
+}
+
+// Weber-Banaschek against geartrib's own plane-strain boundary elements for the same cylinder on
+// 80 mm: the BEM's approach is the surface's at the centre against the surface at distance L_ref
+// from the load; Flamant's field puts the axis point at depth h below the surface point at the
+// same distance by (1 + nu) w/(pi E) per body (integrating his strains: u_r = -(2 P (1 - nu^2)/
+// (pi E)) cos(theta) ln r + (A/2)(cos(theta) - theta sin(theta)), A = 2 P (1 + nu)(1 - 2 nu)/(pi E)),
+// so with L_ref = h: WB = BEM - sum (1 + nu_i) w/(pi E_i).
+TEST(ToothContact, WeberBanaschekAgreesWithTheHalfPlaneBoundaryElements) {
+  const double e = 206e9, nu = 0.3, width = 0.08, radius = 0.015, force = 1.2e4;
+  LineContactApproach h;
+  h.face_width = width;
+  h.radius = radius;
+  h.composite_modulus = 1.0 / (2.0 * (1.0 - nu * nu) / e);
+  const double w = force / width;
+  const double a = std::sqrt(4.0 * w * radius / (kPi * h.composite_modulus));
+  for (int i = 0; i < 2; ++i) {
+    h.youngs_modulus[i] = e;
+    h.poisson_ratio[i] = nu;
+    h.depth[i] = 30.0 * a;
+  }
+  const int n = 2048;
+  const contact::HalfPlaneGrid grid{-1.5 * a, 3.0 * a / n, n};
+  contact::BemOptions o;
+  o.reference_length = h.depth[0];
+  const contact::HalfPlaneBem bem(grid, h.composite_modulus, o);
+  std::vector<double> gap(n);
+  for (int i = 0; i < n; ++i) gap[static_cast<std::size_t>(i)] = grid.x(i) * grid.x(i) / (2.0 * radius);
+  const contact::BemSolution sol = bem.solve_load(gap, w);
+  const double offset = 2.0 * (1.0 + nu) * w / (kPi * e);
+  // Measured 5.5e-8: the BEM's surface datum ln(L/|x|) is, like WB, the a << h form of the field,
+  // so only its elements (2048 over 3a) part them; tolerance 1e-6.
+  EXPECT_NEAR((sol.approach - offset) / h.approach(force), 1.0, 1e-6);
 }
 
 // Palmgren's steel line contact: 3.84e-5 mm at 1 N on 1 mm, growing as F^0.9 and l^-0.8; and its
