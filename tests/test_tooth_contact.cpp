@@ -339,3 +339,20 @@ TEST(ToothContact, ReliefUnloadsAAndEAndItsTransmissionErrorIsFlattestNearItsDes
   EXPECT_LT(least, 0.5 * peak_to_peak(0.2));
   EXPECT_LT(least, 0.5 * peak_to_peak(3.0));
 }
+
+// The teeth's compliance along the path, read from its spline, against the stiffness model.
+TEST(ToothContact, TeethComplianceSplineFollowsTheStiffnessModel) {
+  const GearMesh mesh = case_mesh(compatibility_case({}, {}));
+  const PathOfContact& p = mesh.pair().path();
+  double worst = 0.0;
+  for (int i = 0; i <= 997; ++i) {
+    const double s = p.a + p.length * i / 997.0;
+    const PairStiffness direct = mesh.stiffness().pair(s);
+    const double c = direct.pinion.total() + direct.wheel.total();
+    const double err = std::abs(mesh.tooth_contact()->teeth_compliance(s) / c - 1.0);
+    if (err > 1e-6) fprintf(stderr, "%g %g\n", (s - p.a) / p.length, err);
+    worst = std::max(worst, err);
+  }
+  fprintf(stderr, "worst %g\n", worst);
+  EXPECT_LT(worst, 1e-8);
+}

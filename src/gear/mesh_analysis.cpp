@@ -129,7 +129,7 @@ TransmissionErrorStats MeshAnalysis::transmission_error_stats(int n) const {
   auto loaded = [&](double s) { return at(s).pair_at(s).share > 0.0; };
   auto edge = [&](double from, double to) {
     if (loaded(from)) return from;
-    const int steps = 4 * n;
+    const int steps = n;
     double outside = from, inside = to;
     for (int i = 1; i <= steps; ++i) {
       const double s = from + (to - from) * i / steps;
@@ -139,7 +139,7 @@ TransmissionErrorStats MeshAnalysis::transmission_error_stats(int n) const {
       }
       outside = s;
     }
-    while (std::abs(inside - outside) > 1e-12 * p.line_length) {
+    while (std::abs(inside - outside) > 1e-9 * p.line_length) {
       const double mid = 0.5 * (inside + outside);
       (loaded(mid) ? inside : outside) = mid;
     }

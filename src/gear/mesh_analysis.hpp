@@ -68,7 +68,7 @@ class MeshAnalysis {
   // The mesh stiffness over cycle(n).
   MeshStiffnessStats stiffness_stats(int n) const;
   // Under compatibility: the transmission error and effective stiffness over cycle(n), and where
-  // a pair carries load (its ends bisected to 1e-12 of the path); throws under another sharing.
+  // a pair carries load (its ends bisected to 1e-9 of the path); throws under another sharing.
   TransmissionErrorStats transmission_error_stats(int n) const;
 
   double normal_force() const { return normal_force_; }

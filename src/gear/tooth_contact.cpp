@@ -154,49 +154,34 @@ double FlankModification::at(double rho) const {
   return e;
 }
 
-double LineContactApproach::approach(double force) const {
-  if (!(force > 0.0)) return 0.0;
+std::pair<double, double> LineContactApproach::approach_and_slope(double force) const {
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
   switch (model) {
-    case HertzApproach::linear: return linear_compliance * force;
-    case HertzApproach::palmgren:
+    case HertzApproach::linear: return {force > 0.0 ? linear_compliance * force : 0.0, linear_compliance};
+    case HertzApproach::palmgren: {
+      if (!(force > 0.0)) return {0.0, kInfinity};
       // 3.84e-5 mm (F/N)^0.9 / (l/mm)^0.8, steel's; other materials by the compliance ratio^0.9.
-      return 1e-3 * 3.84e-5 * std::pow(kSteelCompositeModulus / composite_modulus * force, 0.9) /
-             std::pow(1e3 * face_width, 0.8);
-    case HertzApproach::weber_banaschek: {
-      const double w = force / face_width;
-      const double a = asperity::hertz_half_width(w, radius, composite_modulus);
-      double sum = 0.0;
-      for (int i = 0; i < 2; ++i) {
-        const double nu = poisson_ratio[i];
-        const double log_term = std::log(2.0 * depth[i] / a) - nu / (2.0 * (1.0 - nu));
-        sum += (1.0 - nu * nu) / youngs_modulus[i] * std::max(log_term, 0.5);
-      }
-      return 2.0 * w / kPi * sum;
+      const double delta = 1e-3 * 3.84e-5 * std::pow(kSteelCompositeModulus / composite_modulus * force, 0.9) /
+                           std::pow(1e3 * face_width, 0.8);
+      return {delta, 0.9 * delta / force};
     }
-  }
-  return 0.0;
-}
-
-double LineContactApproach::slope(double force) const {
-  switch (model) {
-    case HertzApproach::linear: return linear_compliance;
-    case HertzApproach::palmgren:
-      return force > 0.0 ? 0.9 * approach(force) / force : std::numeric_limits<double>::infinity();
     case HertzApproach::weber_banaschek: {
-      if (!(force > 0.0)) return std::numeric_limits<double>::infinity();
+      if (!(force > 0.0)) return {0.0, kInfinity};
       const double w = force / face_width;
       const double a = asperity::hertz_half_width(w, radius, composite_modulus);
-      double sum = 0.0;
+      double value = 0.0, slope = 0.0;
       for (int i = 0; i < 2; ++i) {
         const double nu = poisson_ratio[i];
+        const double compliance = (1.0 - nu * nu) / youngs_modulus[i];
         const double log_term = std::log(2.0 * depth[i] / a) - nu / (2.0 * (1.0 - nu));
+        value += compliance * std::max(log_term, 0.5);
         // d/dF [F g(F)] with a ~ sqrt(F): g - 1/2; on the floor g = 1/2 the term is linear.
-        sum += (1.0 - nu * nu) / youngs_modulus[i] * (log_term > 0.5 ? log_term - 0.5 : 0.5);
+        slope += compliance * (log_term > 0.5 ? log_term - 0.5 : 0.5);
       }
-      return 2.0 / (kPi * face_width) * sum;
+      return {2.0 * w / kPi * value, 2.0 / (kPi * face_width) * slope};
     }
   }
-  return 0.0;
+  return {0.0, 0.0};
 }
 
 bool LineContactApproach::in_range(double force) const {
@@ -209,16 +194,22 @@ bool LineContactApproach::in_range(double force) const {
   return a <= 0.25 * std::min(depth[0], depth[1]);
 }
 
-double PairContact::load(double y) const {
-  if (!(y > 0.0)) return 0.0;
-  // y(F) >= compliance F and is increasing: F lies in [0, y/compliance] (doubled while short).
+std::pair<double, double> PairContact::load_and_compliance(double y, double guess) const {
+  if (!(y > 0.0)) return {0.0, compliance + hertz.slope(0.0)};
+  // y(F) = compliance F + approach(F) rises and is concave (the approach's slope falls with the
+  // load): Newton converges from either side (from above it steps below the root, then rises
+  // onto it), bracketed by [0, y/compliance] (doubled while short).
   double hi = compliance > 0.0 ? y / compliance : 1.0;
   while (deflection(hi) < y) hi *= 2.0;
-  std::uintmax_t iterations = 200;
-  const auto r = boost::math::tools::toms748_solve([&](double f) { return deflection(f) - y; }, 0.0, hi, -y,
-                                                   deflection(hi) - y, boost::math::tools::eps_tolerance<double>(52),
-                                                   iterations);
-  return 0.5 * (r.first + r.second);
+  const double start = guess > 0.0 && guess < hi ? guess : hi;
+  std::uintmax_t iterations = 100;
+  const double f = boost::math::tools::newton_raphson_iterate(
+      [&](double x) {
+        const auto [approach, slope] = hertz.approach_and_slope(x);
+        return std::make_pair(compliance * x + approach - y, compliance + slope);
+      },
+      start, 0.0, hi, 50, iterations);
+  return {f, compliance + hertz.slope(f)};
 }
 
 CompatibilitySolution solve_compatibility(std::span<const PairContact> pairs, double force) {
@@ -232,28 +223,43 @@ CompatibilitySolution solve_compatibility(std::span<const PairContact> pairs, do
   const double low = pairs[first].separation;
   out.approach = low;
   if (force == 0.0) return out;
-  auto total = [&](double delta) {
-    double sum = 0.0;
-    for (const PairContact& p : pairs) sum += p.load(delta - p.separation);
-    return sum - force;
+  // sum_j F_j(delta - e_j) - F rises and is convex in delta (each F_j the inverse of a concave
+  // y_j): Newton from above (the pair nearest contact carrying everything, widened past the inner
+  // inversion's rounding) descends onto the root, bracketed by [low, high].
+  // Each pair's load from the last evaluation starts its next inversion.
+  std::vector<double> guess(pairs.size(), 0.0);
+  auto residual = [&](double delta) {
+    double sum = 0.0, slope = 0.0;
+    for (std::size_t j = 0; j < pairs.size(); ++j) {
+      const auto [f, dy] = pairs[j].load_and_compliance(delta - pairs[j].separation, guess[j]);
+      guess[j] = f;
+      sum += f;
+      if (f > 0.0) slope += 1.0 / dy;
+    }
+    return std::make_pair(sum - force, slope);
   };
-  // The pair nearest contact carrying everything bounds delta from above (widened past the
-  // rounding of the inner inversion).
   double high = low + pairs[first].deflection(force) * (1.0 + 1e-9) + 1e-18;
-  while (total(high) < 0.0) high = low + 2.0 * (high - low);
-  std::uintmax_t iterations = 200;
-  const auto r = boost::math::tools::toms748_solve(total, low, high, -force, total(high),
-                                                   boost::math::tools::eps_tolerance<double>(50), iterations);
-  out.approach = 0.5 * (r.first + r.second);
+  while (residual(high).first < 0.0) high = low + 2.0 * (high - low);
+  // Start: every pair loaded, each linearised by its secant at an equal share of F.
+  double inverse_sum = 0.0, weighted = 0.0;
+  const double share = force / static_cast<double>(pairs.size());
+  for (const PairContact& p : pairs) {
+    const double secant = p.deflection(share) / share;
+    inverse_sum += 1.0 / secant;
+    weighted += p.separation / secant;
+  }
+  const double start = std::clamp((force + weighted) / inverse_sum, low, high);
+  std::uintmax_t iterations = 100;
+  out.approach = boost::math::tools::newton_raphson_iterate(residual, start, low, high, 50, iterations);
   for (std::size_t j = 0; j < pairs.size(); ++j) {
-    const double f = pairs[j].load(out.approach - pairs[j].separation);
+    const auto [f, dy] = pairs[j].load_and_compliance(out.approach - pairs[j].separation, guess[j]);
     out.loads[j] = f;
     if (f > 0.0) {
-      out.tangent_stiffness += 1.0 / (pairs[j].compliance + pairs[j].hertz.slope(f));
+      out.tangent_stiffness += 1.0 / dy;
       out.hertz_in_range = out.hertz_in_range && pairs[j].hertz.in_range(f);
     }
   }
-  // The loads' residual is the root's tolerance; they sum to F to ~1e-15 relative.
+  // The loads sum to F to the roots' tolerance (~1e-14 relative).
   return out;
 }
 
@@ -270,7 +276,13 @@ LoadedToothContact::LoadedToothContact(const SpurPair& pair, const MeshStiffness
                                        double composite_modulus, const ProfileModification (&m)[2],
                                        HertzApproach approach, double design_relief)
     : pair_(pair),
-      stiffness_(stiffness),
+      compliance_(
+          [&](double s) {
+            const PairStiffness ps = stiffness.pair(s);
+            return ps.pinion.total() + ps.wheel.total();
+          },
+          pair.path().a, pair.path().e, kCompliancePoints),
+      hertz_compliance_(stiffness.pair(pair.path().c).hertz_compliance),
       material_{pinion, wheel},
       composite_modulus_(composite_modulus),
       flank_{FlankModification(pair, 0, m[0], design_relief), FlankModification(pair, 1, m[1], design_relief)},
@@ -287,16 +299,15 @@ std::vector<PairContact> LoadedToothContact::pairs(const std::vector<double>& po
   const double width = pair_.spec().face_width;
   for (std::size_t k = 0; k < positions.size(); ++k) {
     const double s = positions[k];
-    const PairStiffness ps = stiffness_.pair(s);
     PairContact c;
     c.separation = separation(s, static_cast<int>(k));
-    c.compliance = ps.pinion.total() + ps.wheel.total();
+    c.compliance = teeth_compliance(s);
     LineContactApproach& h = c.hertz;
     h.model = approach_;
     h.face_width = width;
     h.radius = pair_.flank(s).radius_equivalent;
     h.composite_modulus = composite_modulus_;
-    h.linear_compliance = ps.hertz_compliance;
+    h.linear_compliance = hertz_compliance_;
     const double rho[2] = {s, pair_.path().line_length - s};
     for (int i = 0; i < 2; ++i) {
       h.youngs_modulus[i] = material_[i].youngs_modulus;
@@ -306,6 +317,11 @@ std::vector<PairContact> LoadedToothContact::pairs(const std::vector<double>& po
     out.push_back(c);
   }
   return out;
+}
+
+double LoadedToothContact::teeth_compliance(double s) const {
+  const PathOfContact& p = pair_.path();
+  return compliance_(std::clamp(s, p.a, p.e));
 }
 
 CompatibilitySolution LoadedToothContact::solve(const std::vector<double>& positions, double force) const {

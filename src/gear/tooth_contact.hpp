@@ -10,9 +10,11 @@
 
 #include "core/named_choices.hpp"
 #include "gear/spur_pair.hpp"
+#include "core/chebyshev_interpolant.hpp"
 #include "gear/tooth_stiffness.hpp"
 
 #include <span>
+#include <utility>
 #include <string_view>
 #include <vector>
 
@@ -108,8 +110,9 @@ struct LineContactApproach {
   double poisson_ratio[2] = {0, 0};
   double depth[2] = {0, 0};          // h_i [m]
   double linear_compliance = 0.0;    // the linear model's 2/(pi b E_t) [m/N]
-  double approach(double force) const;
-  double slope(double force) const;
+  double approach(double force) const { return approach_and_slope(force).first; }
+  double slope(double force) const { return approach_and_slope(force).second; }
+  std::pair<double, double> approach_and_slope(double force) const;  // [m], [m/N]
   bool in_range(double force) const;
 };
 
@@ -119,7 +122,10 @@ struct PairContact {
   double compliance = 0.0;  // the teeth's linear compliance (bending, shear, axial, foundation) [m/N]
   LineContactApproach hertz;
   double deflection(double force) const { return compliance * force + hertz.approach(force); }  // y(F) [m]
-  double load(double deflection) const;  // F(y): the inverse, 0 for y <= 0 [N]
+  // F(y): the inverse, 0 for y <= 0 [N]; and dy/dF there [m/N] (infinite at F = 0 but for linear).
+  // `guess` a load near the answer (a previous solve's) or 0 for none.
+  std::pair<double, double> load_and_compliance(double deflection, double guess = 0.0) const;
+  double load(double deflection) const { return load_and_compliance(deflection).first; }
 };
 
 struct CompatibilitySolution {
@@ -146,10 +152,16 @@ class LoadedToothContact {
   CompatibilitySolution solve(const std::vector<double>& positions, double force) const;
   const FlankModification& flank(int gear) const { return flank_[gear]; }
   HertzApproach approach_model() const { return approach_; }
+  // The teeth's linear compliance of the pair at s in [A, E] [m/N]: the stiffness model's bending,
+  // shear, axial and foundation terms of both teeth, interpolated at kCompliancePoints Chebyshev
+  // points along the path (smooth there; within 1e-8 of the model, tests/test_tooth_contact.cpp).
+  double teeth_compliance(double s) const;
+  static constexpr int kCompliancePoints = 25;
 
  private:
   const SpurPair& pair_;
-  const MeshStiffnessModel& stiffness_;
+  core::ChebyshevInterpolant compliance_;
+  double hertz_compliance_;  // the stiffness model's linear Hertz term [m/N]
   ToothMaterial material_[2];
   double composite_modulus_;
   FlankModification flank_[2];

@@ -2,7 +2,7 @@
 // quadrature at one separation, the pressure-separation table, the separation inversion, one
 // strip (uncoupled, coupled), the coupled strip along the path (cold, warm), the highest
 // asperity's stresses, the whole cycle as `geartrib run` does it, dry and lubricated, and the
-// deterministic cycle, the mixed-EHL window and cycle. Run:
+// deterministic cycle, the mixed-EHL window and cycle, the load sharings. Run:
 // ./build/tests/geartrib_bench --benchmark_filter='gw_|strip_|cycle|ehl_'
 #include "case/asperity_setup.hpp"
 #include "case/contact_setup.hpp"
@@ -141,6 +141,38 @@ void cycle_lubricated(benchmark::State& state) {
   const int positions = static_cast<int>(state.range(1));
   for (auto _ : state) benchmark::DoNotOptimize(runs::run_mesh_contact(c, setup().mesh, nullptr, {}, positions));
 }
+// The loaded tooth contact (issue 33: compatibility adds at most 20 % to the default cycle): the
+// default lubricated case, its mesh built in the loop, with the load shared by ISO (0), by the
+// pairs' stiffness (1), by compatibility with gears/m6z30-relief.toml's tip reliefs (2) or
+// without them (3: the same loads as 1 but for the Hertzian approach).
+void cycle_load_sharing(benchmark::State& state) {
+  Case c = setup().c;
+  if (state.range(0) == 1) c.mesh.load_sharing = gear::LoadSharing::stiffness;
+  if (state.range(0) == 3) c.mesh.load_sharing = gear::LoadSharing::compatibility;
+  if (state.range(0) == 2)
+    c.mesh =
+        io::prepare_case(io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30-relief.toml")).mesh;
+  for (auto _ : state) {
+    const gear::GearMesh mesh = gear::case_mesh(c);
+    benchmark::DoNotOptimize(runs::run_mesh_contact(c, mesh, nullptr, {}));
+  }
+}
+// The path stage alone under the same sharings (its kinematics and loads over 201 positions, and
+// under compatibility the transmission error over one base pitch): the solve's own cost.
+void path_load_sharing(benchmark::State& state) {
+  Case c = setup().c;
+  if (state.range(0) == 1) c.mesh.load_sharing = gear::LoadSharing::stiffness;
+  if (state.range(0) == 3) c.mesh.load_sharing = gear::LoadSharing::compatibility;
+  if (state.range(0) == 2)
+    c.mesh =
+        io::prepare_case(io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30-relief.toml")).mesh;
+  const gear::GearMesh mesh = gear::case_mesh(c);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(contact::path_state(mesh, contact::PathOptions{}));
+    if (mesh.tooth_contact())
+      benchmark::DoNotOptimize(mesh.analysis().transmission_error_stats(mesh.cycle_positions()));
+  }
+}
 // The deterministic cycle (issue 20: the default 201 positions in at most 5 s on one core):
 // gears/m6z30-deterministic.toml on one thread at element sizes 2, 1, 0.5 (its default) and
 // 0.25 um [nm in the argument].
@@ -212,6 +244,8 @@ BENCHMARK(cycle_deterministic)
     ->Arg(250)
     ->ArgName("element_nm")
     ->Unit(benchmark::kMillisecond);
+BENCHMARK(cycle_load_sharing)->DenseRange(0, 3)->ArgName("sharing")->Unit(benchmark::kMillisecond);
+BENCHMARK(path_load_sharing)->DenseRange(0, 3)->ArgName("sharing")->Unit(benchmark::kMillisecond);
 BENCHMARK(cycle_lubricated)
     ->ArgsProduct({{0, 1}, {201, 1000}})
     ->ArgNames({"lubricated", "positions"})

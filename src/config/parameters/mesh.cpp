@@ -38,6 +38,7 @@ void declare_mesh(ParameterRows& table) {
             k + "amount", D::length, [relief](auto& c, int g) -> auto& { return relief(c, g).amount; }))
         .range(0.0, 1e-3)
         .plausible(0.0, 200.0 * kUm)
+        .alias({std::string(end) + "_relief"})
         .field(f + "amount")
         .doc(tip ? "Tip relief C_a at the tip circle (ISO 21771), normal to the profile; 0: none"
                  : "Root relief C_f at the root form circle (ISO 21771), normal to the profile; 0: none");
