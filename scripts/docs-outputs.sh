@@ -152,6 +152,21 @@ ex dynamics dynamics --speed-sweep 500rpm:9000rpm:18
 fn=$(sed -n 's/.*natural frequency \([0-9.]*\) Hz.*/\1/p' speeds.log | head -1)
 $py "$root/scripts/plot_speed_sweep.py" speeds.csv "$fig/dynamics-speed-sweep.png" $fn > /dev/null
 
+fresh tooth-contact
+ex tooth-contact kinematics gears/m6z30-relief.toml
+blank tooth-contact
+ex tooth-contact kinematics gears/m6z30-relief.toml --summary
+sed -i '/^ *reference_center_distance_m/,/^ *mean_mesh_stiffness_over_iso_c_gamma_alpha/c\(the geometry and stiffness rows, as in kinematics --summary, left out here)' "$out/tooth-contact.txt"
+blank tooth-contact
+ex tooth-contact run gears/m6z30-relief.toml -o relief.h5
+sed -i '/^quantity  /,/^wear_depth_wheel_m/c\(the table of quantities along the path, as in geartrib run, left out here)' "$out/tooth-contact.txt"
+blank tooth-contact
+ex tooth-contact sweep gears/m6z30-relief.toml --set tip_relief=0um:30um:7 --set torque=200Nm:2000Nm:10 -o harris.h5
+sh_ex tooth-contact "/usr/bin/python3 scripts/plot_design_sweep.py harris.h5 --quantity transmission_error_peak_to_peak_m --x torque --lines tip_relief -o harris.png"
+cp harris.png "$fig/tooth-contact-harris-map.png"
+blank tooth-contact
+ex tooth-contact dynamics gears/m6z30-relief.toml --speed-sweep 500rpm:9000rpm:18
+
 fresh asperity
 ex asperity asperity --summary
 blank asperity

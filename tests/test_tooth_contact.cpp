@@ -4,8 +4,8 @@
 #include "gear/gear_mesh.hpp"
 #include "test_support.hpp"
 
-#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <gtest/gtest.h>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -73,10 +73,8 @@ TEST(ToothContact, LongLinearTipReliefWithConstantStiffnessIsExact) {
         // The reliefs add to C: e(entering) + e(leading) = C (to rounding of the roll lengths).
         EXPECT_NEAR(pairs[0].separation + pairs[1].separation, amount, 1e-12 * amount);
         const double both = (force + k * amount) / (2.0 * k);
-        if (both >= std::max(pairs[0].separation, pairs[1].separation))
-          expected = both;
-        else
-          expected = std::min(pairs[0].separation, pairs[1].separation) + force / k;
+        if (both >= std::max(pairs[0].separation, pairs[1].separation)) expected = both;
+        else expected = std::min(pairs[0].separation, pairs[1].separation) + force / k;
       }
       EXPECT_NEAR(sol.approach, expected, 1e-10 * expected) << "F = " << force << " s = " << s;
       double sum = 0.0;
@@ -261,13 +259,13 @@ TEST(ToothContact, ReliefShapesAtStartMiddleAndEnd) {
     EXPECT_NEAR(f.at(tip - length), 0.0, 1e-18);
     EXPECT_NEAR(f.at(tip), amount, 1e-15);
     const double middle = f.at(tip - 0.5 * length);
-    const double expected = shape == ReliefShape::linear      ? 0.5 * amount
-                            : shape == ReliefShape::parabolic ? 0.25 * amount
-                                                              : [&] {
-                                                                  const double r = (length * length + amount * amount) /
-                                                                                   (2.0 * amount);
-                                                                  return r - std::sqrt(r * r - 0.25 * length * length);
-                                                                }();
+    const double expected = shape == ReliefShape::linear ? 0.5 * amount
+                            : shape == ReliefShape::parabolic
+                                ? 0.25 * amount
+                                : [&] {
+                                    const double r = (length * length + amount * amount) / (2.0 * amount);
+                                    return r - std::sqrt(r * r - 0.25 * length * length);
+                                  }();
     EXPECT_NEAR(middle, expected, 1e-12 * amount);
   }
   // An arc of a relief short against its length is the parabola to (C/L)^2.
@@ -340,8 +338,8 @@ TEST(ToothContact, ReliefUnloadsAAndEAndItsTransmissionErrorIsFlattestNearItsDes
   EXPECT_LT(least, 0.5 * peak_to_peak(3.0));
 }
 
-// The teeth's compliance along the path, read from its spline, against the stiffness model.
-TEST(ToothContact, TeethComplianceSplineFollowsTheStiffnessModel) {
+// The teeth's compliance along the path, read from its Chebyshev interpolant, against the model.
+TEST(ToothContact, TeethComplianceInterpolantFollowsTheStiffnessModel) {
   const GearMesh mesh = case_mesh(compatibility_case({}, {}));
   const PathOfContact& p = mesh.pair().path();
   double worst = 0.0;
@@ -350,9 +348,9 @@ TEST(ToothContact, TeethComplianceSplineFollowsTheStiffnessModel) {
     const PairStiffness direct = mesh.stiffness().pair(s);
     const double c = direct.pinion.total() + direct.wheel.total();
     const double err = std::abs(mesh.tooth_contact()->teeth_compliance(s) / c - 1.0);
-    if (err > 1e-6) fprintf(stderr, "%g %g\n", (s - p.a) / p.length, err);
     worst = std::max(worst, err);
   }
-  fprintf(stderr, "worst %g\n", worst);
-  EXPECT_LT(worst, 1e-8);
+  // Measured 6.9e-13 at 25 points (2.7e-9 at 17; a cubic spline of 65 points was 9e-4 off near
+  // the tip, where the pinion's compliance rises steeply).
+  EXPECT_LT(worst, 1e-11);
 }

@@ -1,8 +1,8 @@
 // `geartrib kinematics`: the spur pair along its line of action: geometry, load sharing,
 // curvature, Hertz line contact, rolling and sliding, mesh stiffness.
-#include "contact/run_summary.hpp"
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
+#include "contact/run_summary.hpp"
 #include "runs/kinematics_table.hpp"
 
 #include "case/gear_setup.hpp"
@@ -76,8 +76,10 @@ void run_summary(const Options& o, const Case& c, const gear::GearMesh& mesh, io
     // The loaded tooth contact over one base pitch: the same names as the run's /mesh attributes.
     t.add_row("iso_effective_tip_relief_m", {gear::iso_effective_relief(pair, mesh.tangential_line_load())});
     for (int i = 0; i < 2; ++i)
-      t.add_row(std::string(i == 0 ? "pinion" : "wheel") + "_tip_relief_m", {mesh.tooth_contact()->flank(i).tip_amount()});
-    for (const auto& v : contact::tooth_contact_summary(mesh.analysis().transmission_error_stats(mesh.cycle_positions())).values)
+      t.add_row(std::string(i == 0 ? "pinion" : "wheel") + "_tip_relief_m",
+                {mesh.tooth_contact()->flank(i).tip_amount()});
+    for (const auto& v :
+         contact::tooth_contact_summary(mesh.analysis().transmission_error_stats(mesh.cycle_positions())).values)
       t.add_row(v.name, {v.value});
   }
   emit_table(t, o.table, outputs);
@@ -117,7 +119,8 @@ void add_kinematics_command(CLI::App& app) {
       cmd->add_option("--positions", o->positions, "N equally spaced positions from A to E instead of named points")
           ->check(CLI::Range(2, 100000));
   pts->excludes(pos);
-  cmd->add_option("--load-sharing", o->load_sharing, "iso, stiffness or compatibility: shorthand for --set mesh.load_sharing=...")
+  cmd->add_option("--load-sharing", o->load_sharing,
+                  "iso, stiffness or compatibility: shorthand for --set mesh.load_sharing=...")
       ->check(CLI::IsMember({"iso", "stiffness", "compatibility"}));
   add_table_options(cmd, o->table);
   cmd->add_flag("--summary", o->summary, "name,value rows: geometry, contact ratio, mesh stiffness, ISO stiffness");

@@ -205,10 +205,10 @@ double MeshLubrication::iso_flash(const PathPoint& p) const {
   // (its load sharing factor is then 1).
   const bool single = p.load_sharing_factor >= 1.0;
   const double x_gamma = gear::iso_load_sharing_factor(pair.path(), p.s, single);
-  return lub::iso_flash_temperature(iso_flash_mu_, iso_x_m_,
-                                    lub::iso_approach_factor(iso_geometry_, gamma, iso_effective_relief_, iso_tip_relief_),
-                                    lub::iso_geometry_factor(iso_geometry_, gamma), x_gamma, pitch_.tangential_load,
-                                    pitch_.pitch_line_speed, iso_geometry_.center_distance);
+  return lub::iso_flash_temperature(
+      iso_flash_mu_, iso_x_m_, lub::iso_approach_factor(iso_geometry_, gamma, iso_effective_relief_, iso_tip_relief_),
+      lub::iso_geometry_factor(iso_geometry_, gamma), x_gamma, pitch_.tangential_load, pitch_.pitch_line_speed,
+      iso_geometry_.center_distance);
 }
 
 void MeshLubrication::film(const PathPoint& p, ShareGuesses& guesses, Position& q) const {

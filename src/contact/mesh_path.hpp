@@ -35,7 +35,7 @@ struct PathState {
   std::vector<double> v1, v2, entrainment, sliding, slide_to_roll;  // [m/s], [m/s], [m/s], [m/s], 1
   std::vector<double> stiffness;  // the mesh's [N/m] (under compatibility its tangent); empty when not computed
   std::vector<double> transmission_error;  // the static transmission error [m]; compatibility sharing only
-  std::vector<double> dynamic_factor;                    // dynamic over static line load; empty without dynamics
+  std::vector<double> dynamic_factor;      // dynamic over static line load; empty without dynamics
   std::vector<std::pair<std::string, PathPoint>> named;  // empty unless asked for
   std::size_t size() const { return s.size(); }
   PathPoint point(std::size_t i) const {

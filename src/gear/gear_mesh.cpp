@@ -22,7 +22,8 @@ void MeshSettings::validate() const {
     if (modification[g].any() && load_sharing != LoadSharing::compatibility)
       throw core::KeyedError(prefix + (modification[g].tip_design != ReliefDesign::given ? "tip_design" : "tip.amount"),
                              "profile modifications act through load_sharing = \"compatibility\"; the load sharing "
-                             "is " + std::string(to_string(load_sharing)));
+                             "is " +
+                                 std::string(to_string(load_sharing)));
   }
 }
 

@@ -21,8 +21,8 @@ namespace geartrib::gear {
 // compatibility sharing) each gear's profile modifications and the Hertzian approach.
 struct MeshSettings {
   LoadSharing load_sharing = LoadSharing::iso;
-  int positions = 64;        // samples of one base pitch of pinion rotation
-  bool plane_strain = true;  // tooth beam in plane strain (wide face) or plane stress
+  int positions = 64;                   // samples of one base pitch of pinion rotation
+  bool plane_strain = true;             // tooth beam in plane strain (wide face) or plane stress
   ProfileModification modification[2];  // pinion, wheel; only the compatibility sharing reads them
   HertzApproach hertz_approach = HertzApproach::weber_banaschek;
   // throws core::KeyedError naming the field ("modification[0].tip.amount"); modifications under

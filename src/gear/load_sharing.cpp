@@ -7,9 +7,8 @@
 namespace geartrib::gear {
 
 namespace {
-constexpr NamedChoice<LoadSharing> kLoadSharingNames[] = {{LoadSharing::iso, "iso"},
-                                                          {LoadSharing::stiffness, "stiffness"},
-                                                          {LoadSharing::compatibility, "compatibility"}};
+constexpr NamedChoice<LoadSharing> kLoadSharingNames[] = {
+    {LoadSharing::iso, "iso"}, {LoadSharing::stiffness, "stiffness"}, {LoadSharing::compatibility, "compatibility"}};
 }  // namespace
 
 std::span<const NamedChoice<LoadSharing>> load_sharing_choices() { return kLoadSharingNames; }

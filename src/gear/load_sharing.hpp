@@ -12,8 +12,8 @@
 namespace geartrib::gear {
 
 enum class LoadSharing {
-  iso,        // ISO/TS 6336-22 method B, unmodified spur profiles
-  stiffness,  // in proportion to the tooth-pair stiffness (equal deflection, no profile errors)
+  iso,            // ISO/TS 6336-22 method B, unmodified spur profiles
+  stiffness,      // in proportion to the tooth-pair stiffness (equal deflection, no profile errors)
   compatibility,  // load-deflection compatibility with profile modifications (gear/tooth_contact.hpp)
 };
 std::span<const NamedChoice<LoadSharing>> load_sharing_choices();  // mesh.load_sharing

@@ -68,8 +68,7 @@ MeshInstant MeshAnalysis::at(double s, bool single_side, PairStiffness stiffness
       PairLoad l = pair_load(positions[i], share * normal_force_ / width);
       l.share = share;
       l.separation = contacts[i].separation;
-      if (sol.loads[i] > 0.0)
-        l.stiffness = 1.0 / (contacts[i].compliance + contacts[i].hertz.slope(sol.loads[i]));
+      if (sol.loads[i] > 0.0) l.stiffness = 1.0 / (contacts[i].compliance + contacts[i].hertz.slope(sol.loads[i]));
       m.pairs.push_back(l);
     }
     return m;

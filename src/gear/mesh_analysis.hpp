@@ -39,12 +39,12 @@ struct MeshStiffnessStats {
 
 // The loaded tooth contact over one base pitch (compatibility sharing).
 struct TransmissionErrorStats {
-  double mean = 0.0, min = 0.0, max = 0.0, peak_to_peak = 0.0;  // static transmission error delta [m]
+  double mean = 0.0, min = 0.0, max = 0.0, peak_to_peak = 0.0;            // static transmission error delta [m]
   double stiffness_mean = 0.0, stiffness_min = 0.0, stiffness_max = 0.0;  // effective (tangent) mesh stiffness [N/m]
   double loaded_start = 0.0, loaded_end = 0.0;  // s where a pair begins and ends carrying load [m]
   double effective_contact_ratio = 0.0;         // (loaded_end - loaded_start)/p_b
-  bool contact_lost = false;    // a pair within A..E carries nothing at some position
-  bool hertz_in_range = true;   // every loaded pair's Hertzian approach within its model's range
+  bool contact_lost = false;                    // a pair within A..E carries nothing at some position
+  bool hertz_in_range = true;                   // every loaded pair's Hertzian approach within its model's range
 };
 
 class MeshAnalysis {

@@ -3,8 +3,8 @@
 #include "asperity/cylinder.hpp"
 #include "gear/involute.hpp"
 
-#include <boost/math/tools/roots.hpp>
 #include <fmt/format.h>
+#include <boost/math/tools/roots.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -18,8 +18,8 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr NamedChoice<ReliefShape> kShapeNames[] = {
     {ReliefShape::linear, "linear"}, {ReliefShape::parabolic, "parabolic"}, {ReliefShape::arc, "arc"}};
-constexpr NamedChoice<ReliefDesign> kDesignNames[] = {
-    {ReliefDesign::given, "given"}, {ReliefDesign::long_relief, "long"}};
+constexpr NamedChoice<ReliefDesign> kDesignNames[] = {{ReliefDesign::given, "given"},
+                                                      {ReliefDesign::long_relief, "long"}};
 constexpr NamedChoice<HertzApproach> kApproachNames[] = {{HertzApproach::weber_banaschek, "weber-banaschek"},
                                                          {HertzApproach::palmgren, "palmgren"},
                                                          {HertzApproach::linear, "linear"}};
@@ -32,8 +32,10 @@ double relief_profile(const Relief& r, double x, double length) {
   if (r.amount <= 0.0 || x <= 0.0) return 0.0;
   const double xi = std::min(x / length, 1.0);
   switch (r.shape) {
-    case ReliefShape::linear: return r.amount * xi;
-    case ReliefShape::parabolic: return r.amount * xi * xi;
+    case ReliefShape::linear:
+      return r.amount * xi;
+    case ReliefShape::parabolic:
+      return r.amount * xi * xi;
     case ReliefShape::arc: {
       const double radius = (length * length + r.amount * r.amount) / (2.0 * r.amount);
       const double u = xi * length;
@@ -64,8 +66,6 @@ void Relief::validate() const {
   if (!(length >= 0.0)) throw KeyedError("length", "a relief's roll length must not be negative");
   if (start_diameter > 0.0 && length > 0.0)
     throw KeyedError("length", "give the relief's start as start_diameter or as length, not both");
-  if (amount == 0.0 && (start_diameter > 0.0 || length > 0.0))
-    throw KeyedError("amount", "a relief's start is given without its amount");
   if (amount > 0.0 && start_diameter == 0.0 && length == 0.0)
     throw KeyedError("length", "a relief needs its start: start_diameter or length (roll length from the end)");
 }
@@ -89,8 +89,7 @@ void ProfileModification::validate() const {
     throw core::KeyedError("tip_design", "a designed tip relief sets its own amount and start: remove the given ones");
 }
 
-FlankModification::FlankModification(const SpurPair& pair, int gear, const ProfileModification& m,
-                                     double design_relief)
+FlankModification::FlankModification(const SpurPair& pair, int gear, const ProfileModification& m, double design_relief)
     : m_(m), tip_(m.tip) {
   const GearBody& g = pair.gear(gear);
   const PathOfContact& p = pair.path();
@@ -136,9 +135,10 @@ FlankModification::FlankModification(const SpurPair& pair, int gear, const Profi
   tip_start_ = resolve(tip_, "tip_relief", tip_end_, 1.0);
   root_start_ = resolve(m.root, "root_relief", root_end_, -1.0);
   if (tip_.amount > 0.0 && m.root.amount > 0.0 && root_start_ > tip_start_)
-    throw GeometryError(key + "root_relief." + (m.root.start_diameter > 0.0 ? "start_diameter" : "length"),
-                        fmt::format("the root relief (from diameter {:.6g} mm) overlaps the tip relief (from {:.6g} mm)",
-                                    1e3 * diameter_at(g, root_start_), 1e3 * diameter_at(g, tip_start_)));
+    throw GeometryError(
+        key + "root_relief." + (m.root.start_diameter > 0.0 ? "start_diameter" : "length"),
+        fmt::format("the root relief (from diameter {:.6g} mm) overlaps the tip relief (from {:.6g} mm)",
+                    1e3 * diameter_at(g, root_start_), 1e3 * diameter_at(g, tip_start_)));
 }
 
 double FlankModification::at(double rho) const {
@@ -157,7 +157,8 @@ double FlankModification::at(double rho) const {
 std::pair<double, double> LineContactApproach::approach_and_slope(double force) const {
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   switch (model) {
-    case HertzApproach::linear: return {force > 0.0 ? linear_compliance * force : 0.0, linear_compliance};
+    case HertzApproach::linear:
+      return {force > 0.0 ? linear_compliance * force : 0.0, linear_compliance};
     case HertzApproach::palmgren: {
       if (!(force > 0.0)) return {0.0, kInfinity};
       // 3.84e-5 mm (F/N)^0.9 / (l/mm)^0.8, steel's; other materials by the compliance ratio^0.9.

@@ -8,14 +8,14 @@
 // along the line of action (Harris 1958; Tavakoli & Houser 1986; Velex & Maatar 1996).
 #pragma once
 
+#include "core/chebyshev_interpolant.hpp"
 #include "core/named_choices.hpp"
 #include "gear/spur_pair.hpp"
-#include "core/chebyshev_interpolant.hpp"
 #include "gear/tooth_stiffness.hpp"
 
 #include <span>
-#include <utility>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace geartrib::gear {
@@ -28,13 +28,14 @@ std::span<const NamedChoice<ReliefShape>> relief_shape_choices();
 
 // A tip or root relief: its amount at the profile's end (tip relief: at the tip circle; root
 // relief: at the root form circle d_Ff, where the generated involute starts) and its start, as a
-// diameter or a roll length from that end. Amount 0: none.
+// diameter or a roll length from that end. Amount 0: none (a start given with it is unused, so
+// that a sweep of the amount may begin at 0).
 struct Relief {
   double amount = 0.0;  // C_a or C_f [m], removed normal to the profile (along the line of action)
   ReliefShape shape = ReliefShape::linear;
   double start_diameter = 0.0;  // d_Ca or d_Cf [m]; 0: from `length`
-  double length = 0.0;          // L_Ca or L_Cf: roll length from the profile's end to the start [m]; 0: from the diameter
-  void validate() const;        // throws core::KeyedError naming the field ("amount", "length")
+  double length = 0.0;    // L_Ca or L_Cf: roll length from the profile's end to the start [m]; 0: from the diameter
+  void validate() const;  // throws core::KeyedError naming the field ("amount", "length")
 };
 
 // A tip relief from a design rule instead of given values: the amount ISO/TS 6336-20 (ISO/TR
@@ -70,7 +71,7 @@ class FlankModification {
   // Throws GeometryError naming the key ("pinion.tip_relief.start_diameter") when a relief starts
   // off the flank or reaches past the active profile's other end.
   FlankModification(const SpurPair& pair, int gear, const ProfileModification& m, double design_relief);
-  double at(double rho) const;  // [m], >= the deviations' share
+  double at(double rho) const;                     // [m], >= the deviations' share
   double tip_start() const { return tip_start_; }  // roll length where the tip relief begins [m]
   double root_start() const { return root_start_; }
   double tip_amount() const { return tip_.amount; }
@@ -103,13 +104,13 @@ std::span<const NamedChoice<HertzApproach>> hertz_approach_choices();  // mesh.h
 // by (E_t,steel/E_t)^0.9 for other materials (then `in_range` is false: Palmgren fitted steel).
 struct LineContactApproach {
   HertzApproach model = HertzApproach::weber_banaschek;
-  double face_width = 0.0;           // l [m]
-  double radius = 0.0;               // equivalent radius of curvature [m]
-  double composite_modulus = 0.0;    // E_t = 1/sum((1 - nu^2)/E) [Pa]
+  double face_width = 0.0;            // l [m]
+  double radius = 0.0;                // equivalent radius of curvature [m]
+  double composite_modulus = 0.0;     // E_t = 1/sum((1 - nu^2)/E) [Pa]
   double youngs_modulus[2] = {0, 0};  // [Pa]
   double poisson_ratio[2] = {0, 0};
-  double depth[2] = {0, 0};          // h_i [m]
-  double linear_compliance = 0.0;    // the linear model's 2/(pi b E_t) [m/N]
+  double depth[2] = {0, 0};        // h_i [m]
+  double linear_compliance = 0.0;  // the linear model's 2/(pi b E_t) [m/N]
   double approach(double force) const { return approach_and_slope(force).first; }
   double slope(double force) const { return approach_and_slope(force).second; }
   std::pair<double, double> approach_and_slope(double force) const;  // [m], [m/N]
@@ -129,10 +130,10 @@ struct PairContact {
 };
 
 struct CompatibilitySolution {
-  double approach = 0.0;          // delta: the static transmission error along the line of action [m]
-  std::vector<double> loads;      // F_j [N], in the order of the pairs
+  double approach = 0.0;           // delta: the static transmission error along the line of action [m]
+  std::vector<double> loads;       // F_j [N], in the order of the pairs
   double tangent_stiffness = 0.0;  // dF_bn/d delta: the loaded pairs' tangent stiffnesses summed [N/m]
-  bool hertz_in_range = true;     // every loaded pair's approach within its model's range
+  bool hertz_in_range = true;      // every loaded pair's approach within its model's range
 };
 
 // delta and the loads for total force F >= 0. At F = 0: delta = min e_j and every load 0.

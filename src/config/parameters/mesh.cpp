@@ -43,13 +43,12 @@ void declare_mesh(ParameterRows& table) {
         .doc(tip ? "Tip relief C_a at the tip circle (ISO 21771), normal to the profile; 0: none"
                  : "Root relief C_f at the root form circle (ISO 21771), normal to the profile; 0: none");
     add(named_choice(
-            k + "shape", gear::relief_shape_choices(), "shape",
-            [relief](auto& c, int g) -> auto& { return relief(c, g).shape; }))
+            k + "shape", gear::relief_shape_choices(),
+            "shape", [relief](auto& c, int g) -> auto& { return relief(c, g).shape; }))
         .field(f + "shape")
         .doc("Shape of the relief over its length: linear, parabolic or a circular arc tangent at its start");
     add(quantity(
-            k + "start_diameter", D::length,
-            [relief](auto& c, int g) -> auto& { return relief(c, g).start_diameter; }))
+            k + "start_diameter", D::length, [relief](auto& c, int g) -> auto& { return relief(c, g).start_diameter; }))
         .range(0.0, kMaxBodyLength)
         .field(f + "start_diameter")
         .doc(tip ? "Diameter d_Ca where the tip relief starts; 0: from length"
