@@ -36,6 +36,20 @@ ProfileModification long_tip_relief(double amount, double length) {
   return m;
 }
 
+// Weber-Banaschek's approach of two steel cylinders' line contact: E 206 GPa, nu 0.3, 80 mm long,
+// R = 15 mm (the seed pair's pitch point); the depths are each test's.
+LineContactApproach steel_line_contact() {
+  LineContactApproach h;
+  h.face_width = 0.08;
+  h.radius = 0.015;
+  h.composite_modulus = 1.0 / (2.0 * (1.0 - 0.09) / 206e9);
+  for (int i = 0; i < 2; ++i) {
+    h.youngs_modulus[i] = 206e9;
+    h.poisson_ratio[i] = 0.3;
+  }
+  return h;
+}
+
 // Pairs with the separations the mesh gives at `positions` and a constant compliance 1/k.
 std::vector<PairContact> constant_stiffness_pairs(const LoadedToothContact& contact,
                                                   const std::vector<double>& positions, double k) {
@@ -128,17 +142,10 @@ TEST(ToothContact, NoReliefWithLinearHertzIsTheStiffnessSharing) {
 // plane-strain axis strain integrated from the surface to depth h. Weber-Banaschek is this
 // integral's limit for a << h; the difference is of order (a/h)^2.
 TEST(ToothContact, WeberBanaschekIsTheHalfPlanesApproachForSmallContacts) {
-  const double e = 206e9, nu = 0.3, width = 0.08, radius = 0.015, force = 1.2e4;
-  LineContactApproach h;
-  h.face_width = width;
-  h.radius = radius;
-  h.composite_modulus = 1.0 / (2.0 * (1.0 - nu * nu) / e);
-  for (int i = 0; i < 2; ++i) {
-    h.youngs_modulus[i] = e;
-    h.poisson_ratio[i] = nu;
-  }
-  const double w = force / width;
-  const double a = std::sqrt(4.0 * w * radius / (kPi * h.composite_modulus));
+  LineContactApproach h = steel_line_contact();
+  const double e = 206e9, nu = 0.3, force = 1.2e4;
+  const double w = force / h.face_width;
+  const double a = std::sqrt(4.0 * w * h.radius / (kPi * h.composite_modulus));
   const double p0 = 2.0 * w / (kPi * a);
   using boost::math::quadrature::gauss_kronrod;
   // Axis stresses at depth z from the pressure p0 sqrt(1 - x^2/a^2) by Flamant's kernel in its
@@ -185,18 +192,11 @@ TEST(ToothContact, WeberBanaschekIsTheHalfPlanesApproachForSmallContacts) {
 // (pi E)) cos(theta) ln r + (A/2)(cos(theta) - theta sin(theta)), A = 2 P (1 + nu)(1 - 2 nu)/(pi E)),
 // so with L_ref = h: WB = BEM - sum (1 + nu_i) w/(pi E_i).
 TEST(ToothContact, WeberBanaschekAgreesWithTheHalfPlaneBoundaryElements) {
-  const double e = 206e9, nu = 0.3, width = 0.08, radius = 0.015, force = 1.2e4;
-  LineContactApproach h;
-  h.face_width = width;
-  h.radius = radius;
-  h.composite_modulus = 1.0 / (2.0 * (1.0 - nu * nu) / e);
-  const double w = force / width;
+  LineContactApproach h = steel_line_contact();
+  const double e = 206e9, nu = 0.3, force = 1.2e4, radius = h.radius;
+  const double w = force / h.face_width;
   const double a = std::sqrt(4.0 * w * radius / (kPi * h.composite_modulus));
-  for (int i = 0; i < 2; ++i) {
-    h.youngs_modulus[i] = e;
-    h.poisson_ratio[i] = nu;
-    h.depth[i] = 30.0 * a;
-  }
+  h.depth[0] = h.depth[1] = 30.0 * a;
   const int n = 2048;
   const contact::HalfPlaneGrid grid{-1.5 * a, 3.0 * a / n, n};
   contact::BemOptions o;

@@ -142,30 +142,30 @@ void cycle_lubricated(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(runs::run_mesh_contact(c, setup().mesh, nullptr, {}, positions));
 }
 // The loaded tooth contact (issue 33: compatibility adds at most 20 % to the default cycle): the
-// default lubricated case, its mesh built in the loop, with the load shared by ISO (0), by the
-// pairs' stiffness (1), by compatibility with gears/m6z30-relief.toml's tip reliefs (2) or
-// without them (3: the same loads as 1 but for the Hertzian approach).
-void cycle_load_sharing(benchmark::State& state) {
+// default lubricated case with the load shared by ISO (0), by the pairs' stiffness (1), by
+// compatibility with gears/m6z30-relief.toml's tip reliefs (2) or without them (3: the same loads
+// as 1 but for the Hertzian approach).
+Case with_load_sharing(int sharing) {
   Case c = setup().c;
-  if (state.range(0) == 1) c.mesh.load_sharing = gear::LoadSharing::stiffness;
-  if (state.range(0) == 3) c.mesh.load_sharing = gear::LoadSharing::compatibility;
-  if (state.range(0) == 2)
+  if (sharing == 1) c.mesh.load_sharing = gear::LoadSharing::stiffness;
+  if (sharing == 3) c.mesh.load_sharing = gear::LoadSharing::compatibility;
+  if (sharing == 2)
     c.mesh =
         io::prepare_case(io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30-relief.toml")).mesh;
+  return c;
+}
+// The whole cycle, its mesh built in the loop.
+void cycle_load_sharing(benchmark::State& state) {
+  const Case c = with_load_sharing(static_cast<int>(state.range(0)));
   for (auto _ : state) {
     const gear::GearMesh mesh = gear::case_mesh(c);
     benchmark::DoNotOptimize(runs::run_mesh_contact(c, mesh, nullptr, {}));
   }
 }
-// The path stage alone under the same sharings (its kinematics and loads over 201 positions, and
-// under compatibility the transmission error over one base pitch): the solve's own cost.
+// The path stage alone (its kinematics and loads over 201 positions, and under compatibility the
+// transmission error over one base pitch): the solve's own cost.
 void path_load_sharing(benchmark::State& state) {
-  Case c = setup().c;
-  if (state.range(0) == 1) c.mesh.load_sharing = gear::LoadSharing::stiffness;
-  if (state.range(0) == 3) c.mesh.load_sharing = gear::LoadSharing::compatibility;
-  if (state.range(0) == 2)
-    c.mesh =
-        io::prepare_case(io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30-relief.toml")).mesh;
+  const Case c = with_load_sharing(static_cast<int>(state.range(0)));
   const gear::GearMesh mesh = gear::case_mesh(c);
   for (auto _ : state) {
     benchmark::DoNotOptimize(contact::path_state(mesh, contact::PathOptions{}));
