@@ -242,7 +242,7 @@ elif [[ -n "$bench" && -x "$bench" ]]; then
   echo "docs-outputs: benchmarks ($bench)" >&2
   # The 2^18-element grids (BEM ~40 s, Hertz ~20 s) and the 4096^2 surface are left out; the
   # BEM errors are still against the 2^18 reference, which the benchmark computes once.
-  "$bench" --benchmark_filter='^(evaluate|side|steady_cycle|surface_statistics|gw_|strip_|cycle|multi_asperity/(4096|16384|65536)|hertz_line_contact/(4096|16384|65536)|self_affine_generation/(256|1024))' \
+  "$bench" --benchmark_filter='^(evaluate|side|steady_cycle|surface_statistics|gw_|strip_|cycle|path_load_sharing|multi_asperity/(4096|16384|65536)|hertz_line_contact/(4096|16384|65536)|self_affine_generation/(256|1024))' \
            --benchmark_min_time=0.1 --benchmark_format=json > bench.json 2> /dev/null || bench_note="the benchmark binary failed"
 else
   bench_note="no geartrib_bench found (it is built with the tests: bash scripts/setup.sh test, or set GEARTRIB_BENCH)"

@@ -2,6 +2,8 @@
 // load from load-deflection compatibility (gear/tooth_contact.hpp).
 #include "contact/half_plane_bem.hpp"
 #include "gear/gear_mesh.hpp"
+#include "gear/mesh_dynamics.hpp"
+#include "solvers/integrators.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -353,4 +355,61 @@ TEST(ToothContact, TeethComplianceInterpolantFollowsTheStiffnessModel) {
   // Measured 6.9e-13 at 25 points (2.7e-9 at 17; a cubic spline of 65 points was 9e-4 off near
   // the tip, where the pinion's compliance rises steeply).
   EXPECT_LT(worst, 1e-11);
+}
+
+// The deviations: crowning and slope over the active profile, and a base pitch mismatch opening
+// the pair ahead.
+TEST(ToothContact, CrowningSlopeAndPitchDeviationsWhereTheyAct) {
+  const SpurPair pair(test::seed_case().gear_pair);
+  const PathOfContact& p = pair.path();
+  ProfileModification m;
+  m.crowning = 4e-6;
+  m.slope_deviation = 6e-6;
+  const FlankModification pinion(pair, 0, m, 0.0);
+  // The pinion's active profile is rho1 in [A, E]: crowning C at both ends, 0 in the middle; the
+  // slope deviation puts material on the tip side: +f/2 at the root end, -f/2 at the tip.
+  EXPECT_NEAR(pinion.at(p.a), 4e-6 + 3e-6, 1e-18);
+  EXPECT_NEAR(pinion.at(p.e), 4e-6 - 3e-6, 1e-18);
+  EXPECT_NEAR(pinion.at(0.5 * (p.a + p.e)), 0.0, 1e-18);
+  Case c = compatibility_case({}, {});
+  c.mesh.modification[0].base_pitch_deviation = 2e-6;
+  c.mesh.modification[1].base_pitch_deviation = 5e-6;
+  const GearMesh mesh = case_mesh(c);
+  const double s = p.a + 0.3 * (p.b - p.a);
+  EXPECT_NEAR(mesh.tooth_contact()->separation(s + p.base_pitch, 1) - mesh.tooth_contact()->separation(s, 0), 3e-6,
+              1e-18);
+}
+
+// Short, zero-length and unreachable-arc reliefs are refused; a designed relief needs a
+// single-contact zone.
+TEST(ToothContact, ReliefsWithoutLengthOrReachAreRefused) {
+  const SpurPair pair(test::seed_case().gear_pair);
+  auto key = [&](const ProfileModification& m) -> std::string {
+    try {
+      FlankModification(pair, 0, m, 5e-6);
+    } catch (const GeometryError& e) {
+      return e.key();
+    }
+    return "";
+  };
+  ProfileModification m;
+  m.tip = {10e-6, ReliefShape::linear, 2.0 * pair.pinion().tip_radius, 0.0};  // starts at the tip
+  EXPECT_EQ(key(m), "pinion.tip_relief.start_diameter");
+  m.tip = {20e-6, ReliefShape::arc, 0.0, 10e-6};  // an arc shorter than its amount
+  EXPECT_EQ(key(m), "pinion.tip_relief.shape");
+  m.tip = {20e-6, ReliefShape::arc, 0.0, 3e-3};
+  EXPECT_EQ(key(m), "");
+}
+
+// A base pitch mismatch in the per-pair dynamics: the deflection follows the pairs' count from
+// one cycle to the next, so the low-speed response is the quasi-static one (no false step).
+TEST(ToothContact, PitchDeviationDynamicsTendToTheQuasiStaticPeak) {
+  Case c = compatibility_case({}, {}, HertzApproach::linear);
+  c.mesh.modification[1].base_pitch_deviation = 5e-6;
+  const GearMesh mesh = case_mesh(c);
+  const MeshDynamics dyn(mesh, dynamics_settings(c));
+  const SteadyCycle s = dyn.steady_cycle(*solvers::make_integrator(DynamicsEngine::cvode), 30.0 * 2.0 * kPi / 60.0);
+  ASSERT_TRUE(s.periodic);
+  // Tolerance: the transients between the steps decay (1e-3 in LowSpeedTendsToTheQuasiStaticResponse).
+  EXPECT_NEAR(s.dynamic_factor_quasi_static, 1.0, 2e-3);
 }

@@ -20,7 +20,7 @@ void MeshSettings::validate() const {
       throw core::KeyedError(prefix + e.key(), e.what());
     }
     if (modification[g].any() && load_sharing != LoadSharing::compatibility)
-      throw core::KeyedError(prefix + (modification[g].tip_design != ReliefDesign::given ? "tip_design" : "tip.amount"),
+      throw core::KeyedError(prefix + modification[g].first_given(),
                              "profile modifications act through load_sharing = \"compatibility\"; the load sharing "
                              "is " +
                                  std::string(to_string(load_sharing)));

@@ -213,6 +213,10 @@ SteadyCycle MeshDynamics::steady_cycle(const OdeIntegrator& integrator, double p
       // Each segment is integrated in its own time; the integrator restarts at the jump.
       c.steps += integrator.integrate(sys, bounds[k], bounds[k + 1], y, times, samples, tol);
     }
+    // Per pair, the pairs are counted from the last to enter: at the cycle's end each moves one up
+    // and its separation by the base pitch mismatch, so the deflection moves with it (the same
+    // contact state in the next cycle's count).
+    if (contact_) y[0] += contact_->flank(1).base_pitch_deviation() - contact_->flank(0).base_pitch_deviation();
     const double change =
         std::max(std::abs(y[0] - start[0]) / x_static, std::abs(y[1] - start[1]) / (omega_n * x_static));
     c.cycles = cycle;

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 
 namespace geartrib::gear {
 
@@ -75,6 +76,16 @@ bool ProfileModification::any() const {
          slope_deviation != 0.0 || base_pitch_deviation != 0.0;
 }
 
+std::string ProfileModification::first_given() const {
+  if (tip.amount > 0.0) return "tip.amount";
+  if (tip_design != ReliefDesign::given) return "tip_design";
+  if (root.amount > 0.0) return "root.amount";
+  if (crowning != 0.0) return "crowning";
+  if (slope_deviation != 0.0) return "slope_deviation";
+  if (base_pitch_deviation != 0.0) return "base_pitch_deviation";
+  return "";
+}
+
 void ProfileModification::validate() const {
   auto check = [](const Relief& r, const char* prefix) {
     try {
@@ -105,9 +116,11 @@ FlankModification::FlankModification(const SpurPair& pair, int gear, const Profi
     tip_.amount = design_relief;
     tip_.start_diameter = 0.0;
     tip_.length = std::max(0.0, active_high_ - single);
-    if (!(tip_.length > 0.0))
+    if (!(p.b < p.d))
       throw GeometryError(key + "tip_relief.design",
-                          "the pair has no single-contact zone to start a designed relief (contact ratio >= 2)");
+                          fmt::format("the pair has no single-contact zone to start a designed relief (contact ratio "
+                                      "{:.4g}, at least 2): give the relief's amount and start",
+                                      p.contact_ratio));
   }
   auto resolve = [&](const Relief& r, const std::string& k, double end, double sign) {
     if (r.amount <= 0.0) return end;
@@ -122,6 +135,17 @@ FlankModification::FlankModification(const SpurPair& pair, int gear, const Profi
                       1e3 * (std::isnan(start) ? r.start_diameter : diameter_at(g, start)), 1e3 * diameter_at(g, form),
                       1e3 * 2.0 * g.tip_radius));
     }
+    // A relief must have a length, and an arc must be longer than its amount (else the circle
+    // tangent at the start cannot reach the amount at the end).
+    const double length = sign * (end - start);
+    if (!(length > 0.0))
+      throw GeometryError(key + k + "." + (r.start_diameter > 0.0 ? "start_diameter" : "length"),
+                          "the relief starts at the end of the profile: it has no length");
+    if (r.shape == ReliefShape::arc && !(length > r.amount))
+      throw GeometryError(key + k + ".shape",
+                          fmt::format("an arc relief of {:.4g} um over {:.4g} um of roll length: the circle tangent at "
+                                      "its start cannot reach the amount; give a longer relief",
+                                      1e6 * r.amount, 1e6 * length));
     // A relief that reaches across the active profile leaves no unmodified flank to carry the load.
     const bool past = sign > 0.0 ? start <= active_low_ + 1e-12 : start >= active_high_ - 1e-12;
     if (past)
@@ -203,13 +227,16 @@ std::pair<double, double> PairContact::load_and_compliance(double y, double gues
   double hi = compliance > 0.0 ? y / compliance : 1.0;
   while (deflection(hi) < y) hi *= 2.0;
   const double start = guess > 0.0 && guess < hi ? guess : hi;
-  std::uintmax_t iterations = 100;
+  const std::uintmax_t limit = 100;
+  std::uintmax_t iterations = limit;
   const double f = boost::math::tools::newton_raphson_iterate(
       [&](double x) {
         const auto [approach, slope] = hertz.approach_and_slope(x);
         return std::make_pair(compliance * x + approach - y, compliance + slope);
       },
       start, 0.0, hi, 50, iterations);
+  if (iterations >= limit)
+    throw std::runtime_error("compatibility: a pair's load did not converge in 100 Newton steps");
   return {f, compliance + hertz.slope(f)};
 }
 
@@ -229,7 +256,10 @@ CompatibilitySolution solve_compatibility(std::span<const PairContact> pairs, do
   // inversion's rounding) descends onto the root, bracketed by [low, high].
   // Each pair's load from the last evaluation starts its next inversion.
   std::vector<double> guess(pairs.size(), 0.0);
-  auto residual = [&](double delta) {
+  // In the approach beyond the first contact, u = delta - low >= 0 (a relative tolerance there
+  // holds whatever the separations' datum).
+  auto residual = [&](double u) {
+    const double delta = low + u;
     double sum = 0.0, slope = 0.0;
     for (std::size_t j = 0; j < pairs.size(); ++j) {
       const auto [f, dy] = pairs[j].load_and_compliance(delta - pairs[j].separation, guess[j]);
@@ -239,8 +269,8 @@ CompatibilitySolution solve_compatibility(std::span<const PairContact> pairs, do
     }
     return std::make_pair(sum - force, slope);
   };
-  double high = low + pairs[first].deflection(force) * (1.0 + 1e-9) + 1e-18;
-  while (residual(high).first < 0.0) high = low + 2.0 * (high - low);
+  double high = pairs[first].deflection(force) * (1.0 + 1e-9) + 1e-18;
+  while (residual(high).first < 0.0) high *= 2.0;
   // Start: every pair loaded, each linearised by its secant at an equal share of F.
   double inverse_sum = 0.0, weighted = 0.0;
   const double share = force / static_cast<double>(pairs.size());
@@ -249,9 +279,11 @@ CompatibilitySolution solve_compatibility(std::span<const PairContact> pairs, do
     inverse_sum += 1.0 / secant;
     weighted += p.separation / secant;
   }
-  const double start = std::clamp((force + weighted) / inverse_sum, low, high);
-  std::uintmax_t iterations = 100;
-  out.approach = boost::math::tools::newton_raphson_iterate(residual, start, low, high, 50, iterations);
+  const double start = std::clamp((force + weighted) / inverse_sum - low, 0.0, high);
+  const std::uintmax_t limit = 100;
+  std::uintmax_t iterations = limit;
+  out.approach = low + boost::math::tools::newton_raphson_iterate(residual, start, 0.0, high, 50, iterations);
+  if (iterations >= limit) throw std::runtime_error("compatibility: the approach did not converge in 100 Newton steps");
   for (std::size_t j = 0; j < pairs.size(); ++j) {
     const auto [f, dy] = pairs[j].load_and_compliance(out.approach - pairs[j].separation, guess[j]);
     out.loads[j] = f;

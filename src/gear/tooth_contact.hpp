@@ -14,6 +14,7 @@
 #include "gear/tooth_stiffness.hpp"
 
 #include <span>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -60,7 +61,8 @@ struct ProfileModification {
   // enter has its separation changed by k (f_pb,wheel - f_pb,pinion).
   double base_pitch_deviation = 0.0;
   bool any() const;
-  void validate() const;  // throws core::KeyedError naming the field ("tip.amount", "crowning")
+  std::string first_given() const;  // the field of the first modification given ("tip.amount", "crowning"); "" for none
+  void validate() const;            // throws core::KeyedError naming the field ("tip.amount", "crowning")
 };
 
 // The material removed from one gear's flank [m] against its roll length rho (distance from its
