@@ -346,8 +346,10 @@ else:
     add("The mesh cycle's kernels (seed case)", "Summit-height quadrature at one separation (points), the "
         "pressure-separation table (points per sigma), the separation inversion, one strip across the Hertz "
         "contact (uncoupled points, coupled nodes), the highest asperity's stresses, and the whole cycle of "
-        "201 positions (`coupled:0` uncoupled, `coupled:1` coupled).",
-        [("benchmark", name), ("time", tm)], lambda n: n.startswith(("gw_", "strip_", "cycle")))
+        "201 positions (`coupled:0` uncoupled, `coupled:1` coupled); the lubricated cycle and its path stage alone "
+        "under each load sharing (`sharing:` 0 ISO, 1 stiffness, 2 compatibility with gears/m6z30-relief.toml's "
+        "reliefs, 3 compatibility without them).",
+        [("benchmark", name), ("time", tm)], lambda n: n.startswith(("gw_", "strip_", "cycle", "path_load_sharing")))
     add("Boundary elements: the grid's trade (HLH study, h_m = 2 delta_pc, 0.5 um, 6 delta_pc)",
         "Complementarity error 1e-10. Errors: the largest per-asperity load and contact-width difference "
         "from the 2^18-element grid.",
