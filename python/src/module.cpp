@@ -167,6 +167,7 @@ py::dict result_dict(const contact::MeshContactResult& r) {
   add_summary(d, contact::surface_summary(r));
   py::dict path;
   add_summary(path, contact::path_summary(r.path));
+  if (r.tooth_contact) add_summary(path, contact::tooth_contact_summary(*r.tooth_contact));
   d["path"] = path;
   py::dict stages;
   for (const auto& st : r.stages) stages[py::str(st.name)] = st.seconds;

@@ -60,6 +60,22 @@ def test_run_equals_the_command_bit_for_bit(tool, tmp_path, changes):
     assert compared > 40  # every group of the lubricated default case was there
 
 
+def test_tooth_contact_summary_equals_the_command(tool, tmp_path):
+    """Under compatibility sharing the run's transmission-error summary (/mesh's attributes) is the
+    module's, and the path's transmission_error_m series is there."""
+    case = "gears/m6z30-relief.toml"
+    tool("run", case, "-q", "-o", tmp_path / "r.h5")
+    result = gt.run(gt.load_case(case), as_dict=True)
+    path = result["attrs"]["path"]
+    with h5py.File(tmp_path / "r.h5") as f:
+        attrs = f["mesh"].attrs
+        for name in ("transmission_error_mean_m", "transmission_error_peak_to_peak_m", "effective_contact_ratio",
+                     "loaded_start_m", "contact_lost"):
+            assert attrs[name] == path[name], name
+        assert np.array_equal(f["mesh/transmission_error_m"][()], result["transmission_error_m"])
+    assert 0.0 < path["transmission_error_peak_to_peak_m"] < path["transmission_error_mean_m"]
+
+
 def test_run_as_xarray_dataset():
     xr = pytest.importorskip("xarray")
     ds = gt.run(positions=21)
