@@ -130,9 +130,8 @@ void prepare_gear_pair(Case& c) {
       add_warning(c, fmt::format("{}: warning: key '{}': {}", location_of(c, w.key).text(), w.key, w.message));
     // The profile modifications must lie on the flanks (a relief off the flank or across it).
     if (c.mesh.load_sharing == gear::LoadSharing::compatibility) {
-      const double line_load = c.operating.pinion_torque / pair.pinion().pitch_radius / c.gear_pair.face_width;
-      for (int g = 0; g < 2; ++g)
-        gear::FlankModification(pair, g, c.mesh.modification[g], gear::iso_effective_relief(pair, line_load));
+      const double design = gear::iso_effective_relief(pair, pair.tangential_line_load(c.operating.pinion_torque));
+      for (int g = 0; g < 2; ++g) gear::FlankModification(pair, g, c.mesh.modification[g], design);
     }
   } catch (const gear::GeometryError& e) {
     if (e.key().find("_relief.") != std::string::npos) throw located_error_as_written(c, e.key(), e.what());

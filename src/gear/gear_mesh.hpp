@@ -70,7 +70,7 @@ class GearMesh {
   // F_bn = T1 / r_b1 [N]
   double normal_force() const { return analysis_.normal_force(); }
   // ISO's tangential line load F_t/b = T1/(r1 b) [N/m].
-  double tangential_line_load() const { return pinion_torque_ / pair_.pinion().pitch_radius / pair_.spec().face_width; }
+  double tangential_line_load() const { return pair_.tangential_line_load(pinion_torque_); }
   // The mean mesh stiffness over `positions` of one base pitch beside ISO's.
   IsoStiffnessComparison iso_comparison(int positions) const;
 

@@ -94,15 +94,21 @@ std::vector<MeshInstant> MeshAnalysis::cycle(int n) const {
   return out;
 }
 
-MeshStiffnessStats MeshAnalysis::stiffness_stats(int n) const {
-  const auto instants = cycle(n);
-  MeshStiffnessStats s{0.0, instants.front().mesh_stiffness, instants.front().mesh_stiffness};
+namespace {
+// Mean, least and largest of one member of a cycle's instants (in MeshStiffnessStats' three fields).
+MeshStiffnessStats range_over(const std::vector<MeshInstant>& instants, double MeshInstant::*value) {
+  MeshStiffnessStats s{0.0, instants.front().*value, instants.front().*value};
   for (const auto& m : instants) {
-    s.mean += m.mesh_stiffness / n;
-    s.min = std::min(s.min, m.mesh_stiffness);
-    s.max = std::max(s.max, m.mesh_stiffness);
+    s.mean += m.*value / static_cast<double>(instants.size());
+    s.min = std::min(s.min, m.*value);
+    s.max = std::max(s.max, m.*value);
   }
   return s;
+}
+}  // namespace
+
+MeshStiffnessStats MeshAnalysis::stiffness_stats(int n) const {
+  return range_over(cycle(n), &MeshInstant::mesh_stiffness);
 }
 
 TransmissionErrorStats MeshAnalysis::transmission_error_stats(int n) const {
@@ -110,28 +116,20 @@ TransmissionErrorStats MeshAnalysis::transmission_error_stats(int n) const {
     throw std::logic_error("the transmission error needs the compatibility load sharing");
   const auto instants = cycle(n);
   TransmissionErrorStats t;
-  t.min = t.max = instants.front().transmission_error;
-  t.stiffness_min = t.stiffness_max = instants.front().mesh_stiffness;
-  for (const MeshInstant& m : instants) {
-    t.mean += m.transmission_error / n;
-    t.min = std::min(t.min, m.transmission_error);
-    t.max = std::max(t.max, m.transmission_error);
-    t.stiffness_mean += m.mesh_stiffness / n;
-    t.stiffness_min = std::min(t.stiffness_min, m.mesh_stiffness);
-    t.stiffness_max = std::max(t.stiffness_max, m.mesh_stiffness);
-    t.hertz_in_range = t.hertz_in_range && m.hertz_in_range;
-  }
-  t.peak_to_peak = t.max - t.min;
+  const MeshStiffnessStats error = range_over(instants, &MeshInstant::transmission_error);
+  const MeshStiffnessStats stiffness = range_over(instants, &MeshInstant::mesh_stiffness);
+  t.mean = error.mean, t.min = error.min, t.max = error.max, t.peak_to_peak = error.max - error.min;
+  t.stiffness_mean = stiffness.mean, t.stiffness_min = stiffness.min, t.stiffness_max = stiffness.max;
+  for (const MeshInstant& m : instants) t.hertz_in_range = t.hertz_in_range && m.hertz_in_range;
   // Where the tracked pair carries load: from each end of the path inwards to its first loaded
   // position, then bisected (its share rises from 0 where its separation meets the approach).
   const PathOfContact& p = pair_.path();
   auto loaded = [&](double s) { return at(s).pair_at(s).share > 0.0; };
   auto edge = [&](double from, double to) {
     if (loaded(from)) return from;
-    const int steps = n;
     double outside = from, inside = to;
-    for (int i = 1; i <= steps; ++i) {
-      const double s = from + (to - from) * i / steps;
+    for (int i = 1; i <= n; ++i) {
+      const double s = from + (to - from) * i / n;
       if (loaded(s)) {
         inside = s;
         break;

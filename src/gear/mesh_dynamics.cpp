@@ -74,19 +74,6 @@ MeshDynamics::MeshDynamics(const GearMesh& mesh, const DynamicsSettings& setting
   damping_ = 2.0 * settings_.damping_ratio * std::sqrt(mean_stiffness_ * mass_);
   backlash_ = settings_.backlash > 0.0 ? settings_.backlash : std::numeric_limits<double>::infinity();
   contact_ = mesh.tooth_contact();
-  if (contact_) {
-    // One pair's stiffness along A..E, smooth there: 257 samples, a cubic B-spline.
-    const int n = 257;
-    const double h = p.length / (n - 1);
-    std::vector<double> k(n);
-    for (int i = 0; i < n; ++i) k[static_cast<std::size_t>(i)] = mesh.stiffness().pair(p.a + i * h).stiffness;
-    pair_stiffness_.emplace(k.begin(), k.end(), p.a, h);
-  }
-}
-
-double MeshDynamics::pair_stiffness_at(double s) const {
-  const PathOfContact& p = mesh_.pair().path();
-  return (*pair_stiffness_)(std::clamp(s, p.a, p.e));
 }
 
 std::vector<double> MeshDynamics::positions(double u) const {
@@ -112,7 +99,7 @@ double MeshDynamics::elastic_force(double x, double u) const {
   double f = 0.0;
   int j = 0;
   for (double s = p.a + u; s <= p.e + 1e-12 * p.line_length; s += p.base_pitch, ++j)
-    f += pair_stiffness_at(s) * std::max(0.0, x - contact_->separation(s, j));
+    f += contact_->linear_stiffness(s) * std::max(0.0, x - contact_->separation(s, j));
   if (x <= -backlash_) f += stiffness(u) * (x + backlash_);  // the back flanks: unmodified
   return f;
 }
@@ -134,7 +121,7 @@ double MeshDynamics::quasi_static_peak() const {
     const std::vector<double> entry = positions(0.0);
     if (entry.size() >= 2) {
       const double x0 = linear_solve(entry, 1).approach;
-      at_d = force + pair_stiffness_at(entry[0]) * std::max(0.0, x0 - contact_->separation(entry[0], 0));
+      at_d = force + contact_->linear_stiffness(entry[0]) * std::max(0.0, x0 - contact_->separation(entry[0], 0));
     }
     // Exit at E (u = B - A): the leaving pair's static load returns with the overshoot.
     const PathOfContact& p = mesh_.pair().path();
@@ -273,7 +260,7 @@ double MeshDynamics::pair_force(const SteadyCycle& cycle, double s) const {
   // Per pair: its elastic force's part of the mesh's (the damping shared alike).
   const double deflection = (1.0 - t) * cycle.deflection[i] + t * cycle.deflection[j];
   const int k = static_cast<int>(std::floor((s - p.a) / p.base_pitch + 1e-12));
-  const double own = pair_stiffness_at(s) * std::max(0.0, deflection - contact_->separation(s, k));
+  const double own = contact_->linear_stiffness(s) * std::max(0.0, deflection - contact_->separation(s, k));
   const double all = elastic_force(deflection, u);
   return all > 0.0 ? own / all * mesh_force : 0.0;
 }

@@ -16,7 +16,6 @@
 
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 
-#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -111,11 +110,9 @@ class MeshDynamics {
   double split_ = 0.0;  // u where the second pair leaves (B - A)
   std::vector<boost::math::interpolators::cardinal_cubic_b_spline<double>> segments_;
   std::vector<double> segment_start_, segment_end_;
-  // Per-pair contact (compatibility sharing): the pair stiffness along A..E and the separations.
+  // Per-pair contact (compatibility sharing): each pair's linear stiffness and separation.
   const LoadedToothContact* contact_ = nullptr;
-  std::optional<boost::math::interpolators::cardinal_cubic_b_spline<double>> pair_stiffness_;
   double backlash_ = 0.0;
-  double pair_stiffness_at(double s) const;
   // The pairs at offset u: positions A + u + j p_b within [A, E], j = 0 the last to enter.
   std::vector<double> positions(double u) const;
   // The static solve with the dynamics' linear pairs at `positions` (a subset from `first`).

@@ -109,6 +109,10 @@ class SpurPair {
   const std::vector<GeometryWarning>& warnings() const { return warnings_; }
 
   FlankGeometry flank(double s) const;
+  // ISO's tangential line load F_t/b = T1/(r1 b) at pinion torque T1 [N m] -> [N/m].
+  double tangential_line_load(double pinion_torque) const {
+    return pinion_torque / gear_[0].pitch_radius / spec_.face_width;
+  }
   FlankKinematics kinematics(double s, double pinion_speed) const;
   // Roll angle of gear i's involute at the contact point s: rho_i / r_bi [rad].
   double roll_angle(int i, double s) const;

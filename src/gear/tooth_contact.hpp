@@ -160,6 +160,9 @@ class LoadedToothContact {
   // points along the path (smooth there; within 1e-8 of the model, tests/test_tooth_contact.cpp).
   double teeth_compliance(double s) const;
   static constexpr int kCompliancePoints = 25;
+  // The pair's linear stiffness at s [N/m]: teeth and the stiffness model's constant Hertz term
+  // (what the mesh dynamics integrates per pair).
+  double linear_stiffness(double s) const { return 1.0 / (teeth_compliance(s) + hertz_compliance_); }
 
  private:
   const SpurPair& pair_;
