@@ -11,7 +11,8 @@ columns between "point" and "status" (the table's layout). An axis with one valu
 --at AXIS=VALUE (the value as in the table: SI, or the text). A zipped sweep (its points not a grid)
 is one line along x.
 
-Quantities (--quantity, repeatable or comma-separated; one row of panels each): by default the
+Quantities (--quantity, repeatable or comma-separated; one row of panels each; "ratings" stands for
+a rated sweep's safety factors S_H_min, S_F_min, S_S_min, lambda_GF_min): by default the
 mesh-level values of a lubricated sweep that are present (mesh_power_loss_W,
 tooth_friction_efficiency, gear_loss_factor_path, bulk_temperature_K, iso_scuffing_safety,
 scuffing_safety, min_iso_lambda_gf), else hertz_p0_Pa_max, real_area_ratio_min and
@@ -34,6 +35,7 @@ from matplotlib.lines import Line2D  # noqa: E402
 MESH_LEVEL = ["mesh_power_loss_W", "tooth_friction_efficiency", "gear_loss_factor_path", "bulk_temperature_K",
               "iso_scuffing_safety", "scuffing_safety", "min_iso_lambda_gf"]
 DRY = ["hertz_p0_Pa_max", "real_area_ratio_min", "plastic_area_fraction_max"]
+RATING = ["S_H_min", "S_F_min", "S_S_min", "lambda_GF_min"]  # a rated sweep's safety factors ([rating] methods)
 MAX_PANELS = 8  # values of the third axis, one column of panels each
 
 
@@ -279,13 +281,15 @@ def main(argv):
     p.add_argument("table", help="the sweep's HDF5 file (-o) or CSV (--csv)")
     p.add_argument("-o", "--output", required=True)
     p.add_argument("--quantity", action="append", default=[],
-                   help="a column to plot (repeatable, or comma-separated); default: the mesh-level values")
+                   help="a column to plot (repeatable, or comma-separated; 'ratings': the safety factors); "
+                   "default: the mesh-level values")
     p.add_argument("--x", help="the axis along x (default: the first that varies)")
     p.add_argument("--lines", help="the axis with one line per value (default: the second that varies)")
     p.add_argument("--at", action="append", default=[], help="AXIS=VALUE: hold an axis at one value")
     p.add_argument("--logx", action="store_true", help="logarithmic x axis")
     a = p.parse_args(argv[1:])
     quantities = [q for item in a.quantity for q in item.split(",") if q]
+    quantities = [r for q in quantities for r in (RATING if q == "ratings" else [q])]
     try:
         fig = plot(a.table, quantities, a.x, a.lines, a.at, a.logx)
     except PlotError as e:

@@ -64,6 +64,7 @@ constexpr std::pair<std::string_view, AddCommand> kCommands[] = {
     {"run", geartrib::app::add_run_command},
     {"case", geartrib::app::add_case_command},
     {"kinematics", geartrib::app::add_kinematics_command},
+    {"rate", geartrib::app::add_rate_command},
     {"multi-asperity", geartrib::app::add_multi_asperity_command},
     {"ehl", geartrib::app::add_ehl_command},
     {"dynamics", geartrib::app::add_dynamics_command},

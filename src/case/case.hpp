@@ -15,6 +15,7 @@
 #include "gear/spur_pair.hpp"
 #include "lubrication/lubrication_settings.hpp"
 #include "material/material.hpp"
+#include "rating/load_capacity.hpp"
 #include "surface/flank_spec.hpp"
 
 #include <string>
@@ -51,6 +52,13 @@ struct ResolvedParameter {
   std::string written;
 };
 
+// The ratings a run computes ([rating] methods) and how (rating/load_capacity.hpp, rating/scuffing.hpp).
+struct RatingRequest {
+  bool pitting = false, bending = false, scuffing = false, micropitting = false;
+  bool any() const { return pitting || bending || scuffing || micropitting; }
+  rating::RatingSettings settings;
+};
+
 struct Case {
   std::string title;
   std::string source;
@@ -65,6 +73,7 @@ struct Case {
   surface::RoughnessSettings roughness;
   ContactSettings contact;
   RunningInSettings running_in;
+  RatingRequest rating;
   asperity::AsperitySettings asperity;
   std::string directory;                      // the folder the case's relative file names are taken from
   std::string source_text;                    // the case file as read, with the --set changes (stored with the results)

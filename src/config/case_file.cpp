@@ -115,6 +115,29 @@ Material load_material(const std::filesystem::path& file, std::vector<std::strin
     m.hardness = kTaborHardnessRatio * m.yield_strength;
   }
   require(r, "hardness", m.hardness >= m.yield_strength, "hardness must be at least the yield strength");
+  // [rating]: the ISO 6336-5 data of a rated gear (optional: a run that rates needs it).
+  if (r.has("rating")) {
+    rating::MaterialGrade& g = m.grade;
+    try {
+      g.group = choice_from_name(rating::material_group_choices(), r.string("rating.group"), "ISO 6336-5 material group");
+    } catch (const std::invalid_argument& e) {
+      r.fail("rating.group", e.what());
+    }
+    try {
+      g.quality = choice_from_name(rating::material_quality_choices(), r.string("rating.quality"), "ISO 6336-5 quality");
+    } catch (const std::invalid_argument& e) {
+      r.fail("rating.quality", e.what());
+    }
+    g.surface_hardness = r.number("rating.surface_hardness_HV");
+    require(r, "rating.surface_hardness_HV", g.surface_hardness >= 50.0 && g.surface_hardness <= 1200.0,
+            "must lie in [50, 1200] HV");
+    if (r.has("rating.contact_limit"))
+      g.contact_limit = bounded_quantity(r, "rating.contact_limit", Dimension::pressure, 1e8, 3e9);
+    if (r.has("rating.bending_limit"))
+      g.bending_limit = bounded_quantity(r, "rating.bending_limit", Dimension::pressure, 5e7, 1.5e9);
+    g.source = r.string("rating.source");
+    g.assumed = r.boolean("rating.assumed");
+  }
   r.check_all_used();
   m.validate();
   return m;
@@ -151,6 +174,18 @@ lubrication::Lubricant load_lubricant(const std::filesystem::path& file) {
     l.iso_lubricant_factor = r.number("iso_lubricant_factor");
     require(r, "iso_lubricant_factor", l.iso_lubricant_factor > 0.0 && l.iso_lubricant_factor <= 2.0,
             "must lie in (0, 2] (ISO/TS 6336-20 tabulates 0.6 to 1.5)");
+  }
+  // FZG ratings: the failure load stages of A/8.3/90 (scuffing) and GF-C/8.3/90 (micropitting).
+  for (const char* key : {"fzg_scuffing_stage", "fzg_micropitting_stage"}) {
+    if (!r.has(key)) continue;
+    const double stage = r.number(key);
+    require(r, key, stage == std::floor(stage) && stage >= kFzgMinLoadStage && stage <= kFzgMaxLoadStage,
+            fmt::format("an FZG load stage is an integer in [{}, {}]", kFzgMinLoadStage, kFzgMaxLoadStage));
+    (std::string(key) == "fzg_scuffing_stage" ? l.fzg_scuffing_stage : l.fzg_micropitting_stage) = static_cast<int>(stage);
+  }
+  if (l.fzg_scuffing_stage > 0 || l.fzg_micropitting_stage > 0) {
+    l.fzg_source = r.string("fzg_source");
+    l.fzg_assumed = r.boolean("fzg_assumed");
   }
   // Measured traction curves: [traction_curves.NAME] tables, each at one Hertz pressure, oil
   // temperature and entrainment speed.

@@ -38,6 +38,7 @@ std::vector<Parameter> build_table() {
   declare_roughness(table);
   declare_contact(table);
   declare_asperity(table);
+  declare_rating(table);
   return table.take();
 }
 

@@ -12,6 +12,7 @@
 #include "gear/gear_mesh.hpp"
 #include "gear/mesh_dynamics.hpp"
 #include "lubrication/lubrication_settings.hpp"
+#include "rating/load_capacity.hpp"
 #include "surface/rough_surface.hpp"
 
 #include <array>
@@ -188,6 +189,7 @@ struct MeshContactResult {
   double plasticity_index = 0.0;
   gear::PathOfContact path;
   std::optional<gear::TransmissionErrorStats> tooth_contact;  // compatibility sharing: over one base pitch
+  std::optional<rating::RatingResult> rating;                 // the case's [rating] methods (runs/case_rating.hpp)
   std::string asperity_model;
   std::string fidelity;
   // Findings that make a result doubtful (e.g. a real area larger than the nominal one).

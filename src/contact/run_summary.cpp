@@ -3,6 +3,7 @@
 #include "contact/series_columns.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace geartrib::contact {
 
@@ -37,6 +38,29 @@ Summary tooth_contact_summary(const gear::TransmissionErrorStats& t) {
            {"effective_contact_ratio", "1", t.effective_contact_ratio},
            {"contact_lost", "1", flag(t.contact_lost)},
            {"hertz_approach_in_range", "1", flag(t.hertz_in_range)}}};
+}
+
+Summary rating_summary(const rating::RatingResult& r) {
+  std::string methods;
+  for (const auto& m : r.methods) methods += (methods.empty() ? "" : ",") + m;
+  // The same names in the same order whatever was rated (a sweep's columns line up over its
+  // points): NaN where a method did not run or found nothing to rate against.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  auto rated = [&](double v) { return v > 0.0 ? v : nan; };
+  const double s_b = rated(r.flash_scuffing_safety), s_int = rated(r.integral_scuffing_safety);
+  return {{{"methods", methods}},
+          {{"S_H_min", "1", rated(std::min(r.pitting_safety[0], r.pitting_safety[1]))},
+           {"S_H_pinion", "1", rated(r.pitting_safety[0])},
+           {"S_H_wheel", "1", rated(r.pitting_safety[1])},
+           {"S_F_min", "1", rated(std::min(r.bending_safety[0], r.bending_safety[1]))},
+           {"S_F_pinion", "1", rated(r.bending_safety[0])},
+           {"S_F_wheel", "1", rated(r.bending_safety[1])},
+           {"S_S_min", "1", std::fmin(s_b, s_int)},  // fmin: the other where one is NaN
+           {"S_B", "1", s_b},
+           {"S_intS", "1", s_int},
+           {"lambda_GF_min", "1", rated(r.min_lambda)},
+           {"assumed_inputs", "1", flag(r.assumed_any())},
+           {"findings", "1", static_cast<double>(r.findings.size())}}};
 }
 
 Summary surface_summary(const MeshContactResult& r) {

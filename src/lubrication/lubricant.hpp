@@ -86,6 +86,12 @@ struct Lubricant {
   double min_temperature = 253.15;            // range of the data [K]
   double max_temperature = 423.15;
   double iso_lubricant_factor = 0.0;  // X_L given in the file (an ester's); 0: the base stock's tabulated value
+  // FZG ratings of the oil: the failure load stage in the scuffing test A/8.3/90 (ISO 14635-1) and in
+  // the micropitting test GF-C/8.3/90 (FVA 54/7); 0: not rated. Their provenance and whether assumed.
+  int fzg_scuffing_stage = 0;
+  int fzg_micropitting_stage = 0;
+  std::string fzg_source;
+  bool fzg_assumed = false;
   TractionCurves traction;            // measured traction curves (optional)
 
   bool fixed() const { return fixed_dynamic_viscosity > 0.0; }

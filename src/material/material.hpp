@@ -1,6 +1,8 @@
 // Material data of one gear body, SI units throughout.
 #pragma once
 
+#include "rating/iso6336_materials.hpp"
+
 #include <string>
 #include <vector>
 
@@ -23,6 +25,7 @@ struct Material {
   double thermal_conductivity = 0.0;          // lambda [W/(m K)]; 0: not given (flash temperature needs it)
   double specific_heat = 0.0;                 // c [J/(kg K)]; 0: not given
   std::vector<FlowPoint> flow_curve;          // plastic part of the stress-strain curve (seed section 6)
+  rating::MaterialGrade grade;                // ISO 6336-5 data of the file's [rating] table; group none: not rated
 
   // Throws std::invalid_argument naming the first rule broken (positive moduli, 0 < nu < 0.5,
   // H >= S_y, flow curve starting at zero strain with strictly increasing strain and

@@ -44,6 +44,33 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
       summary_attributes(validity, contact::validity_summary(r));
     }
   }
+  if (r.rating) {
+    // The ratings: one row per factor (symbol, gear, value in SI with its unit, clause, assumed,
+    // note), the verdict as attributes, the findings.
+    Handle group(H5Gcreate2(file, "/rating", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /rating");
+    std::vector<std::string> symbol, gear, unit, clause, note, findings = r.rating->findings;
+    std::vector<double> value, assumed;
+    for (const auto& f : r.rating->factors) {
+      symbol.push_back(f.symbol);
+      gear.emplace_back(f.gear == 0 ? "pinion" : f.gear == 1 ? "wheel" : "pair");
+      value.push_back(f.value);
+      unit.push_back(f.unit);
+      clause.push_back(f.clause);
+      note.push_back(f.note);
+      assumed.push_back(f.assumed ? 1.0 : 0.0);
+    }
+    hdf5::strings_dataset(group, "symbol", symbol);
+    hdf5::strings_dataset(group, "gear", gear);
+    hdf5::number_dataset(group, "value", value, "SI (see unit)");
+    hdf5::strings_dataset(group, "unit", unit);
+    hdf5::strings_dataset(group, "clause", clause);
+    hdf5::number_dataset(group, "assumed", assumed, "1");
+    hdf5::strings_dataset(group, "note", note);
+    hdf5::strings_dataset(group, "findings", findings);
+    contact::Summary verdict = contact::rating_summary(*r.rating);  // not rated (NaN): no attribute
+    std::erase_if(verdict.values, [](const contact::SummaryValue& v) { return std::isnan(v.value); });
+    summary_attributes(group, verdict);
+  }
   if (!r.pressure_profiles.empty()) {
     // Deterministic: the pressure across the strip at the positions kept (one x for all).
     Handle group(H5Gcreate2(file, "/contact/pressure", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,

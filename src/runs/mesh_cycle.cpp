@@ -12,6 +12,7 @@
 #include "contact/mesh_contact.hpp"
 #include "contact/position_threads.hpp"
 #include "contact/run_summary.hpp"
+#include "runs/case_rating.hpp"
 #include "core/keyed_error.hpp"
 #include "gear/gear_mesh.hpp"
 #include "gear/mesh_dynamics.hpp"
@@ -566,6 +567,8 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
   };
   summary("/mesh", contact::path_summary(r.path));
   if (r.tooth_contact) summary("/mesh", contact::tooth_contact_summary(*r.tooth_contact));
+  if (r.rating)  // its summary holds NaN for what was not rated; every factor is a number
+    for (const auto& f : r.rating->factors) scalar("/rating/value of " + f.symbol, f.value);
   summary("/meta", contact::surface_summary(r));
   summary("/contact/validity", contact::validity_summary(r));
   if (r.mixed_ehl_summary) summary("/mixed_ehl", contact::mixed_ehl_summary(*r.mixed_ehl_summary));
@@ -684,6 +687,13 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
           100.0 * f.rolled_off_fraction, f.gear, f.patch, um(f.profile_rq), um(f.patch_rq)));
   }
   r.synthesis = std::move(synthesis);
+  if (c.rating.any()) {
+    try {
+      r.rating = rate_case(c, mesh, r);
+    } catch (const core::KeyedError& e) {
+      throw io::refusal_error(c, e);
+    }
+  }
   check_finite_outputs(r);
   // A run whose outputs rest on the mesh stiffness is warned, first, when it leaves ISO's band.
   const bool uses_stiffness = c.contact.mesh_stiffness || mesh.analysis().method() == gear::LoadSharing::stiffness ||

@@ -24,6 +24,8 @@ SweepPoint run_sweep_point(const CaseLoader& load, const std::vector<io::CaseCha
     p.verdict = r.verdict;
     p.flag_counts = contact::validity_summary(r).values;
     if (r.tooth_contact) p.summary = contact::tooth_contact_summary(*r.tooth_contact).values;
+    if (r.rating)
+      for (auto& v : contact::rating_summary(*r.rating).values) p.summary.push_back(std::move(v));
     if (r.lubrication_summary)
       for (auto& v : contact::lubrication_summary(*r.lubrication_summary).values) p.summary.push_back(std::move(v));
     for (const auto* group : r.groups())

@@ -178,5 +178,6 @@ void declare_mesh(ParameterRows& table);         // mesh.*, dynamics.*
 void declare_roughness(ParameterRows& table);    // roughness.*: both flanks' height distribution
 void declare_contact(ParameterRows& table);      // contact.*, running_in.*
 void declare_asperity(ParameterRows& table);     // asperity.*
+void declare_rating(ParameterRows& table);       // rating.*, {gear}.flank_rz, {gear}.root_rz
 
 }  // namespace geartrib::io::parameters
