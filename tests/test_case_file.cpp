@@ -730,3 +730,33 @@ TEST_F(BadInput, ProfileModificationsRefusedAtTheirKeyAndLine) {
   EXPECT_EQ(e.key(), "pinion.tip_relief.start_diameter");
   EXPECT_NE(e.rule().find("off the flank"), std::string::npos) << e.rule();
 }
+
+TEST_F(BadInput, RatingDataRefusedAtTheirKeyAndLine) {
+  // An unknown ISO 6336-5 quality in the material file.
+  edit("materials/steel-45.toml", "quality = \"MQ\"", "quality = \"MX\"");
+  io::InputError e = load_error();
+  EXPECT_EQ(e.key(), "rating.quality");
+  EXPECT_EQ(e.line(), line_of("materials/steel-45.toml", "quality = \"MX\""));
+  EXPECT_NE(e.file().find("steel-45.toml"), std::string::npos) << e.file();
+  EXPECT_NE(e.rule().find("MX"), std::string::npos) << e.rule();
+  // An FZG stage outside 1..14 in the lubricant file.
+  SetUp();
+  edit("lubricants/mineral-vg220.toml", "fzg_scuffing_stage = 12", "fzg_scuffing_stage = 15");
+  e = load_error();
+  EXPECT_EQ(e.key(), "fzg_scuffing_stage");
+  EXPECT_EQ(e.line(), line_of("lubricants/mineral-vg220.toml", "fzg_scuffing_stage = 15"));
+  EXPECT_NE(e.rule().find("[1, 14]"), std::string::npos) << e.rule();
+  // A K factor below 1 in the case.
+  SetUp();
+  edit("gears/m6z30.toml", "application_factor = 1.0", "application_factor = 0.8");
+  e = load_error();
+  EXPECT_EQ(e.key(), "rating.application_factor");
+  EXPECT_EQ(e.line(), line_of("gears/m6z30.toml", "application_factor = 0.8"));
+  EXPECT_EQ(e.value(), "0.8");
+  SetUp();
+  std::ofstream(dir_ / "gears/m6z30.toml", std::ios::app) << "\n";
+  edit("gears/m6z30.toml", "accuracy_grade = 6", "accuracy_grade = 6\nface_load_factor = 0.9");
+  e = load_error();
+  EXPECT_EQ(e.key(), "rating.face_load_factor");
+  EXPECT_NE(e.rule().find("[1, 10]"), std::string::npos) << e.rule();
+}

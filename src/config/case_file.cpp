@@ -187,6 +187,12 @@ lubrication::Lubricant load_lubricant(const std::filesystem::path& file) {
     l.fzg_source = r.string("fzg_source");
     l.fzg_assumed = r.boolean("fzg_assumed");
   }
+  if (r.has("permissible_lambda")) {
+    l.permissible_lambda = r.number("permissible_lambda");
+    require(r, "permissible_lambda", l.permissible_lambda > 0.0 && l.permissible_lambda <= 10.0,
+            "lambda_GFP must lie in (0, 10]");
+    l.permissible_lambda_source = r.string("permissible_lambda_source");
+  }
   // Measured traction curves: [traction_curves.NAME] tables, each at one Hertz pressure, oil
   // temperature and entrainment speed.
   std::vector<lubrication::TractionCurve> curves;
@@ -725,6 +731,7 @@ Case load_case_from(TomlReader& r, const std::vector<CaseChange>& changes, unsig
   check_rules(r, "dynamics.", [&] { c.dynamics.validate(); });
   check_rules(r, "asperity.", [&] { c.asperity.validate(); });
   check_rules(r, "contact.", [&] { c.contact.validate(); });
+  check_rules(r, "rating.settings.", [&] { c.rating.settings.validate(); });
 
   // The flanks, when asked for (or given): one roughness form each, the same on both (a measured
   // flank's form, areal summits or a profile trace's moments, is its file's: io::prepare_case).

@@ -59,6 +59,7 @@ Summary rating_summary(const rating::RatingResult& r) {
            {"S_B", "1", s_b},
            {"S_intS", "1", s_int},
            {"lambda_GF_min", "1", rated(r.min_lambda)},
+           {"S_lambda", "1", rated(r.micropitting_safety)},
            {"assumed_inputs", "1", flag(r.assumed_any())},
            {"findings", "1", static_cast<double>(r.findings.size())}}};
 }

@@ -35,7 +35,7 @@ Summary path_summary(const gear::PathOfContact& p);
 Summary tooth_contact_summary(const gear::TransmissionErrorStats& t);
 // The ratings' verdict (/rating's attributes, the sweep's columns): methods; S_H_min, S_F_min (the
 // lower gear's), S_H_pinion/_wheel, S_F_pinion/_wheel, S_S_min (the lower of the flash and the
-// integral method's), S_B, S_intS, lambda_GF_min, NaN where not rated (the same names always);
+// integral method's), S_B, S_intS, lambda_GF_min, S_lambda, NaN where not rated (the same names always);
 // assumed_inputs, findings (their count).
 Summary rating_summary(const rating::RatingResult& r);
 // The models run and the equivalent surface: asperity_model, fidelity; the summits' density,

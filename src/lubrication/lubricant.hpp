@@ -92,6 +92,11 @@ struct Lubricant {
   int fzg_micropitting_stage = 0;
   std::string fzg_source;
   bool fzg_assumed = false;
+  // The permissible specific film thickness lambda_GFP of ISO/TS 6336-22 given for this oil (the
+  // supplier's, or read off the standard's informative Annex A figure), with its source; 0: from
+  // fzg_micropitting_stage.
+  double permissible_lambda = 0.0;
+  std::string permissible_lambda_source;
   TractionCurves traction;            // measured traction curves (optional)
 
   bool fixed() const { return fixed_dynamic_viscosity > 0.0; }

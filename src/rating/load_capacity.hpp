@@ -88,6 +88,7 @@ struct RatingResult {
   double flash_scuffing_safety = 0.0;                  // S_B, ISO/TS 6336-20 (0: not rated)
   double integral_scuffing_safety = 0.0;               // S_intS, ISO/TS 6336-21
   double min_lambda = 0.0;                             // lambda_GF,min along the path, ISO/TS 6336-22
+  double micropitting_safety = 0.0;                    // S_lambda = lambda_GF,min/lambda_GFP (0: not rated)
   std::vector<std::string> findings;
   bool assumed_any() const;
 };

@@ -21,6 +21,10 @@ double fzg_a_torque(int stage) { return 3.726 * stage * stage; }
 
 double structural_factor(MaterialGroup) { return 1.0; }
 
+double micropitting_material_factor(MaterialGroup g) {
+  return g == MaterialGroup::case_hardened ? 1.0 : 0.5;
+}
+
 IntegralTemperature iso_integral_temperature(const IntegralTemperatureInputs& in) {
   IntegralTemperature out;
   auto add = [&](std::string symbol, double value, std::string unit, std::string clause, bool assumed = false,

@@ -27,6 +27,13 @@ double fzg_a_torque(int stage);
 // average retained austenite 1.0).
 double structural_factor(MaterialGroup g);
 
+// ISO/TS 6336-22 (ISO/TR 15144-1) method B's permissible film: lambda_GFP = 1.4 W_W lambda_GFT, with
+// lambda_GFT the test gear's least lambda_GF at the oil's GF-C/8.3/90 failure stage and W_W the
+// material factor (case-carburised 1.0, through-hardened 0.5). Recollected from ISO/TR 15144-1:2010,
+// not confirmed in a source (docs/theory/ratings.md).
+double micropitting_material_factor(MaterialGroup g);  // W_W
+inline constexpr double kMicropittingTestFactor = 1.4;
+
 // The integral-temperature method's inputs (SI).
 struct IntegralTemperatureInputs {
   const gear::SpurPair* pair = nullptr;

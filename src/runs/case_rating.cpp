@@ -1,6 +1,8 @@
 #include "runs/case_rating.hpp"
 
+#include "config/fzg_load_stages.hpp"
 #include "core/keyed_error.hpp"
+#include "runs/mesh_cycle.hpp"
 #include "lubrication/flank_temperature.hpp"
 #include "rating/scuffing.hpp"
 #include "surface/rough_surface.hpp"
@@ -11,6 +13,60 @@
 #include <cmath>
 
 namespace geartrib::runs {
+
+namespace {
+
+constexpr double kCelsius = 273.15;
+
+// The FZG micropitting test GF-C/8.3/90 on its type C gear (FVA 54/7; the geometry as
+// gears/fzg-c.toml and validation/fzg-type-c): 8.3 m/s (2175 1/min), 90 degC oil, both flanks ground
+// to Ra 0.5 um, case-carburised 16MnCr5 (materials/16MnCr5.toml's values), the load of failure
+// stage `stage` on the 0.35 m arm; the oil and the lubrication models of the rated case `c`.
+Case fzg_c_test(const Case& c, int stage) {
+  Case t;
+  t.title = fmt::format("FZG GF-C/8.3/90 test gear at failure load stage {}", stage);
+  gear::GearPairSpec& g = t.gear_pair;
+  g.module = 4.5e-3;
+  g.pressure_angle = 20.0 * M_PI / 180.0;
+  g.face_width = 14e-3;
+  g.center_distance = 91.5e-3;
+  g.teeth[0] = 16;
+  g.teeth[1] = 24;
+  g.profile_shift[0] = 0.1817;
+  g.profile_shift[1] = 0.1715;
+  g.tip_diameter[0] = 82.46e-3;
+  g.tip_diameter[1] = 118.36e-3;
+  g.bore_diameter[0] = g.bore_diameter[1] = 30e-3;
+  for (GearSpec* gs : {&t.pinion, &t.wheel}) {
+    Material& m = gs->material;
+    m.name = "16MnCr5, case-carburised (the FZG C test gear)";
+    m.youngs_modulus = 206e9;
+    m.poisson_ratio = 0.3;
+    m.hardness = 6.84e9;
+    m.hardness_rule = "given";
+    m.yield_strength = 2.44e9;
+    m.density = 7850.0;
+    m.thermal_conductivity = 44.0;
+    m.specific_heat = 460.0;
+    gs->flank.roughness.form = surface::FlankRoughness::Form::ra;
+    gs->flank.roughness.ra = 0.5e-6;
+    gs->flank.roughness.summit_radius = 75e-6;
+  }
+  t.roughness.eta_sigma_beta = 0.05;
+  t.contact.positions = 21;
+  t.contact.real_area = t.contact.plastic_fraction = t.contact.asperity_stress = false;
+  t.asperity = c.asperity;
+  t.friction_coefficient = c.friction_coefficient;
+  t.lubrication = c.lubrication;
+  t.lubrication.scuffing_temperature = 0.0;
+  t.operating.pinion_torque = io::fzg_pinion_torque("GF-C/8.3/90", stage).torque;
+  t.operating.pinion_speed = 2175.0 * 2.0 * M_PI / 60.0;
+  t.operating.oil_temperature = kCelsius + 90.0;
+  t.directory = c.directory;
+  return t;
+}
+
+}  // namespace
 
 RatingRequest default_rating_request(const Case& c) {
   RatingRequest r = c.rating;
@@ -87,17 +143,35 @@ rating::RatingResult rate_case(const Case& c, const gear::GearMesh& mesh, const 
             "scuffing: no scuffing temperature (lubrication.scuffing_temperature, or the oil's fzg_scuffing_stage): the "
             "contact and integral temperatures are reported without the safeties S_B and S_intS");
       }
-      // Flash-temperature method: the path's ISO contact temperature (computed at the nominal load,
-      // K factors 1) taken to the rating load: theta_fl ~ mu_m w^0.75 ~ w^0.95 (mu_m ~ w^0.2), the
-      // estimated bulk temperature's rise with it.
+      // Flash-temperature method: the path's ISO flash temperature (computed at the nominal load, K
+      // factors 1) taken to the rating load w_Bt K: theta_fl ~ mu_m X_J w^0.75 with mu_m ~ w^0.2
+      // (ISO/TS 6336-20 eq. 25) and X_J's C_eff ~ w (annex A), position by position; the estimated
+      // bulk temperature's rise with the path mean (eq. 22).
       const double f = std::pow(k_load, 0.95);
       const double t_oil = ls.oil_temperature;
-      const double flash = ls.max_iso_contact_temperature - ls.bulk_temperature;
-      const double bulk = ls.bulk_estimated ? t_oil + f * (ls.bulk_temperature - t_oil) : ls.bulk_temperature;
-      const double theta_b = bulk + f * flash;
+      const contact::Series* s_m = cycle.find("s_m");
+      const contact::Series* flash = cycle.find("iso_flash_temperature_K");
+      lubrication::IsoFlashGeometry geo;
+      geo.gear_ratio = static_cast<double>(pair.gear(1).teeth) / pair.gear(0).teeth;
+      geo.center_distance = pair.center_distance();
+      geo.operating_angle = pair.operating_pressure_angle();
+      geo.reference_angle = pair.spec().pressure_angle;
+      geo.gamma_a = pair.flank(pair.path().a).roll_parameter;
+      geo.gamma_e = pair.flank(pair.path().e).roll_parameter;
+      const double c_eff = ls.iso_effective_relief, c_a = c.mesh.modification[1].tip.amount;
+      std::vector<double> scaled(flash->values.size());
+      for (std::size_t i = 0; i < scaled.size(); ++i) {
+        const double gamma = pair.flank(s_m->values[i]).roll_parameter;
+        scaled[i] = flash->values[i] * f * lubrication::iso_approach_factor(geo, gamma, k_load * c_eff, c_a) /
+                    lubrication::iso_approach_factor(geo, gamma, c_eff, c_a);
+      }
+      const double bulk = ls.bulk_estimated ? t_oil + (ls.bulk_temperature - t_oil) * contact::path_mean(scaled) /
+                                                          contact::path_mean(flash->values)
+                                            : ls.bulk_temperature;
+      const double theta_b = bulk + *std::max_element(scaled.begin(), scaled.end());
       add("theta_B,max", theta_b, "K",
           "ISO/TS 6336-20 eqs. (1)-(2), A.5: the path's largest contact temperature at w_Bt K_A K_v K_Hbeta K_Halpha "
-          "(x (K)^0.95 of /lubrication's)");
+          "(/lubrication's flash x K^0.95 X_J(K C_eff)/X_J(C_eff))");
       if (theta_s > 0.0)
         out.flash_scuffing_safety = add("S_B", (theta_s - t_oil) / (theta_b - t_oil), "1",
                                         "ISO/TS 6336-20 eq. (100): (theta_S - theta_oil)/(theta_B,max - theta_oil)");
@@ -139,9 +213,34 @@ rating::RatingResult rate_case(const Case& c, const gear::GearMesh& mesh, const 
       out.min_lambda = add("lambda_GF,min", ls.min_iso_lambda * std::pow(k_load, -0.13), "1",
                            "ISO/TS 6336-22 eqs. (2), (4), (24): the least of the named points at p_dyn "
                            "(x K^-0.13 of /lubrication's)");
-      out.findings.push_back(
-          "micropitting: the permissible lambda_GFP (from the oil's GF-C/8.3/90 stage) is not computed: lambda_GF,min is "
-          "reported without a safety S_lambda");
+      // The permissible film: given for the oil, or from its GF-C/8.3/90 failure stage through the
+      // test gear's own lambda_GF (method B on the test at that stage, K factors 1).
+      double lambda_p = 0.0;
+      if (oil.permissible_lambda > 0.0) {
+        lambda_p = add("lambda_GFP", oil.permissible_lambda, "1", "ISO/TS 6336-22 5.4: given for the oil", false,
+                       oil.permissible_lambda_source);
+      } else if (oil.fzg_micropitting_stage > 0) {
+        add("S_GF", oil.fzg_micropitting_stage, "1", "FZG GF-C/8.3/90 failure load stage of the oil", oil.fzg_assumed,
+            oil.fzg_source);
+        const contact::MeshContactResult test = run_mesh_cycle(fzg_c_test(c, oil.fzg_micropitting_stage));
+        const double lambda_t = add("lambda_GFT", test.lubrication_summary->min_iso_lambda, "1",
+                                    "ISO/TS 6336-22: method B on the C-GF test gear at the failure stage (8.3 m/s, "
+                                    "90 degC oil, Ra 0.5 um, this oil)",
+                                    oil.fzg_assumed);
+        const double w_w = add("W_W", rating::micropitting_material_factor(c.pinion.material.grade.group), "1",
+                               "ISO/TR 15144-1 material factor (recollected: case-carburised 1.0, through-hardened 0.5)",
+                               true, "unconfirmed: the standard's text was not available");
+        lambda_p = add("lambda_GFP", rating::kMicropittingTestFactor * w_w * lambda_t, "1",
+                       "ISO/TR 15144-1: 1.4 W_W lambda_GFT (recollected)", true,
+                       "unconfirmed: the standard's text was not available");
+      } else {
+        out.findings.push_back(
+            "micropitting: no permissible film (the oil's permissible_lambda or fzg_micropitting_stage): lambda_GF,min "
+            "is reported without the safety S_lambda");
+      }
+      if (lambda_p > 0.0)
+        out.micropitting_safety = add("S_lambda", out.min_lambda / lambda_p, "1",
+                                      "ISO/TS 6336-22 eq. (1): lambda_GF,min/lambda_GFP (no minimum recommended)");
     }
   }
   return out;

@@ -48,6 +48,7 @@ void check_component_rules(const Case& c) {
   check("dynamics.", c.dynamics);
   check("asperity.", c.asperity);
   check("contact.", c.contact);
+  check("rating.settings.", c.rating.settings);
 }
 
 // The load the flanks cannot carry at any separation (the rough-surface table's search gives up):

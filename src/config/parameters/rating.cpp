@@ -38,33 +38,39 @@ void declare_rating(ParameterRows& table) {
   }
   add(number(
           "rating.application_factor", [](auto& c, int) -> auto& { return c.rating.settings.application_factor; }))
+      .field("rating.settings.application_factor")
       .range(1.0, 10.0)
       .alias({"K_A"})
       .doc("Application factor K_A (ISO 6336-1 6): the driver's and the load's overloads");
   add(number(
           "rating.face_load_factor", [](auto& c, int) -> auto& { return c.rating.settings.face_load_factor; }))
+      .field("rating.settings.face_load_factor")
       .range(0.0, 10.0)
       .alias({"K_Hbeta"})
       .doc("Face load factor K_Hbeta (ISO 6336-1 7), given; 0: 1 assumed (ideal lead, stiff shafts), marked so");
   add(integer(
           "rating.accuracy_grade", [](auto& c, int) -> auto& { return c.rating.settings.accuracy_grade; }))
+      .field("rating.settings.accuracy_grade")
       .range(1, 12)
       .alias({"accuracy_grade"})
       .doc("ISO 1328-1:1995 accuracy grade Q: the pitch and profile-form tolerances of K_v and K_Halpha");
   add(number(
           "rating.load_cycles", [](auto& c, int) -> auto& { return c.rating.settings.load_cycles; }))
+      .field("rating.settings.load_cycles")
       .range(1.0, 1e12)
       .alias({"load_cycles"})
       .doc("Load cycles N_L of the pinion (the wheel's N_L/u) for the life factors Z_NT and Y_NT");
   add(named_choice(
           "rating.long_life", rating::long_life_choices(), "long-life branch",
           [](auto& c, int) -> auto& { return c.rating.settings.long_life; }))
+      .field("rating.settings.long_life")
       .doc(
           "The life factors beyond the knee: optimum (1: optimum lubrication, material, manufacture and experience) or "
           "normal (down to 0.85 at 1e10 cycles), ISO 6336-2/-3");
   add(named_choice(
           "rating.oil_supply", rating::oil_supply_choices(), "oil supply",
           [](auto& c, int) -> auto& { return c.rating.settings.oil_supply; }))
+      .field("rating.settings.oil_supply")
       .doc("Oil supply of the scuffing methods' bulk temperature: dip (X_S = 1.0) or spray (X_S = 1.2)");
   add(quantity(
           "{gear}.flank_rz", D::length,
