@@ -13,6 +13,7 @@ void add_asperity_command(CLI::App& app);
 void add_case_command(CLI::App& app);
 void add_kinematics_command(CLI::App& app);
 void add_rate_command(CLI::App& app);
+void add_report_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_multi_asperity_command(CLI::App& app);
 void add_fit_command(CLI::App& app);

@@ -65,6 +65,7 @@ constexpr std::pair<std::string_view, AddCommand> kCommands[] = {
     {"case", geartrib::app::add_case_command},
     {"kinematics", geartrib::app::add_kinematics_command},
     {"rate", geartrib::app::add_rate_command},
+    {"report", geartrib::app::add_report_command},
     {"multi-asperity", geartrib::app::add_multi_asperity_command},
     {"ehl", geartrib::app::add_ehl_command},
     {"dynamics", geartrib::app::add_dynamics_command},

@@ -8,6 +8,7 @@
 #include "contact/fidelity_registry.hpp"
 #include "contact/mesh_contact.hpp"
 #include "output/hdf5_results.hpp"
+#include "output/html_report.hpp"
 #include "output/table_writer.hpp"
 
 #include <fmt/format.h>
@@ -25,6 +26,7 @@ struct Options {
   CaseOptions case_options;
   std::string output;
   CsvOption csv;
+  CsvOption report;  // --report [FILE]: the HTML calculation report (output/html_report.hpp)
   std::optional<int> positions;
   std::string fidelity;
   bool quiet = false;
@@ -149,10 +151,15 @@ void run(const Options& o) {
   io::OutputSet outputs;
   outputs.reserve(out);
   if (o.csv.to_file()) outputs.reserve(o.csv.file);
+  const std::filesystem::path report =
+      o.report.to_file() ? std::filesystem::path(o.report.file) : std::filesystem::path(out).replace_extension(".html");
+  if (o.report.given()) outputs.reserve(report);
   ProgressBar bar(!o.quiet, "positions");
   const contact::MeshContactResult r = runs::run_mesh_cycle(c, [&](int done, int total) { bar(done, total); });
 
-  outputs.add(out, [&](const std::filesystem::path& tmp) { io::write_mesh_contact_hdf5(tmp, r, case_file, c); });
+  const std::filesystem::path written =
+      outputs.add(out, [&](const std::filesystem::path& tmp) { io::write_mesh_contact_hdf5(tmp, r, case_file, c); });
+  if (o.report.given()) outputs.add_text(report, io::html_report(written, out.filename().string()));  // read back: one report, from the file
   io::Table t;
   if (o.csv.given()) {
     for (const auto* group : r.groups())
@@ -189,7 +196,8 @@ void run(const Options& o) {
           100.0 * f.rolled_off_fraction);
     print_summary(r);
   }
-  fmt::print("wrote {}{}\n", out.string(), o.csv.to_file() ? " and " + o.csv.file : "");
+  fmt::print("wrote {}{}{}\n", out.string(), o.csv.to_file() ? " and " + o.csv.file : "",
+             o.report.given() ? " and " + report.string() : "");
 }
 
 }  // namespace
@@ -218,6 +226,10 @@ void add_run_command(CLI::App& app) {
   add_csv_option(cmd, o->csv,
                  "the per-position table as CSV besides the HDF5: to FILE, or without one to\n"
                  "standard output in place of the summary");
+  o->report.option = cmd->add_option("--report", o->report.file,
+                                     "[FILE]: the HTML calculation report beside the HDF5 (default: the HDF5's name with "
+                                     ".html; geartrib report)")
+                         ->expected(0, 1);
   cmd->add_option("--positions", o->positions, "N: shorthand for --set contact.positions=N (default 201)")
       ->check(CLI::Range(2, 100000));
   const std::vector<std::string> fidelities = contact::fidelity_names();

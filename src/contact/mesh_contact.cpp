@@ -108,6 +108,7 @@ MeshContactResult run_mesh_contact(const MeshCycleInputs& in) {
   MeshContactResult r;
   StageClock clock{r.stages, {}};
   r.path = in.mesh.pair().path();
+  r.gears = {in.mesh.pair().pinion(), in.mesh.pair().wheel()};
   r.fidelity = std::string(in.contact.fidelity.name());
   const PathState path = path_stage(in, clock);
   add_path_series(path, r.mesh);

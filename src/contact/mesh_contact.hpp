@@ -188,6 +188,7 @@ struct MeshContactResult {
   surface::EquivalentSurface surface;
   double plasticity_index = 0.0;
   gear::PathOfContact path;
+  std::array<gear::GearBody, 2> gears;  // the pinion's and the wheel's circles (for the diameters of A..E)
   std::optional<gear::TransmissionErrorStats> tooth_contact;  // compatibility sharing: over one base pitch
   std::optional<rating::RatingResult> rating;                 // the case's [rating] methods (runs/case_rating.hpp)
   std::string asperity_model;

@@ -3,6 +3,7 @@
 #include "contact/series_columns.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace geartrib::contact {
@@ -22,6 +23,26 @@ Summary path_summary(const gear::PathOfContact& p) {
            {"s_E_m", "m", p.e},
            {"base_pitch_m", "m", p.base_pitch},
            {"contact_ratio", "1", p.contact_ratio}}};
+}
+
+Summary gear_summary(const MeshContactResult& r) {
+  const gear::PathOfContact& p = r.path;
+  Summary s{{}, {{"line_of_action_m", "m", p.line_length}}};
+  const std::pair<const char*, double> points[] = {{"A", p.a}, {"B", p.b}, {"C", p.c}, {"D", p.d}, {"E", p.e}};
+  for (int g = 0; g < 2; ++g) {
+    const gear::GearBody& b = r.gears[static_cast<std::size_t>(g)];
+    const std::string n = g == 0 ? "pinion" : "wheel";
+    // The diameter through the contact point at s: the pinion's roll length is s, the wheel's T1T2 - s.
+    auto diameter = [&](double s) { return 2.0 * std::hypot(b.base_radius, g == 0 ? s : p.line_length - s); };
+    s.values.insert(s.values.end(), {{n + "_reference_diameter_m", "m", 2.0 * b.pitch_radius},
+                                     {n + "_base_diameter_m", "m", 2.0 * b.base_radius},
+                                     {n + "_tip_diameter_m", "m", 2.0 * b.tip_radius},
+                                     {n + "_root_diameter_m", "m", 2.0 * b.root_radius}});
+    for (const auto& [name, at] : points) s.values.push_back({n + "_diameter_at_" + name + "_m", "m", diameter(at)});
+    s.values.push_back({n + "_sap_diameter_m", "m", diameter(g == 0 ? p.a : p.e)});
+    s.values.push_back({n + "_eap_diameter_m", "m", diameter(g == 0 ? p.e : p.a)});
+  }
+  return s;
 }
 
 Summary tooth_contact_summary(const gear::TransmissionErrorStats& t) {

@@ -28,6 +28,11 @@ struct Summary {
 
 // The path of contact: s_A_m .. s_E_m, base_pitch_m, contact_ratio (/mesh's attributes).
 Summary path_summary(const gear::PathOfContact& p);
+// The gears' circles and the diameters where A..E lie on each (/mesh's attributes): the line of
+// action T1T2 line_of_action_m; <gear>_reference_diameter_m, _base_, _tip_, _root_; <gear>_diameter_at_A_m .. _E_m; the start and
+// end of the active profile <gear>_sap_diameter_m, _eap_diameter_m (the pinion's at A and E, the
+// wheel's at E and A).
+Summary gear_summary(const MeshContactResult& r);
 // The loaded tooth contact over one base pitch (compatibility sharing; /mesh's attributes):
 // transmission_error_mean_m, _peak_to_peak_m, _min_m, _max_m, the effective mesh stiffness's
 // mean, min and max, loaded_start_m, loaded_end_m, effective_contact_ratio, contact_lost,

@@ -188,6 +188,20 @@ std::vector<double> read_matrix(hid_t group, const std::string& name, std::size_
   return out;
 }
 
+std::vector<double> read_numbers(hid_t group, const std::string& name, std::size_t max_values) {
+  Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
+  Handle space(H5Dget_space(set), H5Sclose, "dataspace of " + name);
+  if (H5Sget_simple_extent_ndims(space) != 1) throw std::runtime_error("HDF5: " + name + " is not a 1-D dataset");
+  hsize_t n = 0;
+  H5Sget_simple_extent_dims(space, &n, nullptr);
+  if (n > max_values) throw std::runtime_error(fmt::format("HDF5: {} declares {} values (at most {})", name, n, max_values));
+  Handle type(H5Dget_type(set), H5Tclose, "type of " + name);
+  if (H5Tget_class(type) != H5T_FLOAT) throw std::runtime_error("HDF5: " + name + " is not a floating-point dataset");
+  std::vector<double> out(static_cast<std::size_t>(n));
+  if (!out.empty()) check(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), "read " + name);
+  return out;
+}
+
 std::string read_string(hid_t group, const std::string& name) {
   Handle set(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
   Handle type(H5Dget_type(set), H5Tclose, "type of " + name);

@@ -71,6 +71,9 @@ void strings_dataset(hid_t group, const std::string& name, const std::vector<std
 // `max_values` values (checked before allocating).
 std::vector<double> read_matrix(hid_t group, const std::string& name, std::size_t& rows, std::size_t& cols,
                                 std::size_t max_values);
+// A 1-D float64 dataset; throws when it is not 1-D or has more than `max_values` values (checked
+// before allocating).
+std::vector<double> read_numbers(hid_t group, const std::string& name, std::size_t max_values);
 std::string read_string(hid_t group, const std::string& name);
 std::vector<std::string> read_strings(hid_t group, const std::string& name);
 bool is_string_dataset(hid_t group, const std::string& name);

@@ -32,6 +32,7 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
     Handle mesh(H5Gcreate2(file, "/mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /mesh");
     for (const auto& s : r.mesh) hdf5::number_dataset(mesh, s.name, s.values, s.unit);
     summary_attributes(mesh, contact::path_summary(r.path));
+    summary_attributes(mesh, contact::gear_summary(r));
     if (r.tooth_contact) summary_attributes(mesh, contact::tooth_contact_summary(*r.tooth_contact));
   }
   {

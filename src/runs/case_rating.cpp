@@ -106,7 +106,7 @@ rating::RatingResult rate_case(const Case& c, const gear::GearMesh& mesh, const 
   }
   const rating::LoadCapacity lc = rating::iso6336_load_capacity(in, req.pitting, req.bending);
   out.factors = lc.factors;
-  out.findings = lc.findings;
+  out.findings.insert(out.findings.end(), lc.findings.begin(), lc.findings.end());
   out.pitting_safety = lc.pitting_safety;
   out.bending_safety = lc.bending_safety;
   if (req.pitting) out.methods.emplace_back("pitting");

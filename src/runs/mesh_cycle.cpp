@@ -567,6 +567,7 @@ void check_finite_outputs(const contact::MeshContactResult& r) {
     for (const auto& v : sum.values) scalar(group + " attribute " + v.name, v.value);
   };
   summary("/mesh", contact::path_summary(r.path));
+  summary("/mesh", contact::gear_summary(r));
   if (r.tooth_contact) summary("/mesh", contact::tooth_contact_summary(*r.tooth_contact));
   if (r.rating)  // its summary holds NaN for what was not rated; every factor is a number
     for (const auto& f : r.rating->factors) scalar("/rating/value of " + f.symbol, f.value);
