@@ -167,6 +167,16 @@ cp harris.png "$fig/tooth-contact-harris-map.png"
 blank tooth-contact
 ex tooth-contact dynamics gears/m6z30-relief.toml --speed-sweep 500rpm:9000rpm:18
 
+fresh ratings
+ex ratings rate gears/fzg-c.toml --set fzg_test=PT-C
+blank ratings
+ex ratings sweep gears/m6z30.toml --set module=4mm:7mm:4 --set face_width=60mm,80mm,100mm --set ra=0.4um,0.8um -o design.h5
+sh_ex ratings "/usr/bin/python3 scripts/plot_design_sweep.py design.h5 --quantity ratings --x module --lines face_width -o design.png"
+cp design.png "$fig/ratings-design-sweep.png"
+blank ratings
+ex ratings run gears/m6z30.toml -o m6z30.h5 --report
+sed -i '/^quantity  /,/^wear_depth_wheel_m/c\(the table of quantities along the path, as in geartrib run, left out here)' "$out/ratings.txt"
+
 fresh asperity
 ex asperity asperity --summary
 blank asperity

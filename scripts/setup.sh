@@ -22,7 +22,8 @@ packages=(g++ cmake make pkg-config
           python3 python3-h5py python3-matplotlib calculix-ccx
           python3-dev python3-numpy pybind11-dev         # the Python module (python/)
           python3-pytest python3-pandas python3-xarray python3-distributed   # its tests, Dask sweeps
-          clang-format clang-tidy)   # scripts/lint.sh (ctest -R lint.format, ctest -L lint)
+          clang-format clang-tidy    # scripts/lint.sh (ctest -R lint.format, ctest -L lint)
+          chromium)                  # the HTML report's browser test (ctest -R cli.report)
 missing=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -23,8 +23,8 @@ IsoSection iso_closed_form(const GearPairSpec& s, int i, double d_en) {
   const double x = s.profile_shift[i];
   const int z = s.teeth[i];
   const double e = kPi * m / 4.0 - h * std::tan(a) - (1.0 - std::sin(a)) * rho / std::cos(a);  // eq. (8), s_pr = 0
-  const double g = rho / m - h / m + x;                                                         // eq. (9)
-  const double hh = 2.0 / z * (kPi / 2.0 - e / m) - kPi / 3.0;                                  // eq. (10)
+  const double g = rho / m - h / m + x;                                                        // eq. (9)
+  const double hh = 2.0 / z * (kPi / 2.0 - e / m) - kPi / 3.0;                                 // eq. (10)
   double theta = kPi / 6.0;
   for (int k = 0; k < 200; ++k) theta = 2.0 * g / z * std::tan(theta) - hh;  // eq. (11), fixed point
   const double s_fn = m * (z * std::sin(kPi / 3.0 - theta) + std::sqrt(3.0) * (g / std::cos(theta) - rho / m));

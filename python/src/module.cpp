@@ -167,6 +167,7 @@ py::dict result_dict(const contact::MeshContactResult& r) {
   add_summary(d, contact::surface_summary(r));
   py::dict path;
   add_summary(path, contact::path_summary(r.path));
+  add_summary(path, contact::gear_summary(r));
   if (r.tooth_contact) add_summary(path, contact::tooth_contact_summary(*r.tooth_contact));
   d["path"] = path;
   py::dict stages;
@@ -183,6 +184,27 @@ py::dict result_dict(const contact::MeshContactResult& r) {
     for (const auto& q : contact::named_point_series(l)) points[py::str(q.name)] = q.values;
     s["points"] = points;
     d["lubrication_summary"] = s;
+  }
+  if (r.rating) {
+    // The ratings as /rating holds them: the verdict's values (NaN where not rated), the factor table
+    // as parallel lists, the findings.
+    py::dict q;
+    add_summary(q, contact::rating_summary(*r.rating));
+    py::list factors;
+    for (const auto& f : r.rating->factors) {
+      py::dict row;
+      row["symbol"] = f.symbol;
+      row["gear"] = f.gear == 0 ? "pinion" : f.gear == 1 ? "wheel" : "pair";
+      row["value"] = f.value;
+      row["unit"] = f.unit;
+      row["clause"] = f.clause;
+      row["assumed"] = f.assumed;
+      row["note"] = f.note;
+      factors.append(row);
+    }
+    q["factors"] = factors;
+    q["findings"] = r.rating->findings;
+    d["rating"] = q;
   }
   return d;
 }

@@ -76,6 +76,23 @@ def test_tooth_contact_summary_equals_the_command(tool, tmp_path):
     assert 0.0 < path["transmission_error_peak_to_peak_m"] < path["transmission_error_mean_m"]
 
 
+def test_rating_equals_the_command(tool, tmp_path):
+    """The default case's ratings (its [rating] methods) are the module's: /rating's verdict and
+    factor table, and the gears' circles in /mesh's attributes."""
+    tool("run", DEFAULT, "-q", "-o", tmp_path / "r.h5")
+    result = gt.run(gt.load_case(DEFAULT), as_dict=True)
+    rating = result["attrs"]["rating"]
+    with h5py.File(tmp_path / "r.h5") as f:
+        for name, value in f["rating"].attrs.items():
+            if name != "methods":
+                assert value == rating[name], name
+        symbols = [s.decode() for s in f["rating/symbol"][()]]
+        assert symbols == [row["symbol"] for row in rating["factors"]]
+        assert np.array_equal(f["rating/value"][()], [row["value"] for row in rating["factors"]])
+        assert f["mesh"].attrs["pinion_sap_diameter_m"] == result["attrs"]["path"]["pinion_sap_diameter_m"]
+    assert rating["S_F_min"] > rating["S_H_min"] > 0.0
+
+
 def test_run_as_xarray_dataset():
     xr = pytest.importorskip("xarray")
     ds = gt.run(positions=21)

@@ -8,8 +8,8 @@
 #include "runs/case_rating.hpp"
 #include "runs/mesh_cycle.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <memory>
 #include <string>
@@ -26,7 +26,8 @@ struct Options {
 // A factor's value in the unit an engineer reads: MPa, um or mm, degC; others as stored.
 std::pair<double, std::string> engineering(const rating::RatingFactor& f) {
   if (f.unit == "Pa") return {f.value * 1e-6, "MPa"};
-  if (f.unit == "m") return f.value < 1e-3 ? std::pair{f.value * 1e6, std::string("um")} : std::pair{f.value * 1e3, std::string("mm")};
+  if (f.unit == "m")
+    return f.value < 1e-3 ? std::pair{f.value * 1e6, std::string("um")} : std::pair{f.value * 1e3, std::string("mm")};
   if (f.unit == "K" && f.symbol.rfind("theta_fl", 0) != 0) return {f.value - 273.15, "degC"};
   if (f.unit == "N/m^2") return {f.value * 1e-6, "N/(mm um)"};
   if (f.unit == "Pa^0.5") return {f.value * 1e-3, "N^0.5/mm"};
@@ -56,12 +57,12 @@ void run(const Options& o) {
     const auto [v, unit] = engineering(f);
     text += fmt::format("{:<14} {:<7} {:>12.5g} {:<10} {}{}{}\n", f.symbol, gear_name[f.gear + 1], v, unit,
                         f.assumed ? "* " : "", f.clause, f.note.empty() ? "" : " (" + f.note + ")");
-    csv += fmt::format("{},{},{:.10g},{},{},{},{}\n", csv_field(f.symbol), gear_name[f.gear + 1], f.value, csv_field(f.unit),
-                       csv_field(f.clause), f.assumed ? 1 : 0, csv_field(f.note));
+    csv += fmt::format("{},{},{:.10g},{},{},{},{}\n", csv_field(f.symbol), gear_name[f.gear + 1], f.value,
+                       csv_field(f.unit), csv_field(f.clause), f.assumed ? 1 : 0, csv_field(f.note));
   }
   text += "\nSafety factors\n";
   for (const auto& v : contact::rating_summary(rt).values)
-    if (v.name != "findings" && v.name != "assumed_inputs") text += fmt::format("  {:<14} {:.4g}\n", v.name, v.value);
+    if (v.name != "findings_count" && v.name != "assumed_inputs") text += fmt::format("  {:<14} {:.4g}\n", v.name, v.value);
   for (const auto& f : rt.findings) text += "note: " + f + "\n";
   if (rt.assumed_any()) text += "* an input behind this value is assumed (see the note and the data file's source)\n";
   if (o.table.csv.to_file()) outputs.add_text(o.table.csv.file, csv);

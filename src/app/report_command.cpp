@@ -20,8 +20,9 @@ struct Options {
 };
 
 void run(const Options& o) {
-  const std::filesystem::path out =
-      o.output.empty() ? std::filesystem::path(o.result).filename().replace_extension(".html") : std::filesystem::path(o.output);
+  const std::filesystem::path out = o.output.empty()
+                                        ? std::filesystem::path(o.result).filename().replace_extension(".html")
+                                        : std::filesystem::path(o.output);
   io::OutputSet outputs;
   outputs.reserve(out);
   outputs.add_text(out, io::html_report(o.result, std::filesystem::path(o.result).filename().string()));

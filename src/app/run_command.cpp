@@ -159,7 +159,9 @@ void run(const Options& o) {
 
   const std::filesystem::path written =
       outputs.add(out, [&](const std::filesystem::path& tmp) { io::write_mesh_contact_hdf5(tmp, r, case_file, c); });
-  if (o.report.given()) outputs.add_text(report, io::html_report(written, out.filename().string()));  // read back: one report, from the file
+  if (o.report.given())
+    outputs.add_text(report,
+                     io::html_report(written, out.filename().string()));  // read back: one report, from the file
   io::Table t;
   if (o.csv.given()) {
     for (const auto* group : r.groups())
@@ -226,10 +228,11 @@ void add_run_command(CLI::App& app) {
   add_csv_option(cmd, o->csv,
                  "the per-position table as CSV besides the HDF5: to FILE, or without one to\n"
                  "standard output in place of the summary");
-  o->report.option = cmd->add_option("--report", o->report.file,
-                                     "[FILE]: the HTML calculation report beside the HDF5 (default: the HDF5's name with "
-                                     ".html; geartrib report)")
-                         ->expected(0, 1);
+  o->report.option =
+      cmd->add_option("--report", o->report.file,
+                      "[FILE]: the HTML calculation report beside the HDF5 (default: the HDF5's name with "
+                      ".html; geartrib report)")
+          ->expected(0, 1);
   cmd->add_option("--positions", o->positions, "N: shorthand for --set contact.positions=N (default 201)")
       ->check(CLI::Range(2, 100000));
   const std::vector<std::string> fidelities = contact::fidelity_names();

@@ -119,12 +119,14 @@ Material load_material(const std::filesystem::path& file, std::vector<std::strin
   if (r.has("rating")) {
     rating::MaterialGrade& g = m.grade;
     try {
-      g.group = choice_from_name(rating::material_group_choices(), r.string("rating.group"), "ISO 6336-5 material group");
+      g.group =
+          choice_from_name(rating::material_group_choices(), r.string("rating.group"), "ISO 6336-5 material group");
     } catch (const std::invalid_argument& e) {
       r.fail("rating.group", e.what());
     }
     try {
-      g.quality = choice_from_name(rating::material_quality_choices(), r.string("rating.quality"), "ISO 6336-5 quality");
+      g.quality =
+          choice_from_name(rating::material_quality_choices(), r.string("rating.quality"), "ISO 6336-5 quality");
     } catch (const std::invalid_argument& e) {
       r.fail("rating.quality", e.what());
     }
@@ -181,7 +183,8 @@ lubrication::Lubricant load_lubricant(const std::filesystem::path& file) {
     const double stage = r.number(key);
     require(r, key, stage == std::floor(stage) && stage >= kFzgMinLoadStage && stage <= kFzgMaxLoadStage,
             fmt::format("an FZG load stage is an integer in [{}, {}]", kFzgMinLoadStage, kFzgMaxLoadStage));
-    (std::string(key) == "fzg_scuffing_stage" ? l.fzg_scuffing_stage : l.fzg_micropitting_stage) = static_cast<int>(stage);
+    (std::string(key) == "fzg_scuffing_stage" ? l.fzg_scuffing_stage : l.fzg_micropitting_stage) =
+        static_cast<int>(stage);
   }
   if (l.fzg_scuffing_stage > 0 || l.fzg_micropitting_stage > 0) {
     l.fzg_source = r.string("fzg_source");

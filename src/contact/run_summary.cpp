@@ -82,7 +82,7 @@ Summary rating_summary(const rating::RatingResult& r) {
            {"lambda_GF_min", "1", rated(r.min_lambda)},
            {"S_lambda", "1", rated(r.micropitting_safety)},
            {"assumed_inputs", "1", flag(r.assumed_any())},
-           {"findings", "1", static_cast<double>(r.findings.size())}}};
+           {"findings_count", "1", static_cast<double>(r.findings.size())}}};
 }
 
 Summary surface_summary(const MeshContactResult& r) {

@@ -29,9 +29,9 @@ struct Summary {
 // The path of contact: s_A_m .. s_E_m, base_pitch_m, contact_ratio (/mesh's attributes).
 Summary path_summary(const gear::PathOfContact& p);
 // The gears' circles and the diameters where A..E lie on each (/mesh's attributes): the line of
-// action T1T2 line_of_action_m; <gear>_reference_diameter_m, _base_, _tip_, _root_; <gear>_diameter_at_A_m .. _E_m; the start and
-// end of the active profile <gear>_sap_diameter_m, _eap_diameter_m (the pinion's at A and E, the
-// wheel's at E and A).
+// action T1T2 line_of_action_m; <gear>_reference_diameter_m, _base_, _tip_, _root_; <gear>_diameter_at_A_m .. _E_m; the
+// start and end of the active profile <gear>_sap_diameter_m, _eap_diameter_m (the pinion's at A and E, the wheel's at E
+// and A).
 Summary gear_summary(const MeshContactResult& r);
 // The loaded tooth contact over one base pitch (compatibility sharing; /mesh's attributes):
 // transmission_error_mean_m, _peak_to_peak_m, _min_m, _max_m, the effective mesh stiffness's
@@ -41,7 +41,7 @@ Summary tooth_contact_summary(const gear::TransmissionErrorStats& t);
 // The ratings' verdict (/rating's attributes, the sweep's columns): methods; S_H_min, S_F_min (the
 // lower gear's), S_H_pinion/_wheel, S_F_pinion/_wheel, S_S_min (the lower of the flash and the
 // integral method's), S_B, S_intS, lambda_GF_min, S_lambda, NaN where not rated (the same names always);
-// assumed_inputs, findings (their count).
+// assumed_inputs, findings_count.
 Summary rating_summary(const rating::RatingResult& r);
 // The models run and the equivalent surface: asperity_model, fidelity; the summits' density,
 // radius and sigma, the surface's sigma, the summits' mean height, the plasticity index (/meta's).

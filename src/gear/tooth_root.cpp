@@ -2,8 +2,8 @@
 
 #include "gear/involute.hpp"
 
-#include <boost/math/tools/roots.hpp>
 #include <fmt/format.h>
+#include <boost/math/tools/roots.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -24,10 +24,10 @@ struct Vec {
 // is centred on the line through the axis at u = pi m/2: rack point (u, w) of the rolling frame
 // (w from the axis) -> Rot(-phi) (u - r phi, w).
 struct RackRounding {
-  double r = 0.0;   // reference radius (the rolling circle) [m]
-  double u = 0.0;   // the centre's distance from the gear tooth's centreline at phi = 0: pi m/2 - E [m]
-  double w = 0.0;   // its distance from the axis at phi = 0: r + G m [m]
-  double rho = 0.0; // rho_fP [m]
+  double r = 0.0;    // reference radius (the rolling circle) [m]
+  double u = 0.0;    // the centre's distance from the gear tooth's centreline at phi = 0: pi m/2 - E [m]
+  double w = 0.0;    // its distance from the axis at phi = 0: r + G m [m]
+  double rho = 0.0;  // rho_fP [m]
 
   Vec centre(double phi) const {
     const double a = u - r * phi, c = std::cos(phi), s = std::sin(phi);

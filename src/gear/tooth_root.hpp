@@ -23,15 +23,15 @@
 namespace geartrib::gear {
 
 struct RootSection {
-  double chord = 0.0;                // s_Fn [m]
-  double fillet_radius = 0.0;        // rho_F at the 30 deg tangent [m]
-  double section_radius = 0.0;       // distance of the section's midpoint from the gear axis [m]
-  double load_diameter = 0.0;        // d_en, the outer point of single-pair contact [m]
-  double load_angle = 0.0;           // alpha_Fen, the load's angle to the normal of the centreline [rad]
-  double moment_arm = 0.0;           // h_Fe [m]
-  double form_factor = 0.0;          // Y_F
-  double stress_correction = 0.0;    // Y_S
-  double notch_parameter = 0.0;      // q_s = s_Fn/(2 rho_F)
+  double chord = 0.0;                      // s_Fn [m]
+  double fillet_radius = 0.0;              // rho_F at the 30 deg tangent [m]
+  double section_radius = 0.0;             // distance of the section's midpoint from the gear axis [m]
+  double load_diameter = 0.0;              // d_en, the outer point of single-pair contact [m]
+  double load_angle = 0.0;                 // alpha_Fen, the load's angle to the normal of the centreline [rad]
+  double moment_arm = 0.0;                 // h_Fe [m]
+  double form_factor = 0.0;                // Y_F
+  double stress_correction = 0.0;          // Y_S
+  double notch_parameter = 0.0;            // q_s = s_Fn/(2 rho_F)
   bool stress_correction_in_range = true;  // 1 <= q_s < 8
 };
 

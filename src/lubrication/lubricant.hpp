@@ -97,7 +97,7 @@ struct Lubricant {
   // fzg_micropitting_stage.
   double permissible_lambda = 0.0;
   std::string permissible_lambda_source;
-  TractionCurves traction;            // measured traction curves (optional)
+  TractionCurves traction;  // measured traction curves (optional)
 
   bool fixed() const { return fixed_dynamic_viscosity > 0.0; }
   // X_L: the file's, or the base stock's tabulated value.

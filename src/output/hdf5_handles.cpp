@@ -194,7 +194,8 @@ std::vector<double> read_numbers(hid_t group, const std::string& name, std::size
   if (H5Sget_simple_extent_ndims(space) != 1) throw std::runtime_error("HDF5: " + name + " is not a 1-D dataset");
   hsize_t n = 0;
   H5Sget_simple_extent_dims(space, &n, nullptr);
-  if (n > max_values) throw std::runtime_error(fmt::format("HDF5: {} declares {} values (at most {})", name, n, max_values));
+  if (n > max_values)
+    throw std::runtime_error(fmt::format("HDF5: {} declares {} values (at most {})", name, n, max_values));
   Handle type(H5Dget_type(set), H5Tclose, "type of " + name);
   if (H5Tget_class(type) != H5T_FLOAT) throw std::runtime_error("HDF5: " + name + " is not a floating-point dataset");
   std::vector<double> out(static_cast<std::size_t>(n));

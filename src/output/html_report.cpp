@@ -69,11 +69,20 @@ std::string escape(const std::string& s) {
   std::string o;
   for (char c : s) {
     switch (c) {
-      case '&': o += "&amp;"; break;
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '"': o += "&quot;"; break;
-      default: o += c;
+      case '&':
+        o += "&amp;";
+        break;
+      case '<':
+        o += "&lt;";
+        break;
+      case '>':
+        o += "&gt;";
+        break;
+      case '"':
+        o += "&quot;";
+        break;
+      default:
+        o += c;
     }
   }
   return o;
@@ -87,7 +96,8 @@ std::string num(double v, int digits = 4) {
 // A value in the unit an engineer reads: [scale, unit] for an SI unit.
 std::pair<double, std::string> engineering(double v, const std::string& unit) {
   if (unit == "Pa") return {v * 1e-6, "MPa"};
-  if (unit == "m") return std::abs(v) < 1e-3 ? std::pair{v * 1e6, std::string("&micro;m")} : std::pair{v * 1e3, std::string("mm")};
+  if (unit == "m")
+    return std::abs(v) < 1e-3 ? std::pair{v * 1e6, std::string("&micro;m")} : std::pair{v * 1e3, std::string("mm")};
   if (unit == "N/m^2") return {v * 1e-6, "N/(mm &micro;m)"};
   if (unit == "Pa^0.5") return {v * 1e-3, "N<sup>0.5</sup>/mm"};
   if (unit == "N/m") return {v * 1e-3, "N/mm"};
@@ -120,7 +130,8 @@ std::string svg_plot(const std::string& title, const std::string& x_label, const
     for (double v : c.y)
       if (std::isfinite(v)) y0 = std::min(y0, v), y1 = std::max(y1, v);
   if (!(x1 > x0) || !(y1 >= y0)) return "";
-  if (y1 - y0 < 1e-12 * std::max(1.0, std::abs(y1))) y0 -= 0.5 * std::max(1.0, std::abs(y0)), y1 += 0.5 * std::max(1.0, std::abs(y1));
+  if (y1 - y0 < 1e-12 * std::max(1.0, std::abs(y1)))
+    y0 -= 0.5 * std::max(1.0, std::abs(y0)), y1 += 0.5 * std::max(1.0, std::abs(y1));
   const double step = tick_step(y1 - y0, 5);
   y0 = std::floor(y0 / step) * step;
   y1 = std::ceil(y1 / step) * step;
@@ -151,15 +162,17 @@ std::string svg_plot(const std::string& title, const std::string& x_label, const
     std::string points;
     for (std::size_t i = 0; i < x.size() && i < curves[k].y.size(); ++i)
       if (std::isfinite(curves[k].y[i])) points += fmt::format("{:.1f},{:.1f} ", px(x[i]), py(curves[k].y[i]));
-    s += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"1.6\" points=\"{}\"/>\n", kColours[k % 5], points);
+    s += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"1.6\" points=\"{}\"/>\n", kColours[k % 5],
+                     points);
     if (curves.size() > 1)
       s += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"11\" fill=\"{}\">{}</text>\n", w - right - 150,
                        top + 14 + 13 * static_cast<double>(k), kColours[k % 5], escape(curves[k].name));
   }
-  s += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"12\" text-anchor=\"middle\">{}</text>\n", 0.5 * (left + w - right),
-                   h - 8, x_label);
-  s += fmt::format("<text x=\"14\" y=\"{0}\" font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 14 {0})\">{1}</text>\n",
-                   0.5 * (top + h - bottom), y_label);
+  s += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"12\" text-anchor=\"middle\">{}</text>\n",
+                   0.5 * (left + w - right), h - 8, x_label);
+  s += fmt::format(
+      "<text x=\"14\" y=\"{0}\" font-size=\"12\" text-anchor=\"middle\" transform=\"rotate(-90 14 {0})\">{1}</text>\n",
+      0.5 * (top + h - bottom), y_label);
   return s + "</svg>\n";
 }
 
@@ -204,17 +217,18 @@ th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}tr.as
 </style></head><body>
 )";
   h += "<h1>Calculation report</h1>\n<p><b>" + escape(title) + "</b></p>\n";
-  h += fmt::format("<p class=\"note\">geartrib {} &middot; result file {} &middot; case {} &middot; contact fidelity {}, "
-                   "asperity model {}</p>\n",
-                   escape(f.text_attribute("/meta", "version")), escape(name),
-                   escape(f.text_attribute("/scene", "file")), escape(f.text_attribute("/meta", "fidelity")),
-                   escape(f.text_attribute("/meta", "asperity_model")));
+  h += fmt::format(
+      "<p class=\"note\">geartrib {} &middot; result file {} &middot; case {} &middot; contact fidelity {}, "
+      "asperity model {}</p>\n",
+      escape(f.text_attribute("/meta", "version")), escape(name), escape(f.text_attribute("/scene", "file")),
+      escape(f.text_attribute("/meta", "fidelity")), escape(f.text_attribute("/meta", "asperity_model")));
 
   // --- safety factors ---
   const bool rated = f.has("/rating/symbol");
   h += "<h2 id=\"safety\">Safety factors</h2>\n";
   if (rated) {
-    h += "<p>Rated: " + escape(f.text_attribute("/rating", "methods")) + ".</p>\n<table><tr><th>safety</th><th>pinion</th><th>wheel</th><th>method</th></tr>\n";
+    h += "<p>Rated: " + escape(f.text_attribute("/rating", "methods")) +
+         ".</p>\n<table><tr><th>safety</th><th>pinion</th><th>wheel</th><th>method</th></tr>\n";
     // A safety below 1 is marked (lambda_GF,min is a film ratio, not a safety: never marked).
     auto cell = [&](const char* name) {
       const auto v = f.attribute("/rating", name);
@@ -222,12 +236,18 @@ th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}tr.as
       const bool low = *v < 1.0 && std::string(name) != "lambda_GF_min";
       return fmt::format("<td class=\"n{}\">{}</td>", low ? " low" : "", num(*v, 4));
     };
-    h += "<tr><td>S<sub>H</sub> pitting</td>" + cell("S_H_pinion") + cell("S_H_wheel") + "<td>ISO 6336-2 method B</td></tr>\n";
-    h += "<tr><td>S<sub>F</sub> tooth root</td>" + cell("S_F_pinion") + cell("S_F_wheel") + "<td>ISO 6336-3 method B</td></tr>\n";
-    h += "<tr><td>S<sub>B</sub> scuffing, flash temperature</td>" + cell("S_B") + "<td></td><td>ISO/TS 6336-20</td></tr>\n";
-    h += "<tr><td>S<sub>intS</sub> scuffing, integral temperature</td>" + cell("S_intS") + "<td></td><td>ISO/TS 6336-21</td></tr>\n";
-    h += "<tr><td>S<sub>&lambda;</sub> micropitting</td>" + cell("S_lambda") + "<td></td><td>ISO/TS 6336-22 method B</td></tr>\n";
-    h += "<tr><td>&lambda;<sub>GF,min</sub></td>" + cell("lambda_GF_min") + "<td></td><td>ISO/TS 6336-22</td></tr>\n</table>\n";
+    h += "<tr><td>S<sub>H</sub> pitting</td>" + cell("S_H_pinion") + cell("S_H_wheel") +
+         "<td>ISO 6336-2 method B</td></tr>\n";
+    h += "<tr><td>S<sub>F</sub> tooth root</td>" + cell("S_F_pinion") + cell("S_F_wheel") +
+         "<td>ISO 6336-3 method B</td></tr>\n";
+    h += "<tr><td>S<sub>B</sub> scuffing, flash temperature</td>" + cell("S_B") +
+         "<td></td><td>ISO/TS 6336-20</td></tr>\n";
+    h += "<tr><td>S<sub>intS</sub> scuffing, integral temperature</td>" + cell("S_intS") +
+         "<td></td><td>ISO/TS 6336-21</td></tr>\n";
+    h += "<tr><td>S<sub>&lambda;</sub> micropitting</td>" + cell("S_lambda") +
+         "<td></td><td>ISO/TS 6336-22 method B</td></tr>\n";
+    h += "<tr><td>&lambda;<sub>GF,min</sub></td>" + cell("lambda_GF_min") +
+         "<td></td><td>ISO/TS 6336-22</td></tr>\n</table>\n";
     if (f.attribute("/rating", "assumed_inputs").value_or(0.0) > 0.0)
       h += "<p class=\"note\">Rows shaded in the factor table rest on an assumed input (its note and the data file's "
            "source say which).</p>\n";
@@ -244,16 +264,17 @@ th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}tr.as
   // --- gear data ---
   h += "<h2 id=\"gears\">Gear data</h2>\n<table><tr><th></th><th>pinion</th><th>wheel</th><th>unit</th></tr>\n";
   auto row2 = [&](const std::string& label, double a, double b, const std::string& unit) {
-    h += fmt::format("<tr><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td></tr>\n", label, num(a, 6),
-                     num(b, 6), unit);
+    h += fmt::format("<tr><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td></tr>\n", label,
+                     num(a, 6), num(b, 6), unit);
   };
   row2("teeth z", param("pinion.teeth"), param("wheel.teeth"), "");
   row2("profile shift x", param("pinion.profile_shift"), param("wheel.profile_shift"), "");
   for (const char* d : {"reference", "base", "tip", "root", "sap", "eap"}) {
-    const std::string label = std::string(d) == "sap" ? "start of active profile d<sub>Nf</sub>"
+    const std::string label = std::string(d) == "sap"   ? "start of active profile d<sub>Nf</sub>"
                               : std::string(d) == "eap" ? "end of active profile d<sub>Na</sub>"
                                                         : std::string(d) + " diameter";
-    row2(label, 1e3 * mesh_attr(fmt::format("pinion_{}_diameter_m", d)), 1e3 * mesh_attr(fmt::format("wheel_{}_diameter_m", d)), "mm");
+    row2(label, 1e3 * mesh_attr(fmt::format("pinion_{}_diameter_m", d)),
+         1e3 * mesh_attr(fmt::format("wheel_{}_diameter_m", d)), "mm");
   }
   for (const char* pt : {"A", "B", "C", "D", "E"})
     row2(fmt::format("diameter at {}", pt), 1e3 * mesh_attr(fmt::format("pinion_diameter_at_{}_m", pt)),
@@ -274,9 +295,12 @@ th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}tr.as
   row1("pinion torque T<sub>1</sub>", param("operating.pinion_torque"), "N m");
   row1("pinion speed n<sub>1</sub>", param("operating.pinion_speed") * 60.0 / (2.0 * std::numbers::pi), "1/min");
   if (f.has("/lubrication")) {
-    row1("oil temperature &theta;<sub>oil</sub>", f.attribute("/lubrication", "oil_temperature_K").value_or(NAN) - kCelsius, "&deg;C");
-    row1("bulk temperature &theta;<sub>M</sub>", f.attribute("/lubrication", "bulk_temperature_K").value_or(NAN) - kCelsius, "&deg;C");
-    h += "<tr><td>lubricant</td><td colspan=\"2\">" + escape(f.text_attribute("/lubrication", "lubricant")) + "</td></tr>\n";
+    row1("oil temperature &theta;<sub>oil</sub>",
+         f.attribute("/lubrication", "oil_temperature_K").value_or(NAN) - kCelsius, "&deg;C");
+    row1("bulk temperature &theta;<sub>M</sub>",
+         f.attribute("/lubrication", "bulk_temperature_K").value_or(NAN) - kCelsius, "&deg;C");
+    h += "<tr><td>lubricant</td><td colspan=\"2\">" + escape(f.text_attribute("/lubrication", "lubricant")) +
+         "</td></tr>\n";
   }
   h += "</table>\n";
 
@@ -285,7 +309,8 @@ th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}tr.as
     const auto symbol = f.strings("/rating/symbol"), gear = f.strings("/rating/gear"), unit = f.strings("/rating/unit"),
                clause = f.strings("/rating/clause"), note = f.strings("/rating/note");
     const auto value = f.numbers("/rating/value"), assumed = f.numbers("/rating/assumed");
-    h += "<h2 id=\"factors\">Rating factors</h2>\n<table><tr><th>symbol</th><th>gear</th><th>value</th><th>unit</th><th>clause</th><th>assumed</th></tr>\n";
+    h +=
+        "<h2 id=\"factors\">Rating factors</h2>\n<table><tr><th>symbol</th><th>gear</th><th>value</th><th>unit</th><th>clause</th><th>assumed</th></tr>\n";
     for (std::size_t i = 0; i < symbol.size() && i < value.size(); ++i) {
       const bool a = i < assumed.size() && assumed[i] > 0.0;
       auto [v, u] = engineering(value[i], i < unit.size() ? unit[i] : "");
@@ -306,8 +331,9 @@ th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}tr.as
   std::vector<std::pair<std::string, double>> marks;
   for (const char* pt : {"A", "B", "C", "D", "E"}) marks.emplace_back(pt, 1e3 * mesh_attr(fmt::format("s_{}_m", pt)));
   const std::vector<double> s_mm = scaled(s, 1e3);
-  const std::string x_label = "roll length from T1 [mm] (pinion diameter " + num(diameter.empty() ? NAN : diameter.front(), 5) +
-                              " to " + num(diameter.empty() ? NAN : diameter.back(), 5) + " mm)";
+  const std::string x_label = "roll length from T1 [mm] (pinion diameter " +
+                              num(diameter.empty() ? NAN : diameter.front(), 5) + " to " +
+                              num(diameter.empty() ? NAN : diameter.back(), 5) + " mm)";
   h += "<h2 id=\"path\">Along the path of contact</h2>\n";
   if (f.has("/lubrication/points/s_m")) {
     const auto names = f.strings("/lubrication/points/point");
@@ -317,15 +343,16 @@ th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}tr.as
       std::string path;
       double scale, offset;
     };
-    const Column cols[] = {{"line load [N/mm]", "/lubrication/points/line_load_N_per_m", 1e-3, 0.0},
-                           {"film h [&micro;m]", "/lubrication/points/film_m", 1e6, 0.0},
-                           {"&lambda; (mean gap)", "/lubrication/points/lambda_mean_gap", 1.0, 0.0},
-                           {"&lambda;<sub>GF</sub> ISO", "/lubrication/points/iso_lambda_gf", 1.0, 0.0},
-                           {"asperity share", "/lubrication/points/asperity_load_share", 1.0, 0.0},
-                           {"friction &mu;", "/lubrication/points/friction_coefficient", 1.0, 0.0},
-                           {"flash &theta;<sub>fl</sub> [K]", "/lubrication/points/flash_temperature_K", 1.0, 0.0},
-                           {"contact &theta;<sub>B</sub> [&deg;C]", "/lubrication/points/contact_temperature_K", 1.0, -kCelsius},
-                           {"ISO &theta;<sub>B</sub> [&deg;C]", "/lubrication/points/iso_contact_temperature_K", 1.0, -kCelsius}};
+    const Column cols[] = {
+        {"line load [N/mm]", "/lubrication/points/line_load_N_per_m", 1e-3, 0.0},
+        {"film h [&micro;m]", "/lubrication/points/film_m", 1e6, 0.0},
+        {"&lambda; (mean gap)", "/lubrication/points/lambda_mean_gap", 1.0, 0.0},
+        {"&lambda;<sub>GF</sub> ISO", "/lubrication/points/iso_lambda_gf", 1.0, 0.0},
+        {"asperity share", "/lubrication/points/asperity_load_share", 1.0, 0.0},
+        {"friction &mu;", "/lubrication/points/friction_coefficient", 1.0, 0.0},
+        {"flash &theta;<sub>fl</sub> [K]", "/lubrication/points/flash_temperature_K", 1.0, 0.0},
+        {"contact &theta;<sub>B</sub> [&deg;C]", "/lubrication/points/contact_temperature_K", 1.0, -kCelsius},
+        {"ISO &theta;<sub>B</sub> [&deg;C]", "/lubrication/points/iso_contact_temperature_K", 1.0, -kCelsius}};
     h += "<table><tr><th>point</th><th>pinion d [mm]</th><th>wheel d [mm]</th>";
     for (const auto& c : cols) h += std::string("<th>") + c.title + "</th>";
     h += "</tr>\n";
@@ -341,9 +368,10 @@ th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}tr.as
     }
     h += "</table>\n";
   }
-  h += svg_plot("Load share", x_label, s_mm,
-                {{"load share [-]", f.numbers("/mesh/load_share")}}, "load share [-]", marks);
-  h += svg_plot("Hertz pressure", x_label, s_mm, {{"p_H", scaled(f.numbers("/mesh/hertz_p0_Pa"), 1e-6)}}, "p0 [MPa]", marks);
+  h += svg_plot("Load share", x_label, s_mm, {{"load share [-]", f.numbers("/mesh/load_share")}}, "load share [-]",
+                marks);
+  h += svg_plot("Hertz pressure", x_label, s_mm, {{"p_H", scaled(f.numbers("/mesh/hertz_p0_Pa"), 1e-6)}}, "p0 [MPa]",
+                marks);
   if (f.has("/lubrication/film_m")) {
     h += svg_plot("Film thickness", x_label, s_mm,
                   {{"film h", scaled(f.numbers("/lubrication/film_m"), 1e6)},
@@ -353,15 +381,17 @@ th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}tr.as
                   {{"lambda (mean gap)", f.numbers("/lubrication/lambda_mean_gap")},
                    {"lambda_GF (ISO)", f.numbers("/lubrication/iso_lambda_gf")}},
                   "lambda [-]", marks);
-    h += svg_plot("Temperatures", x_label, s_mm,
-                  {{"contact (model)", scaled(f.numbers("/lubrication/contact_temperature_K"), 1.0, -kCelsius)},
-                   {"contact (ISO/TS 6336-20)", scaled(f.numbers("/lubrication/iso_contact_temperature_K"), 1.0, -kCelsius)}},
-                  "temperature [degC]", marks);
+    h += svg_plot(
+        "Temperatures", x_label, s_mm,
+        {{"contact (model)", scaled(f.numbers("/lubrication/contact_temperature_K"), 1.0, -kCelsius)},
+         {"contact (ISO/TS 6336-20)", scaled(f.numbers("/lubrication/iso_contact_temperature_K"), 1.0, -kCelsius)}},
+        "temperature [degC]", marks);
     h += svg_plot("Friction coefficient", x_label, s_mm, {{"mu", f.numbers("/lubrication/friction_coefficient")}},
                   "mu [-]", marks);
   }
   if (f.has("/contact/real_area_ratio"))
-    h += svg_plot("Real contact area", x_label, s_mm, {{"A_r/A", f.numbers("/contact/real_area_ratio")}}, "A_r/A [-]", marks);
+    h += svg_plot("Real contact area", x_label, s_mm, {{"A_r/A", f.numbers("/contact/real_area_ratio")}}, "A_r/A [-]",
+                  marks);
 
   // --- validity ---
   h += "<h2 id=\"validity\">Where the models hold</h2>\n";
@@ -377,7 +407,8 @@ th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}tr.as
   // --- the scene ---
   h += "<h2 id=\"scene\">The case as run</h2>\n<details><summary>case file (with the --set changes)</summary><pre>" +
        escape(f.text("/scene")) + "</pre></details>\n";
-  h += "<details><summary>every parameter, its value and where it came from</summary><table><tr><th>key</th><th>value</th><th>origin</th></tr>\n";
+  h +=
+      "<details><summary>every parameter, its value and where it came from</summary><table><tr><th>key</th><th>value</th><th>origin</th></tr>\n";
   {
     const auto keys = f.strings("/parameters/key"), values = f.strings("/parameters/value"),
                origins = f.strings("/parameters/origin");

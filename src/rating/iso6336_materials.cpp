@@ -33,7 +33,8 @@ struct Line {
 // the number given). Order: ML, MQ, ME. Source: two public transcriptions of the 2016 table
 // (docs/theory/ratings.md).
 const Line& contact_line(MaterialGroup g, MaterialQuality q) {
-  static const std::array<Line, 3> st = {Line{1.000, 190, 110, 210, "Fig. 1 (St)"}, Line{1.000, 190, 110, 210, "Fig. 1 (St)"},
+  static const std::array<Line, 3> st = {Line{1.000, 190, 110, 210, "Fig. 1 (St)"},
+                                         Line{1.000, 190, 110, 210, "Fig. 1 (St)"},
                                          Line{1.520, 250, 110, 210, "Fig. 1 (St)"}};
   static const std::array<Line, 3> vc = {Line{0.963, 283, 135, 210, "Fig. 5 (V, carbon)"},
                                          Line{0.925, 360, 135, 210, "Fig. 5 (V, carbon)"},
@@ -41,19 +42,25 @@ const Line& contact_line(MaterialGroup g, MaterialQuality q) {
   static const std::array<Line, 3> va = {Line{1.313, 188, 200, 360, "Fig. 6 (V, alloy)"},
                                          Line{1.313, 373, 200, 360, "Fig. 6 (V, alloy)"},
                                          Line{2.213, 260, 200, 390, "Fig. 6 (V, alloy)"}};
-  static const std::array<Line, 3> eh = {Line{0.0, 1300, 600, 800, "Fig. 9 (Eh)"}, Line{0.0, 1500, 600, 800, "Fig. 9 (Eh)"},
+  static const std::array<Line, 3> eh = {Line{0.0, 1300, 600, 800, "Fig. 9 (Eh)"},
+                                         Line{0.0, 1500, 600, 800, "Fig. 9 (Eh)"},
                                          Line{0.0, 1650, 600, 800, "Fig. 9 (Eh)"}};
   const auto i = static_cast<std::size_t>(q);
   switch (g) {
-    case MaterialGroup::normalized: return st[i];
-    case MaterialGroup::through_hardened_carbon: return vc[i];
-    case MaterialGroup::through_hardened_alloy: return va[i];
-    default: return eh[i];
+    case MaterialGroup::normalized:
+      return st[i];
+    case MaterialGroup::through_hardened_carbon:
+      return vc[i];
+    case MaterialGroup::through_hardened_alloy:
+      return va[i];
+    default:
+      return eh[i];
   }
 }
 
 const Line& bending_line(MaterialGroup g, MaterialQuality q) {
-  static const std::array<Line, 3> st = {Line{0.455, 69, 110, 210, "Fig. 17 (St)"}, Line{0.455, 69, 110, 210, "Fig. 17 (St)"},
+  static const std::array<Line, 3> st = {Line{0.455, 69, 110, 210, "Fig. 17 (St)"},
+                                         Line{0.455, 69, 110, 210, "Fig. 17 (St)"},
                                          Line{0.386, 147, 110, 210, "Fig. 17 (St)"}};
   static const std::array<Line, 3> vc = {Line{0.250, 108, 115, 215, "Fig. 21 (V, carbon)"},
                                          Line{0.240, 163, 115, 215, "Fig. 21 (V, carbon)"},
@@ -63,14 +70,19 @@ const Line& bending_line(MaterialGroup g, MaterialQuality q) {
                                          Line{0.358, 231, 200, 390, "Fig. 22 (V, alloy)"}};
   // Eh MQ: 425 N/mm^2, the value for a core hardness of at least 25 HRC with the lower Jominy band
   // (the standard allows 461 and 500 for harder cores).
-  static const std::array<Line, 3> eh = {Line{0.0, 312, 660, 800, "Fig. 25 (Eh)"}, Line{0.0, 425, 660, 800, "Fig. 25 (Eh)"},
+  static const std::array<Line, 3> eh = {Line{0.0, 312, 660, 800, "Fig. 25 (Eh)"},
+                                         Line{0.0, 425, 660, 800, "Fig. 25 (Eh)"},
                                          Line{0.0, 525, 660, 800, "Fig. 25 (Eh)"}};
   const auto i = static_cast<std::size_t>(q);
   switch (g) {
-    case MaterialGroup::normalized: return st[i];
-    case MaterialGroup::through_hardened_carbon: return vc[i];
-    case MaterialGroup::through_hardened_alloy: return va[i];
-    default: return eh[i];
+    case MaterialGroup::normalized:
+      return st[i];
+    case MaterialGroup::through_hardened_carbon:
+      return vc[i];
+    case MaterialGroup::through_hardened_alloy:
+      return va[i];
+    default:
+      return eh[i];
   }
 }
 
@@ -107,8 +119,10 @@ void MaterialGrade::validate() const {
   if (group == MaterialGroup::none) return;
   if (!(surface_hardness >= 50.0 && surface_hardness <= 1200.0))
     throw core::KeyedError("surface_hardness", "must lie in [50, 1200] HV");
-  if (!(contact_limit >= 0.0 && contact_limit <= 3e9)) throw core::KeyedError("contact_limit", "must lie in [0, 3000] MPa");
-  if (!(bending_limit >= 0.0 && bending_limit <= 1.5e9)) throw core::KeyedError("bending_limit", "must lie in [0, 1500] MPa");
+  if (!(contact_limit >= 0.0 && contact_limit <= 3e9))
+    throw core::KeyedError("contact_limit", "must lie in [0, 3000] MPa");
+  if (!(bending_limit >= 0.0 && bending_limit <= 1.5e9))
+    throw core::KeyedError("bending_limit", "must lie in [0, 1500] MPa");
 }
 
 Allowable contact_allowable(const MaterialGrade& g) {
@@ -153,7 +167,7 @@ double roughness_factor(double contact_limit, double mean_rz, double relative_ra
   const double s = std::clamp(contact_limit / kMPa, 850.0, 1200.0);
   const double c_zr = 0.32 - 0.0002 * s;  // eq. (31)-(33): 0.15 below 850, 0.08 above 1200
   const double rz10 = mean_rz * 1e6 * std::cbrt(10.0 / (relative_radius * 1e3));  // eq. (29), um
-  return std::pow(3.0 / rz10, c_zr);                                               // eq. (28)
+  return std::pow(3.0 / rz10, c_zr);                                              // eq. (28)
 }
 
 double slip_layer_thickness(MaterialGroup g, double proof_stress) {
@@ -169,9 +183,12 @@ double slip_layer_thickness(MaterialGroup g, double proof_stress) {
   static constexpr double vx[] = {500, 600, 800, 1000}, vy[] = {0.0281, 0.0194, 0.0064, 0.0014};
   static constexpr double sx[] = {300, 400}, sy[] = {0.0833, 0.0445};
   switch (g) {
-    case MaterialGroup::case_hardened: return 0.0030e-3;
-    case MaterialGroup::normalized: return table(s, sx, sy) * 1e-3;
-    default: return table(s, vx, vy) * 1e-3;
+    case MaterialGroup::case_hardened:
+      return 0.0030e-3;
+    case MaterialGroup::normalized:
+      return table(s, sx, sy) * 1e-3;
+    default:
+      return table(s, vx, vy) * 1e-3;
   }
 }
 

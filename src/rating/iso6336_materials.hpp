@@ -58,7 +58,7 @@ double bending_life_factor(MaterialGroup g, double load_cycles, bool optimum);  
 
 // ISO 6336-2 9 and 10: lubricant and speed factors from sigma_Hlim [Pa], nu40 [m^2/s], v [m/s].
 double lubricant_factor(double contact_limit, double viscosity_40);  // Z_L
-double speed_factor(double contact_limit, double pitch_line_speed);   // Z_v
+double speed_factor(double contact_limit, double pitch_line_speed);  // Z_v
 // ISO 6336-2 11: roughness factor from the mean peak-to-valley roughness Rz of the pair's flanks
 // and the relative radius of curvature at the pitch point [m]: (3 um / Rz10)^C_ZR.
 double roughness_factor(double contact_limit, double mean_rz, double relative_radius);  // Z_R

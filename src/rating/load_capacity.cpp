@@ -28,15 +28,13 @@ double round_tolerance(double um) {
 // ISO 6336-1 Table 8's running-in allowance y_alpha of one gear from f_pb [um] at v [m/s].
 double running_in_allowance(MaterialGroup g, double contact_limit, double f_pb, double v) {
   if (g == MaterialGroup::case_hardened) return std::min(0.075 * f_pb, 3.0);  // eq. (77)
-  const double s = contact_limit / kMPa, y = 160.0 / s * f_pb;              // eq. (74)
+  const double s = contact_limit / kMPa, y = 160.0 / s * f_pb;                // eq. (74)
   if (v <= 5.0) return y;
   return std::min(y, (v <= 10.0 ? 12800.0 : 6400.0) / s);  // eqs. (75), (76)
 }
 
 // ISO 6336-1 eq. (31): the running-in amount C_ay standing in for an unmodified tip [um].
-double running_in_amount(double contact_limit) {
-  return std::pow(contact_limit / kMPa / 97.0 - 18.45, 2) / 18.0 + 1.5;
-}
+double running_in_amount(double contact_limit) { return std::pow(contact_limit / kMPa / 97.0 - 18.45, 2) / 18.0 + 1.5; }
 
 constexpr NamedChoice<RatingSettings::LongLife> kLongLife[] = {{RatingSettings::LongLife::optimum, "optimum"},
                                                                {RatingSettings::LongLife::normal, "normal"}};
@@ -112,12 +110,14 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
       throw core::KeyedError(g == 0 ? "pinion.material" : "wheel.material",
                              "the material file has no [rating] table (ISO 6336-5 group, quality, hardness)");
   if (pitting && !(in.viscosity_40 > 0.0))
-    throw core::KeyedError("viscosity_40", "the pitting rating needs the oil's nu40 (Z_L): give the case a [lubricant]");
+    throw core::KeyedError("viscosity_40",
+                           "the pitting rating needs the oil's nu40 (Z_L): give the case a [lubricant]");
 
   LoadCapacity out;
   auto add = [&](std::string symbol, int gear, double value, std::string unit, std::string clause, bool assumed = false,
                  std::string note = {}) {
-    out.factors.push_back({std::move(symbol), gear, value, std::move(unit), std::move(clause), assumed, std::move(note)});
+    out.factors.push_back(
+        {std::move(symbol), gear, value, std::move(unit), std::move(clause), assumed, std::move(note)});
     return value;
   };
   auto finding = [&](std::string what) { out.findings.push_back(std::move(what)); };
@@ -141,7 +141,9 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
   add("v", -1, v, "m/s", "ISO 6336-1: pitch-line velocity at d1");
   add("eps_alpha", -1, eps, "1", "ISO 21771: g_alpha/p_bt (geartrib's path)");
   add("K_A", -1, k_a, "1", "ISO 6336-1 6 (given)", false);
-  if (eps < 1.0 || eps >= 2.05) finding(fmt::format("eps_alpha = {:.3f} outside [1, 2.05): Y_DT = 1 and the spur K_Halpha taken beyond their range", eps));
+  if (eps < 1.0 || eps >= 2.05)
+    finding(fmt::format("eps_alpha = {:.3f} outside [1, 2.05): Y_DT = 1 and the spur K_Halpha taken beyond their range",
+                        eps));
 
   // --- ISO 6336-1: K_v method B (clause 6.5) ---
   const gear::IsoMeshStiffness stiffness = gear::iso6336_mesh_stiffness(pair, k_a * w);
@@ -187,7 +189,7 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
   add("m_red", -1, m_red, "kg/m", "ISO 6336-1 eq. (30): reduced mass per face width (discs of d_m less the bores)");
   const double n_ratio = in.pinion_speed * z1 / std::sqrt(cg / m_red);  // N = n1/n_E1, eqs. (8)-(9)
   add("N", -1, n_ratio, "1", "ISO 6336-1 eq. (8): resonance ratio n1/n_E1");
-  const double load_mm = load / 1e3;  // N/mm
+  const double load_mm = load / 1e3;                                                    // N/mm
   const double n_s = load_mm < 100.0 ? 0.5 + 0.35 * std::sqrt(load_mm / 100.0) : 0.85;  // eq. (11)
   // Table 7 (spur: eps_gamma = eps_alpha).
   const double eg = eps;
@@ -195,8 +197,8 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
   const double cv4 = eg <= 2.0 ? 0.90 : (0.57 - 0.05 * eg) / (eg - 1.44), cv5 = 0.47;
   const double cv6 = eg <= 2.0 ? 0.47 : 0.12 / (eg - 1.74);
   const double cv7 = eg <= 1.5 ? 0.75 : (eg <= 2.5 ? 0.125 * std::sin(kPi * (eg - 2.0)) + 0.875 : 1.0);
-  auto main_resonance = [&] { return cv1 * b_p + cv2 * b_f + cv4 * b_k + 1.0; };   // eq. (13)
-  auto supercritical = [&] { return cv5 * b_p + cv6 * b_f + cv7; };                // eq. (15)
+  auto main_resonance = [&] { return cv1 * b_p + cv2 * b_f + cv4 * b_k + 1.0; };  // eq. (13)
+  auto supercritical = [&] { return cv5 * b_p + cv6 * b_f + cv7; };               // eq. (15)
   double k_v = 1.0;
   std::string range;
   if (n_ratio <= n_s) {
@@ -212,7 +214,8 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
     k_v = supercritical();
     range = "supercritical, eq. (15)";
   }
-  if (n_ratio > n_s && n_ratio <= 1.15) finding("the pair runs in its main resonance range (K_v eq. 13): ISO 6336-1 advises against it");
+  if (n_ratio > n_s && n_ratio <= 1.15)
+    finding("the pair runs in its main resonance range (K_v eq. 13): ISO 6336-1 advises against it");
   out.dynamic_factor = add("K_v", -1, k_v, "1", "ISO 6336-1 6.5 method B, " + range);
   const bool k_hb_given = set.face_load_factor > 0.0;
   const double k_hb = k_hb_given ? set.face_load_factor : 1.0;
@@ -234,7 +237,8 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
   const double y_eps = 0.25 + 0.75 / eps;
   const double k_ha = std::clamp(k_alpha, 1.0, std::max(1.0, eg / (eps * z_eps * z_eps)));
   const double k_fa = std::clamp(k_alpha, 1.0, std::max(1.0, eg / (eps * y_eps)));
-  out.transverse_factor = add("K_Halpha", -1, k_ha, "1", "ISO 6336-1 eqs. (71)-(72), limited to [1, eps_gamma/(eps_alpha Z_eps^2)]");
+  out.transverse_factor =
+      add("K_Halpha", -1, k_ha, "1", "ISO 6336-1 eqs. (71)-(72), limited to [1, eps_gamma/(eps_alpha Z_eps^2)]");
   add("K_Falpha", -1, k_fa, "1", "ISO 6336-1 eqs. (71)-(73), limited to [1, eps_gamma/(eps_alpha Y_eps)]");
 
   // --- ISO 6336-2: pitting ---
@@ -269,10 +273,15 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
       add("sigma_H", g, s_h, "Pa", "ISO 6336-2 eqs. (3)-(4): Z_B|Z_D sigma_H0 sqrt(K_A K_v K_Hbeta K_Halpha)");
       const Allowable& lim = contact_limit[g];
       add("sigma_Hlim", g, lim.value, "Pa", lim.clause, in.grade[g].assumed, in.grade[g].source);
-      if (!lim.in_range) finding(fmt::format("{}: hardness outside ISO 6336-5's line for sigma_Hlim (taken at the line's end)", g == 0 ? "pinion" : "wheel"));
+      if (!lim.in_range)
+        finding(fmt::format("{}: hardness outside ISO 6336-5's line for sigma_Hlim (taken at the line's end)",
+                            g == 0 ? "pinion" : "wheel"));
       const double n_l = g == 0 ? set.load_cycles : set.load_cycles / u;
-      const double z_nt = contact_life_factor(in.grade[g].group, n_l, set.long_life == RatingSettings::LongLife::optimum);
-      add("Z_NT", g, z_nt, "1", fmt::format("ISO 6336-2 Table 2 at N_L = {:.3g} ({} long life)", n_l, set.long_life == RatingSettings::LongLife::optimum ? "optimum" : "normal"));
+      const double z_nt =
+          contact_life_factor(in.grade[g].group, n_l, set.long_life == RatingSettings::LongLife::optimum);
+      add("Z_NT", g, z_nt, "1",
+          fmt::format("ISO 6336-2 Table 2 at N_L = {:.3g} ({} long life)", n_l,
+                      set.long_life == RatingSettings::LongLife::optimum ? "optimum" : "normal"));
       const double z_l = lubricant_factor(lim.value, in.viscosity_40);
       add("Z_L", g, z_l, "1", "ISO 6336-2 eq. (22)");
       const double z_v = speed_factor(lim.value, v);
@@ -291,7 +300,8 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
 
   // --- ISO 6336-3: bending, method B ---
   if (bending) {
-    add("Y_eps", -1, y_eps, "1", "DIN 3990-3 / ISO 6336-3:1996: 0.25 + 0.75/eps_alpha (not applied: ISO 6336-3:2006+ method B has none)");
+    add("Y_eps", -1, y_eps, "1",
+        "DIN 3990-3 / ISO 6336-3:1996: 0.25 + 0.75/eps_alpha (not applied: ISO 6336-3:2006+ method B has none)");
     for (int g = 0; g < 2; ++g) {
       const gear::RootSection r = gear::iso6336_root_section(pair, g);
       const gear::GearBody& gb = pair.gear(g);
@@ -303,7 +313,8 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
       add("Y_F", g, r.form_factor, "1", "ISO 6336-3 eq. (6), method B on the generated root");
       add("Y_S", g, r.stress_correction, "1", "ISO 6336-3 eq. (26)");
       if (!r.stress_correction_in_range)
-        finding(fmt::format("{}: q_s = {:.2f} outside Y_S's range [1, 8)", g == 0 ? "pinion" : "wheel", r.notch_parameter));
+        finding(
+            fmt::format("{}: q_s = {:.2f} outside Y_S's range [1, 8)", g == 0 ? "pinion" : "wheel", r.notch_parameter));
       add("Y_beta", g, 1.0, "1", "ISO 6336-3 eq. (33), spur: 1");
       // Rim factor (eqs. 35-36): 1 for a solid gear or s_R/h_t >= 1.2.
       double y_b = 1.0;
@@ -311,7 +322,9 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
       if (gb.bore_radius > 0.0) {
         const double s_r = gb.root_radius - gb.bore_radius, ratio = s_r / h_t;
         if (ratio < 1.2) y_b = 1.6 * std::log(2.242 / std::max(ratio, 0.5));
-        if (ratio <= 0.5) finding(fmt::format("{}: rim s_R/h_t = {:.2f} at or below 0.5, outside Y_B's range", g == 0 ? "pinion" : "wheel", ratio));
+        if (ratio <= 0.5)
+          finding(fmt::format("{}: rim s_R/h_t = {:.2f} at or below 0.5, outside Y_B's range",
+                              g == 0 ? "pinion" : "wheel", ratio));
       }
       add("Y_B", g, y_b, "1", "ISO 6336-3 eqs. (35)-(36): rim below the root (bore given) or solid");
       add("Y_DT", g, 1.0, "1", "ISO 6336-3 eq. (37): 1 for eps_alpha <= 2.05");
@@ -321,12 +334,16 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
       add("sigma_F", g, s_f, "Pa", "ISO 6336-3 eq. (2): sigma_F0 K_A K_v K_Fbeta K_Falpha");
       const Allowable& lim = bending_limit[g];
       add("sigma_Flim", g, lim.value, "Pa", lim.clause, in.grade[g].assumed, in.grade[g].source);
-      if (!lim.in_range) finding(fmt::format("{}: hardness outside ISO 6336-5's line for sigma_Flim (taken at the line's end)", g == 0 ? "pinion" : "wheel"));
+      if (!lim.in_range)
+        finding(fmt::format("{}: hardness outside ISO 6336-5's line for sigma_Flim (taken at the line's end)",
+                            g == 0 ? "pinion" : "wheel"));
       add("Y_ST", g, 2.0, "1", "ISO 6336-3 5: stress correction of the reference test gear");
       const double n_l = g == 0 ? set.load_cycles : set.load_cycles / u;
-      const double y_nt = bending_life_factor(in.grade[g].group, n_l, set.long_life == RatingSettings::LongLife::optimum);
+      const double y_nt =
+          bending_life_factor(in.grade[g].group, n_l, set.long_life == RatingSettings::LongLife::optimum);
       add("Y_NT", g, y_nt, "1", fmt::format("ISO 6336-3 Table 3 at N_L = {:.3g}", n_l));
-      const double y_d = relative_notch_sensitivity(in.grade[g].group, in.material[g]->yield_strength, r.notch_parameter);
+      const double y_d =
+          relative_notch_sensitivity(in.grade[g].group, in.material[g]->yield_strength, r.notch_parameter);
       add("Y_deltarelT", g, y_d, "1", "ISO 6336-3 eq. (43), slip layer of Table 4");
       const bool rz_given = set.root_rz[g] > 0.0;
       const double y_r = relative_surface_factor(in.grade[g].group, rz_given ? set.root_rz[g] : kDefaultRootRz);

@@ -42,15 +42,15 @@ struct RatingSettings {
   // Z_NT, Y_NT beyond the knee: 1 (optimum) or down to 0.85 at 1e10
   enum class LongLife { optimum, normal } long_life = LongLife::optimum;
   enum class OilSupply { dip, spray } oil_supply = OilSupply::dip;  // X_S of the scuffing methods: 1.0, 1.2
-  int accuracy_grade = 6;           // Q of ISO 1328-1:1995, for f_pb and f_falpha
-  double load_cycles = 1e10;        // N_L of the pinion (the wheel's: N_L / u)
-  std::array<double, 2> flank_rz = {0.0, 0.0};  // Rz of each flank [m]; 0: 6 Ra (assumed)
-  std::array<double, 2> root_rz = {0.0, 0.0};   // Rz of each root fillet [m]; 0: 10 um (assumed)
-  void validate() const;                        // throws core::KeyedError naming the field
+  int accuracy_grade = 6;                                           // Q of ISO 1328-1:1995, for f_pb and f_falpha
+  double load_cycles = 1e10;                                        // N_L of the pinion (the wheel's: N_L / u)
+  std::array<double, 2> flank_rz = {0.0, 0.0};                      // Rz of each flank [m]; 0: 6 Ra (assumed)
+  std::array<double, 2> root_rz = {0.0, 0.0};                       // Rz of each root fillet [m]; 0: 10 um (assumed)
+  void validate() const;                                            // throws core::KeyedError naming the field
 };
 std::span<const NamedChoice<RatingSettings::LongLife>> long_life_choices();
 std::span<const NamedChoice<RatingSettings::OilSupply>> oil_supply_choices();
-inline constexpr double kRzOverRa = 6.0;        // Rz = 6 Ra when only Ra is known (assumed, ground flanks)
+inline constexpr double kRzOverRa = 6.0;         // Rz = 6 Ra when only Ra is known (assumed, ground flanks)
 inline constexpr double kDefaultRootRz = 10e-6;  // a hobbed and hardened root [m] (assumed)
 
 // What a rating is computed from: the pair, each gear's material and grade, the load and speed,
@@ -61,9 +61,9 @@ struct LoadCapacityInputs {
   std::array<const Material*, 2> material = {nullptr, nullptr};
   std::array<MaterialGrade, 2> grade;
   RatingSettings settings;
-  double pinion_torque = 0.0;  // [N m]
-  double pinion_speed = 0.0;   // [rad/s]
-  double viscosity_40 = 0.0;   // nu40 [m^2/s]
+  double pinion_torque = 0.0;                     // [N m]
+  double pinion_speed = 0.0;                      // [rad/s]
+  double viscosity_40 = 0.0;                      // nu40 [m^2/s]
   std::array<double, 2> flank_ra = {0.0, 0.0};    // [m]
   std::array<double, 2> tip_relief = {0.0, 0.0};  // C_a [m]
 };
@@ -74,21 +74,22 @@ struct LoadCapacity {
   std::array<double, 2> bending_safety = {0.0, 0.0};  // S_F
   std::array<double, 2> contact_stress = {0.0, 0.0};  // sigma_H [Pa]
   std::array<double, 2> root_stress = {0.0, 0.0};     // sigma_F [Pa]
-  double dynamic_factor = 1.0, transverse_factor = 1.0;  // K_v, K_Halpha (the scuffing and micropitting methods use them)
-  std::vector<std::string> findings;                  // every range left, with the factor
+  double dynamic_factor = 1.0,
+         transverse_factor = 1.0;     // K_v, K_Halpha (the scuffing and micropitting methods use them)
+  std::vector<std::string> findings;  // every range left, with the factor
   const RatingFactor* find(const std::string& symbol, int gear = -1) const;
 };
 
 // A case's ratings: every method's factors in one table, each gear's safeties, the findings.
 struct RatingResult {
-  std::vector<std::string> methods;                    // rated: pitting, bending, scuffing, micropitting
-  std::vector<RatingFactor> factors;                   // in the order the methods computed them
-  std::array<double, 2> pitting_safety = {0.0, 0.0};   // S_H (0: not rated)
-  std::array<double, 2> bending_safety = {0.0, 0.0};   // S_F
-  double flash_scuffing_safety = 0.0;                  // S_B, ISO/TS 6336-20 (0: not rated)
-  double integral_scuffing_safety = 0.0;               // S_intS, ISO/TS 6336-21
-  double min_lambda = 0.0;                             // lambda_GF,min along the path, ISO/TS 6336-22
-  double micropitting_safety = 0.0;                    // S_lambda = lambda_GF,min/lambda_GFP (0: not rated)
+  std::vector<std::string> methods;                   // rated: pitting, bending, scuffing, micropitting
+  std::vector<RatingFactor> factors;                  // in the order the methods computed them
+  std::array<double, 2> pitting_safety = {0.0, 0.0};  // S_H (0: not rated)
+  std::array<double, 2> bending_safety = {0.0, 0.0};  // S_F
+  double flash_scuffing_safety = 0.0;                 // S_B, ISO/TS 6336-20 (0: not rated)
+  double integral_scuffing_safety = 0.0;              // S_intS, ISO/TS 6336-21
+  double min_lambda = 0.0;                            // lambda_GF,min along the path, ISO/TS 6336-22
+  double micropitting_safety = 0.0;                   // S_lambda = lambda_GF,min/lambda_GFP (0: not rated)
   std::vector<std::string> findings;
   bool assumed_any() const;
 };

@@ -21,9 +21,7 @@ double fzg_a_torque(int stage) { return 3.726 * stage * stage; }
 
 double structural_factor(MaterialGroup) { return 1.0; }
 
-double micropitting_material_factor(MaterialGroup g) {
-  return g == MaterialGroup::case_hardened ? 1.0 : 0.5;
-}
+double micropitting_material_factor(MaterialGroup g) { return g == MaterialGroup::case_hardened ? 1.0 : 0.5; }
 
 IntegralTemperature iso_integral_temperature(const IntegralTemperatureInputs& in) {
   IntegralTemperature out;
@@ -39,7 +37,8 @@ IntegralTemperature iso_integral_temperature(const IntegralTemperatureInputs& in
   const double alpha_w = pair.operating_pressure_angle(), alpha = spec.pressure_angle;
   const double b = spec.face_width;
   const double eps = p.contact_ratio;
-  if (eps < 1.0 || eps > 2.5) out.findings.push_back(fmt::format("integral temperature: eps_alpha = {:.3f} outside [1, 2.5]", eps));
+  if (eps < 1.0 || eps > 2.5)
+    out.findings.push_back(fmt::format("integral temperature: eps_alpha = {:.3f} outside [1, 2.5]", eps));
   if (alpha < 15.0 * M_PI / 180.0 || alpha > 25.0 * M_PI / 180.0)
     out.findings.push_back("integral temperature: pressure angle outside [15, 25] deg");
 
@@ -55,13 +54,16 @@ IntegralTemperature iso_integral_temperature(const IntegralTemperatureInputs& in
   c.eta_oil = in.eta_oil;
   c.mean_ra = in.mean_ra;
   c.lubricant_factor = in.lubricant_factor;
-  const lubrication::MeanFriction mu = lubrication::mean_friction(lubrication::MeanFrictionLaw::iso, c, lubrication::BaseOil::mineral);
+  const lubrication::MeanFriction mu =
+      lubrication::mean_friction(lubrication::MeanFrictionLaw::iso, c, lubrication::BaseOil::mineral);
   add("mu_mC", mu.coefficient, "1", "ISO/TS 6336-21 eq. (1) (lubrication.mean_friction = iso)");
-  if (mu.load_raised) out.findings.push_back("integral temperature: w_Bt below 150 N/mm, mu_mC evaluated at 150 N/mm (clause 5.1)");
+  if (mu.load_raised)
+    out.findings.push_back("integral temperature: w_Bt below 150 N/mm, mu_mC evaluated at 150 N/mm (clause 5.1)");
 
   // Eq. (22)-(24): geometry factor at the pinion tip E.
   const double rho_e1 = p.e * 1e3, rho_e2 = (p.line_length - p.e) * 1e3;  // mm
-  const double x_be = 0.51 * std::sqrt(u + 1.0) * (std::sqrt(rho_e1) - std::sqrt(rho_e2 / u)) / std::pow(rho_e1 * rho_e2, 0.25);
+  const double x_be =
+      0.51 * std::sqrt(u + 1.0) * (std::sqrt(rho_e1) - std::sqrt(rho_e2 / u)) / std::pow(rho_e1 * rho_e2, 0.25);
   add("X_BE", x_be, "1", "ISO/TS 6336-21 eq. (22)");
   const double x_ab = lubrication::iso_angle_factor(alpha_w, alpha);
   add("X_alphabeta", x_ab, "1", "ISO/TS 6336-21 eq. (13)");
@@ -87,7 +89,8 @@ IntegralTemperature iso_integral_temperature(const IntegralTemperatureInputs& in
   add("X_Ca", x_ca, "1", "ISO/TS 6336-21 eq. (32)");
   // Eq. (19): flash temperature at E (w in N/mm, v in m/s, a in mm).
   const double theta_fla_e = mu.coefficient * in.thermo_elastic_factor * x_be * x_ab * std::pow(w_bt * 1e-3, 0.75) *
-                             std::sqrt(in.pitch_line_speed) / std::pow(pair.center_distance() * 1e3, 0.25) / (x_q * x_ca);
+                             std::sqrt(in.pitch_line_speed) / std::pow(pair.center_distance() * 1e3, 0.25) /
+                             (x_q * x_ca);
   add("theta_flaE", theta_fla_e, "K", "ISO/TS 6336-21 eq. (19): flash temperature at the pinion tip");
   // Contact ratio factor (eqs. 39-44).
   const double k = 1.0 / (2.0 * eps * eps1);
@@ -98,27 +101,27 @@ IntegralTemperature iso_integral_temperature(const IntegralTemperatureInputs& in
       x_eps = k * (0.70 * (eps1 * eps1 + eps2 * eps2) - 0.22 * eps + 0.52 - 0.60 * eps1 * eps2);
     else if (eps1 >= 1.0)
       x_eps = k * (0.18 * eps1 * eps1 + 0.70 * eps2 * eps2 + 0.82 * eps1 - 0.52 * eps2 - 0.30 * eps1 * eps2);
-    else
-      x_eps = k * (0.70 * eps1 * eps1 + 0.18 * eps2 * eps2 - 0.52 * eps1 + 0.82 * eps2 - 0.30 * eps1 * eps2);
+    else x_eps = k * (0.70 * eps1 * eps1 + 0.18 * eps2 * eps2 - 0.52 * eps1 + 0.82 * eps2 - 0.30 * eps1 * eps2);
   } else if (eps1 >= eps2)
     x_eps = k * (0.44 * eps1 * eps1 + 0.59 * eps2 * eps2 + 0.30 * eps1 - 0.30 * eps2 - 0.15 * eps1 * eps2);
-  else
-    x_eps = k * (0.59 * eps1 * eps1 + 0.44 * eps2 * eps2 - 0.30 * eps1 + 0.30 * eps2 - 0.15 * eps1 * eps2);
+  else x_eps = k * (0.59 * eps1 * eps1 + 0.44 * eps2 * eps2 - 0.30 * eps1 + 0.30 * eps2 - 0.15 * eps1 * eps2);
   add("X_eps", x_eps, "1", "ISO/TS 6336-21 eqs. (39)-(44)");
   const double theta_flaint = theta_fla_e * x_eps;
   add("theta_flaint", theta_flaint, "K", "ISO/TS 6336-21 eq. (18): mean flash temperature");
   const double theta_m = in.oil_temperature + 0.7 * in.oil_supply_factor * theta_flaint;  // eqs. (20)-(21)
   add("X_S", in.oil_supply_factor, "1", "ISO/TS 6336-21 (rating.oil_supply)");
   add("theta_M", theta_m, "K", "ISO/TS 6336-21 eq. (20): theta_oil + 0.7 X_S theta_flaint");
-  out.integral_temperature = add("theta_int", theta_m + 1.5 * theta_flaint, "K", "ISO/TS 6336-21 eq. (17): theta_M + 1.5 theta_flaint");
+  out.integral_temperature =
+      add("theta_int", theta_m + 1.5 * theta_flaint, "K", "ISO/TS 6336-21 eq. (17): theta_M + 1.5 theta_flaint");
   if (in.fzg_stage > 0) {
     const double t_1t = fzg_a_torque(in.fzg_stage);
     add("T_1T", t_1t, "N m", "ISO/TS 6336-21 eq. (97): 3.726 S_FZG^2 (FZG A/8.3/90)");
-    const double theta_mt = 80.0 + 0.23 * t_1t * in.lubricant_factor;                                       // degC, eq. (95)
-    const double theta_flat = 0.2 * t_1t * std::pow(100.0 / (in.viscosity_40 * 1e6), 0.02) * in.lubricant_factor;  // eq. (96)
+    const double theta_mt = 80.0 + 0.23 * t_1t * in.lubricant_factor;  // degC, eq. (95)
+    const double theta_flat =
+        0.2 * t_1t * std::pow(100.0 / (in.viscosity_40 * 1e6), 0.02) * in.lubricant_factor;  // eq. (96)
     add("X_WrelT", in.structural_factor, "1", "ISO/TS 6336-21 eq. (102): X_W/X_WT, X_WT = 1");
-    out.permissible_temperature =
-        add("theta_intS", kCelsius + theta_mt + in.structural_factor * 1.5 * theta_flat, "K", "ISO/TS 6336-21 eqs. (94)-(96)");
+    out.permissible_temperature = add("theta_intS", kCelsius + theta_mt + in.structural_factor * 1.5 * theta_flat, "K",
+                                      "ISO/TS 6336-21 eqs. (94)-(96)");
     // Eq. (14): the ratio of the temperatures in degC, as the standard writes it.
     out.safety = add("S_intS", (out.permissible_temperature - kCelsius) / (out.integral_temperature - kCelsius), "1",
                      "ISO/TS 6336-21 eq. (14): theta_intS/theta_int (degC)");

@@ -2,9 +2,9 @@
 
 #include "config/fzg_load_stages.hpp"
 #include "core/keyed_error.hpp"
-#include "runs/mesh_cycle.hpp"
 #include "lubrication/flank_temperature.hpp"
 #include "rating/scuffing.hpp"
+#include "runs/mesh_cycle.hpp"
 #include "surface/rough_surface.hpp"
 
 #include <fmt/format.h>
@@ -111,17 +111,19 @@ rating::RatingResult rate_case(const Case& c, const gear::GearMesh& mesh, const 
   out.bending_safety = lc.bending_safety;
   if (req.pitting) out.methods.emplace_back("pitting");
   if (req.bending) out.methods.emplace_back("bending");
-  const double k_load = c.rating.settings.application_factor * lc.dynamic_factor *
-                        lc.find("K_Hbeta")->value * lc.transverse_factor;  // K_A K_v K_Hbeta K_Halpha
+  const double k_load = c.rating.settings.application_factor * lc.dynamic_factor * lc.find("K_Hbeta")->value *
+                        lc.transverse_factor;  // K_A K_v K_Hbeta K_Halpha
 
   if (req.scuffing || req.micropitting) {
-    if (!cycle.lubrication_summary) throw core::KeyedError("rating.methods", "scuffing and micropitting need the lubricated cycle");
+    if (!cycle.lubrication_summary)
+      throw core::KeyedError("rating.methods", "scuffing and micropitting need the lubricated cycle");
     const contact::LubricationSummary& ls = *cycle.lubrication_summary;
     const lubrication::Lubricant& oil = c.lubrication.lubricant;
     const double x_l = oil.lubricant_factor();
     auto add = [&](std::string symbol, double value, std::string unit, std::string clause, bool assumed = false,
                    std::string note = {}) {
-      out.factors.push_back({std::move(symbol), -1, value, std::move(unit), std::move(clause), assumed, std::move(note)});
+      out.factors.push_back(
+          {std::move(symbol), -1, value, std::move(unit), std::move(clause), assumed, std::move(note)});
       return value;
     };
     if (req.scuffing) {
@@ -133,7 +135,8 @@ rating::RatingResult rate_case(const Case& c, const gear::GearMesh& mesh, const 
       if (theta_s > 0.0) {
         add("theta_S", theta_s, "K", "lubrication.scuffing_temperature (given)");
       } else if (oil.fzg_scuffing_stage > 0) {
-        add("S_FZG", oil.fzg_scuffing_stage, "1", "FZG A/8.3/90 failure load stage of the oil", oil.fzg_assumed, oil.fzg_source);
+        add("S_FZG", oil.fzg_scuffing_stage, "1", "FZG A/8.3/90 failure load stage of the oil", oil.fzg_assumed,
+            oil.fzg_source);
         add("X_W", x_w, "1", "ISO/TS 6336-20 Table 2: through-hardened and case-carburised (average austenite) 1.0");
         add("X_L", x_l, "1", "ISO/TS 6336-20: the base stock's lubricant factor");
         theta_s = add("theta_S", rating::fzg_scuffing_temperature(oil.fzg_scuffing_stage, x_w, x_l), "K",
@@ -191,8 +194,8 @@ rating::RatingResult rate_case(const Case& c, const gear::GearMesh& mesh, const 
       const auto b_m = [](const Material& m) {
         return lubrication::thermal_contact_coefficient(m.thermal_conductivity, m.density, m.specific_heat);
       };
-      it.thermo_elastic_factor = lubrication::iso_thermo_elastic_factor(composite_modulus(c.pinion.material, c.wheel.material) * 2.0,
-                                                                        b_m(c.pinion.material), b_m(c.wheel.material));
+      it.thermo_elastic_factor = lubrication::iso_thermo_elastic_factor(
+          composite_modulus(c.pinion.material, c.wheel.material) * 2.0, b_m(c.pinion.material), b_m(c.wheel.material));
       it.oil_supply_factor = c.rating.settings.oil_supply == rating::RatingSettings::OilSupply::spray ? 1.2 : 1.0;
       it.tip_relief[0] = c.mesh.modification[0].tip.amount;
       it.tip_relief[1] = c.mesh.modification[1].tip.amount;
@@ -227,9 +230,10 @@ rating::RatingResult rate_case(const Case& c, const gear::GearMesh& mesh, const 
                                     "ISO/TS 6336-22: method B on the C-GF test gear at the failure stage (8.3 m/s, "
                                     "90 degC oil, Ra 0.5 um, this oil)",
                                     oil.fzg_assumed);
-        const double w_w = add("W_W", rating::micropitting_material_factor(c.pinion.material.grade.group), "1",
-                               "ISO/TR 15144-1 material factor (recollected: case-carburised 1.0, through-hardened 0.5)",
-                               true, "unconfirmed: the standard's text was not available");
+        const double w_w =
+            add("W_W", rating::micropitting_material_factor(c.pinion.material.grade.group), "1",
+                "ISO/TR 15144-1 material factor (recollected: case-carburised 1.0, through-hardened 0.5)", true,
+                "unconfirmed: the standard's text was not available");
         lambda_p = add("lambda_GFP", rating::kMicropittingTestFactor * w_w * lambda_t, "1",
                        "ISO/TR 15144-1: 1.4 W_W lambda_GFT (recollected)", true,
                        "unconfirmed: the standard's text was not available");

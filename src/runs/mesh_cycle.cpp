@@ -12,10 +12,10 @@
 #include "contact/mesh_contact.hpp"
 #include "contact/position_threads.hpp"
 #include "contact/run_summary.hpp"
-#include "runs/case_rating.hpp"
 #include "core/keyed_error.hpp"
 #include "gear/gear_mesh.hpp"
 #include "gear/mesh_dynamics.hpp"
+#include "runs/case_rating.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/kinsol_solver.hpp"
 

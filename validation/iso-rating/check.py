@@ -90,6 +90,16 @@ def rows_of(binary):
                 row["tolerance"] = "rel 1e-6"
                 row["reason"] = "the same equation coded twice, independently; 1e-6 covers the hand script's rounded constants"
             rows.append(row)
+    # A published number: the FZG C pair's pitch-point Hertz pressure at T1 = 200 N m, 1347.3 MPa (GEARpie's
+    # report of the C14 gear, REPORT/C14.txt, as the hand calculation's README cites it): sigma_H0/Z_eps,
+    # the whole load on one pair at C.
+    f200 = {r["symbol"]: float(r["value"]) for r in rated(binary, ["gears/fzg-c.toml", "--set", "torque=200Nm"])
+            if r["gear"] == "pair"}
+    rows.append({"key": "fzg-c 200 N m", "quantity": "pitch-point Hertz pressure sigma_H0/Z_eps [Pa]",
+                 "model": f200["sigma_H0"] / f200["Z_eps"], "reference": 1347.3e6, "verdict": "agrees",
+                 "tolerance": "0.05%", "regression": "rel 1e-9",
+                 "reason": "GEARpie (Fernandes, FEUP) REPORT/C14.txt prints 1347.3 MPa: its rounding, 0.004 %, and the "
+                           "tip diameters' (published to 0.01 mm)"})
     return rows
 
 
