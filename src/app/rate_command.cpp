@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -62,7 +63,9 @@ void run(const Options& o) {
   }
   text += "\nSafety factors\n";
   for (const auto& v : contact::rating_summary(rt).values)
-    if (v.name != "findings_count" && v.name != "assumed_inputs") text += fmt::format("  {:<14} {:.4g}\n", v.name, v.value);
+    if (v.name != "findings_count" && v.name != "assumed_inputs")
+      text += std::isfinite(v.value) ? fmt::format("  {:<14} {:.4g}\n", v.name, v.value)
+                                     : fmt::format("  {:<14} not rated\n", v.name);
   for (const auto& f : rt.findings) text += "note: " + f + "\n";
   if (rt.assumed_any()) text += "* an input behind this value is assumed (see the note and the data file's source)\n";
   if (o.table.csv.to_file()) outputs.add_text(o.table.csv.file, csv);

@@ -7,6 +7,7 @@
 
 #include "contact/fidelity_registry.hpp"
 #include "contact/mesh_contact.hpp"
+#include "contact/run_summary.hpp"
 #include "output/hdf5_results.hpp"
 #include "output/html_report.hpp"
 #include "output/table_writer.hpp"
@@ -94,6 +95,18 @@ void print_summary(const contact::MeshContactResult& r) {
       fmt::print(
           "Scuffing (flash-temperature method): safety S_B {:.3g} (ISO/TS 6336-20), {:.3g} (Blok, local friction)\n",
           l.iso_scuffing_safety, l.scuffing_safety);
+  }
+  if (r.rating) {
+    // The ratings' verdict (/rating; the factors: geartrib rate), what was not rated left out.
+    std::string rated;
+    for (const auto& v : contact::rating_summary(*r.rating).values)
+      if (std::isfinite(v.value) && v.name != "assumed_inputs" && v.name != "findings_count" && v.name != "S_H_min" &&
+          v.name != "S_F_min" && v.name != "S_S_min")
+        rated += fmt::format("{}{} {:.3g}", rated.empty() ? "" : ", ", v.name, v.value);
+    fmt::print("Ratings (ISO 6336-2/-3, ISO/TS 6336-20/-21/-22 at K_A {:g}{}): {}\n",
+               r.rating->find("K_A") ? r.rating->find("K_A")->value : 1.0,
+               r.rating->assumed_any() ? ", some inputs assumed" : "", rated);
+    for (const auto& f : r.rating->findings) fmt::print("  rating: {}\n", f);
   }
   if (r.mixed_ehl_summary) {
     const auto& m = *r.mixed_ehl_summary;

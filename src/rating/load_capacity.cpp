@@ -93,7 +93,7 @@ bool RatingResult::assumed_any() const {
   return std::any_of(factors.begin(), factors.end(), [](const RatingFactor& f) { return f.assumed; });
 }
 
-const RatingFactor* LoadCapacity::find(const std::string& symbol, int gear) const {
+const RatingFactor* find_factor(const std::vector<RatingFactor>& factors, const std::string& symbol, int gear) {
   for (const auto& f : factors)
     if (f.symbol == symbol && f.gear == gear) return &f;
   return nullptr;

@@ -35,6 +35,9 @@ struct RatingFactor {
   std::string note;  // what it rests on, when it needs saying
 };
 
+// The factor of that symbol (and gear: -1 the pair) in a table; nullptr if absent.
+const RatingFactor* find_factor(const std::vector<RatingFactor>& factors, const std::string& symbol, int gear = -1);
+
 // The settings of a rating (a case's [rating]); SI.
 struct RatingSettings {
   double application_factor = 1.0;  // K_A
@@ -77,7 +80,9 @@ struct LoadCapacity {
   double dynamic_factor = 1.0,
          transverse_factor = 1.0;     // K_v, K_Halpha (the scuffing and micropitting methods use them)
   std::vector<std::string> findings;  // every range left, with the factor
-  const RatingFactor* find(const std::string& symbol, int gear = -1) const;
+  const RatingFactor* find(const std::string& symbol, int gear = -1) const {
+    return find_factor(factors, symbol, gear);
+  }
 };
 
 // A case's ratings: every method's factors in one table, each gear's safeties, the findings.
@@ -92,6 +97,9 @@ struct RatingResult {
   double micropitting_safety = 0.0;                   // S_lambda = lambda_GF,min/lambda_GFP (0: not rated)
   std::vector<std::string> findings;
   bool assumed_any() const;
+  const RatingFactor* find(const std::string& symbol, int gear = -1) const {
+    return find_factor(factors, symbol, gear);
+  }
 };
 
 // Pitting and bending per ISO 6336-2/-3 method B. `pitting`, `bending`: which to rate. Throws

@@ -13,6 +13,7 @@
 #include "contact/position_threads.hpp"
 #include "contact/run_summary.hpp"
 #include "core/keyed_error.hpp"
+#include "core/stopwatch.hpp"
 #include "gear/gear_mesh.hpp"
 #include "gear/mesh_dynamics.hpp"
 #include "runs/case_rating.hpp"
@@ -691,7 +692,9 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
   r.synthesis = std::move(synthesis);
   if (c.rating.any()) {
     try {
+      Stopwatch clock;
       r.rating = rate_case(c, mesh, r);
+      r.stages.push_back({"rating", clock.lap()});
     } catch (const core::KeyedError& e) {
       throw io::refusal_error(c, e);
     }

@@ -15,6 +15,7 @@
 #include "contact/mixed_ehl/mesh_mixed_ehl.hpp"
 #include "contact/rough_line_contact.hpp"
 #include "lubrication/lubricant.hpp"
+#include "runs/case_rating.hpp"
 #include "runs/mesh_cycle.hpp"
 #include "solvers/kinsol_solver.hpp"
 #include "surface/flank_profile.hpp"
@@ -173,6 +174,18 @@ void path_load_sharing(benchmark::State& state) {
       benchmark::DoNotOptimize(mesh.analysis().transmission_error_stats(mesh.cycle_positions()));
   }
 }
+// The ratings of the default case on its cycle's result (issue 34: under 1 ms): arg 0 pitting and
+// bending, 1 all four methods (the micropitting's permissible film runs the C-GF test gear's
+// lubricated cycle at 21 positions), 2 all four with lambda_GFP given (no test-gear cycle).
+void case_rating(benchmark::State& state) {
+  Case c = io::prepare_case(io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30.toml"));
+  const int which = static_cast<int>(state.range(0));
+  if (which == 0) c.rating.scuffing = c.rating.micropitting = false;
+  if (which == 2) c.lubrication.lubricant.permissible_lambda = 0.2;
+  const gear::GearMesh mesh = gear::case_mesh(c);
+  const contact::MeshContactResult cycle = runs::run_mesh_contact(c, mesh, nullptr, {});
+  for (auto _ : state) benchmark::DoNotOptimize(runs::rate_case(c, mesh, cycle));
+}
 // The deterministic cycle (issue 20: the default 201 positions in at most 5 s on one core):
 // gears/m6z30-deterministic.toml on one thread at element sizes 2, 1, 0.5 (its default) and
 // 0.25 um [nm in the argument].
@@ -246,6 +259,7 @@ BENCHMARK(cycle_deterministic)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(cycle_load_sharing)->DenseRange(0, 3)->ArgName("sharing")->Unit(benchmark::kMillisecond);
 BENCHMARK(path_load_sharing)->DenseRange(0, 3)->ArgName("sharing")->Unit(benchmark::kMillisecond);
+BENCHMARK(case_rating)->DenseRange(0, 2)->ArgName("methods")->Unit(benchmark::kMicrosecond);
 BENCHMARK(cycle_lubricated)
     ->ArgsProduct({{0, 1}, {201, 1000}})
     ->ArgNames({"lubricated", "positions"})
