@@ -12,7 +12,7 @@ columns between "point" and "status" (the table's layout). An axis with one valu
 is one line along x.
 
 Quantities (--quantity, repeatable or comma-separated; one row of panels each; "ratings" stands for
-a rated sweep's safety factors S_H_min, S_F_min, S_S_min, lambda_GF_min): by default the
+a rated sweep's safety factors S_H_min, S_F_min, S_S_min, lambda_GF_min, S_lambda): by default the
 mesh-level values of a lubricated sweep that are present (mesh_power_loss_W,
 tooth_friction_efficiency, gear_loss_factor_path, bulk_temperature_K, iso_scuffing_safety,
 scuffing_safety, min_iso_lambda_gf), else hertz_p0_Pa_max, real_area_ratio_min and
@@ -35,7 +35,7 @@ from matplotlib.lines import Line2D  # noqa: E402
 MESH_LEVEL = ["mesh_power_loss_W", "tooth_friction_efficiency", "gear_loss_factor_path", "bulk_temperature_K",
               "iso_scuffing_safety", "scuffing_safety", "min_iso_lambda_gf"]
 DRY = ["hertz_p0_Pa_max", "real_area_ratio_min", "plastic_area_fraction_max"]
-RATING = ["S_H_min", "S_F_min", "S_S_min", "lambda_GF_min"]  # a rated sweep's safety factors ([rating] methods)
+RATING = ["S_H_min", "S_F_min", "S_S_min", "lambda_GF_min", "S_lambda"]  # a rated sweep's safety factors ([rating] methods)
 MAX_PANELS = 8  # values of the third axis, one column of panels each
 
 
