@@ -1,6 +1,8 @@
 // The tooth root's critical section (gear/tooth_root.hpp): found on the generated fillet, checked
 // against ISO 6336-3:2019 method B's closed form (eqs. 8-19: the theta iteration), a different
 // derivation of the same section, and against the limits the construction must reach.
+#include "config/case_file.hpp"
+#include "config/fzg_load_stages.hpp"
 #include "gear/involute.hpp"
 #include "gear/tooth_root.hpp"
 
@@ -9,6 +11,7 @@
 #include <cmath>
 #include <numbers>
 
+using namespace geartrib;
 using namespace geartrib::gear;
 
 namespace {
@@ -50,21 +53,6 @@ GearPairSpec seed_pair() {
   return s;
 }
 
-GearPairSpec fzg_c() {
-  GearPairSpec s;
-  s.module = 4.5e-3;
-  s.pressure_angle = 20.0 * kPi / 180.0;
-  s.face_width = 14e-3;
-  s.center_distance = 91.5e-3;
-  s.teeth[0] = 16;
-  s.teeth[1] = 24;
-  s.profile_shift[0] = 0.1817;
-  s.profile_shift[1] = 0.1715;
-  s.tip_diameter[0] = 82.46e-3;
-  s.tip_diameter[1] = 118.36e-3;
-  return s;
-}
-
 void expect_closed_form(const GearPairSpec& spec) {
   const SpurPair pair(spec);
   for (int i = 0; i < 2; ++i) {
@@ -85,7 +73,7 @@ void expect_closed_form(const GearPairSpec& spec) {
 
 TEST(ToothRoot, SeedPairMatchesIsoClosedForm) { expect_closed_form(seed_pair()); }
 
-TEST(ToothRoot, ShiftedFzgCMatchesIsoClosedForm) { expect_closed_form(fzg_c()); }
+TEST(ToothRoot, ShiftedFzgCMatchesIsoClosedForm) { expect_closed_form(io::fzg_c_gear_pair()); }
 
 TEST(ToothRoot, ManyTeethApproachTheRack) {
   // As z grows the trochoid of the rounding's centre straightens and the fillet becomes the rack's
@@ -103,4 +91,20 @@ TEST(ToothRoot, ManyTeethApproachTheRack) {
   const double d250 = deviation(250), d1000 = deviation(1000);
   EXPECT_LT(d1000, 0.05);
   EXPECT_NEAR(d250 / d1000, 4.0, 0.4);  // O(1/z), the O(1/z^2) rest within 10 %
+}
+
+TEST(ToothRoot, FzgCPairInCodeIsTheCaseFiles) {
+  // The micropitting rating's test gear (io::fzg_c_gear_pair) and gears/fzg-c.toml: one pair.
+  const Case c = io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/fzg-c.toml");
+  const GearPairSpec a = io::fzg_c_gear_pair(), &b = c.gear_pair;
+  EXPECT_DOUBLE_EQ(a.module, b.module);  // the file converts mm once: to the last bits
+  EXPECT_DOUBLE_EQ(a.pressure_angle, b.pressure_angle);
+  EXPECT_DOUBLE_EQ(a.face_width, b.face_width);
+  EXPECT_DOUBLE_EQ(a.center_distance, b.center_distance);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(a.teeth[i], b.teeth[i]);
+    EXPECT_DOUBLE_EQ(a.profile_shift[i], b.profile_shift[i]);
+    EXPECT_DOUBLE_EQ(a.tip_diameter[i], b.tip_diameter[i]);
+    EXPECT_DOUBLE_EQ(a.bore_diameter[i], b.bore_diameter[i]);
+  }
 }

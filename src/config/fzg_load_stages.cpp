@@ -1,5 +1,7 @@
 #include "config/fzg_load_stages.hpp"
 
+#include <numbers>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -39,6 +41,22 @@ std::vector<std::string> fzg_test_names() {
   std::vector<std::string> names;
   for (const FzgTest& t : fzg_tests()) names.emplace_back(t.name);
   return names;
+}
+
+gear::GearPairSpec fzg_c_gear_pair() {
+  gear::GearPairSpec g;
+  g.module = 4.5e-3;
+  g.pressure_angle = 20.0 * std::numbers::pi / 180.0;
+  g.face_width = 14e-3;
+  g.center_distance = 91.5e-3;
+  g.teeth[0] = 16;
+  g.teeth[1] = 24;
+  g.profile_shift[0] = 0.1817;
+  g.profile_shift[1] = 0.1715;
+  g.tip_diameter[0] = 82.46e-3;
+  g.tip_diameter[1] = 118.36e-3;
+  g.bore_diameter[0] = g.bore_diameter[1] = 30e-3;
+  return g;
 }
 
 FzgTorque fzg_pinion_torque(std::string_view test, int stage) {

@@ -5,6 +5,8 @@
 // instead of a torque (io::load_case resolves them).
 #pragma once
 
+#include "gear/spur_pair.hpp"
+
 #include <array>
 #include <string>
 #include <string_view>
@@ -44,5 +46,10 @@ struct FzgTorque {
   std::string origin;
 };
 FzgTorque fzg_pinion_torque(std::string_view test, int stage);
+
+// The FZG type C test gear pair (z 16/24, m 4.5 mm, b 14 mm, x 0.1817/0.1715, a 91.5 mm, the
+// published tip diameters, the rig's 30 mm shafts as bores), as gears/fzg-c.toml gives it with its
+// sources (a test holds the two equal): the micropitting rating's test gear.
+gear::GearPairSpec fzg_c_gear_pair();
 
 }  // namespace geartrib::io

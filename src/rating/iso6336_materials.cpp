@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 namespace geartrib::rating {
 
@@ -30,60 +31,39 @@ struct Line {
 };
 
 // ISO 6336-5:2016 Table 1's lines A x + B, x = HV (the St lines are written for HBW; St is rated on
-// the number given). Order: ML, MQ, ME. Source: two public transcriptions of the 2016 table
-// (docs/theory/ratings.md).
-const Line& contact_line(MaterialGroup g, MaterialQuality q) {
-  static const std::array<Line, 3> st = {Line{1.000, 190, 110, 210, "Fig. 1 (St)"},
-                                         Line{1.000, 190, 110, 210, "Fig. 1 (St)"},
-                                         Line{1.520, 250, 110, 210, "Fig. 1 (St)"}};
-  static const std::array<Line, 3> vc = {Line{0.963, 283, 135, 210, "Fig. 5 (V, carbon)"},
-                                         Line{0.925, 360, 135, 210, "Fig. 5 (V, carbon)"},
-                                         Line{0.838, 432, 135, 210, "Fig. 5 (V, carbon)"}};
-  static const std::array<Line, 3> va = {Line{1.313, 188, 200, 360, "Fig. 6 (V, alloy)"},
-                                         Line{1.313, 373, 200, 360, "Fig. 6 (V, alloy)"},
-                                         Line{2.213, 260, 200, 390, "Fig. 6 (V, alloy)"}};
-  static const std::array<Line, 3> eh = {Line{0.0, 1300, 600, 800, "Fig. 9 (Eh)"},
-                                         Line{0.0, 1500, 600, 800, "Fig. 9 (Eh)"},
-                                         Line{0.0, 1650, 600, 800, "Fig. 9 (Eh)"}};
-  const auto i = static_cast<std::size_t>(q);
-  switch (g) {
-    case MaterialGroup::normalized:
-      return st[i];
-    case MaterialGroup::through_hardened_carbon:
-      return vc[i];
-    case MaterialGroup::through_hardened_alloy:
-      return va[i];
-    default:
-      return eh[i];
-  }
-}
-
-const Line& bending_line(MaterialGroup g, MaterialQuality q) {
-  static const std::array<Line, 3> st = {Line{0.455, 69, 110, 210, "Fig. 17 (St)"},
-                                         Line{0.455, 69, 110, 210, "Fig. 17 (St)"},
-                                         Line{0.386, 147, 110, 210, "Fig. 17 (St)"}};
-  static const std::array<Line, 3> vc = {Line{0.250, 108, 115, 215, "Fig. 21 (V, carbon)"},
-                                         Line{0.240, 163, 115, 215, "Fig. 21 (V, carbon)"},
-                                         Line{0.283, 202, 115, 215, "Fig. 21 (V, carbon)"}};
-  static const std::array<Line, 3> va = {Line{0.423, 104, 200, 360, "Fig. 22 (V, alloy)"},
-                                         Line{0.425, 187, 200, 360, "Fig. 22 (V, alloy)"},
-                                         Line{0.358, 231, 200, 390, "Fig. 22 (V, alloy)"}};
-  // Eh MQ: 425 N/mm^2, the value for a core hardness of at least 25 HRC with the lower Jominy band
-  // (the standard allows 461 and 500 for harder cores).
-  static const std::array<Line, 3> eh = {Line{0.0, 312, 660, 800, "Fig. 25 (Eh)"},
-                                         Line{0.0, 425, 660, 800, "Fig. 25 (Eh)"},
-                                         Line{0.0, 525, 660, 800, "Fig. 25 (Eh)"}};
-  const auto i = static_cast<std::size_t>(q);
-  switch (g) {
-    case MaterialGroup::normalized:
-      return st[i];
-    case MaterialGroup::through_hardened_carbon:
-      return vc[i];
-    case MaterialGroup::through_hardened_alloy:
-      return va[i];
-    default:
-      return eh[i];
-  }
+// the number given), contact then bending, each ML, MQ, ME. Source: two public transcriptions of
+// the 2016 table (docs/theory/ratings.md). Eh MQ bending: 425 N/mm^2, the value for a core of at
+// least 25 HRC with the lower Jominy band (the standard allows 461 and 500 for harder cores).
+struct GroupLines {
+  MaterialGroup group;
+  std::array<Line, 3> contact, bending;
+};
+const GroupLines kLines[] = {
+    {MaterialGroup::normalized,
+     {Line{1.000, 190, 110, 210, "Fig. 1 (St)"}, Line{1.000, 190, 110, 210, "Fig. 1 (St)"},
+      Line{1.520, 250, 110, 210, "Fig. 1 (St)"}},
+     {Line{0.455, 69, 110, 210, "Fig. 17 (St)"}, Line{0.455, 69, 110, 210, "Fig. 17 (St)"},
+      Line{0.386, 147, 110, 210, "Fig. 17 (St)"}}},
+    {MaterialGroup::through_hardened_carbon,
+     {Line{0.963, 283, 135, 210, "Fig. 5 (V, carbon)"}, Line{0.925, 360, 135, 210, "Fig. 5 (V, carbon)"},
+      Line{0.838, 432, 135, 210, "Fig. 5 (V, carbon)"}},
+     {Line{0.250, 108, 115, 215, "Fig. 21 (V, carbon)"}, Line{0.240, 163, 115, 215, "Fig. 21 (V, carbon)"},
+      Line{0.283, 202, 115, 215, "Fig. 21 (V, carbon)"}}},
+    {MaterialGroup::through_hardened_alloy,
+     {Line{1.313, 188, 200, 360, "Fig. 6 (V, alloy)"}, Line{1.313, 373, 200, 360, "Fig. 6 (V, alloy)"},
+      Line{2.213, 260, 200, 390, "Fig. 6 (V, alloy)"}},
+     {Line{0.423, 104, 200, 360, "Fig. 22 (V, alloy)"}, Line{0.425, 187, 200, 360, "Fig. 22 (V, alloy)"},
+      Line{0.358, 231, 200, 390, "Fig. 22 (V, alloy)"}}},
+    {MaterialGroup::case_hardened,
+     {Line{0.0, 1300, 600, 800, "Fig. 9 (Eh)"}, Line{0.0, 1500, 600, 800, "Fig. 9 (Eh)"},
+      Line{0.0, 1650, 600, 800, "Fig. 9 (Eh)"}},
+     {Line{0.0, 312, 660, 800, "Fig. 25 (Eh)"}, Line{0.0, 425, 660, 800, "Fig. 25 (Eh)"},
+      Line{0.0, 525, 660, 800, "Fig. 25 (Eh)"}}},
+};
+const GroupLines& lines_of(MaterialGroup g) {
+  for (const auto& l : kLines)
+    if (l.group == g) return l;
+  throw std::invalid_argument("ISO 6336-5: no allowable stress lines for material group 'none'");
 }
 
 Allowable from_line(const Line& l, const MaterialGrade& g, double given, const char* what) {
@@ -126,10 +106,10 @@ void MaterialGrade::validate() const {
 }
 
 Allowable contact_allowable(const MaterialGrade& g) {
-  return from_line(contact_line(g.group, g.quality), g, g.contact_limit, "sigma_Hlim");
+  return from_line(lines_of(g.group).contact[static_cast<std::size_t>(g.quality)], g, g.contact_limit, "sigma_Hlim");
 }
 Allowable bending_allowable(const MaterialGrade& g) {
-  return from_line(bending_line(g.group, g.quality), g, g.bending_limit, "sigma_Flim");
+  return from_line(lines_of(g.group).bending[static_cast<std::size_t>(g.quality)], g, g.bending_limit, "sigma_Flim");
 }
 
 double contact_life_factor(MaterialGroup, double n, bool optimum) {

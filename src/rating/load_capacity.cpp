@@ -121,6 +121,13 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
     return value;
   };
   auto finding = [&](std::string what) { out.findings.push_back(std::move(what)); };
+  // An allowable of gear g in the table, flagged where its hardness left ISO 6336-5's line.
+  auto allowable = [&](const char* symbol, int g, const Allowable& lim) {
+    add(symbol, g, lim.value, "Pa", lim.clause, in.grade[g].assumed, in.grade[g].source);
+    if (!lim.in_range)
+      finding(fmt::format("{}: hardness outside ISO 6336-5's line for {} (taken at the line's end)",
+                          g == 0 ? "pinion" : "wheel", symbol));
+  };
 
   const double m = spec.module, alpha = spec.pressure_angle, b = spec.face_width;
   const double alpha_w = pair.operating_pressure_angle();
@@ -272,10 +279,7 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
       const double s_h = z_bd[g] * s_h0 * std::sqrt(k_a * k_v * k_hb * k_ha);
       add("sigma_H", g, s_h, "Pa", "ISO 6336-2 eqs. (3)-(4): Z_B|Z_D sigma_H0 sqrt(K_A K_v K_Hbeta K_Halpha)");
       const Allowable& lim = contact_limit[g];
-      add("sigma_Hlim", g, lim.value, "Pa", lim.clause, in.grade[g].assumed, in.grade[g].source);
-      if (!lim.in_range)
-        finding(fmt::format("{}: hardness outside ISO 6336-5's line for sigma_Hlim (taken at the line's end)",
-                            g == 0 ? "pinion" : "wheel"));
+      allowable("sigma_Hlim", g, lim);
       const double n_l = g == 0 ? set.load_cycles : set.load_cycles / u;
       const double z_nt =
           contact_life_factor(in.grade[g].group, n_l, set.long_life == RatingSettings::LongLife::optimum);
@@ -333,10 +337,7 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
       const double s_f = s_f0 * k_a * k_v * k_fb * k_fa;
       add("sigma_F", g, s_f, "Pa", "ISO 6336-3 eq. (2): sigma_F0 K_A K_v K_Fbeta K_Falpha");
       const Allowable& lim = bending_limit[g];
-      add("sigma_Flim", g, lim.value, "Pa", lim.clause, in.grade[g].assumed, in.grade[g].source);
-      if (!lim.in_range)
-        finding(fmt::format("{}: hardness outside ISO 6336-5's line for sigma_Flim (taken at the line's end)",
-                            g == 0 ? "pinion" : "wheel"));
+      allowable("sigma_Flim", g, lim);
       add("Y_ST", g, 2.0, "1", "ISO 6336-3 5: stress correction of the reference test gear");
       const double n_l = g == 0 ? set.load_cycles : set.load_cycles / u;
       const double y_nt =

@@ -18,25 +18,13 @@ namespace {
 
 constexpr double kCelsius = 273.15;
 
-// The FZG micropitting test GF-C/8.3/90 on its type C gear (FVA 54/7; the geometry as
-// gears/fzg-c.toml and validation/fzg-type-c): 8.3 m/s (2175 1/min), 90 degC oil, both flanks ground
-// to Ra 0.5 um, case-carburised 16MnCr5 (materials/16MnCr5.toml's values), the load of failure
-// stage `stage` on the 0.35 m arm; the oil and the lubrication models of the rated case `c`.
+// The FZG micropitting test GF-C/8.3/90 on its type C gear (FVA 54/7; io::fzg_c_gear_pair): 8.3 m/s (2175 1/min), 90
+// degC oil, both flanks ground to Ra 0.5 um, case-carburised 16MnCr5 (materials/16MnCr5.toml's values), the load of
+// failure stage `stage` on the 0.35 m arm; the oil and the lubrication models of the rated case `c`.
 Case fzg_c_test(const Case& c, int stage) {
   Case t;
   t.title = fmt::format("FZG GF-C/8.3/90 test gear at failure load stage {}", stage);
-  gear::GearPairSpec& g = t.gear_pair;
-  g.module = 4.5e-3;
-  g.pressure_angle = 20.0 * M_PI / 180.0;
-  g.face_width = 14e-3;
-  g.center_distance = 91.5e-3;
-  g.teeth[0] = 16;
-  g.teeth[1] = 24;
-  g.profile_shift[0] = 0.1817;
-  g.profile_shift[1] = 0.1715;
-  g.tip_diameter[0] = 82.46e-3;
-  g.tip_diameter[1] = 118.36e-3;
-  g.bore_diameter[0] = g.bore_diameter[1] = 30e-3;
+  t.gear_pair = io::fzg_c_gear_pair();
   for (GearSpec* gs : {&t.pinion, &t.wheel}) {
     Material& m = gs->material;
     m.name = "16MnCr5, case-carburised (the FZG C test gear)";

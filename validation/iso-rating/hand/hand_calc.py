@@ -67,6 +67,30 @@ INPUTS = {
         "K_A": 1.0, "K_Hbeta": 1.0, "Q": 6,
         "N_L": 1.0e10, "life_branch": "optimum",
         "pitting_permitted": False,
+        # Scuffing, ISO/TS 6336-21 (= ISO/TR 13989-2:2000) integral temperature + the ISO/TS 6336-20
+        # scuffing temperature theta_S. The oil's nu40, nu100, rho15, density coefficient and FZG stage
+        # are read at run time from the text of oil_file (values below are cross-checked against it),
+        # the thermal data likewise from material_file.
+        "scuffing": {
+            "oil_file": "lubricants/mineral-vg220.toml",
+            "material_file": "materials/steel-45.toml",      # both gears
+            "theta_oil": 70.0,           # degC, gears/m6z30.toml [operating] oil_temperature
+            "nu40": 220.0, "nu100": 18.75,        # mm^2/s (oil_file)
+            "rho15": 895.0, "rho_coeff": 6.7e-4,  # kg/m^3, 1/K (oil_file): rho = rho15 (1 - c (T - 15))
+            "S_FZG": 12,                 # FZG A/8.3/90 failure load stage (oil_file fzg_scuffing_stage, assumed there)
+            "X_L": 1.0,                  # mineral oil (TR 13989 lubricant table)
+            "X_W": 1.0,                  # structural factor (through hardened; flash-method theta_S)
+            "X_WrelT": 1.0,              # X_W / X_WT, X_WT = 1
+            "X_S": 1.0,                  # dip lubrication
+            "X_mp": 1.0,                 # one mating gear
+            "phi_E": 1.0,                # run in -> X_E = 1
+            "pinion_driving": True,
+            "C_a": (0.0, 0.0),           # um, no tip relief
+            "lambda": (48.0, 48.0),      # W/(m K)   materials/steel-45.toml
+            "rho_mat": (7850.0, 7850.0), # kg/m^3
+            "c_mat": (470.0, 470.0),     # J/(kg K)
+            "a_expected": 180.0,         # mm, the brief's centre distance (= reference, x1 + x2 = 0)
+        },
     },
 }
 
