@@ -30,7 +30,7 @@ std::pair<double, std::string> engineering(const rating::RatingFactor& f) {
   if (f.unit == "m")
     return f.value < 1e-3 ? std::pair{f.value * 1e6, std::string("um")} : std::pair{f.value * 1e3, std::string("mm")};
   if (f.unit == "K" && f.symbol.rfind("theta_fl", 0) != 0) return {f.value - 273.15, "degC"};
-  if (f.unit == "N/m^2") return {f.value * 1e-6, "N/(mm um)"};
+  if (f.unit == "N/m^2") return {f.value * 1e-9, "N/(mm um)"};
   if (f.unit == "Pa^0.5") return {f.value * 1e-3, "N^0.5/mm"};
   return {f.value, f.unit};
 }

@@ -18,7 +18,7 @@ IsoMeshStiffness iso6336_mesh_stiffness(const SpurPair& pair, double line_load) 
   const double cm = 0.8, cr = 1.0;
   const double alpha_deg = pair.spec().pressure_angle * 180.0 / std::numbers::pi;
   const double cb = (1.0 + 0.5 * (1.2 - pair.spec().dedendum_coefficient)) * (1.0 - 0.02 * (20.0 - alpha_deg));
-  const double load_factor = std::min(1.0, line_load / kIsoFullLineLoad);
+  const double load_factor = std::pow(std::min(1.0, line_load / kIsoFullLineLoad), 0.25);
   r.single = r.theoretical * cm * cr * cb * load_factor;
   r.mesh = r.single * (0.75 * pair.path().contact_ratio + 0.25);
   return r;

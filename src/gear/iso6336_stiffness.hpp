@@ -13,11 +13,12 @@ struct IsoMeshStiffness {
   double mesh = 0.0;           // c_gamma_alpha = c' (0.75 eps_alpha + 0.25) [N/m/m]
 };
 
-// The line load F_t K_A/b below which ISO scales c' down in proportion (real gears' profile
-// deviations leave part of the face unloaded at light load) [N/m].
+// The line load F_t K_A/b below which ISO scales c' down (real gears' profile deviations leave part
+// of the face unloaded at light load) [N/m].
 inline constexpr double kIsoFullLineLoad = 100e3;  // 100 N/mm
 
-// line_load: F_t K_A / b [N/m]; below kIsoFullLineLoad ISO scales c' by (F_t K_A/b)/(100 N/mm).
+// line_load: F_t K_A / b [N/m]; below kIsoFullLineLoad ISO scales c' by ((F_t K_A/b)/(100 N/mm))^0.25
+// (ISO 6336-1:2006 9.3; two public transcriptions agree, docs/theory/ratings.md).
 // C_M = 0.8 (solid disc), C_R = 1 (solid), C_B from the basic rack dedendum and angle.
 IsoMeshStiffness iso6336_mesh_stiffness(const SpurPair& pair, double tangential_line_load);
 

@@ -98,7 +98,7 @@ std::pair<double, std::string> engineering(double v, const std::string& unit) {
   if (unit == "Pa") return {v * 1e-6, "MPa"};
   if (unit == "m")
     return std::abs(v) < 1e-3 ? std::pair{v * 1e6, std::string("&micro;m")} : std::pair{v * 1e3, std::string("mm")};
-  if (unit == "N/m^2") return {v * 1e-6, "N/(mm &micro;m)"};
+  if (unit == "N/m^2") return {v * 1e-9, "N/(mm &micro;m)"};
   if (unit == "Pa^0.5") return {v * 1e-3, "N<sup>0.5</sup>/mm"};
   if (unit == "N/m") return {v * 1e-3, "N/mm"};
   return {v, unit == "1" ? "" : escape(unit)};

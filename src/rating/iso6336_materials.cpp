@@ -172,6 +172,18 @@ double slip_layer_thickness(MaterialGroup g, double proof_stress) {
   }
 }
 
+bool slip_layer_in_range(MaterialGroup g, double proof_stress) {
+  const double s = proof_stress / kMPa;
+  switch (g) {
+    case MaterialGroup::case_hardened:
+      return true;
+    case MaterialGroup::normalized:
+      return s >= 300.0 && s <= 400.0;
+    default:
+      return s >= 500.0 && s <= 1000.0;
+  }
+}
+
 double relative_notch_sensitivity(MaterialGroup g, double proof_stress, double q_s) {
   // ISO 6336-3 eq. (43)-(45): (1 + sqrt(rho' chi*))/(1 + sqrt(rho' chi*_T)), chi* = (1 + 2 q_s)/5
   // [1/mm], chi*_T at the test gear's q_sT = 2.5.
@@ -187,6 +199,12 @@ double relative_surface_factor(MaterialGroup g, double root_rz) {
   if (g == MaterialGroup::normalized) return rz < 1.0 ? 1.070 : 5.306 - 4.203 * std::pow(rz + 1.0, 0.01);
   if (rz < 1.0) return 1.120;
   return 1.674 - 0.529 * std::pow(rz + 1.0, 0.1);
+}
+
+double contact_size_factor(MaterialGroup g, double module) {
+  const double m = module * 1e3;
+  if (g != MaterialGroup::case_hardened || m <= 10.0) return 1.0;
+  return std::max(0.9, 1.05 - 0.005 * m);
 }
 
 double bending_size_factor(MaterialGroup g, double module) {

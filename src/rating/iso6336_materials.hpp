@@ -66,9 +66,14 @@ double roughness_factor(double contact_limit, double mean_rz, double relative_ra
 // ISO 6336-3 method B relative notch sensitivity from the slip-layer thickness rho' of the group
 // (and, through-hardened, the 0.2 % proof stress [Pa]): Y_deltarelT.
 double slip_layer_thickness(MaterialGroup g, double proof_stress);  // rho' [m]
+// Whether the proof stress lies inside the rows of Table 4 (Eh: any); outside, the end row is taken.
+bool slip_layer_in_range(MaterialGroup g, double proof_stress);
 double relative_notch_sensitivity(MaterialGroup g, double proof_stress, double notch_parameter);
 // ISO 6336-3 method B relative surface factor from the root's Rz [m].
 double relative_surface_factor(MaterialGroup g, double root_rz);  // Y_RrelT
+// ISO 6336-2 size factor from the module [m]: 1, but case-hardened 1.05 - 0.005 m_n for
+// 10 < m_n < 30 mm (0.9 beyond).
+double contact_size_factor(MaterialGroup g, double module);  // Z_X
 // ISO 6336-3 size factor from the module [m].
 double bending_size_factor(MaterialGroup g, double module);  // Y_X
 

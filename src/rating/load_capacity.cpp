@@ -158,8 +158,15 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
   add("c'", -1, c1, "N/m^2", "ISO 6336-1 9 (method B): single stiffness per face width");
   add("c_gamma_alpha", -1, cg, "N/m^2", "ISO 6336-1 eq. (89): c'(0.75 eps_alpha + 0.25)");
   double f_pb = 0.0, f_fa = 0.0;
+  if (m < 0.5e-3 || m > 70e-3)
+    finding("ISO 1328-1: the module lies outside its 0.5..70 mm: the end range's tolerances taken");
   for (int g = 0; g < 2; ++g) {
     const double d = 2.0 * pair.gear(g).pitch_radius;
+    if (d < 5e-3 || d > 10.0)
+      finding(
+          fmt::format("ISO 1328-1: the {}'s reference diameter lies outside its 5..10000 mm: the end range's "
+                      "tolerances taken",
+                      g == 0 ? "pinion" : "wheel"));
     f_pb = std::max(f_pb, single_pitch_tolerance(set.accuracy_grade, m, d) * std::cos(alpha));
     f_fa = std::max(f_fa, profile_form_tolerance(set.accuracy_grade, m, d));
   }
@@ -275,6 +282,14 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
       rz_assumed = rz_assumed || !(set.flank_rz[g] > 0.0);
     }
     const double rz_mean = 0.5 * (rz[0] + rz[1]);
+    // Z_L, Z_v and Z_R take the lower sigma_Hlim of the pair (ISO 6336-2 9, 10, 11: the softer material).
+    const double s_lim = std::min(contact_limit[0].value, contact_limit[1].value);
+    const double z_l = add("Z_L", -1, lubricant_factor(s_lim, in.viscosity_40), "1",
+                           "ISO 6336-2 eq. (22), C_ZL of the lower sigma_Hlim");
+    const double z_v = add("Z_v", -1, speed_factor(s_lim, v), "1", "ISO 6336-2 eq. (26), C_Zv of the lower sigma_Hlim");
+    const double z_r = add("Z_R", -1, roughness_factor(s_lim, rz_mean, rho_c), "1",
+                           "ISO 6336-2 eqs. (28)-(33), Rz10 at rho_red,C, C_ZR of the lower sigma_Hlim", rz_assumed,
+                           rz_assumed ? "flank Rz = 6 Ra (assumed)" : "");
     for (int g = 0; g < 2; ++g) {
       const double s_h = z_bd[g] * s_h0 * std::sqrt(k_a * k_v * k_hb * k_ha);
       add("sigma_H", g, s_h, "Pa", "ISO 6336-2 eqs. (3)-(4): Z_B|Z_D sigma_H0 sqrt(K_A K_v K_Hbeta K_Halpha)");
@@ -286,16 +301,10 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
       add("Z_NT", g, z_nt, "1",
           fmt::format("ISO 6336-2 Table 2 at N_L = {:.3g} ({} long life)", n_l,
                       set.long_life == RatingSettings::LongLife::optimum ? "optimum" : "normal"));
-      const double z_l = lubricant_factor(lim.value, in.viscosity_40);
-      add("Z_L", g, z_l, "1", "ISO 6336-2 eq. (22)");
-      const double z_v = speed_factor(lim.value, v);
-      add("Z_v", g, z_v, "1", "ISO 6336-2 eq. (26)");
-      const double z_r = roughness_factor(lim.value, rz_mean, rho_c);
-      add("Z_R", g, z_r, "1", "ISO 6336-2 eqs. (28)-(33), Rz10 at rho_red,C", rz_assumed,
-          rz_assumed ? "flank Rz = 6 Ra (assumed)" : "");
       add("Z_W", g, 1.0, "1", "ISO 6336-2 12: 1 (equal hardness; a hard pinion's Z_W on a soft wheel is not applied)");
-      add("Z_X", g, 1.0, "1", "ISO 6336-2 13: 1");
-      const double s_hg = lim.value * z_nt * z_l * z_v * z_r;
+      const double z_x = add("Z_X", g, contact_size_factor(in.grade[g].group, m), "1",
+                             "ISO 6336-2 13: 1, case-hardened 1.05 - 0.005 m_n above 10 mm");
+      const double s_hg = lim.value * z_nt * z_l * z_v * z_r * z_x;
       add("sigma_HG", g, s_hg, "Pa", "ISO 6336-2 eq. (19): sigma_Hlim Z_NT Z_L Z_v Z_R Z_W Z_X");
       out.contact_stress[g] = s_h;
       out.pitting_safety[g] = add("S_H", g, s_hg / s_h, "1", "ISO 6336-2 eq. (18): sigma_HG/sigma_H");
@@ -307,7 +316,15 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
     add("Y_eps", -1, y_eps, "1",
         "DIN 3990-3 / ISO 6336-3:1996: 0.25 + 0.75/eps_alpha (not applied: ISO 6336-3:2006+ method B has none)");
     for (int g = 0; g < 2; ++g) {
-      const gear::RootSection r = gear::iso6336_root_section(pair, g);
+      // A root the 30-degree construction does not cover leaves this gear's bending unrated (the
+      // other ratings stand), said in a finding naming the key to change.
+      gear::RootSection r;
+      try {
+        r = gear::iso6336_root_section(pair, g);
+      } catch (const gear::GeometryError& e) {
+        finding(fmt::format("{}: bending not rated: {} ({})", g == 0 ? "pinion" : "wheel", e.what(), e.key()));
+        continue;
+      }
       const gear::GearBody& gb = pair.gear(g);
       add("d_en", g, r.load_diameter, "m", "ISO 6336-3 eq. (15): outer point of single-pair contact (geartrib's path)");
       add("s_Fn", g, r.chord, "m", "ISO 6336-3 6.2: chord at the 30 deg tangent on the generated fillet");
@@ -345,6 +362,11 @@ LoadCapacity iso6336_load_capacity(const LoadCapacityInputs& in, bool pitting, b
       add("Y_NT", g, y_nt, "1", fmt::format("ISO 6336-3 Table 3 at N_L = {:.3g}", n_l));
       const double y_d =
           relative_notch_sensitivity(in.grade[g].group, in.material[g]->yield_strength, r.notch_parameter);
+      if (!slip_layer_in_range(in.grade[g].group, in.material[g]->yield_strength))
+        finding(
+            fmt::format("{}: proof stress {:.0f} MPa outside ISO 6336-3 Table 4's rows for its group: the end row's "
+                        "slip layer taken (Y_deltarelT)",
+                        g == 0 ? "pinion" : "wheel", in.material[g]->yield_strength * 1e-6));
       add("Y_deltarelT", g, y_d, "1", "ISO 6336-3 eq. (43), slip layer of Table 4");
       const bool rz_given = set.root_rz[g] > 0.0;
       const double y_r = relative_surface_factor(in.grade[g].group, rz_given ? set.root_rz[g] : kDefaultRootRz);

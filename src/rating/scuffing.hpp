@@ -18,6 +18,8 @@
 
 namespace geartrib::rating {
 
+inline constexpr double kMaxScuffingSpeed = 80.0;  // [m/s]: the scuffing methods' tests (ISO/TS 6336-20/-21 scope)
+
 // ISO/TS 6336-20 (ISO/TR 13989-1 eq. 99): the scuffing temperature from the FZG A/8.3/90 failure
 // load stage: theta_S = 80 degC + (0.85 + 1.4 X_W) X_L S_FZG^2 K [K], X_W the structural factor.
 double fzg_scuffing_temperature(int stage, double structural_factor, double lubricant_factor);

@@ -156,6 +156,11 @@ rating::RatingResult rate_case(const Case& c, const gear::GearMesh& mesh, const 
         scaled[i] = flash->values[i] * f * lubrication::iso_approach_factor(geo, gamma, k_load * c_eff, c_a) /
                     lubrication::iso_approach_factor(geo, gamma, c_eff, c_a);
       }
+      if (ls.bulk_estimated && c.lubrication.mean_friction == lubrication::MeanFrictionLaw::iso &&
+          pair.tangential_line_load(c.operating.pinion_torque) < lubrication::kIsoMinTangentialLoad)
+        out.findings.push_back(
+            "scuffing: the bulk estimate's friction law (iso) is floored at 150 N/mm at the nominal load: its rise taken "
+            "to the rating load with the flash temperatures is approximate");
       const double bulk = ls.bulk_estimated ? t_oil + (ls.bulk_temperature - t_oil) * contact::path_mean(scaled) /
                                                           contact::path_mean(flash->values)
                                             : ls.bulk_temperature;
@@ -204,6 +209,13 @@ rating::RatingResult rate_case(const Case& c, const gear::GearMesh& mesh, const 
       out.min_lambda = add("lambda_GF,min", ls.min_iso_lambda * std::pow(k_load, -0.13), "1",
                            "ISO/TS 6336-22 eqs. (2), (4), (24): the least of the named points at p_dyn "
                            "(x K^-0.13 of /lubrication's)");
+      // Method B's development range (ISO/TS 6336-22 scope): modules 3..11 mm, 8..60 m/s, applicable above 2 m/s.
+      const double v = lc.find("v")->value, m = c.gear_pair.module;
+      if (v < 2.0 || v > 60.0 || m < 3e-3 || m > 11e-3)
+        out.findings.push_back(fmt::format(
+            "micropitting: v = {:.3g} m/s, m = {:.3g} mm outside method B's development range (3..11 mm, 8..60 m/s; "
+            "applicable above 2 m/s)",
+            v, m * 1e3));
       // The permissible film: given for the oil, or from its GF-C/8.3/90 failure stage through the
       // test gear's own lambda_GF (method B on the test at that stage, K factors 1).
       double lambda_p = 0.0;
@@ -218,10 +230,14 @@ rating::RatingResult rate_case(const Case& c, const gear::GearMesh& mesh, const 
                                     "ISO/TS 6336-22: method B on the C-GF test gear at the failure stage (8.3 m/s, "
                                     "90 degC oil, Ra 0.5 um, this oil)",
                                     oil.fzg_assumed);
-        const double w_w =
-            add("W_W", rating::micropitting_material_factor(c.pinion.material.grade.group), "1",
-                "ISO/TR 15144-1 material factor (recollected: case-carburised 1.0, through-hardened 0.5)", true,
-                "unconfirmed: the standard's text was not available");
+        // The softer gear's (the lower W_W of the two).
+        const double w_w = add("W_W",
+                               std::min(rating::micropitting_material_factor(c.pinion.material.grade.group),
+                                        rating::micropitting_material_factor(c.wheel.material.grade.group)),
+                               "1",
+                               "ISO/TR 15144-1 material factor, the lower of the two gears' (recollected: "
+                               "case-carburised 1.0, through-hardened 0.5)",
+                               true, "unconfirmed: the standard's text was not available");
         lambda_p = add("lambda_GFP", rating::kMicropittingTestFactor * w_w * lambda_t, "1",
                        "ISO/TR 15144-1: 1.4 W_W lambda_GFT (recollected)", true,
                        "unconfirmed: the standard's text was not available");

@@ -7,6 +7,12 @@ ISO 6336-5 and ISO 1328-1:1995 as collected in /work/notes-34/iso6336.md (clause
 sources they were read from are given there and in README.md next to this file). It does not use
 geartrib's code. Standard library only (math; numpy is not needed).
 
+For the cases with a "scuffing" table (m6z30) it adds the ISO/TS 6336-21 (= ISO/TR 13989-2:2000,
+DIN 3990-4) integral-temperature scuffing rating and the ISO/TS 6336-20 scuffing temperature theta_S,
+from the equations (with their numbers) in /work/notes-34/scuffing-micropitting.md section 2, whose
+source is the public C# module S1 named there (not the ISO text). The oil and material data are read
+from the text of the lubricant and material .toml files.
+
 Output: CSV `case,symbol,gear,value` on stdout (gear = pinion | wheel | pair); everything else
 (assumptions, self-check results) goes to stderr. The script first checks its factor functions
 against published numbers (ISO/TR 6336-30 example 1 as transcribed in gfsReboucas/Drivetrain,
@@ -17,6 +23,7 @@ Units: mm, N, N/mm^2 (= MPa), um for deviations and roughness, rpm, m/s, kg/mm^3
 """
 import math
 import os
+import re
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -460,6 +467,194 @@ def Y_X_of(cls, m):
 
 
 # ----------------------------------------------------------------------------------------------
+# Scuffing: ISO/TS 6336-21 (= ISO/TR 13989-2:2000, DIN 3990-4) integral temperature, and the
+# ISO/TS 6336-20 (= ISO/TR 13989-1) scuffing temperature theta_S. Equation numbers are those of
+# ISO/TR 13989-2 as collected in /work/notes-34/scuffing-micropitting.md section 2 (source S1 there).
+# ----------------------------------------------------------------------------------------------
+def read_toml_number(path, key):
+    """First number of `key = "<number> <unit>"` or `key = <number>` in a .toml file's text (no tomllib)."""
+    with open(path, encoding="utf-8") as fh:
+        for line in fh:
+            mt = re.match(r'\s*' + re.escape(key) + r'\s*=\s*"?\s*([-+0-9.eE]+)', line)
+            if mt:
+                return float(mt.group(1))
+    raise KeyError(f"{key} not in {path}")
+
+
+def walther(nu_a, T_a, nu_b, T_b):
+    """ASTM D341: log10 log10(nu + 0.7) = A - B log10(T_K), through two points (nu in mm^2/s = cSt, T in K).
+    Returns (A, B, nu(T_K))."""
+    ya, yb = math.log10(math.log10(nu_a + 0.7)), math.log10(math.log10(nu_b + 0.7))
+    B = (ya - yb) / (math.log10(T_b) - math.log10(T_a))
+    A = ya + B * math.log10(T_a)
+    return A, B, (lambda T: 10.0 ** (10.0 ** (A - B * math.log10(T))) - 0.7)
+
+
+def K_Bgamma_of(eps_gamma):
+    """Eq. (5)"""
+    if eps_gamma <= 2.0:
+        return 1.0
+    if eps_gamma >= 3.5:
+        return 1.3
+    return 1.0 + 0.2 * math.sqrt((eps_gamma - 2.0) * (5.0 - eps_gamma))
+
+
+def X_M_of(E1, nu1, E2, nu2, B_M_SI):
+    """Eq. (11): X_M = sqrt(1000) E_r^0.25 / B_M, with the standard's units: E_r in N/mm^2 and
+    B_M = sqrt(lambda_M c_v) with lambda_M in N/(s K) (= W/(m K)) and c_v = rho c in N/(mm^2 K)
+    (1 N/(mm^2 K) = 1e6 J/(m^3 K)), i.e. B_M in N/(mm s^0.5 K) = 1e-3 x B_M in SI (W s^0.5/(m^2 K)).
+    The sqrt(1000) turns v^0.5 [m/s] of eq. (19) into mm/s, so theta_fla comes out in K with
+    w in N/mm, v in m/s, a in mm. E_r = 2/((1-nu1^2)/E1 + (1-nu2^2)/E2) (= E/(1-nu^2) for equal
+    materials, S1's E^0.25/(1-nu^2)^0.25). Returns (X_M, E_r, B_M in N/(mm s^0.5 K))."""
+    E_r = 2.0 / ((1.0 - nu1 ** 2) / E1 + (1.0 - nu2 ** 2) / E2)
+    B_M = B_M_SI * 1e-3
+    return math.sqrt(1000.0) * E_r ** 0.25 / B_M, E_r, B_M
+
+
+def X_alphabeta_of(alpha_wt, alpha_n, alpha_t, beta):
+    """Eq. (13) (full form, reproduces Table 2)"""
+    return 1.22 * (math.sin(alpha_wt) * math.cos(alpha_n) * math.cos(beta)) ** 0.25 \
+        / math.sqrt(math.cos(alpha_wt) * math.cos(alpha_t))
+
+
+def X_Q_of(eps_f, eps_a):
+    """Eq. (25)-(29): eps_f approach (of the driven gear's tip), eps_a recess."""
+    r = eps_f / eps_a
+    if r <= 1.5:
+        return 1.0
+    if r >= 3.0:
+        return 0.6
+    return 1.40 - 4.0 / 15.0 * r
+
+
+def X_Ca_of(eps1, eps2, C_a1, C_a2, C_eff, pinion_driving, Q):
+    """Eq. (32)-(38). Returns (X_Ca, C_a used). Tip relief credited only for ISO 1328 Q <= 6
+    (clause 6.1.12, as S1 reads it: X_Ca = 1 otherwise)."""
+    if Q > 6:
+        return 1.0, 0.0
+    use1 = eps1 > 1.5 * eps2 if pinion_driving else eps1 > (2.0 / 3.0) * eps2
+    C_a = min(C_a1 if use1 else C_a2, C_eff)
+    e = max(eps1, eps2)
+    q = C_a / C_eff
+    return 1.0 + (0.06 + 0.18 * q) * e + (0.02 + 0.69 * q) * e * e, C_a
+
+
+def X_eps_of(e1, e2):
+    """Eq. (39)-(44), eps_alpha = e1 + e2 (eq. 45). Returns (X_eps, equation number)."""
+    ea = e1 + e2
+    k = 1.0 / (2.0 * ea * e1)
+    if ea < 1.0:
+        return k * (e1 * e1 + e2 * e2), 39
+    if ea < 2.0:
+        if e1 < 1.0 and e2 < 1.0:
+            return k * (0.70 * (e1 * e1 + e2 * e2) - 0.22 * ea + 0.52 - 0.60 * e1 * e2), 40
+        if e1 >= 1.0 and e2 < 1.0:
+            return k * (0.18 * e1 * e1 + 0.70 * e2 * e2 + 0.82 * e1 - 0.52 * e2 - 0.30 * e1 * e2), 41
+        if e1 < 1.0 and e2 >= 1.0:
+            return k * (0.70 * e1 * e1 + 0.18 * e2 * e2 - 0.52 * e1 + 0.82 * e2 - 0.30 * e1 * e2), 42
+        raise ValueError("eps_1, eps_2 >= 1 with eps_alpha < 2")
+    if ea < 3.0:
+        if e1 >= e2:
+            return k * (0.44 * e1 * e1 + 0.59 * e2 * e2 + 0.30 * e1 - 0.30 * e2 - 0.15 * e1 * e2), 43
+        return k * (0.59 * e1 * e1 + 0.44 * e2 * e2 - 0.30 * e1 + 0.30 * e2 - 0.15 * e1 * e2), 44
+    raise ValueError("eps_alpha >= 3: no X_eps branch in ISO/TR 13989-2")
+
+
+def scuffing_FZG_A(S_FZG, X_L, nu40, X_WrelT, X_W):
+    """Permissible integral temperature from FZG A/8.3/90 (eq. 94-97) and the flash-method
+    scuffing temperature theta_S (ISO/TR 13989-1 eq. 99). All degC / N m."""
+    T1T = 3.726 * S_FZG ** 2                                           # (97)
+    theta_MT = 80.0 + 0.23 * T1T * X_L                                 # (95)
+    theta_flaintT = 0.2 * T1T * (100.0 / nu40) ** 0.02 * X_L           # (96)
+    theta_intS = theta_MT + X_WrelT * 1.5 * theta_flaintT              # (94), C_2 = 1.5
+    theta_S = 80.0 + (0.85 + 1.4 * X_W) * X_L * S_FZG ** 2              # TR 13989-1 (99)
+    return T1T, theta_MT, theta_flaintT, theta_intS, theta_S
+
+
+def scuffing_integral(put, S, g):
+    """ISO/TR 13989-2 integral-temperature rating of a spur pair. S: the case's "scuffing" inputs;
+    g: geometry and load from rate(). Calls put(symbol, 'pair', value)."""
+    oil = os.path.join(REPO, S["oil_file"])
+    mat = os.path.join(REPO, S["material_file"])
+    # --- oil data from the file's text (cross-checked with INPUTS) ---
+    fileval = {"nu40": read_toml_number(oil, "kinematic_viscosity_40C"),
+               "nu100": read_toml_number(oil, "kinematic_viscosity_100C"),
+               "rho15": read_toml_number(oil, "density_15C"),
+               "rho_coeff": read_toml_number(oil, "density_temperature_coefficient"),
+               "S_FZG": read_toml_number(oil, "fzg_scuffing_stage")}
+    for k, val in fileval.items():
+        assert abs(val - S[k]) <= 1e-12 * max(1.0, abs(val)), f"{k}: INPUTS {S[k]} vs {S['oil_file']} {val}"
+    for key, ik in (("thermal_conductivity", "lambda"), ("density", "rho_mat"), ("specific_heat", "c_mat")):
+        val = read_toml_number(mat, key)
+        assert all(abs(val - x) < 1e-9 for x in S[ik]), f"{key}: INPUTS {S[ik]} vs {S['material_file']} {val}"
+    th_oil = S["theta_oil"]
+    TK = th_oil + 273.15
+    A_w, B_w, nu_of = walther(S["nu40"], 313.15, S["nu100"], 373.15)
+    nu_oil = nu_of(TK)                                                  # mm^2/s
+    rho_oil = S["rho15"] * (1.0 - S["rho_coeff"] * (th_oil - 15.0))      # kg/m^3
+    eta_oil = nu_oil * rho_oil * 1e-3                                   # mPa s (= cSt x g/cm^3)
+    log(f"  scuffing: oil {S['oil_file']}: Walther A = {A_w:.5f}, B = {B_w:.5f}; at {th_oil} degC "
+        f"nu = {nu_oil:.3f} mm^2/s, rho = {rho_oil:.2f} kg/m^3, eta = {eta_oil:.3f} mPa s")
+
+    a, awt, al, u, v, b = g["a"], g["alpha_wt"], g["alpha_t"], g["u"], g["v"], g["b"]
+    if S.get("a_expected") is not None:
+        assert abs(a - S["a_expected"]) < 1e-9, f"a = {a} vs a_expected {S['a_expected']}"
+    beta = beta_b = 0.0                                                  # spur
+    # --- load, velocity, curvature: eq. (2)-(5) ---
+    K_Bgamma = K_Bgamma_of(g["eps_gamma"])
+    w_Bt = g["K_A"] * g["K_v"] * g["K_Hbeta"] * g["K_Halpha"] * g["F_t"] / b      # (4)
+    w_mu = max(w_Bt, 150.0)                                              # clause 5.1 floor (friction only)
+    v_mu = min(v, 50.0)                                                  # clause 5.1 cap (friction only)
+    v_SigmaC = 2.0 * v_mu * math.tan(awt) * math.cos(al)                 # (2)
+    rho_redC = u / (1.0 + u) ** 2 * a * math.sin(awt) / math.cos(beta_b)  # (3)
+    # --- friction, eq. (1), (6), (7) ---
+    Ra = 0.5 * (g["Ra"][0] + g["Ra"][1])                                 # (6), um
+    X_R = 2.2 * (Ra / rho_redC) ** 0.25                                  # (7): Ra in um, rho in mm (as S1)
+    X_L = S["X_L"]
+    mu_mC = 0.045 * (w_mu * K_Bgamma / (v_SigmaC * rho_redC)) ** 0.2 * eta_oil ** -0.05 * X_R * X_L   # (1)
+    X_E = 1.0 + (1.0 - S["phi_E"]) * 30.0 * Ra / rho_redC                # (8)
+    # --- thermal and angle factors, eq. (11)-(13) ---
+    B_M_SI = [math.sqrt(l * r * c) for l, r, c in zip(S["lambda"], S["rho_mat"], S["c_mat"])]
+    X_M, E_r, B_M = X_M_of(g["E"], g["nu"], g["E"], g["nu"], 0.5 * (B_M_SI[0] + B_M_SI[1]))
+    X_ab = X_alphabeta_of(awt, g["alpha_n"], al, beta)
+    # --- geometry at the pinion tip, eq. (22)-(24) ---
+    rho_E1 = 0.5 * math.sqrt(g["d_a1"] ** 2 - g["d_b1"] ** 2)            # (23)
+    rho_E2 = a * math.sin(awt) - rho_E1                                  # (24)
+    X_BE = 0.51 * math.sqrt(u + 1.0) * (math.sqrt(rho_E1) - math.sqrt(rho_E2 / u)) / (rho_E1 * rho_E2) ** 0.25   # (22)
+    # --- addendum contact ratios, X_Q, X_Ca: eq. (25)-(38) ---
+    eps1 = g["z1"] / (2.0 * math.pi) * (math.sqrt((g["d_a1"] / g["d_b1"]) ** 2 - 1.0) - math.tan(awt))   # (30)
+    eps2 = g["z2"] / (2.0 * math.pi) * (math.sqrt((g["d_a2"] / g["d_b2"]) ** 2 - 1.0) - math.tan(awt))   # (31)
+    assert abs(eps1 + eps2 - g["eps_alpha"]) < 1e-9, "eq. (45) eps_1 + eps_2 != eps_alpha"
+    eps_f, eps_a = (eps2, eps1) if S["pinion_driving"] else (eps1, eps2)
+    X_Q = X_Q_of(eps_f, eps_a)
+    C_eff = g["K_A"] * g["F_t"] / (b * g["c_prime"])                     # (37), spur: c', um
+    X_Ca, C_a = X_Ca_of(eps1, eps2, S["C_a"][0], S["C_a"][1], C_eff, S["pinion_driving"], g["Q"])
+    # --- flash temperatures, eq. (18), (19), (39)-(44) ---
+    theta_flaE = mu_mC * X_M * X_BE * X_ab * (K_Bgamma * w_Bt) ** 0.75 * v ** 0.5 / a ** 0.25 * X_E / (X_Q * X_Ca)   # (19)
+    X_eps, eq_eps = X_eps_of(eps1, eps2)
+    theta_flaint = theta_flaE * X_eps                                    # (18)
+    # --- bulk and integral temperature, eq. (17), (20), (21) ---
+    theta_M = th_oil + 0.7 * S["X_mp"] * S["X_S"] * theta_flaint          # (20), C_1 = 0.7
+    theta_int = theta_M + 1.5 * theta_flaint                             # (17), C_2 = 1.5
+    # --- permissible: FZG A/8.3/90, eq. (94)-(97); safety eq. (14) ---
+    T1T, theta_MT, theta_flaintT, theta_intS, theta_S = scuffing_FZG_A(S["S_FZG"], X_L, S["nu40"], S["X_WrelT"], S["X_W"])
+    S_intS = theta_intS / theta_int                                      # (14), degC / degC
+    log(f"  scuffing: w_Bt = {w_Bt:.2f} N/mm ({'floor 150 used in mu_mC' if w_Bt < 150 else 'above the 150 N/mm floor'}), "
+        f"X_eps by eq. ({eq_eps}), C_a used {C_a} um, E_r = {E_r:.1f} N/mm^2, B_M = {B_M:.4f} N/(mm s^0.5 K)")
+    for k, val in (("mu_mC", mu_mC), ("X_BE", X_BE), ("X_alphabeta", X_ab), ("X_M", X_M), ("eps_1", eps1),
+                   ("eps_2", eps2), ("X_Q", X_Q), ("C_eff", C_eff), ("X_Ca", X_Ca), ("theta_flaE", theta_flaE),
+                   ("X_eps", X_eps), ("theta_flaint", theta_flaint), ("theta_M", theta_M), ("theta_int", theta_int),
+                   ("T_1T", T1T), ("theta_intS", theta_intS), ("S_intS", S_intS), ("theta_S", theta_S),
+                   # intermediates (extra rows)
+                   ("nu_oil", nu_oil), ("rho_oil", rho_oil), ("eta_oil", eta_oil), ("w_Bt", w_Bt),
+                   ("v_SigmaC", v_SigmaC), ("rho_redC", rho_redC), ("X_R", X_R), ("X_L", X_L), ("X_E", X_E),
+                   ("K_Bgamma", K_Bgamma), ("E_r", E_r), ("B_M", B_M), ("rho_E1", rho_E1), ("rho_E2", rho_E2),
+                   ("theta_MT", theta_MT), ("theta_flaintT", theta_flaintT)):
+        put(k, "pair", val)
+    return {"rho_redC": rho_redC}
+
+
+# ----------------------------------------------------------------------------------------------
 # The rating of one spur pair
 # ----------------------------------------------------------------------------------------------
 def rate(name, P):
@@ -618,6 +813,15 @@ def rate(name, P):
                        ("Y_X", Y_X), ("sigma_Flim", sFlim[i]), ("sigma_FE", sFE), ("sigma_FG", sFG),
                        ("S_F", sFG / sF)):
             put(k, g, val)
+
+    # --- scuffing, ISO/TS 6336-21 integral temperature (only for cases with a "scuffing" table) ---
+    if P.get("scuffing"):
+        geo = {"a": a, "alpha_wt": awt, "alpha_t": al, "alpha_n": al, "u": u, "v": v, "b": b, "z1": z1, "z2": z2,
+               "d_a1": da1, "d_a2": da2, "d_b1": db1, "d_b2": db2, "eps_alpha": eps_a, "eps_gamma": eps_g,
+               "F_t": F_t, "K_A": P["K_A"], "K_v": Kv, "K_Hbeta": KHb, "K_Halpha": KHa, "c_prime": c_p,
+               "Q": P["Q"], "Ra": P["Ra_flank"], "E": P["E"], "nu": P["nu"]}
+        sc = scuffing_integral(put, P["scuffing"], geo)
+        assert abs(sc["rho_redC"] - rho_red) < 1e-9, "eq. (3) rho_redC != rho1 rho2/(rho1 + rho2) of ISO 6336-2"
     return out
 
 
@@ -685,6 +889,57 @@ def self_checks():
     check("Y_NT(1e4, V)", life_factor(1e4, "F", "V_carbon", "normal"), 2.5, 1e-12, "table point")
     check("Y_NT(1e10, V, normal)", life_factor(1e10, "F", "V_carbon", "normal"), 0.85, 1e-12, "table point")
     check("Z_NT(1e5, Eh)", life_factor(1e5, "H", "Eh", "normal"), 1.6, 1e-12, "table point")
+    # (3) scuffing, ISO/TR 13989-2 (integral temperature) factors, from the numbers the notes give
+    #     (/work/notes-34/scuffing-micropitting.md section 2 and 5; source S1 there)
+    X_M50, _, _ = X_M_of(206000.0, 0.3, 206000.0, 0.3, math.sqrt(50.0 * 3.8e6))   # lambda 50 W/(m K), c_v 3.8 N/(mm^2 K)
+    check("TR13989 X_M for case-hardened steel (E 206000, nu 0.3, lambda_M 50, c_v 3.8)", X_M50, 50.0, 0.05,
+          "the notes' 50.0: half a unit of its last digit")
+    a20 = math.radians(20.0)
+    check("TR13989-2 Table 2 X_alphabeta (alpha_wt 20 deg, beta 0)", X_alphabeta_of(a20, a20, a20, 0.0), 0.978, 5e-4, why)
+    b20 = math.radians(20.0)
+    at20 = math.atan(math.tan(a20) / math.cos(b20))
+    check("TR13989-2 Table 2 X_alphabeta (alpha_wt 20 deg, beta 20 deg; value as quoted in S1's comment)",
+          X_alphabeta_of(a20, a20, at20, b20), 0.966, 5e-4, why)
+    # X_eps (eq. 39-44) continuity across every branch boundary (a copying error would break it)
+    worst = 0.0
+    h = 1e-10
+    pts = []
+    for i in range(1, 20):
+        t = i / 20.0
+        pts.append(((t, 1.0 - t - h), (t, 1.0 - t + h)))            # eps_alpha = 1 (eq. 39 | 40)
+        pts.append(((1.0 - h, t), (1.0 + h, t)))                    # eps_1 = 1 (eq. 40 | 41)
+        pts.append(((t, 1.0 - h), (t, 1.0 + h)))                    # eps_2 = 1 (eq. 40 | 42)
+        e1 = 1.0 + t
+        pts.append(((e1, 2.0 - e1 - h), (e1, 2.0 - e1 + h)))        # eps_alpha = 2 (eq. 41 | 43, 42 | 44)
+        pts.append(((2.0 - e1 - h, e1), (2.0 - e1 + h, e1)))
+        e = 1.0 + 0.5 * t
+        pts.append(((e + h, e), (e, e + h)))                        # eps_1 = eps_2, 2 < eps_alpha < 3 (eq. 43 | 44)
+    for lo, hi in pts:
+        (xa, na), (xb, nb) = X_eps_of(*lo), X_eps_of(*hi)
+        if na != nb:
+            worst = max(worst, abs(xa - xb) / xa)
+    check("TR13989-2 X_eps continuity across branches (max relative jump, steps of 1e-10)", worst, 0.0, 1e-7,
+          "continuous to rounding; a miscopied 2-digit coefficient would give > 1e-3")
+    for ef, ref in ((1.5, 1.0), (3.0, 0.6)):
+        check(f"TR13989-2 X_Q continuity at eps_f/eps_a = {ef}", 1.40 - 4.0 / 15.0 * ef, ref, 1e-12, "branch end")
+    check("TR13989-2 K_Bgamma continuity at eps_gamma 3.5", 1.0 + 0.2 * math.sqrt(1.5 * 1.5), K_Bgamma_of(3.5), 1e-12, "branch end")
+    _, _, nu_of = walther(220.0, 313.15, 18.75, 373.15)
+    check("Walther line through nu40 220", nu_of(313.15), 220.0, 1e-9, "fit point")
+    check("Walther line through nu100 18.75", nu_of(373.15), 18.75, 1e-9, "fit point")
+    # T_1T = 3.726 S^2 (eq. 97) against the A/8.3/90 pinion torques (0.5 m arm) of gears/fzg/load-stages.csv
+    lsf = os.path.join(REPO, "gears", "fzg", "load-stages.csv")
+    if os.path.exists(lsf):
+        with open(lsf, encoding="utf-8") as fh:
+            rows = [ln.strip().split(",") for ln in fh if ln[:1].isdigit()]
+        for r in rows:
+            S = int(r[0])
+            if 5 <= S <= 12 and r[2] == "sourced":
+                T = float(r[1])
+                check(f"TR13989-2 T_1T = 3.726 S^2 vs A/8.3/90 stage {S} torque (relative)",
+                      scuffing_FZG_A(S, 1.0, 100.0, 1.0, 1.0)[0] / T, 1.0, 0.011,
+                      "the notes: within 1 % at stages 5-12")
+    else:
+        log(f"  ({lsf} not found: T_1T not compared with the load-stage table)")
 
 
 def check_case_files():
@@ -738,7 +993,9 @@ def main():
     check_case_files()
     self_checks()
     rows = []
-    for name, P in INPUTS.items():
+    # The seed pair at half its torque as well: 69 N/mm, below ISO 6336-1's 100 N/mm (c' then scales
+    # with the load's fourth root) and below ISO/TS 6336-21's 150 N/mm friction floor.
+    for name, P in list(INPUTS.items()) + [("m6z30-500", dict(INPUTS["m6z30"], T1=500.0))]:
         log(f"case {name}:")
         rows += rate(name, P)
     print("case,symbol,gear,value")
