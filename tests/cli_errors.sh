@@ -427,4 +427,15 @@ ls -a "$tmp" | grep -q '\.tmp\.' && { echo "FAIL temporary file left behind"; fa
 check output-on-error 2 "" -- "$bin" asperity --case "$tmp/gears/m6z30.toml" -o "$tmp/bad.csv"
 [[ ! -e "$tmp/bad.csv" ]] && echo "ok   nothing-written-on-error" || { echo "FAIL bad.csv written"; fail=1; }
 
+# The ratings: a K factor below 1 refused at its key (exit 2) and nothing written; the table's
+# safety factors and a dry case's finding.
+check rate-k-below-one 2 "key 'rating.application_factor' = 0.9: must lie in \[1, 10\]" -- \
+  "$bin" rate gears/m6z30.toml --set rating.application_factor=0.9 -o "$tmp/rate.txt" --csv "$tmp/rate.csv"
+[[ ! -e "$tmp/rate.txt" && ! -e "$tmp/rate.csv" ]] && echo "ok   rate-nothing-written" || { echo "FAIL rate wrote"; fail=1; }
+sed 's/^quality = "MQ"/quality = "MX"/' materials/steel-45.toml > "$tmp/steel-45-mx.toml"
+check rate-quality-unknown 2 "steel-45-mx.toml:[0-9]*: key 'rating.quality'.*unknown ISO 6336-5 quality 'MX'" -- \
+  "$bin" rate gears/m6z30.toml --set "pinion.material=$tmp/steel-45-mx.toml"
+check rate-safeties 0 "S_F_pinion +5\.9" -- "$bin" rate gears/m6z30.toml
+check rate-dry 0 "a dry case: pitting" -- "$bin" rate gears/m6z30-dry.toml
+
 exit $fail

@@ -9,8 +9,8 @@
 
 namespace geartrib::runs {
 
-// The methods `geartrib rate` runs on a case that names none: pitting, scuffing and micropitting
-// (lubricated), bending. Scuffing without a scuffing temperature reports the temperatures alone.
+// The methods `geartrib rate` runs on a case that names none: all four (a dry case rates bending and
+// says why not the others). Scuffing without a scuffing temperature reports the temperatures alone.
 RatingRequest default_rating_request(const Case& c);
 
 // The ratings c.rating asks for, on the cycle's result (its lubricated path: scuffing by the flash
