@@ -120,12 +120,7 @@ void MeshLubrication::pitch_and_iso() {
   bulk_law_mu_ = law_value(bulk_law_);
 
   // ISO/TS 6336-20's flash-temperature method: its factors fixed by the pair.
-  iso_geometry_.gear_ratio = double(pair.gear(1).teeth) / double(pair.gear(0).teeth);
-  iso_geometry_.center_distance = pair.center_distance();
-  iso_geometry_.operating_angle = pair.operating_pressure_angle();
-  iso_geometry_.reference_angle = pair.spec().pressure_angle;
-  iso_geometry_.gamma_a = pair.flank(path.a).roll_parameter;
-  iso_geometry_.gamma_e = pair.flank(path.e).roll_parameter;
+  iso_geometry_ = iso_flash_geometry(pair);
   iso_x_m_ = lub::iso_thermo_elastic_factor(reduced_modulus_, thermal_coefficient_[0], thermal_coefficient_[1]);
   // C_eff = F_t/(b cos alpha_t c_gamma) (ISO/TR 13989-1 B.1), c_gamma_alpha of ISO 6336-1 method B;
   // C_a the wheel's tip relief under the compatibility sharing (0 otherwise: unmodified flanks).
@@ -358,6 +353,17 @@ LubricationResult MeshLubrication::finish() {
   out.traction_curve_column = traction_ == lub::FilmTraction::curve;
   out.positions = positions_;
   return out;
+}
+
+lub::IsoFlashGeometry iso_flash_geometry(const gear::SpurPair& pair) {
+  lub::IsoFlashGeometry g;
+  g.gear_ratio = double(pair.gear(1).teeth) / double(pair.gear(0).teeth);
+  g.center_distance = pair.center_distance();
+  g.operating_angle = pair.operating_pressure_angle();
+  g.reference_angle = pair.spec().pressure_angle;
+  g.gamma_a = pair.flank(pair.path().a).roll_parameter;
+  g.gamma_e = pair.flank(pair.path().e).roll_parameter;
+  return g;
 }
 
 void add_lubrication_series(const LubricationResult& l, std::vector<Series>& g) {

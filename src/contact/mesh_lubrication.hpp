@@ -150,6 +150,9 @@ struct LubricationResult {
   bool bearing_saturated_column = false, traction_curve_column = false;
 };
 // Its /lubrication series.
+// ISO/TS 6336-20's flash-temperature geometry of a pair: u, a, alpha_wt, alpha_t, Gamma at A and E.
+lubrication::IsoFlashGeometry iso_flash_geometry(const gear::SpurPair& pair);
+
 void add_lubrication_series(const LubricationResult& l, std::vector<Series>& group);
 
 // Roughness: the summit model's composite sigma against the heights' differs by more than this

@@ -1,6 +1,7 @@
 #include "runs/case_rating.hpp"
 
 #include "config/fzg_load_stages.hpp"
+#include "contact/mesh_lubrication.hpp"
 #include "core/keyed_error.hpp"
 #include "lubrication/flank_temperature.hpp"
 #include "rating/scuffing.hpp"
@@ -64,6 +65,170 @@ RatingRequest default_rating_request(const Case& c) {
   return r;
 }
 
+namespace {
+
+// What the lubricated methods read: the case, its pair and cycle, the load capacity's factors, the
+// rating load's factor K = K_A K_v K_Hbeta K_Halpha, and the result they add to.
+struct LubricatedRating {
+  const Case& c;
+  const gear::SpurPair& pair;
+  const contact::LubricationSummary& ls;
+  const contact::MeshContactResult& cycle;
+  const rating::LoadCapacity& lc;
+  double k_load;
+  rating::RatingResult& out;
+  // A pair factor into the table; returns its value.
+  double add(std::string symbol, double value, std::string unit, std::string clause, bool assumed = false,
+             std::string note = {}) {
+    out.factors.push_back({std::move(symbol), -1, value, std::move(unit), std::move(clause), assumed, std::move(note)});
+    return value;
+  }
+};
+
+// Scuffing: the scuffing temperature (given, or from the oil's A/8.3/90 stage), the flash method on
+// the path at the rating load, the integral method.
+void rate_scuffing(LubricatedRating& x) {
+  const Case& c = x.c;
+  const gear::SpurPair& pair = x.pair;
+  const contact::LubricationSummary& ls = x.ls;
+  const lubrication::Lubricant& oil = c.lubrication.lubricant;
+  rating::RatingResult& out = x.out;
+  const double x_l = oil.lubricant_factor();
+  out.methods.emplace_back("scuffing");
+  const double x_w = rating::structural_factor(c.pinion.material.grade.group);
+  double theta_s = c.lubrication.scuffing_temperature;
+  if (theta_s > 0.0) {
+    x.add("theta_S", theta_s, "K", "lubrication.scuffing_temperature (given)");
+  } else if (oil.fzg_scuffing_stage > 0) {
+    x.add("S_FZG", oil.fzg_scuffing_stage, "1", "FZG A/8.3/90 failure load stage of the oil", oil.fzg_assumed,
+          oil.fzg_source);
+    x.add("X_W", x_w, "1", "ISO/TS 6336-20 Table 2: through-hardened and case-carburised (average austenite) 1.0");
+    x.add("X_L", x_l, "1", "ISO/TS 6336-20: the base stock's lubricant factor");
+    theta_s = x.add("theta_S", rating::fzg_scuffing_temperature(oil.fzg_scuffing_stage, x_w, x_l), "K",
+                    "ISO/TS 6336-20 eq. (99): 80 degC + (0.85 + 1.4 X_W) X_L S_FZG^2", oil.fzg_assumed);
+  } else {
+    out.findings.push_back(
+        "scuffing: no scuffing temperature (lubrication.scuffing_temperature, or the oil's fzg_scuffing_stage): the "
+        "contact and integral temperatures are reported without the safeties S_B and S_intS");
+  }
+  // Flash-temperature method: the path's ISO flash temperature (computed at the nominal load, K
+  // factors 1) taken to the rating load w_Bt K: theta_fl ~ mu_m X_J w^0.75 with mu_m ~ w^0.2
+  // (ISO/TS 6336-20 eq. 25) and X_J's C_eff ~ w (annex A), position by position; the estimated
+  // bulk temperature's rise with the path mean (eq. 22).
+  const double f = std::pow(x.k_load, 0.95);
+  const double t_oil = ls.oil_temperature;
+  const contact::Series* s_m = x.cycle.find("s_m");
+  const contact::Series* flash = x.cycle.find("iso_flash_temperature_K");
+  const lubrication::IsoFlashGeometry geo = contact::iso_flash_geometry(pair);
+  const double c_eff = ls.iso_effective_relief, c_a = c.mesh.modification[1].tip.amount;
+  std::vector<double> scaled(flash->values.size());
+  for (std::size_t i = 0; i < scaled.size(); ++i) {
+    const double gamma = pair.flank(s_m->values[i]).roll_parameter;
+    scaled[i] = flash->values[i] * f * lubrication::iso_approach_factor(geo, gamma, x.k_load * c_eff, c_a) /
+                lubrication::iso_approach_factor(geo, gamma, c_eff, c_a);
+  }
+  if (ls.bulk_estimated && c.lubrication.mean_friction == lubrication::MeanFrictionLaw::iso &&
+      pair.tangential_line_load(c.operating.pinion_torque) < lubrication::kIsoMinTangentialLoad)
+    out.findings.push_back(
+        "scuffing: the bulk estimate's friction law (iso) is floored at 150 N/mm at the nominal load: its rise taken "
+        "to the rating load with the flash temperatures is approximate");
+  const double bulk = ls.bulk_estimated ? t_oil + (ls.bulk_temperature - t_oil) * contact::path_mean(scaled) /
+                                                      contact::path_mean(flash->values)
+                                        : ls.bulk_temperature;
+  const double theta_b = bulk + *std::max_element(scaled.begin(), scaled.end());
+  x.add("theta_B,max", theta_b, "K",
+        "ISO/TS 6336-20 eqs. (1)-(2), A.5: the path's largest contact temperature at w_Bt K_A K_v K_Hbeta K_Halpha "
+        "(/lubrication's flash x K^0.95 X_J(K C_eff)/X_J(C_eff))");
+  if (theta_s > 0.0)
+    out.flash_scuffing_safety = x.add("S_B", (theta_s - t_oil) / (theta_b - t_oil), "1",
+                                      "ISO/TS 6336-20 eq. (100): (theta_S - theta_oil)/(theta_B,max - theta_oil)");
+  // Integral-temperature method.
+  rating::IntegralTemperatureInputs it;
+  it.pair = &pair;
+  it.tangential_force = x.lc.find("F_t")->value;
+  it.pitch_line_speed = x.lc.find("v")->value;
+  it.load_factor = x.k_load;
+  it.application_factor = c.rating.settings.application_factor;
+  it.single_stiffness = x.lc.find("c'")->value;
+  it.eta_oil = lubrication::oil_state(oil, t_oil).dynamic_viscosity;
+  it.viscosity_40 = oil.kinematic_viscosity_40;
+  it.oil_temperature = t_oil;
+  it.mean_ra = ls.mean_ra;
+  it.lubricant_factor = x_l;
+  const auto b_m = [](const Material& m) {
+    return lubrication::thermal_contact_coefficient(m.thermal_conductivity, m.density, m.specific_heat);
+  };
+  it.thermo_elastic_factor = lubrication::iso_thermo_elastic_factor(
+      composite_modulus(c.pinion.material, c.wheel.material) * 2.0, b_m(c.pinion.material), b_m(c.wheel.material));
+  it.oil_supply_factor = c.rating.settings.oil_supply == rating::RatingSettings::OilSupply::spray ? 1.2 : 1.0;
+  it.tip_relief[0] = c.mesh.modification[0].tip.amount;
+  it.tip_relief[1] = c.mesh.modification[1].tip.amount;
+  it.accuracy_grade = c.rating.settings.accuracy_grade;
+  it.structural_factor = x_w;
+  it.fzg_stage = oil.fzg_scuffing_stage;
+  const rating::IntegralTemperature ti = rating::iso_integral_temperature(it);
+  out.factors.insert(out.factors.end(), ti.factors.begin(), ti.factors.end());
+  out.findings.insert(out.findings.end(), ti.findings.begin(), ti.findings.end());
+  out.integral_scuffing_safety = ti.safety;
+  if (!(ti.safety > 0.0) && theta_s > 0.0)
+    out.findings.push_back("integral temperature: no permissible temperature (the oil has no fzg_scuffing_stage)");
+}
+
+// Micropitting: lambda_GF,min at the rating load and the permissible film (given, or from the oil's
+// GF-C/8.3/90 stage on the test gear).
+void rate_micropitting(LubricatedRating& x) {
+  const Case& c = x.c;
+  const lubrication::Lubricant& oil = c.lubrication.lubricant;
+  rating::RatingResult& out = x.out;
+  out.methods.emplace_back("micropitting");
+  // lambda_GF along the path (ISO/TS 6336-22 method B at the named points), taken to the rating
+  // load: h_Y ~ W^-0.13 ~ p_dyn^-0.26 ~ K^-0.13 (bulk temperature held).
+  out.min_lambda = x.add("lambda_GF,min", x.ls.min_iso_lambda * std::pow(x.k_load, -0.13), "1",
+                         "ISO/TS 6336-22 eqs. (2), (4), (24): the least of the named points at p_dyn "
+                         "(x K^-0.13 of /lubrication's)");
+  // Method B's development range (ISO/TS 6336-22 scope): modules 3..11 mm, 8..60 m/s, applicable above 2 m/s.
+  const double v = x.lc.find("v")->value, m = c.gear_pair.module;
+  if (v < 2.0 || v > 60.0 || m < 3e-3 || m > 11e-3)
+    out.findings.push_back(fmt::format(
+        "micropitting: v = {:.3g} m/s, m = {:.3g} mm outside method B's development range (3..11 mm, 8..60 m/s; "
+        "applicable above 2 m/s)",
+        v, m * 1e3));
+  double lambda_p = 0.0;
+  if (oil.permissible_lambda > 0.0) {
+    lambda_p = x.add("lambda_GFP", oil.permissible_lambda, "1", "ISO/TS 6336-22 5.4: given for the oil", false,
+                     oil.permissible_lambda_source);
+  } else if (oil.fzg_micropitting_stage > 0) {
+    // The test gear's own lambda_GF: method B on the test at that stage (K factors 1).
+    x.add("S_GF", oil.fzg_micropitting_stage, "1", "FZG GF-C/8.3/90 failure load stage of the oil", oil.fzg_assumed,
+          oil.fzg_source);
+    const contact::MeshContactResult test = run_mesh_cycle(fzg_c_test(c, oil.fzg_micropitting_stage));
+    const double lambda_t = x.add("lambda_GFT", test.lubrication_summary->min_iso_lambda, "1",
+                                  "ISO/TS 6336-22: method B on the C-GF test gear at the failure stage (8.3 m/s, "
+                                  "90 degC oil, Ra 0.5 um, this oil)",
+                                  oil.fzg_assumed);
+    // The softer gear's (the lower W_W of the two).
+    const double w_w = x.add("W_W",
+                             std::min(rating::micropitting_material_factor(c.pinion.material.grade.group),
+                                      rating::micropitting_material_factor(c.wheel.material.grade.group)),
+                             "1",
+                             "ISO/TR 15144-1 material factor, the lower of the two gears' (recollected: "
+                             "case-carburised 1.0, through-hardened 0.5)",
+                             true, "unconfirmed: the standard's text was not available");
+    lambda_p = x.add("lambda_GFP", rating::kMicropittingTestFactor * w_w * lambda_t, "1",
+                     "ISO/TR 15144-1: 1.4 W_W lambda_GFT (recollected)", true,
+                     "unconfirmed: the standard's text was not available");
+  } else {
+    out.findings.push_back(
+        "micropitting: no permissible film (the oil's permissible_lambda or fzg_micropitting_stage): lambda_GF,min "
+        "is reported without the safety S_lambda");
+  }
+  if (lambda_p > 0.0)
+    out.micropitting_safety = x.add("S_lambda", out.min_lambda / lambda_p, "1",
+                                    "ISO/TS 6336-22 eq. (1): lambda_GF,min/lambda_GFP (no minimum recommended)");
+}
+
+}  // namespace
+
 rating::RatingResult rate_case(const Case& c, const gear::GearMesh& mesh, const contact::MeshContactResult& cycle) {
   RatingRequest req = c.rating;
   rating::RatingResult out;
@@ -96,158 +261,19 @@ rating::RatingResult rate_case(const Case& c, const gear::GearMesh& mesh, const 
   out.bending_safety = lc.bending_safety;
   if (req.pitting) out.methods.emplace_back("pitting");
   if (req.bending) out.methods.emplace_back("bending");
-  const double k_load = c.rating.settings.application_factor * lc.dynamic_factor * lc.find("K_Hbeta")->value *
-                        lc.transverse_factor;  // K_A K_v K_Hbeta K_Halpha
-
-  if (req.scuffing || req.micropitting) {
-    if (!cycle.lubrication_summary)
-      throw core::KeyedError("rating.methods", "scuffing and micropitting need the lubricated cycle");
-    const contact::LubricationSummary& ls = *cycle.lubrication_summary;
-    const lubrication::Lubricant& oil = c.lubrication.lubricant;
-    const double x_l = oil.lubricant_factor();
-    auto add = [&](std::string symbol, double value, std::string unit, std::string clause, bool assumed = false,
-                   std::string note = {}) {
-      out.factors.push_back(
-          {std::move(symbol), -1, value, std::move(unit), std::move(clause), assumed, std::move(note)});
-      return value;
-    };
-    if (req.scuffing) {
-      out.methods.emplace_back("scuffing");
-      const rating::MaterialGroup group = c.pinion.material.grade.group;
-      const double x_w = rating::structural_factor(group);
-      // The scuffing temperature: given, or from the oil's FZG A/8.3/90 failure stage.
-      double theta_s = c.lubrication.scuffing_temperature;
-      if (theta_s > 0.0) {
-        add("theta_S", theta_s, "K", "lubrication.scuffing_temperature (given)");
-      } else if (oil.fzg_scuffing_stage > 0) {
-        add("S_FZG", oil.fzg_scuffing_stage, "1", "FZG A/8.3/90 failure load stage of the oil", oil.fzg_assumed,
-            oil.fzg_source);
-        add("X_W", x_w, "1", "ISO/TS 6336-20 Table 2: through-hardened and case-carburised (average austenite) 1.0");
-        add("X_L", x_l, "1", "ISO/TS 6336-20: the base stock's lubricant factor");
-        theta_s = add("theta_S", rating::fzg_scuffing_temperature(oil.fzg_scuffing_stage, x_w, x_l), "K",
-                      "ISO/TS 6336-20 eq. (99): 80 degC + (0.85 + 1.4 X_W) X_L S_FZG^2", oil.fzg_assumed);
-      } else {
-        out.findings.push_back(
-            "scuffing: no scuffing temperature (lubrication.scuffing_temperature, or the oil's fzg_scuffing_stage): the "
-            "contact and integral temperatures are reported without the safeties S_B and S_intS");
-      }
-      // Flash-temperature method: the path's ISO flash temperature (computed at the nominal load, K
-      // factors 1) taken to the rating load w_Bt K: theta_fl ~ mu_m X_J w^0.75 with mu_m ~ w^0.2
-      // (ISO/TS 6336-20 eq. 25) and X_J's C_eff ~ w (annex A), position by position; the estimated
-      // bulk temperature's rise with the path mean (eq. 22).
-      const double f = std::pow(k_load, 0.95);
-      const double t_oil = ls.oil_temperature;
-      const contact::Series* s_m = cycle.find("s_m");
-      const contact::Series* flash = cycle.find("iso_flash_temperature_K");
-      lubrication::IsoFlashGeometry geo;
-      geo.gear_ratio = static_cast<double>(pair.gear(1).teeth) / pair.gear(0).teeth;
-      geo.center_distance = pair.center_distance();
-      geo.operating_angle = pair.operating_pressure_angle();
-      geo.reference_angle = pair.spec().pressure_angle;
-      geo.gamma_a = pair.flank(pair.path().a).roll_parameter;
-      geo.gamma_e = pair.flank(pair.path().e).roll_parameter;
-      const double c_eff = ls.iso_effective_relief, c_a = c.mesh.modification[1].tip.amount;
-      std::vector<double> scaled(flash->values.size());
-      for (std::size_t i = 0; i < scaled.size(); ++i) {
-        const double gamma = pair.flank(s_m->values[i]).roll_parameter;
-        scaled[i] = flash->values[i] * f * lubrication::iso_approach_factor(geo, gamma, k_load * c_eff, c_a) /
-                    lubrication::iso_approach_factor(geo, gamma, c_eff, c_a);
-      }
-      if (ls.bulk_estimated && c.lubrication.mean_friction == lubrication::MeanFrictionLaw::iso &&
-          pair.tangential_line_load(c.operating.pinion_torque) < lubrication::kIsoMinTangentialLoad)
-        out.findings.push_back(
-            "scuffing: the bulk estimate's friction law (iso) is floored at 150 N/mm at the nominal load: its rise taken "
-            "to the rating load with the flash temperatures is approximate");
-      const double bulk = ls.bulk_estimated ? t_oil + (ls.bulk_temperature - t_oil) * contact::path_mean(scaled) /
-                                                          contact::path_mean(flash->values)
-                                            : ls.bulk_temperature;
-      const double theta_b = bulk + *std::max_element(scaled.begin(), scaled.end());
-      add("theta_B,max", theta_b, "K",
-          "ISO/TS 6336-20 eqs. (1)-(2), A.5: the path's largest contact temperature at w_Bt K_A K_v K_Hbeta K_Halpha "
-          "(/lubrication's flash x K^0.95 X_J(K C_eff)/X_J(C_eff))");
-      if (theta_s > 0.0)
-        out.flash_scuffing_safety = add("S_B", (theta_s - t_oil) / (theta_b - t_oil), "1",
-                                        "ISO/TS 6336-20 eq. (100): (theta_S - theta_oil)/(theta_B,max - theta_oil)");
-      // Integral-temperature method.
-      rating::IntegralTemperatureInputs it;
-      it.pair = &pair;
-      it.tangential_force = lc.find("F_t")->value;
-      it.pitch_line_speed = lc.find("v")->value;
-      it.load_factor = k_load;
-      it.application_factor = c.rating.settings.application_factor;
-      it.single_stiffness = lc.find("c'")->value;
-      it.eta_oil = lubrication::oil_state(oil, t_oil).dynamic_viscosity;
-      it.viscosity_40 = oil.kinematic_viscosity_40;
-      it.oil_temperature = t_oil;
-      it.mean_ra = ls.mean_ra;
-      it.lubricant_factor = x_l;
-      const auto b_m = [](const Material& m) {
-        return lubrication::thermal_contact_coefficient(m.thermal_conductivity, m.density, m.specific_heat);
-      };
-      it.thermo_elastic_factor = lubrication::iso_thermo_elastic_factor(
-          composite_modulus(c.pinion.material, c.wheel.material) * 2.0, b_m(c.pinion.material), b_m(c.wheel.material));
-      it.oil_supply_factor = c.rating.settings.oil_supply == rating::RatingSettings::OilSupply::spray ? 1.2 : 1.0;
-      it.tip_relief[0] = c.mesh.modification[0].tip.amount;
-      it.tip_relief[1] = c.mesh.modification[1].tip.amount;
-      it.accuracy_grade = c.rating.settings.accuracy_grade;
-      it.structural_factor = x_w;
-      it.fzg_stage = oil.fzg_scuffing_stage;
-      const rating::IntegralTemperature ti = rating::iso_integral_temperature(it);
-      out.factors.insert(out.factors.end(), ti.factors.begin(), ti.factors.end());
-      out.findings.insert(out.findings.end(), ti.findings.begin(), ti.findings.end());
-      out.integral_scuffing_safety = ti.safety;
-      if (!(ti.safety > 0.0) && theta_s > 0.0)
-        out.findings.push_back("integral temperature: no permissible temperature (the oil has no fzg_scuffing_stage)");
-    }
-    if (req.micropitting) {
-      out.methods.emplace_back("micropitting");
-      // lambda_GF along the path (ISO/TS 6336-22 method B at the named points), taken to the rating
-      // load: h_Y ~ W^-0.13 ~ p_dyn^-0.26 ~ K^-0.13 (bulk temperature held).
-      out.min_lambda = add("lambda_GF,min", ls.min_iso_lambda * std::pow(k_load, -0.13), "1",
-                           "ISO/TS 6336-22 eqs. (2), (4), (24): the least of the named points at p_dyn "
-                           "(x K^-0.13 of /lubrication's)");
-      // Method B's development range (ISO/TS 6336-22 scope): modules 3..11 mm, 8..60 m/s, applicable above 2 m/s.
-      const double v = lc.find("v")->value, m = c.gear_pair.module;
-      if (v < 2.0 || v > 60.0 || m < 3e-3 || m > 11e-3)
-        out.findings.push_back(fmt::format(
-            "micropitting: v = {:.3g} m/s, m = {:.3g} mm outside method B's development range (3..11 mm, 8..60 m/s; "
-            "applicable above 2 m/s)",
-            v, m * 1e3));
-      // The permissible film: given for the oil, or from its GF-C/8.3/90 failure stage through the
-      // test gear's own lambda_GF (method B on the test at that stage, K factors 1).
-      double lambda_p = 0.0;
-      if (oil.permissible_lambda > 0.0) {
-        lambda_p = add("lambda_GFP", oil.permissible_lambda, "1", "ISO/TS 6336-22 5.4: given for the oil", false,
-                       oil.permissible_lambda_source);
-      } else if (oil.fzg_micropitting_stage > 0) {
-        add("S_GF", oil.fzg_micropitting_stage, "1", "FZG GF-C/8.3/90 failure load stage of the oil", oil.fzg_assumed,
-            oil.fzg_source);
-        const contact::MeshContactResult test = run_mesh_cycle(fzg_c_test(c, oil.fzg_micropitting_stage));
-        const double lambda_t = add("lambda_GFT", test.lubrication_summary->min_iso_lambda, "1",
-                                    "ISO/TS 6336-22: method B on the C-GF test gear at the failure stage (8.3 m/s, "
-                                    "90 degC oil, Ra 0.5 um, this oil)",
-                                    oil.fzg_assumed);
-        // The softer gear's (the lower W_W of the two).
-        const double w_w = add("W_W",
-                               std::min(rating::micropitting_material_factor(c.pinion.material.grade.group),
-                                        rating::micropitting_material_factor(c.wheel.material.grade.group)),
-                               "1",
-                               "ISO/TR 15144-1 material factor, the lower of the two gears' (recollected: "
-                               "case-carburised 1.0, through-hardened 0.5)",
-                               true, "unconfirmed: the standard's text was not available");
-        lambda_p = add("lambda_GFP", rating::kMicropittingTestFactor * w_w * lambda_t, "1",
-                       "ISO/TR 15144-1: 1.4 W_W lambda_GFT (recollected)", true,
-                       "unconfirmed: the standard's text was not available");
-      } else {
-        out.findings.push_back(
-            "micropitting: no permissible film (the oil's permissible_lambda or fzg_micropitting_stage): lambda_GF,min "
-            "is reported without the safety S_lambda");
-      }
-      if (lambda_p > 0.0)
-        out.micropitting_safety = add("S_lambda", out.min_lambda / lambda_p, "1",
-                                      "ISO/TS 6336-22 eq. (1): lambda_GF,min/lambda_GFP (no minimum recommended)");
-    }
-  }
+  if (!(req.scuffing || req.micropitting)) return out;
+  if (!cycle.lubrication_summary)
+    throw core::KeyedError("rating.methods", "scuffing and micropitting need the lubricated cycle");
+  LubricatedRating x{
+      c,
+      pair,
+      *cycle.lubrication_summary,
+      cycle,
+      lc,
+      c.rating.settings.application_factor * lc.dynamic_factor * lc.find("K_Hbeta")->value * lc.transverse_factor,
+      out};
+  if (req.scuffing) rate_scuffing(x);
+  if (req.micropitting) rate_micropitting(x);
   return out;
 }
 
