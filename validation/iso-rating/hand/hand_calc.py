@@ -3,13 +3,13 @@
 pinion and wheel) for external spur gear pairs.
 
 Written from the equations of ISO 6336-1/-2/-3 (2006 editions, with the 2019 C_B where noted),
-ISO 6336-5 and ISO 1328-1:1995 as collected in /work/notes-34/iso6336.md (clause numbers and the
+ISO 6336-5 and ISO 1328-1:1995 as collected in docs/theory/ratings.md ("Sources") (clause numbers and the
 sources they were read from are given there and in README.md next to this file). It does not use
 geartrib's code. Standard library only (math; numpy is not needed).
 
 For the cases with a "scuffing" table (m6z30) it adds the ISO/TS 6336-21 (= ISO/TR 13989-2:2000,
 DIN 3990-4) integral-temperature scuffing rating and the ISO/TS 6336-20 scuffing temperature theta_S,
-from the equations (with their numbers) in /work/notes-34/scuffing-micropitting.md section 2, whose
+from the equations (with their numbers) in docs/theory/ratings.md ("Scuffing: ISO/TS 6336-21"), whose
 source is the public C# module S1 named there (not the ISO text). The oil and material data are read
 from the text of the lubricant and material .toml files.
 
@@ -469,7 +469,7 @@ def Y_X_of(cls, m):
 # ----------------------------------------------------------------------------------------------
 # Scuffing: ISO/TS 6336-21 (= ISO/TR 13989-2:2000, DIN 3990-4) integral temperature, and the
 # ISO/TS 6336-20 (= ISO/TR 13989-1) scuffing temperature theta_S. Equation numbers are those of
-# ISO/TR 13989-2 as collected in /work/notes-34/scuffing-micropitting.md section 2 (source S1 there).
+# ISO/TR 13989-2 as collected in docs/theory/ratings.md ("Scuffing: ISO/TS 6336-21") (source S1 there).
 # ----------------------------------------------------------------------------------------------
 def read_toml_number(path, key):
     """First number of `key = "<number> <unit>"` or `key = <number>` in a .toml file's text (no tomllib)."""
@@ -890,7 +890,7 @@ def self_checks():
     check("Y_NT(1e10, V, normal)", life_factor(1e10, "F", "V_carbon", "normal"), 0.85, 1e-12, "table point")
     check("Z_NT(1e5, Eh)", life_factor(1e5, "H", "Eh", "normal"), 1.6, 1e-12, "table point")
     # (3) scuffing, ISO/TR 13989-2 (integral temperature) factors, from the numbers the notes give
-    #     (/work/notes-34/scuffing-micropitting.md section 2 and 5; source S1 there)
+    #     (docs/theory/ratings.md, "Scuffing: ISO/TS 6336-21"; source S1 there)
     X_M50, _, _ = X_M_of(206000.0, 0.3, 206000.0, 0.3, math.sqrt(50.0 * 3.8e6))   # lambda 50 W/(m K), c_v 3.8 N/(mm^2 K)
     check("TR13989 X_M for case-hardened steel (E 206000, nu 0.3, lambda_M 50, c_v 3.8)", X_M50, 50.0, 0.05,
           "the notes' 50.0: half a unit of its last digit")
