@@ -108,3 +108,16 @@ TEST(ToothRoot, FzgCPairInCodeIsTheCaseFiles) {
     EXPECT_DOUBLE_EQ(a.bore_diameter[i], b.bore_diameter[i]);
   }
 }
+
+TEST(ToothRoot, FzgCMaterialInCodeIsTheMaterialFiles) {
+  // The micropitting rating's test-gear material (io::fzg_c_test_material) and materials/16MnCr5.toml.
+  const Material a = io::fzg_c_test_material();
+  const Material b = io::load_material(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "materials/16MnCr5.toml");
+  EXPECT_DOUBLE_EQ(a.youngs_modulus, b.youngs_modulus);  // the file converts its units once: to the last bits
+  EXPECT_DOUBLE_EQ(a.poisson_ratio, b.poisson_ratio);
+  EXPECT_DOUBLE_EQ(a.hardness, b.hardness);
+  EXPECT_DOUBLE_EQ(a.yield_strength, b.yield_strength);
+  EXPECT_DOUBLE_EQ(a.density, b.density);
+  EXPECT_DOUBLE_EQ(a.thermal_conductivity, b.thermal_conductivity);
+  EXPECT_DOUBLE_EQ(a.specific_heat, b.specific_heat);
+}

@@ -24,24 +24,6 @@ struct Options {
   TableOptions table;
 };
 
-// A factor's value in the unit an engineer reads: MPa, um or mm, degC; others as stored.
-std::pair<double, std::string> engineering(const rating::RatingFactor& f) {
-  if (f.unit == "Pa") return {f.value * 1e-6, "MPa"};
-  if (f.unit == "m")
-    return f.value < 1e-3 ? std::pair{f.value * 1e6, std::string("um")} : std::pair{f.value * 1e3, std::string("mm")};
-  if (f.unit == "K" && f.symbol.rfind("theta_fl", 0) != 0) return {f.value - 273.15, "degC"};
-  if (f.unit == "N/m^2") return {f.value * 1e-9, "N/(mm um)"};
-  if (f.unit == "Pa^0.5") return {f.value * 1e-3, "N^0.5/mm"};
-  return {f.value, f.unit};
-}
-
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-  return q + "\"";
-}
-
 void run(const Options& o) {
   Case c = load_case_reporting(o.case_options);
   io::OutputSet outputs;
@@ -55,11 +37,11 @@ void run(const Options& o) {
   text += fmt::format("{:<14} {:<7} {:>12} {:<10} {}\n", "symbol", "gear", "value", "unit", "clause  [* assumed]");
   std::string csv = "symbol,gear,value,unit,clause,assumed,note\n";
   for (const auto& f : rt.factors) {
-    const auto [v, unit] = engineering(f);
+    const auto [v, unit] = io::engineering_value(f.symbol, f.value, f.unit);
     text += fmt::format("{:<14} {:<7} {:>12.5g} {:<10} {}{}{}\n", f.symbol, gear_name[f.gear + 1], v, unit,
                         f.assumed ? "* " : "", f.clause, f.note.empty() ? "" : " (" + f.note + ")");
-    csv += fmt::format("{},{},{:.10g},{},{},{},{}\n", csv_field(f.symbol), gear_name[f.gear + 1], f.value,
-                       csv_field(f.unit), csv_field(f.clause), f.assumed ? 1 : 0, csv_field(f.note));
+    csv += fmt::format("{},{},{:.10g},{},{},{},{}\n", io::csv_field(f.symbol), gear_name[f.gear + 1], f.value,
+                       io::csv_field(f.unit), io::csv_field(f.clause), f.assumed ? 1 : 0, io::csv_field(f.note));
   }
   text += "\nSafety factors\n";
   for (const auto& v : contact::rating_summary(rt).values)

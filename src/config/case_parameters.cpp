@@ -1,5 +1,7 @@
 #include "config/case_parameters.hpp"
 
+#include "output/table_writer.hpp"
+
 #include "config/parameters/declare.hpp"
 
 #include <fmt/format.h>
@@ -43,13 +45,6 @@ std::vector<Parameter> build_table() {
 }
 
 std::string number_text(double v) { return fmt::format("{:g}", v); }
-
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-  return q + "\"";
-}
 
 // Schema columns: key, kind, unit, default, range or choices, required by, aliases, meaning.
 std::vector<std::vector<std::string>> schema_rows() {

@@ -59,6 +59,20 @@ gear::GearPairSpec fzg_c_gear_pair() {
   return g;
 }
 
+Material fzg_c_test_material() {
+  Material m;
+  m.name = "16MnCr5, case-carburised (the FZG C test gear)";
+  m.youngs_modulus = 206e9;
+  m.poisson_ratio = 0.3;
+  m.hardness = 6.84e9;
+  m.hardness_rule = "given";
+  m.yield_strength = 2.44e9;
+  m.density = 7850.0;
+  m.thermal_conductivity = 44.0;
+  m.specific_heat = 460.0;
+  return m;
+}
+
 FzgTorque fzg_pinion_torque(std::string_view test, int stage) {
   const FzgTest* found = nullptr;
   for (const FzgTest& t : fzg_tests())

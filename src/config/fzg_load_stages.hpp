@@ -6,6 +6,7 @@
 #pragma once
 
 #include "gear/spur_pair.hpp"
+#include "material/material.hpp"
 
 #include <array>
 #include <string>
@@ -51,5 +52,8 @@ FzgTorque fzg_pinion_torque(std::string_view test, int stage);
 // published tip diameters, the rig's 30 mm shafts as bores), as gears/fzg-c.toml gives it with its
 // sources (a test holds the two equal): the micropitting rating's test gear.
 gear::GearPairSpec fzg_c_gear_pair();
+// The C gear's case-carburised 16MnCr5 as materials/16MnCr5.toml gives it (elastic, case and thermal
+// values; a test holds the two equal).
+Material fzg_c_test_material();
 
 }  // namespace geartrib::io

@@ -1,6 +1,7 @@
 #include "output/html_report.hpp"
 
 #include "output/hdf5_handles.hpp"
+#include "output/table_writer.hpp"
 
 #include <fmt/format.h>
 
@@ -93,15 +94,14 @@ std::string num(double v, int digits = 4) {
   return fmt::format("{:.{}g}", v, digits);
 }
 
-// A value in the unit an engineer reads: [scale, unit] for an SI unit.
-std::pair<double, std::string> engineering(double v, const std::string& unit) {
-  if (unit == "Pa") return {v * 1e-6, "MPa"};
-  if (unit == "m")
-    return std::abs(v) < 1e-3 ? std::pair{v * 1e6, std::string("&micro;m")} : std::pair{v * 1e3, std::string("mm")};
-  if (unit == "N/m^2") return {v * 1e-9, "N/(mm &micro;m)"};
-  if (unit == "Pa^0.5") return {v * 1e-3, "N<sup>0.5</sup>/mm"};
-  if (unit == "N/m") return {v * 1e-3, "N/mm"};
-  return {v, unit == "1" ? "" : escape(unit)};
+// A plain-text unit (io::engineering_value's) as HTML; the number's "1" shows nothing.
+std::string html_unit(const std::string& unit) {
+  if (unit == "1") return "";
+  if (unit == "um") return "&micro;m";
+  if (unit == "degC") return "&deg;C";
+  if (unit == "N/(mm um)") return "N/(mm &micro;m)";
+  if (unit == "N^0.5/mm") return "N<sup>0.5</sup>/mm";
+  return escape(unit);
 }
 
 // --- inline SVG line plots ---
@@ -313,8 +313,9 @@ th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}tr.as
         "<h2 id=\"factors\">Rating factors</h2>\n<table><tr><th>symbol</th><th>gear</th><th>value</th><th>unit</th><th>clause</th><th>assumed</th></tr>\n";
     for (std::size_t i = 0; i < symbol.size() && i < value.size(); ++i) {
       const bool a = i < assumed.size() && assumed[i] > 0.0;
-      auto [v, u] = engineering(value[i], i < unit.size() ? unit[i] : "");
-      if (i < unit.size() && unit[i] == "K" && symbol[i].rfind("theta_fl", 0) != 0) v -= kCelsius, u = "&deg;C";
+      const EngineeringValue e = engineering_value(symbol[i], value[i], i < unit.size() ? unit[i] : "");
+      const double v = e.value;
+      const std::string u = html_unit(e.unit);
       h += fmt::format("<tr{}><td>{}</td><td>{}</td><td class=\"n\">{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
                        a ? " class=\"assumed\"" : "", escape(symbol[i]), escape(i < gear.size() ? gear[i] : ""),
                        num(v, 5), u, escape(i < clause.size() ? clause[i] : ""),

@@ -13,6 +13,7 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -39,6 +40,23 @@ std::string format_csv(const Table& t) {
     out += '\n';
   }
   return out;
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return q + "\"";
+}
+
+EngineeringValue engineering_value(const std::string& symbol, double v, const std::string& unit) {
+  if (unit == "Pa") return {v * 1e-6, "MPa"};
+  if (unit == "m") return std::abs(v) < 1e-3 ? EngineeringValue{v * 1e6, "um"} : EngineeringValue{v * 1e3, "mm"};
+  if (unit == "N/m") return {v * 1e-3, "N/mm"};
+  if (unit == "N/m^2") return {v * 1e-9, "N/(mm um)"};
+  if (unit == "Pa^0.5") return {v * 1e-3, "N^0.5/mm"};
+  if (unit == "K" && symbol.rfind("theta_fl", 0) != 0) return {v - 273.15, "degC"};
+  return {v, unit};
 }
 
 std::string format_text(const Table& t) {

@@ -27,6 +27,16 @@ struct Table {
 // CSV: header line, then rows with full precision (%.10g). Text: right-aligned columns (%.6g).
 std::string format_csv(const Table& t);
 std::string format_text(const Table& t);
+// One CSV field: as it is, or quoted (its quotes doubled) when it holds a comma, a quote or a newline.
+std::string csv_field(const std::string& s);
+// A value of SI unit `unit` in the unit an engineer reads: Pa -> MPa, m -> um (below 1 mm) or mm,
+// N/m -> N/mm, N/m^2 -> N/(mm um), Pa^0.5 -> N^0.5/mm, K -> degC unless `symbol` names a temperature
+// rise (theta_fl...); others as they are. The unit is plain text ("um", "degC").
+struct EngineeringValue {
+  double value = 0.0;
+  std::string unit;
+};
+EngineeringValue engineering_value(const std::string& symbol, double value, const std::string& unit);
 
 // Standard output flushed (what stdio and std::cout hold) and checked: a write that failed (a full
 // disk, a closed pipe with SIGPIPE ignored) is a std::runtime_error (exit 1), never a table

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace geartrib::rating {
 
@@ -39,7 +40,7 @@ IntegralTemperature iso_integral_temperature(const IntegralTemperatureInputs& in
   const double eps = p.contact_ratio;
   if (eps < 1.0 || eps > 2.5)
     out.findings.push_back(fmt::format("integral temperature: eps_alpha = {:.3f} outside [1, 2.5]", eps));
-  if (alpha < 15.0 * M_PI / 180.0 || alpha > 25.0 * M_PI / 180.0)
+  if (alpha < 15.0 * std::numbers::pi / 180.0 || alpha > 25.0 * std::numbers::pi / 180.0)
     out.findings.push_back("integral temperature: pressure angle outside [15, 25] deg");
   if (in.pitch_line_speed > kMaxScuffingSpeed)
     out.findings.push_back(

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace geartrib::runs {
 
@@ -20,23 +21,14 @@ namespace {
 constexpr double kCelsius = 273.15;
 
 // The FZG micropitting test GF-C/8.3/90 on its type C gear (FVA 54/7; io::fzg_c_gear_pair): 8.3 m/s (2175 1/min), 90
-// degC oil, both flanks ground to Ra 0.5 um, case-carburised 16MnCr5 (materials/16MnCr5.toml's values), the load of
+// degC oil, both flanks ground to Ra 0.5 um, case-carburised 16MnCr5 (io::fzg_c_test_material), the load of
 // failure stage `stage` on the 0.35 m arm; the oil and the lubrication models of the rated case `c`.
 Case fzg_c_test(const Case& c, int stage) {
   Case t;
   t.title = fmt::format("FZG GF-C/8.3/90 test gear at failure load stage {}", stage);
   t.gear_pair = io::fzg_c_gear_pair();
   for (GearSpec* gs : {&t.pinion, &t.wheel}) {
-    Material& m = gs->material;
-    m.name = "16MnCr5, case-carburised (the FZG C test gear)";
-    m.youngs_modulus = 206e9;
-    m.poisson_ratio = 0.3;
-    m.hardness = 6.84e9;
-    m.hardness_rule = "given";
-    m.yield_strength = 2.44e9;
-    m.density = 7850.0;
-    m.thermal_conductivity = 44.0;
-    m.specific_heat = 460.0;
+    gs->material = io::fzg_c_test_material();
     gs->flank.roughness.form = surface::FlankRoughness::Form::ra;
     gs->flank.roughness.ra = 0.5e-6;
     gs->flank.roughness.summit_radius = 75e-6;
@@ -49,7 +41,7 @@ Case fzg_c_test(const Case& c, int stage) {
   t.lubrication = c.lubrication;
   t.lubrication.scuffing_temperature = 0.0;
   t.operating.pinion_torque = io::fzg_pinion_torque("GF-C/8.3/90", stage).torque;
-  t.operating.pinion_speed = 2175.0 * 2.0 * M_PI / 60.0;
+  t.operating.pinion_speed = 2175.0 * 2.0 * std::numbers::pi / 60.0;
   t.operating.oil_temperature = kCelsius + 90.0;
   t.directory = c.directory;
   return t;
