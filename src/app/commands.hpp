@@ -11,6 +11,7 @@ namespace geartrib::app {
 
 void add_asperity_command(CLI::App& app);
 void add_case_command(CLI::App& app);
+void add_contact_command(CLI::App& app);
 void add_kinematics_command(CLI::App& app);
 void add_rate_command(CLI::App& app);
 void add_report_command(CLI::App& app);

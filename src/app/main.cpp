@@ -71,6 +71,7 @@ constexpr std::pair<std::string_view, AddCommand> kCommands[] = {
     {"dynamics", geartrib::app::add_dynamics_command},
     {"fit", add_fit_command_from_module},
     {"surface", geartrib::app::add_surface_command},
+    {"contact", geartrib::app::add_contact_command},
     {"fem", geartrib::app::add_fem_command},
     {"sweep", geartrib::app::add_sweep_command},
     {"tradeoff", geartrib::app::add_tradeoff_command},

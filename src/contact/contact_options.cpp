@@ -16,6 +16,7 @@ void ContactSettings::validate() const {
   core::validate_member("strip", strip);
   core::validate_member("boundary_elements", boundary_elements);
   core::validate_member("mixed_ehl", mixed_ehl);
+  core::validate_member("areal", areal);
 }
 
 }  // namespace geartrib

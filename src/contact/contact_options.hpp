@@ -2,6 +2,7 @@
 // contact/fidelity_registry.hpp), the outputs asked for, the resolution knobs and running-in.
 #pragma once
 
+#include "contact/areal/mesh_areal_options.hpp"
 #include "contact/deterministic_contact.hpp"
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mixed_ehl/mixed_ehl_options.hpp"
@@ -63,6 +64,9 @@ struct ContactSettings {
   // Mixed EHL: the grid, the transient window and the line solver (the pressure profiles kept and
   // the threads as above).
   contact::mixed_ehl::MixedEhlOptions mixed_ehl;
+  // Areal: the window across the face, the flanks' lay, the solver's tolerance (the strip along the
+  // involute and the threads as the deterministic fidelity's).
+  contact::areal::ArealMeshOptions areal;
   // The option structs' validate(): throws core::KeyedError naming the field by its path from here
   // ("strip.strip_points", "boundary_elements.element_size", "mixed_ehl.solver.tolerance").
   void validate() const;

@@ -3,6 +3,7 @@
 // registry's data (contact/fidelity_registry.hpp) is read from it.
 #pragma once
 
+#include "contact/areal/mesh_areal.hpp"
 #include "contact/deterministic/mesh_deterministic.hpp"
 #include "contact/fidelity_registry.hpp"
 #include "contact/mixed_ehl/mesh_mixed_ehl.hpp"
@@ -14,8 +15,8 @@
 
 namespace geartrib::contact {
 
-using FidelityList =
-    std::tuple<statistical::Uncoupled, statistical::Coupled, deterministic::BoundaryElements, mixed_ehl::MixedEhl>;
+using FidelityList = std::tuple<statistical::Uncoupled, statistical::Coupled, deterministic::BoundaryElements,
+                                mixed_ehl::MixedEhl, areal::Areal>;
 
 template <class Fidelity>
 struct FidelityTag {

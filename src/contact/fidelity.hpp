@@ -21,6 +21,9 @@
 #include "contact/surface_model.hpp"
 #include "core/nonlinear_solver.hpp"
 #include "gear/gear_mesh.hpp"
+#include "surface/flank_spec.hpp"
+
+#include <array>
 
 #include <functional>
 #include <string>
@@ -47,6 +50,9 @@ struct FidelityInputs {
   // Lubricated runs: the film stage (its oil at the flanks' bulk temperature, the flanks' thermal
   // contact coefficients), set once it is built, before solve(); nullptr when dry or in prepare().
   const MeshLubrication* film = nullptr;
+  // The flanks as the case gives them (a generated profile's spec: the areal fidelity's isotropic
+  // maps); null when the caller has none.
+  std::array<const surface::FlankSpec*, 2> flank_specs = {nullptr, nullptr};
 };
 
 }  // namespace geartrib::contact

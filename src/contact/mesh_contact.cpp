@@ -83,6 +83,7 @@ void run_stages(const MeshCycleInputs& in, const PathState& path, StageClock& cl
   FidelityInputs fi{
       in.mesh,         path,       in.contact, in.running_in, in.flanks, in.lubrication != nullptr, in.solver,
       in.flank_source, in.progress};
+  fi.flank_specs = in.flank_specs;
   typename F::State state = F::prepare(fi, clock);
   std::optional<MeshLubrication> lubricated;
   std::vector<double> share(path.size(), 1.0);

@@ -13,6 +13,7 @@
 #include "gear/mesh_dynamics.hpp"
 #include "lubrication/lubrication_settings.hpp"
 #include "rating/load_capacity.hpp"
+#include "surface/flank_spec.hpp"
 #include "surface/rough_surface.hpp"
 
 #include <array>
@@ -231,6 +232,7 @@ struct MeshCycleInputs {
   const NonlinearSolver* solver = nullptr;  // for a fidelity that needs one (coupled)
   FlankSource flank_source;                 // for a fidelity that rolls the flanks' profiles
   std::function<void(int, int)> progress;   // (done, total) after each position
+  std::array<const surface::FlankSpec*, 2> flank_specs = {nullptr, nullptr};  // the case's flanks (areal)
 };
 
 // The stages in order: path, the fidelity's preparation, the film (lubricated), its solve,

@@ -114,6 +114,15 @@ hid_t utf8_type(std::size_t size) {
 }
 }  // namespace
 
+void columns_group(hid_t file, const std::string& name, const ColumnTable& t) {
+  t.validate();
+  Handle group(H5Gcreate2(file, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group " + name);
+  for (const Column& c : t.columns) {
+    if (c.text) strings_dataset(group, c.name, c.texts);
+    else number_dataset(group, c.name, c.numbers, c.unit);
+  }
+}
+
 void number_dataset(hid_t group, const std::string& name, const std::vector<double>& values, const std::string& units) {
   const hsize_t n = values.size();
   Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "dataspace");

@@ -1,6 +1,8 @@
 // Small RAII layer over the HDF5 C API shared by the HDF5 writers and readers (src/output, src/topography, src/runs).
 #pragma once
 
+#include "output/column_table.hpp"
+
 #include <hdf5.h>
 
 #include <filesystem>
@@ -64,6 +66,8 @@ void number_dataset(hid_t group, const std::string& name, const std::vector<doub
 hid_t matrix_dataset(hid_t group, const std::string& name, std::size_t rows, std::size_t cols,
                      const std::vector<double>& values, const std::string& units);
 void string_dataset(hid_t group, const std::string& name, const std::string& value);
+// A group `name` of a table's columns: numeric ones as number_dataset, text ones as strings_dataset.
+void columns_group(hid_t file, const std::string& name, const ColumnTable& t);
 void strings_dataset(hid_t group, const std::string& name, const std::vector<std::string>& values);
 // Readers of the same; throw std::runtime_error naming the dataset when it is missing or of
 // another kind.

@@ -9,22 +9,11 @@
 
 namespace geartrib::io {
 
-namespace {
-void columns_group(hid_t file, const std::string& name, const ColumnTable& t) {
-  t.validate();
-  hdf5::Handle group(H5Gcreate2(file, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group " + name);
-  for (const Column& c : t.columns) {
-    if (c.text) hdf5::strings_dataset(group, c.name, c.texts);
-    else hdf5::number_dataset(group, c.name, c.numbers, c.unit);
-  }
-}
-}  // namespace
-
 void write_line_ehl_hdf5(const std::filesystem::path& path, const LineEhlFile& f) {
   start_hdf5();
   hdf5::NewFile file(path);
-  columns_group(file, "/profile", f.profile);
-  if (!f.series.columns.empty()) columns_group(file, "/series", f.series);
+  hdf5::columns_group(file, "/profile", f.profile);
+  if (!f.series.columns.empty()) hdf5::columns_group(file, "/series", f.series);
   {
     hdf5::Handle summary(H5Gcreate2(file, "/summary", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                          "group /summary");

@@ -631,7 +631,8 @@ contact::MeshContactResult run_mesh_contact(const Case& c, const gear::GearMesh&
       .dynamics_settings = dynamic ? gear::dynamics_settings(c) : gear::DynamicsSettings{},
       .solver = solver,
       .flank_source = flanks_source,
-      .progress = progress};
+      .progress = progress,
+      .flank_specs = {&c.pinion.flank, &c.wheel.flank}};
   if (positions > 0) in.contact.positions = positions;
   return contact::run_mesh_contact(in);
 }

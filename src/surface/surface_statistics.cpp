@@ -1,5 +1,7 @@
 #include "surface/surface_statistics.hpp"
 
+#include "core/fftw_planner.hpp"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -164,6 +166,30 @@ FlankRoughness measured_roughness(const SurfaceStatistics& s) {
   r.height_rq = s.rq;
   r.height_ra = s.ra;
   return r;
+}
+
+double spectral_rms_gradient(const HeightGrid& g) {
+  g.validate();
+  if (g.missing() > 0) throw std::invalid_argument("spectral_rms_gradient: the grid has missing points");
+  const int hx = g.nx / 2 + 1;
+  auto real = fftw_real_array(g.size());
+  auto spectrum = fftw_complex_array(static_cast<std::size_t>(g.ny) * hx);
+  const FftwPlan forward([&] { return fftw_plan_dft_r2c_2d(g.ny, g.nx, real.get(), spectrum.get(), FFTW_ESTIMATE); });
+  std::copy(g.z.begin(), g.z.end(), real.get());
+  fftw_execute(forward.get());
+  const double n = static_cast<double>(g.size());
+  double sum = 0.0;
+  for (int ky = 0; ky < g.ny; ++ky)
+    for (int kx = 0; kx < hx; ++kx) {
+      // A bin at the Nyquist frequency holds a cosine whose derivative vanishes on the grid: left out.
+      if ((g.nx % 2 == 0 && kx == g.nx / 2) || (g.ny % 2 == 0 && ky == g.ny / 2)) continue;
+      const int sy = ky <= g.ny / 2 ? ky : ky - g.ny;
+      const double qx = 2.0 * std::numbers::pi * kx / (g.nx * g.dx), qy = 2.0 * std::numbers::pi * sy / (g.ny * g.dy);
+      const fftw_complex& c = spectrum[static_cast<std::size_t>(ky) * hx + kx];
+      const double weight = (kx == 0 || (g.nx % 2 == 0 && kx == g.nx / 2)) ? 1.0 : 2.0;  // the half spectrum
+      sum += weight * (qx * qx + qy * qy) * (c[0] * c[0] + c[1] * c[1]) / (n * n);
+    }
+  return std::sqrt(sum);
 }
 
 }  // namespace geartrib::surface

@@ -37,6 +37,11 @@ struct Summit {
 };
 std::vector<Summit> find_summits(const HeightGrid& g, double mean_plane);
 
+// The rms gradient |grad z| of a grid taken as one period of a periodic surface (all points valid),
+// by its Fourier transform: sqrt(sum |q|^2 |z_q|^2), exact for a band-limited periodic surface (a
+// generated one; the one the areal boundary elements' spectral kernel sees) [1].
+double spectral_rms_gradient(const HeightGrid& g);
+
 // The flank roughness the contact models take, from the measured summits.
 FlankRoughness measured_roughness(const SurfaceStatistics& s);
 

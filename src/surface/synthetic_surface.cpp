@@ -4,6 +4,7 @@
 
 #include <fftw3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -102,6 +103,60 @@ HeightGrid hobbed_surface(const HobbedSpec& s) {
       const double local = std::remainder(x - 0.5 * s.wavelength, s.wavelength);  // distance to the nearest ridge axis
       g.at(i, j) = -local * local / (2.0 * s.tip_radius) + s.noise_rq * noise(rng);
     }
+  return g;
+}
+
+HeightGrid gaussian_surface(const GaussianSurfaceSpec& s) {
+  if (s.nx < 2 || s.ny < 1) throw std::invalid_argument("a Gaussian surface needs at least 2 x 1 points");
+  check_grid(s.nx, s.ny, std::min(s.dx, s.dy));
+  if (!(s.rq > 0.0 && s.rq <= kMaxHeight)) throw std::invalid_argument("rq must lie in (0, 1] m");
+  if (!(s.correlation_length >= 2.0 * std::max(s.dx, s.dy)))
+    throw std::invalid_argument("the correlation length must be at least two spacings each way");
+  // The kernel exp(-r^2/(2 sigma^2)), sigma = lambda/2, to 4 sigma = 2 lambda along x (the noise runs
+  // on that far beyond the ends; the cyclic convolution over the noise's length then never wraps
+  // into the outputs); along y the whole period (cyclic: the rows wrap). One 2-D transform.
+  const int hx = static_cast<int>(std::ceil(2.0 * s.correlation_length / s.dx));
+  const int mx = static_cast<int>(fast_fft_size(static_cast<std::size_t>(s.nx + 2 * hx))), my = s.ny;
+  const int kx = mx / 2 + 1;
+  const std::size_t real_size = static_cast<std::size_t>(mx) * my, spectral = static_cast<std::size_t>(kx) * my;
+  if (real_size > 4 * kMaxGridPoints)
+    throw std::invalid_argument("more than " + std::to_string(kMaxGridPoints) + " points");
+  auto real = fftw_real_array(real_size);
+  auto noise_hat = fftw_complex_array(spectral);
+  const FftwPlan forward([&] { return fftw_plan_dft_r2c_2d(my, mx, real.get(), noise_hat.get(), FFTW_ESTIMATE); });
+  const FftwPlan backward([&] { return fftw_plan_dft_c2r_2d(my, mx, noise_hat.get(), real.get(), FFTW_ESTIMATE); });
+  std::mt19937_64 rng(s.seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  for (std::size_t k = 0; k < real_size; ++k) real[k] = normal(rng);
+  fftw_execute(forward.get());
+  // The kernel's transform, separable: along x the truncated Gaussian's at the bins 0..mx/2 of mx,
+  // along y the periodic one's (its offsets -my/2 < j <= my/2) at every bin.
+  auto transform = [&](int bins, int m, double h, int first, int last) {
+    std::vector<double> t(static_cast<std::size_t>(bins));
+    const double a = h / s.correlation_length;
+    for (int b = 0; b < bins; ++b)
+      for (int j = first; j <= last; ++j)
+        t[static_cast<std::size_t>(b)] += std::exp(-2.0 * (a * j) * (a * j)) * std::cos(2.0 * kPi * b * j / m);
+    return t;
+  };
+  const std::vector<double> tx_full = transform(kx, mx, s.dx, -hx, hx);
+  const std::vector<double> ty = transform(my, my, s.dy, -((my - 1) / 2), my / 2);
+  for (int by = 0; by < my; ++by)
+    for (int bx = 0; bx < kx; ++bx) {
+      const double f = tx_full[static_cast<std::size_t>(bx)] * ty[static_cast<std::size_t>(by)];
+      fftw_complex& c = noise_hat[static_cast<std::size_t>(by) * kx + bx];
+      c[0] *= f, c[1] *= f;
+    }
+  fftw_execute(backward.get());  // unnormalised: the scaling to rq absorbs it
+  HeightGrid g = make_grid(s.nx, s.ny, s.dx, s.dy);
+  for (int j = 0; j < s.ny; ++j)
+    for (int i = 0; i < s.nx; ++i) g.at(i, j) = real[static_cast<std::size_t>(j) * mx + i + hx];
+  double mean = 0.0, var = 0.0;
+  for (double v : g.z) mean += v;
+  mean /= static_cast<double>(g.size());
+  for (double& v : g.z) v -= mean, var += v * v;
+  const double scale = s.rq / std::sqrt(var / static_cast<double>(g.size()));
+  for (double& v : g.z) v *= scale;
   return g;
 }
 

@@ -25,6 +25,20 @@ struct SelfAffineSpec {
 };
 HeightGrid self_affine_surface(const SelfAffineSpec& s);
 
+// An isotropic Gaussian random surface with autocorrelation rq^2 exp(-r^2/lambda^2): the areal
+// counterpart of a generated ground profile (surface/flank_profile.hpp), every line through it having
+// that profile's autocorrelation. White noise convolved with exp(-r^2/(2 s^2)), s = lambda/2, taken
+// separably and truncated at 4 s; periodic along y (the rows wrap: a window periodic across a face),
+// open along x (the noise runs on beyond the ends); scaled to rq exactly.
+struct GaussianSurfaceSpec {
+  int nx = 256, ny = 64;
+  double dx = 0.5e-6, dy = 0.5e-6;    // [m]
+  double rq = 0.3e-6;                 // [m]
+  double correlation_length = 10e-6;  // lambda [m], at least two spacings each way
+  std::uint64_t seed = 1;
+};
+HeightGrid gaussian_surface(const GaussianSurfaceSpec& s);  // std::invalid_argument naming the rule
+
 // A hobbed-like directional texture: parallel parabolic ridges y = h - (x - c)^2/(2 R) along the
 // lay (the y axis), `wavelength` apart, meeting in sharp valleys, plus seeded Gaussian noise of
 // `noise_rq`.

@@ -239,6 +239,40 @@ void declare_contact(ParameterRows& table) {
       .doc(
           "Mixed EHL: also one transient solve from A to E on the largest contact's grid, the load, curvature and "
           "speeds changing every step (the squeeze they cause), its cost measured");
+  // [areal]: the areal fidelity's window across the face and its flanks.
+  add(quantity(
+          "areal.window", D::length, [](auto& c, int) -> auto& { return c.contact.areal.window; }))
+      .range(1e-6, 1e-2)
+      .field("contact.areal.window")
+      .plausible(10.0 * kUm, 1000.0 * kUm)
+      .ladder({"16 um", "32 um", "64 um", "128 um"})
+      .doc(
+          "Areal: the window's width across the face, periodic across it: at least four of the roughness' "
+          "correlation lengths (fewer is refused at one), so that the window holds a fair sample of its spots");
+  add(integer(
+          "areal.points", [](auto& c, int) -> auto& { return c.contact.areal.points; }))
+      .range(contact::areal::ArealMeshOptions::kMinPoints, contact::areal::ArealMeshOptions::kMaxPoints)
+      .field("contact.areal.points")
+      .ladder({"32", "64", "128", "256"})
+      .doc(
+          "Areal: the window's points across the face (its spacing window/points; along the involute the "
+          "elements are contact.element_size)");
+  add(named_choice(
+          "areal.lay", contact::areal::areal_lay_choices(), "lay",
+          [](auto& c, int) -> auto& { return c.contact.areal.lay; }))
+      .doc(
+          "Areal: each flank's height map across the face: isotropic (a random surface with the flank profile's "
+          "Gaussian correlation in every direction: superfinished, vibratory-finished or shot-peened flanks; a "
+          "generated ground profile) or extruded (the profile repeated across the face: the deterministic "
+          "fidelity's flank, a lay across the profile)");
+  add(number(
+          "areal.tolerance", [](auto& c, int) -> auto& { return c.contact.areal.tolerance; }))
+      .range(1e-12, 1e-2)
+      .field("contact.areal.tolerance")
+      .ladder({"1e-3", "1e-4", "1e-5", "1e-6", "1e-8"})
+      .doc(
+          "Areal: the solver's stop, the contact conditions' rms residual over the heights' rms (Polonsky & "
+          "Keer's conjugate gradients)");
   // [running_in]
   add(integer(
           "running_in.meshes", [](auto& c, int) -> auto& { return c.running_in.meshes; }))

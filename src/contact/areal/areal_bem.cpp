@@ -1,0 +1,706 @@
+#include "contact/areal/areal_bem.hpp"
+
+#include "core/fftw_planner.hpp"
+#include "core/keyed_error.hpp"
+
+#include <fmt/format.h>
+#include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/quadrature/tanh_sinh.hpp>
+#include <boost/math/special_functions/bessel.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <numeric>
+#include <stdexcept>
+
+namespace geartrib::contact::areal {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+thread_local long executed_transforms = 0;
+
+// Points of a transform's axis: the window's (periodic) or twice it (open: zero-padded).
+int padded(int n, bool periodic) { return periodic ? n : 2 * n; }
+// The signed wave index of FFT bin k of m.
+int signed_index(int k, int m) { return k <= m / 2 ? k : k - m; }
+
+// x asinh(y/|x|) + y asinh(x/|y|): Love's (1929) integral of 1/r over the quadrant to (x, y), less
+// its functions of x or of y alone (which cancel between an element's corners). Stable where
+// x ln(y + r) + y ln(x + r) loses digits (y < 0, |y| ~ r).
+double love_corner(double x, double y) {
+  double f = 0.0;
+  if (x != 0.0) f += x * std::asinh(y / std::abs(x));
+  if (y != 0.0) f += y * std::asinh(x / std::abs(y));
+  return f;
+}
+
+// One open direction's influence under the other direction's Fourier mode q [1/m]: the pressure
+// p(x) e^{i q y} piecewise constant over elements of width h displaces the surface by
+// (2/(pi E*)) integral K_0(|q| |x - xi|) p(xi) dxi (the Fourier transform along y of 1/(pi E* r)).
+// For q = 0 the line load's -(2/(pi E*)) ln|x| (its constant is a rigid shift: the approach of a
+// window periodic in one direction alone is not defined). Offsets 0..n-1 [m/Pa].
+std::vector<double> open_influence_under_mode(int n, double h, double q, double e_star) {
+  std::vector<double> k(static_cast<std::size_t>(n), 0.0);
+  if (q == 0.0) {
+    auto f = [](double s) { return s == 0.0 ? 0.0 : s * std::log(std::abs(s)) - s; };
+    for (int m = 0; m < n; ++m)
+      k[static_cast<std::size_t>(m)] = -2.0 / (kPi * e_star) * (f((m + 0.5) * h) - f((m - 0.5) * h));
+    return k;
+  }
+  // J(X) = integral_0^X K_0(t) dt, odd; J(inf) = pi/2. Increments by Gauss-Legendre on pieces of
+  // at most 0.5 (K_0 is smooth away from 0), the first piece by tanh-sinh (K_0's log at 0).
+  auto k0 = [](double t) { return boost::math::cyl_bessel_k(0, t); };
+  const double x0 = q * 0.5 * h;
+  boost::math::quadrature::tanh_sinh<double> tanh_sinh;
+  double j_prev = x0 > 40.0 ? kPi / 2.0 : tanh_sinh.integrate(k0, 0.0, x0);
+  const double scale = 2.0 / (kPi * e_star * q);
+  k[0] = scale * 2.0 * j_prev;
+  double x_prev = x0;
+  for (int m = 1; m < n; ++m) {
+    const double x = q * (m + 0.5) * h;
+    if (x_prev > 40.0) break;  // K_0(40) ~ 1e-18: the rest adds nothing
+    const int pieces = std::max(1, static_cast<int>(std::ceil((x - x_prev) / 0.5)));
+    double inc = 0.0;
+    for (int s = 0; s < pieces; ++s) {
+      const double a = x_prev + (x - x_prev) * s / pieces, b = x_prev + (x - x_prev) * (s + 1) / pieces;
+      inc += boost::math::quadrature::gauss<double, 10>::integrate(k0, a, b);
+    }
+    k[static_cast<std::size_t>(m)] = scale * inc;
+    x_prev = x;
+  }
+  return k;
+}
+
+// Even sequences k[|m|] (m from -(n-1) to n-1) on a cyclic axis of 2n points, transformed: the
+// (real) DFT at every bin 0..2n-1. One plan for every sequence of the axis.
+class EvenSpectrum {
+ public:
+  explicit EvenSpectrum(int n)
+      : n_(n),
+        real_(fftw_real_array(2 * static_cast<std::size_t>(n))),
+        spectrum_(fftw_complex_array(static_cast<std::size_t>(n) + 1)),
+        plan_([&] { return fftw_plan_dft_r2c_1d(2 * n, real_.get(), spectrum_.get(), FFTW_ESTIMATE); }) {}
+  std::vector<double> operator()(const std::vector<double>& k) const {
+    const int m = 2 * n_;
+    real_[0] = k[0];
+    real_[static_cast<std::size_t>(n_)] = 0.0;
+    for (int j = 1; j < n_; ++j)
+      real_[static_cast<std::size_t>(j)] = real_[static_cast<std::size_t>(m - j)] = k[static_cast<std::size_t>(j)];
+    fftw_execute(plan_.get());
+    std::vector<double> out(static_cast<std::size_t>(m));
+    for (int b = 0; b <= n_; ++b) out[static_cast<std::size_t>(b)] = spectrum_[b][0];
+    for (int b = n_ + 1; b < m; ++b) out[static_cast<std::size_t>(b)] = out[static_cast<std::size_t>(m - b)];
+    return out;
+  }
+
+ private:
+  int n_;
+  std::unique_ptr<double[], FftwFree> real_;
+  std::unique_ptr<fftw_complex[], FftwFree> spectrum_;
+  FftwPlan plan_;
+};
+
+}  // namespace
+
+void ArealGrid::validate() const {
+  if (nx < 1 || ny < 1)
+    throw core::KeyedError("points", fmt::format("the grid needs points in both directions ({} x {})", nx, ny));
+  if (!(dx > 0.0) || !(dy > 0.0) || !std::isfinite(dx) || !std::isfinite(dy))
+    throw core::KeyedError("spacing", fmt::format("the spacing must be positive and finite ({} x {} m)", dx, dy));
+}
+
+double areal_solve_bytes(const ArealGrid& g) {
+  const double padded_points = static_cast<double>(padded(g.nx, g.periodic_x)) * padded(g.ny, g.periodic_y);
+  // The padded real array and its spectrum, the kernel's spectrum; the solve's seven fields.
+  return 8.0 * padded_points + 16.0 * 0.5 * padded_points + 8.0 * 0.5 * padded_points + 7.0 * 8.0 * g.size();
+}
+
+void ArealOptions::validate() const {
+  if (!(composite_modulus > 0.0) || !std::isfinite(composite_modulus))
+    throw core::KeyedError("composite_modulus", "the composite modulus must be positive and finite");
+  if (!(poisson_ratio >= 0.0 && poisson_ratio < 0.5))
+    throw core::KeyedError("poisson_ratio", "Poisson's ratio must lie in [0, 0.5)");
+  if (!(hardness > 0.0)) throw core::KeyedError("hardness", "the hardness must be positive (inf: elastic)");
+  if (!(tolerance > 0.0 && tolerance < 1.0)) throw core::KeyedError("tolerance", "the tolerance must lie in (0, 1)");
+  if (max_iterations < 1) throw core::KeyedError("max_iterations", "at least one iteration");
+}
+
+long ElasticKernel::transforms() { return executed_transforms; }
+
+struct ElasticKernel::Transforms {
+  std::unique_ptr<double[], FftwFree> real;
+  std::unique_ptr<fftw_complex[], FftwFree> spectrum;
+  std::unique_ptr<FftwPlan> forward, backward;
+};
+
+ElasticKernel::~ElasticKernel() = default;
+
+ElasticKernel::ElasticKernel(const ArealGrid& grid, double e_star) : grid_(grid), e_star_(e_star) {
+  grid_.validate();
+  if (!(e_star > 0.0) || !std::isfinite(e_star))
+    throw core::KeyedError("composite_modulus", "the composite modulus must be positive and finite");
+  mx_ = padded(grid_.nx, grid_.periodic_x);
+  my_ = padded(grid_.ny, grid_.periodic_y);
+  const int hx = mx_ / 2 + 1;
+  const std::size_t spectral = static_cast<std::size_t>(my_) * static_cast<std::size_t>(hx);
+  fft_ = std::make_unique<Transforms>();
+  fft_->real = fftw_real_array(static_cast<std::size_t>(mx_) * static_cast<std::size_t>(my_));
+  fft_->spectrum = fftw_complex_array(spectral);
+  double* real = fft_->real.get();
+  fftw_complex* spectrum = fft_->spectrum.get();
+  fft_->forward =
+      std::make_unique<FftwPlan>([&] { return fftw_plan_dft_r2c_2d(my_, mx_, real, spectrum, FFTW_ESTIMATE); });
+  fft_->backward =
+      std::make_unique<FftwPlan>([&] { return fftw_plan_dft_c2r_2d(my_, mx_, spectrum, real, FFTW_ESTIMATE); });
+  kernel_hat_.assign(spectral, 0.0);
+  const double lx = mx_ * grid_.dx, ly = my_ * grid_.dy;
+  const double norm = 1.0 / (static_cast<double>(mx_) * my_);
+  auto at = [&](int ky, int kx) -> double& { return kernel_hat_[static_cast<std::size_t>(ky) * hx + kx]; };
+  if (grid_.periodic_x && grid_.periodic_y) {
+    // 2/(E* |q|) (Stanley & Kato 1997); q = 0, the rigid mode, set aside.
+    for (int ky = 0; ky < my_; ++ky)
+      for (int kx = 0; kx < hx; ++kx) {
+        const double qx = 2.0 * kPi * kx / lx, qy = 2.0 * kPi * signed_index(ky, my_) / ly;
+        const double q = std::hypot(qx, qy);
+        at(ky, kx) = q > 0.0 ? 2.0 / (e_star * q) * norm : 0.0;
+      }
+  } else if (!grid_.periodic_x && !grid_.periodic_y) {
+    // Love's element influence on the cyclic padded grid, offsets -(n-1)..n-1, from the corners'
+    // values (x_a = (a - n + 1/2) dx, a = 0..2n-1; as y): one asinh pair a corner.
+    std::fill(real, real + static_cast<std::size_t>(mx_) * my_, 0.0);
+    const int cx = 2 * grid_.nx, cy = 2 * grid_.ny;
+    std::vector<double> corner(static_cast<std::size_t>(cx) * cy);
+    for (int b = 0; b < cy; ++b)
+      for (int a = 0; a < cx; ++a)
+        corner[static_cast<std::size_t>(b) * cx + a] =
+            love_corner((a - grid_.nx + 0.5) * grid_.dx, (b - grid_.ny + 0.5) * grid_.dy) / (kPi * e_star);
+    auto c = [&](int a, int b) { return corner[static_cast<std::size_t>(b) * cx + a]; };
+    for (int j = -(grid_.ny - 1); j < grid_.ny; ++j)
+      for (int i = -(grid_.nx - 1); i < grid_.nx; ++i) {
+        const int a = i + grid_.nx - 1, b = j + grid_.ny - 1;  // the element's lower corner
+        real[static_cast<std::size_t>(j >= 0 ? j : my_ + j) * mx_ + (i >= 0 ? i : mx_ + i)] =
+            c(a + 1, b + 1) - c(a + 1, b) - c(a, b + 1) + c(a, b);
+      }
+    fftw_execute(fft_->forward->get());
+    for (std::size_t s = 0; s < spectral; ++s) kernel_hat_[s] = spectrum[s][0] * norm;  // even: real
+  } else {
+    // One direction periodic (its modes exact), the other open (its elements' influence per mode).
+    const bool open_x = !grid_.periodic_x;
+    const int n_open = open_x ? grid_.nx : grid_.ny;
+    const double h_open = open_x ? grid_.dx : grid_.dy;
+    const int m_per = open_x ? my_ : mx_;
+    const double l_per = open_x ? ly : lx;
+    const int modes = open_x ? my_ : hx;  // the periodic axis' bins held
+    const EvenSpectrum even_spectrum(n_open);
+    for (int b = 0; b < modes; ++b) {
+      const int sb = open_x ? signed_index(b, m_per) : b;
+      if (open_x && sb < 0) continue;  // |q| repeats: filled from its positive twin below
+      const double q = 2.0 * kPi * std::abs(sb) / l_per;
+      const std::vector<double> spec = even_spectrum(open_influence_under_mode(n_open, h_open, q, e_star));
+      if (open_x) {
+        for (int kx = 0; kx < hx; ++kx) {
+          at(b, kx) = spec[static_cast<std::size_t>(kx)] * norm;
+          if (b > 0 && b < my_ - b) at(my_ - b, kx) = at(b, kx);
+        }
+      } else {
+        for (int ky = 0; ky < my_; ++ky) at(ky, b) = spec[static_cast<std::size_t>(ky)] * norm;
+      }
+    }
+  }
+  // The self-influence: the displacement of element 0 under a unit pressure on it.
+  std::vector<double> unit(grid_.size(), 0.0), u(grid_.size());
+  unit[0] = 1.0;
+  apply(unit, u);
+  self_ = u[0];
+}
+
+void ElasticKernel::apply(std::span<const double> p, std::span<double> u) const {
+  const int nx = grid_.nx, ny = grid_.ny, hx = mx_ / 2 + 1;
+  double* r = fft_->real.get();
+  if (mx_ == nx && my_ == ny) {
+    std::copy(p.begin(), p.end(), r);
+  } else {
+    std::fill(r, r + static_cast<std::size_t>(mx_) * my_, 0.0);
+    for (int j = 0; j < ny; ++j)
+      std::copy_n(p.begin() + static_cast<std::ptrdiff_t>(j) * nx, nx, r + static_cast<std::size_t>(j) * mx_);
+  }
+  fftw_execute(fft_->forward->get());
+  fftw_complex* s = fft_->spectrum.get();
+  const std::size_t spectral = static_cast<std::size_t>(my_) * hx;
+  for (std::size_t k = 0; k < spectral; ++k) {
+    s[k][0] *= kernel_hat_[k];
+    s[k][1] *= kernel_hat_[k];
+  }
+  fftw_execute(fft_->backward->get());
+  executed_transforms += 2;
+  for (int j = 0; j < ny; ++j)
+    std::copy_n(r + static_cast<std::size_t>(j) * mx_, nx, u.begin() + static_cast<std::ptrdiff_t>(j) * nx);
+}
+
+namespace {
+
+// The factor that brings the pressures' sum to the target (Polonsky & Keer's load balance, uncapped).
+double load_scale(std::span<const double> p, double target) {
+  const double sum = std::accumulate(p.begin(), p.end(), 0.0);
+  return sum > 0.0 ? target / sum : 1.0;
+}
+
+}  // namespace
+
+namespace {
+
+// Polonsky & Keer's iteration at a mean pressure or a flat's approach. The load is restored after each
+// step by scaling (elastic: Polonsky & Keer) or, capped, by a common shift of the free elements'
+// pressure; with no free element left the flat is where the capped ones carry the load.
+ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double> h, Control control, double value,
+                            const ArealOptions& o, std::span<const double> start) {
+  const ArealGrid& g = kernel.grid();
+  const std::size_t n = g.size();
+  const bool load = control == Control::mean_pressure;
+  const double cap = o.hardness;
+  const double h_max = *std::max_element(h.begin(), h.end());
+  const double h_mean = std::accumulate(h.begin(), h.end(), 0.0) / static_cast<double>(n);
+  double h_var = 0.0;
+  for (double v : h) h_var += (v - h_mean) * (v - h_mean);
+  const double h_rms = std::sqrt(h_var / static_cast<double>(n));
+  const double scale = std::max(h_rms, 1e-15);  // [m] the residual's
+
+  ArealSolution s;
+  std::vector<double>& p = s.pressure;
+  std::vector<double>& u = s.displacement;
+  std::vector<double>& gap = s.gap;
+  p.assign(n, 0.0);
+  u.assign(n, 0.0);
+  gap.assign(n, 0.0);
+  const double self = kernel.self_influence();
+  double flat = h_max - value;  // the flat's height (approach control; load control: found below)
+  if (load && value == 0.0) {
+    s.approach = 0.0, s.converged = true;
+    for (std::size_t i = 0; i < n; ++i) gap[i] = h_max - h[i];
+    return s;
+  }
+  if (!start.empty() && start.size() == n) {
+    for (std::size_t i = 0; i < n; ++i) p[i] = std::clamp(start[i], 0.0, cap);
+  } else if (load) {
+    std::fill(p.begin(), p.end(), value);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) p[i] = std::min(std::max(0.0, h[i] - flat) / self, cap);
+  }
+  if (load) {
+    const double f = load_scale(p, value * static_cast<double>(n));
+    for (double& v : p) v = std::min(v * f, cap);
+  }
+  kernel.apply(p, u);
+
+  // The elements' states: 0 no pressure, 1 free (0 < p < H), 2 capped. The displacement is carried
+  // from step to step by the step's own K t (one transform pair an iteration) and computed afresh
+  // (a second pair) when the pressure the projection moved since the last fresh one (clipped at 0 or
+  // H, entering the contact, leaving the cap: left out of the carried u) passes kClipped times the
+  // residual of the load (an inexact step early, an exact one as the residual falls), every kFresh
+  // iterations, and before the iteration may stop.
+  constexpr double kClipped = 0.1;
+  constexpr int kFresh = 32;
+  std::vector<double> t(n, 0.0), w(n, 0.0);
+  std::vector<unsigned char> state(n);
+  auto classify = [cap](double v) -> unsigned char { return v <= 0.0 ? 0 : v >= cap ? 2 : 1; };
+  double g_old = 0.0, tau = 1.0 / self;
+  bool reset = true, fresh = true;
+  double clipped = 0.0, scale_next = 1.0;
+  double free_h = 0.0, free_u = 0.0;  // sums over the free elements (the flat's height, load control)
+  std::size_t free_count = 0;
+  auto recount = [&] {
+    free_h = free_u = 0.0, free_count = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      state[i] = classify(p[i]);
+      if (state[i] == 1) free_h += h[i], free_u += u[i], ++free_count;
+    }
+  };
+  recount();
+  const double target = value * static_cast<double>(n);
+  for (int it = 0;; ++it) {
+    // The flat's height: given, or the mean over the free elements of their deformed heights.
+    const double f = scale_next;
+    if (load) {
+      if (free_count > 0) {
+        flat = (free_h - f * free_u) / static_cast<double>(free_count);
+      } else {
+        // No free element (all at 0 or H: the plastic limit): the flat at the deformed height of the
+        // element after the floor(target/H) highest, which at H carry all of the load but a part of
+        // one element's (that element's share, given it below).
+        std::vector<double> up(n);
+        for (std::size_t i = 0; i < n; ++i) up[i] = h[i] - f * u[i];
+        const auto k =
+            static_cast<std::ptrdiff_t>(std::clamp(std::floor(target / cap), 0.0, static_cast<double>(n) - 1.0));
+        std::nth_element(up.begin(), up.begin() + k, up.end(), std::greater<>());
+        flat = up[static_cast<std::size_t>(k)];
+      }
+    }
+    // (The load's scale f reaches p and u in the step below, which reads and writes them anyway.)
+    double res2 = 0.0, big_g = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double gi = f * u[i] - h[i] + flat;
+      gap[i] = gi;
+      const unsigned char si = state[i];
+      big_g += si == 1 ? gi * gi : 0.0;
+      res2 += (si == 0 && gi < 0.0) || (si == 2 && gi > 0.0) ? gi * gi : 0.0;
+    }
+    s.residual = std::sqrt((res2 + big_g) / static_cast<double>(n)) / scale;
+    s.iterations = it;
+    auto apply_scale = [&] {
+      if (scale_next == 1.0) return;
+      for (std::size_t i = 0; i < n; ++i) p[i] *= scale_next, u[i] *= scale_next;
+      scale_next = 1.0;
+    };
+    if (s.residual <= o.tolerance || it >= o.max_iterations) {
+      apply_scale();
+      if (fresh) {
+        double sum = 0.0;
+        for (double v : p) sum += v;
+        s.converged = s.residual <= o.tolerance && (!load || std::abs(sum - target) <= 1e-9 * target);
+        break;
+      }
+      kernel.apply(p, u);  // the carried displacement checked against a fresh one
+      recount();
+      fresh = true, clipped = 0.0, reset = true;
+      continue;
+    }
+    // The conjugate direction on the free set (Polonsky & Keer 1999 eq. 14).
+    const double beta = reset || g_old == 0.0 ? 0.0 : big_g / g_old;
+    for (std::size_t i = 0; i < n; ++i) t[i] = state[i] == 1 ? gap[i] + beta * t[i] : 0.0;
+    g_old = big_g;
+    reset = false;
+    if (free_count > 0 && big_g > 0.0) {
+      kernel.apply(t, w);
+      double w_sum = 0.0, t_sum = 0.0, wt = 0.0, rt = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double ti = t[i], wi = state[i] == 1 ? w[i] : 0.0;  // t is 0 off the free set
+        w_sum += wi, t_sum += ti, wt += wi * ti, rt += gap[i] * ti;
+      }
+      if (load) wt -= w_sum / static_cast<double>(free_count) * t_sum;  // K t less its mean on the free set
+      if (wt > 0.0) tau = rt / wt;
+    } else {
+      std::fill(w.begin(), w.end(), 0.0);
+    }
+    // The step, projected on 0 <= p <= H; elements the flat overlaps enter, capped ones whose gap
+    // opens are let go (either restarts the conjugate directions).
+    bool moved = false;  // an element entered the contact or left the cap
+    double total = 0.0;
+    free_h = free_u = 0.0, free_count = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      double pi = p[i];
+      switch (state[i]) {
+        case 1:
+          pi = f * pi - tau * t[i];
+          if (pi <= 0.0) clipped -= pi, pi = 0.0;
+          else if (pi >= cap) clipped += pi - cap, pi = cap;
+          break;
+        case 0:  // (p = 0: unscaled)
+          if (gap[i] < 0.0) pi = std::min(-tau * gap[i], cap), clipped += pi, moved = true;
+          break;
+        default:
+          if (gap[i] > 0.0) pi = std::max(0.0, cap - tau * gap[i]), clipped += cap - pi, moved = true;
+          break;
+      }
+      p[i] = pi;
+      const double ui = f * u[i] - tau * w[i];
+      u[i] = ui;
+      const unsigned char si = classify(pi);
+      state[i] = si;
+      total += pi;
+      if (si == 1) free_h += h[i], free_u += ui, ++free_count;
+    }
+    if (load && std::isfinite(cap)) {
+      // Capped: the load restored by scaling the free elements' pressure alone (Polonsky & Keer's
+      // scaling, which keeps an element that has just entered in contact), those it takes to H
+      // capped and the rest scaled again; when the capped elements alone carry the load the step is
+      // left as it is (the flat then lets some of them go).
+      for (int round = 0; round < 8 && std::abs(target - total) > 1e-14 * target; ++round) {
+        double capped_sum = 0.0, free_sum = 0.0;
+        for (std::size_t i = 0; i < n; ++i) (state[i] == 2 ? capped_sum : free_sum) += state[i] == 0 ? 0.0 : p[i];
+        if (capped_sum >= target) {
+          // The capped elements alone carry more than the load (a step that capped too many): the
+          // pressure projected on the loads that balance, clamp(p + mu, 0, H) with the shift mu < 0
+          // found by bisection (the Euclidean projection on 0 <= p <= H, sum p = target); the
+          // conjugate directions restart.
+          double lo = -cap, hi = 0.0;
+          auto sum_at = [&](double mu) {
+            double t = 0.0;
+            for (std::size_t i = 0; i < n; ++i) t += state[i] == 0 ? 0.0 : std::clamp(p[i] + mu, 0.0, cap);
+            return t;
+          };
+          for (int it_mu = 0; it_mu < 100 && hi - lo > 1e-15 * cap; ++it_mu) {
+            const double mid = 0.5 * (lo + hi);
+            (sum_at(mid) > target ? hi : lo) = mid;
+          }
+          total = 0.0, free_h = free_u = 0.0, free_count = 0;
+          for (std::size_t i = 0; i < n; ++i) {
+            if (state[i] != 0) {
+              const double v = std::clamp(p[i] + lo, 0.0, cap);
+              clipped += std::abs(v - p[i]);
+              p[i] = v;
+              state[i] = classify(v);
+            }
+            total += p[i];
+            if (state[i] == 1) free_h += h[i], free_u += u[i], ++free_count;
+          }
+          moved = true;
+          continue;
+        }
+        if (!(free_sum > 0.0)) {
+          // No free element to take the rest: the element nearest to touching takes it.
+          std::size_t next = n;
+          for (std::size_t i = 0; i < n; ++i)
+            if (state[i] == 0 && (next == n || gap[i] < gap[next])) next = i;
+          if (next == n) break;
+          const double v = std::min(target - total, cap);
+          clipped += v;
+          p[next] = v;
+          state[next] = classify(v);
+          total += v;
+          if (state[next] == 1) free_h += h[next], free_u += u[next], ++free_count;
+          moved = true;
+          continue;
+        }
+        const double f_free = (target - capped_sum) / free_sum;
+        total = 0.0, free_h = free_u = 0.0, free_count = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+          if (state[i] == 1) {
+            const double v = std::min(p[i] * f_free, cap);
+            clipped += std::abs(v - p[i]);
+            p[i] = v;
+            state[i] = classify(v);
+          }
+          total += p[i];
+          if (state[i] == 1) free_h += h[i], free_u += u[i], ++free_count;
+        }
+      }
+    } else {
+      scale_next = load && total > 0.0 ? target / total : 1.0;
+    }
+    fresh = false;
+    if (moved) reset = true;
+    if (clipped > kClipped * s.residual * std::max(total, 1e-300) || (it + 1) % kFresh == 0) {
+      for (double& v : p) v *= scale_next;
+      scale_next = 1.0;
+      kernel.apply(p, u);
+      recount();
+      fresh = true, clipped = 0.0;
+    }
+  }
+  kernel.apply(p, u);
+  if (load) {
+    double sum = 0.0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (p[i] > 0.0 && p[i] < cap) sum += h[i] - u[i], ++count;
+    if (count > 0) flat = sum / static_cast<double>(count);
+  }
+  std::size_t contact = 0, plastic = 0;
+  double total = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    gap[i] = u[i] - h[i] + flat;
+    if (p[i] > 0.0) ++contact, gap[i] = std::min(gap[i], 0.0);
+    else gap[i] = std::max(gap[i], 0.0);
+    if (p[i] < cap) gap[i] = std::max(gap[i], 0.0);
+    if (p[i] >= cap) ++plastic;
+    total += p[i];
+    s.peak_pressure = std::max(s.peak_pressure, p[i]);
+  }
+  s.mean_pressure = total / static_cast<double>(n);
+  s.approach = h_max - flat;
+  s.contact_fraction = static_cast<double>(contact) / static_cast<double>(n);
+  s.plastic_fraction = static_cast<double>(plastic) / static_cast<double>(n);
+  return s;
+}
+
+}  // namespace
+
+ArealSolution solve_contact(const ElasticKernel& kernel, std::span<const double> h, Control control, double value,
+                            const ArealOptions& o, std::span<const double> start) {
+  o.validate();
+  const ArealGrid& g = kernel.grid();
+  if (h.size() != g.size()) throw std::invalid_argument("solve_contact: the heights do not match the grid");
+  if (control == Control::mean_pressure) {
+    if (!(value >= 0.0) || !std::isfinite(value))
+      throw core::KeyedError("mean_pressure",
+                             fmt::format("the mean pressure must be finite and not negative ({} Pa)", value));
+    if (value >= o.hardness)
+      throw core::KeyedError("mean_pressure",
+                             fmt::format("a mean pressure ({:.4g} Pa) at or above the hardness ({:.4g} Pa) yields the "
+                                         "whole surface: no contact carries it",
+                                         value, o.hardness));
+  } else {
+    if (!(value >= 0.0) || !std::isfinite(value))
+      throw core::KeyedError("approach", fmt::format("the approach must be finite and not negative ({} m)", value));
+    if (g.periodic_x != g.periodic_y)
+      throw core::KeyedError("approach",
+                             "the approach of a window periodic in one direction alone is not defined (its mean "
+                             "line load's displacement grows as ln of the distance): give a mean pressure");
+  }
+  if (control == Control::approach && std::isfinite(o.hardness) && start.empty()) {
+    // Capped at an approach from nothing: the elastic contact first (from a cold start every element
+    // the flat overlaps would start at the cap).
+    ArealOptions elastic = o;
+    elastic.hardness = std::numeric_limits<double>::infinity();
+    const ArealSolution e = polonsky_keer(kernel, h, control, value, elastic, {});
+    ArealSolution s = polonsky_keer(kernel, h, control, value, o, e.pressure);
+    s.iterations += e.iterations;
+    return s;
+  }
+  return polonsky_keer(kernel, h, control, value, o, start);
+}
+
+ContactSpots contact_spots(const ArealGrid& g, std::span<const double> pressure) {
+  const int nx = g.nx, ny = g.ny;
+  const std::size_t n = g.size();
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int a) {
+    while (parent[static_cast<std::size_t>(a)] != a) {
+      parent[static_cast<std::size_t>(a)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(a)])];
+      a = parent[static_cast<std::size_t>(a)];
+    }
+    return a;
+  };
+  auto unite = [&](int a, int b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+  };
+  auto in = [&](int i, int j) { return pressure[static_cast<std::size_t>(j) * nx + i] > 0.0; };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      if (!in(i, j)) continue;
+      const int a = j * nx + i;
+      if (i + 1 < nx ? in(i + 1, j) : (g.periodic_x && nx > 1 && in(0, j))) unite(a, j * nx + (i + 1) % nx);
+      if (j + 1 < ny ? in(i, j + 1) : (g.periodic_y && ny > 1 && in(i, 0))) unite(a, ((j + 1) % ny) * nx + i);
+    }
+  ContactSpots out;
+  out.label.assign(n, -1);
+  std::vector<int> root_label(n, -1);
+  std::vector<double> area, load;
+  const double cell = g.dx * g.dy;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!(pressure[k] > 0.0)) continue;
+    const auto r = static_cast<std::size_t>(find(static_cast<int>(k)));
+    if (root_label[r] < 0) {
+      root_label[r] = static_cast<int>(area.size());
+      area.push_back(0.0), load.push_back(0.0);
+    }
+    out.label[k] = root_label[r];
+    area[static_cast<std::size_t>(root_label[r])] += cell;
+    load[static_cast<std::size_t>(root_label[r])] += pressure[k] * cell;
+  }
+  // Largest first, the labels renumbered to match.
+  std::vector<int> order(area.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return area[static_cast<std::size_t>(a)] > area[static_cast<std::size_t>(b)]; });
+  std::vector<int> rank(area.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    rank[static_cast<std::size_t>(order[k])] = static_cast<int>(k);
+    out.area.push_back(area[static_cast<std::size_t>(order[k])]);
+    out.load.push_back(load[static_cast<std::size_t>(order[k])]);
+  }
+  for (int& l : out.label)
+    if (l >= 0) l = rank[static_cast<std::size_t>(l)];
+  return out;
+}
+
+std::vector<SubsurfacePlane> subsurface_von_mises(const ElasticKernel& kernel, std::span<const double> pressure,
+                                                  double nu, std::span<const double> depths,
+                                                  std::vector<std::vector<double>>* fields) {
+  const ArealGrid& g = kernel.grid();
+  const int nx = g.nx, ny = g.ny, mx = kernel.padded_nx(), my = kernel.padded_ny(), hx = mx / 2 + 1;
+  if (pressure.size() != g.size())
+    throw std::invalid_argument("subsurface_von_mises: the pressure does not match the grid");
+  const std::size_t spectral = static_cast<std::size_t>(my) * hx, padded_size = static_cast<std::size_t>(mx) * my;
+  auto real = fftw_real_array(padded_size);
+  auto p_hat = fftw_complex_array(spectral);
+  auto work = fftw_complex_array(spectral);
+  const FftwPlan forward([&] { return fftw_plan_dft_r2c_2d(my, mx, real.get(), p_hat.get(), FFTW_ESTIMATE); });
+  const FftwPlan backward([&] { return fftw_plan_dft_c2r_2d(my, mx, work.get(), real.get(), FFTW_ESTIMATE); });
+  std::fill(real.get(), real.get() + padded_size, 0.0);
+  for (int j = 0; j < ny; ++j)
+    std::copy_n(pressure.begin() + static_cast<std::ptrdiff_t>(j) * nx, nx,
+                real.get() + static_cast<std::size_t>(j) * mx);
+  fftw_execute(forward.get());
+  const double norm = 1.0 / static_cast<double>(padded_size);
+  const double lx = mx * g.dx, ly = my * g.dy;
+  std::vector<SubsurfacePlane> out;
+  std::array<std::vector<double>, 6> comp;  // xx, yy, zz, xy, xz, yz on the window [Pa]
+  for (auto& c : comp) c.resize(g.size());
+  for (double z : depths) {
+    if (!(z > 0.0) || !std::isfinite(z))
+      throw core::KeyedError("depths", fmt::format("a depth must be positive ({} m)", z));
+    for (int c = 0; c < 6; ++c) {
+      for (int ky = 0; ky < my; ++ky)
+        for (int kx = 0; kx < hx; ++kx) {
+          const std::size_t k = static_cast<std::size_t>(ky) * hx + kx;
+          const double qx = 2.0 * kPi * kx / lx, qy = 2.0 * kPi * signed_index(ky, my) / ly;
+          const double q = std::hypot(qx, qy);
+          const std::complex<double> ph(p_hat[k][0], p_hat[k][1]);
+          std::complex<double> v = 0.0;
+          if (q == 0.0) {
+            v = c == 2 ? -ph : 0.0;  // the mean pressure: sigma_zz alone
+          } else {
+            // Plane strain under P cos(q s) (Airy phi = (P/q^2)(1 + qz) e^{-qz} cos qs), turned to
+            // the mode's direction n = q/|q| (s along n, t across it).
+            const double e = std::exp(-q * z), n1 = qx / q, n2 = qy / q;
+            const double ss = -(1.0 - q * z) * e, tt = -2.0 * nu * e, zz = -(1.0 + q * z) * e;
+            const std::complex<double> sz(0.0, q * z * e);
+            switch (c) {
+              case 0:
+                v = (n1 * n1 * ss + n2 * n2 * tt) * ph;
+                break;
+              case 1:
+                v = (n2 * n2 * ss + n1 * n1 * tt) * ph;
+                break;
+              case 2:
+                v = zz * ph;
+                break;
+              case 3:
+                v = n1 * n2 * (ss - tt) * ph;
+                break;
+              case 4:
+                v = n1 * sz * ph;
+                break;
+              default:
+                v = n2 * sz * ph;
+                break;
+            }
+          }
+          work[k][0] = v.real() * norm;
+          work[k][1] = v.imag() * norm;
+        }
+      fftw_execute(backward.get());
+      for (int j = 0; j < ny; ++j)
+        std::copy_n(real.get() + static_cast<std::size_t>(j) * mx, nx,
+                    comp[static_cast<std::size_t>(c)].begin() + static_cast<std::ptrdiff_t>(j) * nx);
+    }
+    SubsurfacePlane plane;
+    plane.depth = z;
+    std::vector<double> vm(fields ? g.size() : 0);
+    for (std::size_t k = 0; k < g.size(); ++k) {
+      const double sxx = comp[0][k], syy = comp[1][k], szz = comp[2][k], sxy = comp[3][k], sxz = comp[4][k],
+                   syz = comp[5][k];
+      const double v =
+          std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+                    3.0 * (sxy * sxy + sxz * sxz + syz * syz));
+      if (fields) vm[k] = v;
+      if (v > plane.max_von_mises) {
+        plane.max_von_mises = v;
+        plane.x = static_cast<double>(k % static_cast<std::size_t>(nx)) * g.dx;
+        plane.y = static_cast<double>(k / static_cast<std::size_t>(nx)) * g.dy;
+      }
+    }
+    if (fields) fields->push_back(std::move(vm));
+    out.push_back(plane);
+  }
+  return out;
+}
+
+}  // namespace geartrib::contact::areal

@@ -1,0 +1,101 @@
+// The areal fidelity of the main job (contact.fidelity = "areal"): at every position of the path,
+// the Hertz strip's window of both flanks' height maps in contact through areal FFT boundary
+// elements (contact/areal/areal_bem.hpp): open (zero-padded) along the involute over the
+// deterministic fidelity's strip, periodic across the face over areal.window. Each flank's map is
+// read where it has rolled to, sliding past the other as the profile fidelity rolls its profiles;
+// the pressure capped at the softer flank's hardness; the statistical model on the same flanks
+// beside it. Running-in is not carried (a single mesh of the new flanks).
+#pragma once
+
+#include "contact/areal/areal_bem.hpp"
+#include "contact/deterministic/mesh_deterministic.hpp"
+#include "contact/fidelity.hpp"
+
+#include <array>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace geartrib::contact::areal {
+
+// A flank's height map over its stretch of the involute: z(sigma, y) at sigma = start + i dx,
+// y = j dy (periodic across the face) [m].
+struct FlankMap {
+  int nx = 0, ny = 0;
+  double start = 0.0, dx = 0.0, dy = 0.0;  // [m]
+  std::vector<double> z;                   // [m], z[j * nx + i]
+  // The height at sigma on row j, linear between the map's points (sigma inside the map).
+  double at(double sigma, int j) const;
+};
+
+// Both flanks' maps for the span: extruded (each profile's element means across the face) or
+// isotropic (a Gaussian random surface with a generated ground profile's Rq and correlation length in
+// every direction, seeded by the profile's seed). Throws core::KeyedError ("areal.lay",
+// "areal.window", "areal.points") when the flanks cannot give the lay or the window is too narrow.
+std::array<FlankMap, 2> flank_maps(const FidelityInputs& in, const FlankSpan& span, const RollingFlanks& flanks);
+
+// One position's answer, per unit face width where it says so.
+struct ArealStrip {
+  double real_area_ratio = 0.0;         // real area over the Hertz band 2b x window
+  double real_area_per_width = 0.0;     // real area over the window's width [m]
+  int contact_spots = 0;                // in the window
+  double peak_pressure = 0.0;           // [Pa]
+  double mean_real_pressure = 0.0;      // load over real area [Pa]
+  double plastic_area_fraction = 0.0;   // capped over contact
+  double plastic_area_per_width = 0.0;  // [m]
+  double max_von_mises = 0.0;           // on the planes below the window [Pa]
+  double max_von_mises_depth = 0.0;     // [m]
+  double mean_gap = 0.0;                // over the Hertz band [m]
+  bool edge_loaded = false;             // pressure at the window's ends along the involute
+  bool converged = true;
+  int iterations = 0;
+  std::vector<double> pressure;  // across the strip, the mean across the face [Pa] (kept positions)
+};
+
+// The planes of the subsurface stress at a position: k element sizes (k = 1, 2, 4, 8, 16, 32: the
+// asperities' scale) and 0.786 b (the smooth line contact's maximum, Johnson 1985 section 4.2) [m].
+std::vector<double> stress_depths(double element_size, double hertz_half_width);
+
+inline constexpr std::array<std::string_view, 10> kKeys = {
+    "contact.positions",         "contact.outputs", "contact.element_size", "contact.strip_halfwidths",
+    "contact.pressure_profiles", "areal.window",    "areal.points",         "areal.lay",
+    "areal.tolerance",           "asperity.model"};
+inline constexpr std::array<TradeKnob, 4> kKnobs = {TradeKnob{"positions", "contact.positions"},
+                                                    {"element_size", "contact.element_size"},
+                                                    {"points", "areal.points"},
+                                                    {"tolerance", "areal.tolerance"}};
+inline constexpr std::array<OutputGroup, 3> kGroups = {
+    OutputGroup{"/contact",
+                "both flanks' height maps in contact by areal boundary elements, a window periodic "
+                "across the face"},
+    OutputGroup{"/contact/pressure", "the pressure across the strip (its mean across the face) at the positions kept"},
+    OutputGroup{"/statistical",
+                "the statistical model (uncoupled) on the same flanks: their spectral moments from the profiles"}};
+
+struct Areal {
+  static constexpr std::string_view name = "areal";
+  static constexpr std::string_view description =
+      "both flanks' height maps in contact through areal boundary elements (periodic across the face), sliding "
+      "past each other along the path";
+  static constexpr FidelityTraits traits{kKeys, kKnobs, {false, true}, "areal", "", "max_von_mises_Pa", kGroups, true};
+
+  struct State {
+    FlankSpan span;
+    DeterministicOptions options;  // the strip, the cap and the Poisson ratio
+    HalfPlaneGrid grid;            // the strip's elements along the involute
+    std::array<std::vector<double>, 2> sigma;
+    RollingFlanks flanks;
+    std::array<FlankMap, 2> maps;
+    std::optional<SurfaceModel> model;
+    const SurfaceModel* surface() const { return model ? &*model : nullptr; }
+  };
+  struct Solution {
+    std::optional<StatisticalSolution> statistical;
+    std::vector<ArealStrip> strips;
+  };
+  static State prepare(const FidelityInputs& in, StageClock& clock);
+  static Solution solve(const FidelityInputs& in, State& state, const std::vector<double>& share, StageClock& clock);
+  static void write(const FidelityInputs& in, State& state, Solution& s, MeshContactResult& r);
+};
+
+}  // namespace geartrib::contact::areal

@@ -1,0 +1,347 @@
+// Areal FFT boundary elements (contact/areal/areal_bem.hpp) against exact solutions: Love's element
+// influence and Boussinesq's far field, Westergaard's wavy surface, the bisinusoid's complete
+// contact (Johnson, Greenwood & Higginson 1985), Hertz's sphere on an open window and on one
+// periodic across, Hertz's line contact on a window periodic along the line, the subsurface field's
+// equilibrium and Hertz's maximum von Mises stress, the plastic limit (the bearing area), the
+// identity of load and approach control, and the spots' connected components.
+#include "contact/areal/areal_bem.hpp"
+#include "reference_solutions.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+#include <random>
+#include <vector>
+
+using namespace geartrib::contact::areal;
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+constexpr double kEstar = 113.19e9;  // [Pa] two 45-steel bodies
+
+ArealGrid grid(int nx, int ny, double dx, double dy, bool px, bool py) {
+  ArealGrid g;
+  g.nx = nx, g.ny = ny, g.dx = dx, g.dy = dy, g.periodic_x = px, g.periodic_y = py;
+  return g;
+}
+ArealOptions elastic(double tol = 1e-10) {
+  ArealOptions o;
+  o.composite_modulus = kEstar;
+  o.tolerance = tol;
+  return o;
+}
+// A sphere of radius R centred on the window: h = -r^2/(2R) (its top at 0).
+std::vector<double> sphere(const ArealGrid& g, double r) {
+  std::vector<double> h(g.size());
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const double x = (i - g.nx / 2) * g.dx, y = (j - g.ny / 2) * g.dy;
+      h[static_cast<std::size_t>(j) * g.nx + i] = -(x * x + y * y) / (2.0 * r);
+    }
+  return h;
+}
+}  // namespace
+
+TEST(ArealKernel, SelfInfluenceIsLovesSquareCentre) {
+  // The centre of a uniformly loaded square of side s: u = 4 s ln(1 + sqrt 2) p/(pi E*) (Johnson
+  // 1985 eq. 3.25 at the centre); on an open window the element's own influence.
+  const double s = 1e-6;
+  const ElasticKernel k(grid(8, 8, s, s, false, false), kEstar);
+  EXPECT_NEAR(k.self_influence() / (4.0 * s * std::log(1.0 + std::sqrt(2.0)) / (kPi * kEstar)), 1.0, 1e-12);
+}
+
+TEST(ArealKernel, OpenFarFieldIsBoussinesq) {
+  // Far from the loaded element its influence is a point load's, u = F/(pi E* r) (Boussinesq),
+  // to O((s/r)^2): 1e-4 at 50 elements.
+  const double s = 1e-6;
+  const ArealGrid g = grid(64, 64, s, s, false, false);
+  const ElasticKernel k(g, kEstar);
+  std::vector<double> p(g.size(), 0.0), u(g.size());
+  p[0] = 1.0;
+  k.apply(p, u);
+  const double r = std::hypot(50.0 * s, 30.0 * s);
+  EXPECT_NEAR(u[30 * 64 + 50] / (s * s / (kPi * kEstar * r)), 1.0, 1e-4);
+}
+
+TEST(ArealContact, WestergaardWavySurface) {
+  // z = Delta cos(2 pi x/lambda): p* = pi E* Delta/lambda; sin^2(pi a/lambda) = pbar/p* (Westergaard
+  // 1939; Johnson 1985 eq. 13.9). 512 elements a wavelength: the half-width to about one element.
+  const int n = 512;
+  const double lambda = 100e-6, delta = 0.5e-6, s = lambda / n;
+  const ArealGrid g = grid(n, 4, s, s, true, true);
+  std::vector<double> h(g.size());
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < n; ++i) h[static_cast<std::size_t>(j) * n + i] = delta * std::cos(2.0 * kPi * i / n);
+  const ElasticKernel k(g, kEstar);
+  const double p_star = kPi * kEstar * delta / lambda;
+  for (double ratio : {0.1, 0.5, 0.9}) {
+    const ArealSolution sol = solve_contact(k, h, Control::mean_pressure, ratio * p_star, elastic());
+    ASSERT_TRUE(sol.converged);
+    const double a = lambda / kPi * std::asin(std::sqrt(ratio));
+    EXPECT_NEAR(sol.contact_fraction, 2.0 * a / lambda, 2.5 / n) << ratio;  // +-1 element at each edge
+    // The field: p(x) = 2 pbar cos(pi x/lambda) sqrt(sin^2(pi a/lambda) - sin^2(pi x/lambda))/sin^2(pi a/lambda).
+    const double sa = std::sin(kPi * a / lambda);
+    for (int i : {0, n / 16}) {
+      const double sx = std::sin(kPi * i * s / lambda);
+      if (sx >= sa) continue;
+      const double exact =
+          2.0 * ratio * p_star * std::cos(kPi * i * s / lambda) * std::sqrt(sa * sa - sx * sx) / (sa * sa);
+      EXPECT_NEAR(sol.pressure[static_cast<std::size_t>(i)] / exact, 1.0, 0.01) << ratio << " " << i;
+    }
+  }
+}
+
+TEST(ArealContact, BisinusoidCompleteContact) {
+  // z = Delta cos(2 pi x/lambda) cos(2 pi y/lambda): complete contact from p* = sqrt 2 pi E* Delta/
+  // lambda (Johnson, Greenwood & Higginson 1985), and above it p = pbar + p* cos cos exactly (a single
+  // harmonic: the spectral kernel holds it to rounding).
+  const int n = 64;
+  const double lambda = 100e-6, delta = 0.2e-6, s = lambda / n;
+  const ArealGrid g = grid(n, n, s, s, true, true);
+  std::vector<double> h(g.size());
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      h[static_cast<std::size_t>(j) * n + i] = delta * std::cos(2.0 * kPi * i / n) * std::cos(2.0 * kPi * j / n);
+  const ElasticKernel k(g, kEstar);
+  const double p_star = std::sqrt(2.0) * kPi * kEstar * delta / lambda;
+  const ArealSolution full = solve_contact(k, h, Control::mean_pressure, 1.2 * p_star, elastic());
+  ASSERT_TRUE(full.converged);
+  EXPECT_EQ(full.contact_fraction, 1.0);
+  double worst = 0.0;
+  for (std::size_t e = 0; e < g.size(); ++e)
+    worst = std::max(worst, std::abs(full.pressure[e] - (1.2 * p_star + p_star * h[e] / delta)));
+  EXPECT_LT(worst / p_star, 1e-8);  // the iteration's tolerance, 1e-10 of the heights' rms
+  const ArealSolution partial = solve_contact(k, h, Control::mean_pressure, 0.98 * p_star, elastic());
+  EXPECT_LT(partial.contact_fraction, 1.0);
+  EXPECT_GT(partial.contact_fraction, 0.95);
+}
+
+TEST(ArealContact, HertzSphereOnAnOpenWindow) {
+  // A sphere R on an open window: a = (3 P R/(4 E*))^(1/3), p0 = 3P/(2 pi a^2), delta = a^2/R.
+  // 24 elements across the radius: the area to 2 elements' ring (8 %), p0 and delta to 2 %.
+  const double r = 10e-3, load = 1.0;
+  const double a = std::cbrt(3.0 * load * r / (4.0 * kEstar)), p0 = 3.0 * load / (2.0 * kPi * a * a);
+  const double s = a / 24.0;
+  const ArealGrid g = grid(128, 128, s, s, false, false);
+  const ElasticKernel k(g, kEstar);
+  const ArealSolution sol = solve_contact(k, sphere(g, r), Control::mean_pressure, load / g.area(), elastic());
+  ASSERT_TRUE(sol.converged);
+  EXPECT_NEAR(sol.contact_fraction * g.area() / (kPi * a * a), 1.0, 0.08);
+  EXPECT_NEAR(sol.peak_pressure / p0, 1.0, 0.02);
+  EXPECT_NEAR(sol.approach / (a * a / r), 1.0, 0.02);
+  // Approach control at Hertz's delta gives Hertz's load back (the same solution: the identity of
+  // the two controls, to the tolerance).
+  const ArealSolution back = solve_contact(k, sphere(g, r), Control::approach, sol.approach, elastic());
+  EXPECT_NEAR(back.mean_pressure / sol.mean_pressure, 1.0, 1e-6);
+}
+
+TEST(ArealContact, HertzSphereOnAWindowPeriodicAcross) {
+  // Periodic along y (the spheres 8 radii apart), open along x: Hertz's sphere to the images'
+  // effect, which shifts the approach (a row of spheres) but hardly the pressure.
+  const double r = 10e-3, load = 1.0;
+  const double a = std::cbrt(3.0 * load * r / (4.0 * kEstar)), p0 = 3.0 * load / (2.0 * kPi * a * a);
+  const double s = a / 16.0;
+  const ArealGrid g = grid(128, 128, s, s, false, true);
+  const ElasticKernel k(g, kEstar);
+  const ArealSolution sol = solve_contact(k, sphere(g, r), Control::mean_pressure, load / g.area(), elastic());
+  ASSERT_TRUE(sol.converged);
+  EXPECT_NEAR(sol.peak_pressure / p0, 1.0, 0.03);
+  EXPECT_NEAR(sol.contact_fraction * g.area() / (kPi * a * a), 1.0, 0.1);
+}
+
+TEST(ArealContact, HertzLineContactPeriodicAlongTheLine) {
+  // A cylinder along y on a window periodic along y, open along x: the line contact's p0 =
+  // sqrt(w E*/(pi R)) and b = sqrt(4 w R/(pi E*)) (Johnson 1985 eq. 4.45), the q = 0 mode's log kernel.
+  const double r = 10e-3, w = 1e5;  // [m], [N/m]
+  const double b = geartrib::reference::hertz_line_half_width(w, r, kEstar);
+  const double p0 = geartrib::reference::hertz_line_peak(w, r, kEstar);
+  const double s = b / 32.0;
+  const ArealGrid g = grid(256, 4, s, s, false, true);
+  std::vector<double> h(g.size());
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const double x = (i - g.nx / 2) * s;
+      h[static_cast<std::size_t>(j) * g.nx + i] = -x * x / (2.0 * r);
+    }
+  const ElasticKernel k(g, kEstar);
+  const ArealSolution sol = solve_contact(k, h, Control::mean_pressure, w / (g.nx * s), elastic());
+  ASSERT_TRUE(sol.converged);
+  EXPECT_NEAR(sol.peak_pressure / p0, 1.0, 0.005);
+  EXPECT_NEAR(sol.contact_fraction * g.nx * s / (2.0 * b), 1.0, 2.0 / 64.0);  // one element each edge
+  // The approach of such a window is refused: it is not defined.
+  EXPECT_THROW(solve_contact(k, h, Control::approach, 1e-6, elastic()), std::invalid_argument);
+}
+
+TEST(ArealStress, MeanNormalStressIsThePressureAtEveryDepth) {
+  // Equilibrium of a slab: the mean of sigma_zz over a periodic plane is -pbar at any depth.
+  const int n = 64;
+  const ArealGrid g = grid(n, n, 1e-6, 1e-6, true, true);
+  const ElasticKernel k(g, kEstar);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 2e9);
+  std::vector<double> p(g.size());
+  for (double& v : p) v = u(rng);
+  const double pbar = std::accumulate(p.begin(), p.end(), 0.0) / static_cast<double>(p.size());
+  // A uniform pressure: von Mises = pbar (sigma_zz alone) at every depth.
+  std::vector<double> uniform(g.size(), pbar);
+  const std::vector<double> depths = {1e-6, 10e-6};
+  for (const SubsurfacePlane& pl : subsurface_von_mises(k, uniform, 0.3, depths))
+    EXPECT_NEAR(pl.max_von_mises / pbar, 1.0, 1e-12);
+  // Deep below, the fluctuation has died out (e^{-q z}, the longest wave 64 um: e^{-2 pi 64/64} =
+  // 2e-3 at 64 um): von Mises tends to pbar.
+  const std::vector<double> deep = {256e-6};
+  EXPECT_NEAR(subsurface_von_mises(k, p, 0.3, deep)[0].max_von_mises / pbar, 1.0, 1e-6);
+}
+
+TEST(ArealStress, HertzMaximumVonMises) {
+  // Hertz's sphere, nu = 0.3: the maximum von Mises stress 0.620 p0 on the axis at 0.480 a
+  // (Johnson 1985 eqs. 3.45, 3.46; the field's maximum is on the axis). The open window's images
+  // lie a window (10 a) away; 24 elements across a. Within 2 %.
+  const double r = 10e-3, load = 1.0;
+  const double a = std::cbrt(3.0 * load * r / (4.0 * kEstar)), p0 = 3.0 * load / (2.0 * kPi * a * a);
+  const double s = a / 24.0;
+  const ArealGrid g = grid(256, 256, s, s, false, false);
+  const ElasticKernel k(g, kEstar);
+  const ArealSolution sol = solve_contact(k, sphere(g, r), Control::mean_pressure, load / g.area(), elastic(1e-8));
+  std::vector<double> depths;
+  for (double z = 0.40; z <= 0.56; z += 0.02) depths.push_back(z * a);
+  double best = 0.0, at = 0.0;
+  for (const SubsurfacePlane& pl : subsurface_von_mises(k, sol.pressure, 0.3, depths))
+    if (pl.max_von_mises > best) best = pl.max_von_mises, at = pl.depth;
+  EXPECT_NEAR(best / p0, 0.620, 0.012);
+  EXPECT_NEAR(at / a, 0.48, 0.03);  // the planes 0.02 a apart
+}
+
+TEST(ArealContact, PlasticLimitIsTheBearingArea) {
+  // As H/(E* h'_rms) -> 0 the flat flattens the surface plastically: the contact is the bearing
+  // area, the highest pbar/H of the heights, all at H (A/A0 = pbar/H).
+  const int n = 64;
+  const ArealGrid g = grid(n, n, 1e-6, 1e-6, true, true);
+  std::mt19937 rng(7);
+  std::normal_distribution<double> z(0.0, 1e-6);  // white: h'_rms ~ 1.4 => E* h'_rms ~ 1.6e11
+  std::vector<double> h(g.size());
+  for (double& v : h) v = z(rng);
+  const ElasticKernel k(g, kEstar);
+  ArealOptions o = elastic(1e-9);
+  o.hardness = 1e6;  // H/(E* h'_rms) ~ 6e-6
+  const double pbar = 0.25e6;
+  const ArealSolution sol = solve_contact(k, h, Control::mean_pressure, pbar, o);
+  ASSERT_TRUE(sol.converged);
+  EXPECT_NEAR(sol.contact_fraction, 0.25, 1.0 / static_cast<double>(g.size()));
+  EXPECT_NEAR(sol.plastic_fraction, 0.25, 2.0 / static_cast<double>(g.size()));  // one element may be below H
+  std::vector<double> sorted = h;
+  std::sort(sorted.begin(), sorted.end(), std::greater<>());
+  const double level = sorted[g.size() / 4 - 1];
+  for (std::size_t e = 0; e < g.size(); ++e) {
+    if (h[e] > level + 1e-9) {
+      EXPECT_GT(sol.pressure[e], 0.0);  // every point above the level touches
+    }
+  }
+}
+
+TEST(ArealContact, AreaGrowsWithLoadToFullContactAndStaysFinite) {
+  // A random surface from 1e-9 of E* h'_rms to the complete contact: finite, A/A0 monotone in the
+  // load, 1 at the end; elastic-plastic the same up to just below H.
+  const int n = 32;
+  const ArealGrid g = grid(n, n, 1e-6, 1e-6, true, true);
+  std::mt19937 rng(11);
+  std::normal_distribution<double> z(0.0, 0.1e-6);
+  std::vector<double> h(g.size());
+  for (double& v : h) v = z(rng);
+  const ElasticKernel k(g, kEstar);
+  // (E* h'_rms ~ 3e10 Pa here: the white heights' slope 0.1 um/1 um x 2.)
+  for (double hardness : {std::numeric_limits<double>::infinity(), 2e9}) {
+    ArealOptions o = elastic(1e-9);
+    o.hardness = hardness;
+    const bool capped = std::isfinite(hardness);
+    double last = 0.0;
+    for (double p : {1e-9, 1e-6, 1e-3, 0.01, 0.1, 0.3, 0.6, 0.9, 0.999, 3.0, 30.0}) {
+      if (capped && p >= 1.0) break;
+      const double pbar = p * (capped ? hardness : 2e10);
+      const ArealSolution sol = solve_contact(k, h, Control::mean_pressure, pbar, o);
+      EXPECT_TRUE(sol.converged) << hardness << " " << p;
+      EXPECT_TRUE(std::isfinite(sol.approach));
+      EXPECT_GE(sol.contact_fraction, last);
+      last = sol.contact_fraction;
+    }
+    // Complete contact, elastic; at 0.999 H all but the deepest valleys (the area tends to 1 as pbar
+    // tends to H).
+    if (capped) {
+      EXPECT_GT(last, 0.99);
+    } else {
+      EXPECT_EQ(last, 1.0);
+    }
+  }
+  ArealOptions o = elastic();
+  o.hardness = 1e9;
+  EXPECT_THROW(solve_contact(k, h, Control::mean_pressure, 1e9, o), std::invalid_argument);
+}
+
+TEST(ArealSpots, ConnectedComponentsAcrossPeriodicEdges) {
+  // Three spots on a 6 x 4 window: one wraps around the x edge (periodic), one of a single
+  // element, one L-shaped; open, the wrapping spot is two.
+  const std::vector<double> p = {1, 0, 0, 0, 0, 1,  //
+                                 0, 0, 1, 0, 0, 0,  //
+                                 0, 0, 1, 1, 0, 0,  //
+                                 0, 0, 0, 0, 0, 0};
+  const ContactSpots periodic = contact_spots(grid(6, 4, 1.0, 2.0, true, true), p);
+  ASSERT_EQ(periodic.area.size(), 2u);
+  EXPECT_EQ(periodic.area[0], 6.0);  // 3 elements of 2 m^2
+  EXPECT_EQ(periodic.area[1], 4.0);
+  EXPECT_EQ(periodic.label[0], periodic.label[5]);
+  const ContactSpots open = contact_spots(grid(6, 4, 1.0, 2.0, false, false), p);
+  EXPECT_EQ(open.area.size(), 3u);
+}
+
+TEST(ArealStress, HarmonicPressureFieldAgainstFlamantQuadrature) {
+  // p = P cos(k x) on a periodic window (uniform along y): the von Mises stress at x = 0 and at
+  // k x = pi/2 for k z = 0.1, 0.5, 1, 2, nu = 0.3, from validation/areal-contact/hand (the Airy
+  // solution, checked there by quadrature of Flamant's line-load field to 1.6e-7 P). Its direction
+  // along y (the field turned by the mode's direction) checked by the same load along y.
+  const int n = 64;
+  const double lambda = 64e-6, k = 2.0 * kPi / lambda;
+  const double kz[] = {0.1, 0.5, 1.0, 2.0};
+  const double at_crest[] = {0.3944094866, 0.5785933732, 0.6539567991, 0.4719302585};
+  const double at_node[] = {0.1567224381, 0.5252709595, 0.6371858832, 0.4688151732};
+  for (bool along_y : {false, true}) {
+    const ArealGrid g = grid(n, n, lambda / n, lambda / n, true, true);
+    const ElasticKernel kernel(g, kEstar);
+    std::vector<double> p(g.size());
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) p[static_cast<std::size_t>(j) * n + i] = std::cos(2.0 * kPi * (along_y ? j : i) / n);
+    std::vector<double> depths;
+    for (double v : kz) depths.push_back(v / k);
+    std::vector<std::vector<double>> fields;
+    subsurface_von_mises(kernel, p, 0.3, depths, &fields);
+    for (std::size_t d = 0; d < depths.size(); ++d) {
+      const std::size_t node = along_y ? static_cast<std::size_t>(n / 4) * n : static_cast<std::size_t>(n / 4);
+      EXPECT_NEAR(fields[d][0], at_crest[d], 1e-9) << along_y << " " << kz[d];
+      EXPECT_NEAR(fields[d][node], at_node[d], 1e-9) << along_y << " " << kz[d];
+    }
+  }
+}
+
+TEST(ArealContact, CappedLoadAndApproachControlAgree) {
+  // Hertz's sphere capped at 0.8 p0 on an open window: the capped contact at the load, then at its
+  // approach (from a cold start: the elastic contact first), carries the same load (the identity of
+  // the two controls, to the tolerance); the cap flattens the peak and widens the contact.
+  const double r = 10e-3, load = 1.0;
+  const double a = std::cbrt(3.0 * load * r / (4.0 * kEstar)), p0 = 3.0 * load / (2.0 * kPi * a * a);
+  const double s = a / 16.0;
+  const ArealGrid g = grid(96, 96, s, s, false, false);
+  const ElasticKernel k(g, kEstar);
+  ArealOptions o = elastic();
+  o.hardness = 0.8 * p0;
+  const ArealSolution at_load = solve_contact(k, sphere(g, r), Control::mean_pressure, load / g.area(), o);
+  ASSERT_TRUE(at_load.converged);
+  EXPECT_NEAR(at_load.mean_pressure * g.area(), load, 1e-9 * load);
+  EXPECT_EQ(at_load.peak_pressure, o.hardness);
+  EXPECT_GT(at_load.plastic_fraction, 0.0);
+  EXPECT_GT(at_load.contact_fraction * g.area(), kPi * a * a);
+  const ArealSolution at_approach = solve_contact(k, sphere(g, r), Control::approach, at_load.approach, o);
+  ASSERT_TRUE(at_approach.converged);
+  EXPECT_NEAR(at_approach.mean_pressure / at_load.mean_pressure, 1.0, 1e-6);
+}
