@@ -438,4 +438,24 @@ check rate-quality-unknown 2 "steel-45-mx.toml:[0-9]*: key 'rating.quality'.*unk
 check rate-safeties 0 "S_F_pinion +5\.9" -- "$bin" rate gears/m6z30.toml
 check rate-dry 0 "a dry case: pitting" -- "$bin" rate gears/m6z30-dry.toml
 
+# Areal contact (`geartrib contact`, contact.fidelity = "areal"): a surface, its area-load curve, and
+# refusals at the option or key (exit 2), nothing written.
+"$bin" surface generate self-affine -o "$tmp/areal.h5" --nx 256 --ny 256 --spacing 1um --rq 0.3um --rolloff 128um \
+  --short-cutoff 4um --seed 2 > /dev/null
+check contact-curve 0 "^mean_pressure_Pa,approach_m,contact_fraction" -- \
+  "$bin" contact "$tmp/areal.h5" --form 0 --material materials/16MnCr5.toml --pressure 10MPa:1GPa:3 --csv
+check contact-at-hardness 2 "--pressure '2GPa': a mean pressure \(2e\+09 Pa\) at or above the hardness" -- \
+  "$bin" contact "$tmp/areal.h5" --form 0 --modulus 100GPa --hardness 1GPa --pressure 2GPa -o "$tmp/contact-bad.h5"
+check contact-no-modulus 2 "--modulus '': give the composite modulus" -- "$bin" contact "$tmp/areal.h5" --pressure 1MPa
+check contact-memory 2 "needs .* to solve, beyond the memory budget 1 MiB \(GEARTRIB_MEMORY_BUDGET\)" -- \
+  env GEARTRIB_MEMORY_BUDGET=1MiB "$bin" contact "$tmp/areal.h5" --modulus 100GPa --pressure 1MPa -o "$tmp/contact-bad.h5"
+check contact-approach-half-periodic 2 "--approach '1um': the approach of a window periodic in one direction alone" -- \
+  "$bin" contact "$tmp/areal.h5" --form 0 --modulus 100GPa --periodic x --approach 1um
+[[ ! -e "$tmp/contact-bad.h5" ]] && echo "ok   contact-nothing-written" || { echo "FAIL contact-bad.h5 written"; fail=1; }
+check areal-narrow-window 2 "key 'areal.window' = 8e-06 m: the window across the face \(8 um\) is narrower than the pinion's correlation length" -- \
+  "$bin" run gears/m6z30-areal.toml --set areal.window=8um -o "$tmp/areal-bad.h5" -q
+check areal-hobbed-isotropic 2 "key 'areal.lay'.*an isotropic map is made from a generated ground profile" -- \
+  "$bin" run gears/m6z30-areal.toml --set pinion.flank.profile.kind=hobbed -o "$tmp/areal-bad.h5" -q
+[[ ! -e "$tmp/areal-bad.h5" ]] && echo "ok   areal-nothing-written" || { echo "FAIL areal-bad.h5 written"; fail=1; }
+
 exit $fail

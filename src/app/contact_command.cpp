@@ -22,6 +22,7 @@
 #include <memory>
 #include <numeric>
 #include <sstream>
+#include <stdexcept>
 
 namespace geartrib::app {
 
@@ -44,6 +45,11 @@ struct Options {
   TableOptions table;
 };
 
+// A refusal of an option's value, as the other options' are: "--option 'text': rule" (exit 2).
+std::invalid_argument option_error(const std::string& option, const std::string& text, const std::string& rule) {
+  return std::invalid_argument(fmt::format("{} '{}': {}", option, text, rule));
+}
+
 // The loads: one value, a comma-separated list, or MIN:MAX:COUNT (pressures spaced geometrically: an
 // area-load curve spans decades; approaches linearly).
 std::vector<double> loads(const std::string& option, const std::string& text, io::Dimension d, bool geometric) {
@@ -51,11 +57,11 @@ std::vector<double> loads(const std::string& option, const std::string& text, io
     std::vector<double> out;
     std::stringstream in(text);
     for (std::string v; std::getline(in, v, ',');) out.push_back(quantity_option(option, v, d));
-    if (out.empty() || out.size() > 200) throw io::InputError("", 0, option, text, "one to 200 values");
+    if (out.empty() || out.size() > 200) throw option_error(option, text, "one to 200 values");
     return out;
   }
   const RangeOption r = range_option(option, text, d, 2, 200);
-  if (!(r.min > 0.0 && r.max > r.min)) throw io::InputError("", 0, option, text, "a range needs 0 < MIN < MAX");
+  if (!(r.min > 0.0 && r.max > r.min)) throw option_error(option, text, "a range needs 0 < MIN < MAX");
   std::vector<double> out;
   for (int k = 0; k < r.count; ++k) {
     const double t = static_cast<double>(k) / (r.count - 1);
@@ -94,11 +100,11 @@ Elastic elastic(const Options& o) {
   if (!o.hardness.empty())
     e.hardness = o.hardness == "none" ? kInf : quantity_option("--hardness", o.hardness, io::Dimension::pressure);
   if (!(e.e_star > 0.0))
-    throw io::InputError("", 0, "--modulus", o.modulus, "give the composite modulus E* (or --material) above 0");
+    throw option_error("--modulus", o.modulus, "give the composite modulus E* (or --material) above 0");
   if (!(e.hardness > 0.0))
-    throw io::InputError("", 0, "--hardness", o.hardness, "the hardness must be positive (or none: elastic)");
+    throw option_error("--hardness", o.hardness, "the hardness must be positive (or none: elastic)");
   if (!(e.poisson >= 0.0 && e.poisson < 0.5))
-    throw io::InputError("", 0, "--poisson", o.poisson, "Poisson's ratio must lie in [0, 0.5)");
+    throw option_error("--poisson", o.poisson, "Poisson's ratio must lie in [0, 0.5)");
   if (e.source.empty()) e.source = "given";
   return e;
 }
@@ -110,7 +116,7 @@ void run(const Options& o) {
   const Elastic el = elastic(o);
   const bool by_pressure = !o.pressure.empty();
   if (by_pressure == !o.approach.empty())
-    throw io::InputError("", 0, "--pressure", o.pressure, "give either --pressure or --approach");
+    throw option_error("--pressure", o.pressure, "give either --pressure or --approach");
   const std::vector<double> values = by_pressure ? loads("--pressure", o.pressure, io::Dimension::pressure, true)
                                                  : loads("--approach", o.approach, io::Dimension::length, false);
   std::vector<double> depths;
@@ -118,7 +124,7 @@ void run(const Options& o) {
     std::stringstream in(o.depths);
     for (std::string d; std::getline(in, d, ',');) {
       const double z = quantity_option("--depths", d, io::Dimension::length);
-      if (!(z > 0.0)) throw io::InputError("", 0, "--depths", d, "a depth must be positive");
+      if (!(z > 0.0)) throw option_error("--depths", d, "a depth must be positive");
       depths.push_back(z);
     }
   }
@@ -190,7 +196,7 @@ void run(const Options& o) {
     try {
       s = contact::areal::solve_contact(kernel, hg.z, control, v, opt, start);
     } catch (const core::KeyedError& e) {
-      throw io::InputError("", 0, by_pressure ? "--pressure" : "--approach", by_pressure ? o.pressure : o.approach,
+      throw option_error(by_pressure ? "--pressure" : "--approach", by_pressure ? o.pressure : o.approach,
                            e.what());
     }
     start = s.pressure;

@@ -2,13 +2,17 @@
 // elastic solve on a self-affine surface at about 20 % contact (the issue's goal: 1024^2 under 5 s
 // on one core), the cost of one iteration against its transform pair (goal: within 1.5 times), and
 // the open window's and the capped (elastic-plastic) solve's costs beside it.
+#include "config/case_file.hpp"
+#include "config/case_prepare.hpp"
 #include "contact/areal/areal_bem.hpp"
+#include "runs/mesh_cycle.hpp"
 #include "surface/surface_statistics.hpp"
 #include "surface/synthetic_surface.hpp"
 
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <vector>
 
@@ -111,3 +115,14 @@ BENCHMARK(areal_kernel)
     ->ArgsProduct({{256, 1024}, {0, 1, 2}})
     ->ArgNames({"n", "periodic"})
     ->Unit(benchmark::kMillisecond);
+
+// The areal fidelity's cycle (issue 35: A..E on 256 x 1024 windows in under 30 s): gears/m6z30-areal.toml,
+// five positions A -> E, 256 points across the face and 0.5 um elements along the involute (its
+// 1600-element strip: 1600 x 256 windows), with the isotropic flanks' maps and the statistical model.
+// Argument: the points across the face.
+static void cycle_areal(benchmark::State& state) {
+  Case c = io::prepare_case(io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30-areal.toml"));
+  c.contact.areal.points = static_cast<int>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(runs::run_mesh_cycle(c));
+}
+BENCHMARK(cycle_areal)->Arg(64)->Arg(256)->ArgName("points")->Unit(benchmark::kMillisecond)->Iterations(1);
