@@ -175,8 +175,9 @@ TEST(ArealContact, HertzLineContactPeriodicAlongTheLine) {
   EXPECT_THROW(solve_contact(k, h, Control::approach, 1e-6, elastic()), std::invalid_argument);
 }
 
-TEST(ArealStress, MeanNormalStressIsThePressureAtEveryDepth) {
-  // Equilibrium of a slab: the mean of sigma_zz over a periodic plane is -pbar at any depth.
+TEST(ArealStress, UniformPressureAndItsDeepLimit) {
+  // A periodic window's mean pressure gives sigma_zz = -pbar alone (its convention), at every depth;
+  // the fluctuations die out with depth, leaving it.
   const int n = 64;
   const ArealGrid g = grid(n, n, 1e-6, 1e-6, true, true);
   const ElasticKernel k(g, kEstar);
@@ -199,7 +200,8 @@ TEST(ArealStress, MeanNormalStressIsThePressureAtEveryDepth) {
 TEST(ArealStress, HertzMaximumVonMises) {
   // Hertz's sphere, nu = 0.3: the maximum von Mises stress 0.620 p0 on the axis at 0.480 a
   // (Johnson 1985 eqs. 3.45, 3.46; the field's maximum is on the axis). The open window's images
-  // lie a window (10 a) away; 24 elements across a. Within 2 %.
+  // lie a window (10 a) away, their mean pressure's lateral stress included; 24 elements across a.
+  // Within 1 % (the discrete pressure; leaving out the images' lateral stress reads 1.7 % high).
   const double r = 10e-3, load = 1.0;
   const double a = std::cbrt(3.0 * load * r / (4.0 * kEstar)), p0 = 3.0 * load / (2.0 * kPi * a * a);
   const double s = a / 24.0;
@@ -211,7 +213,7 @@ TEST(ArealStress, HertzMaximumVonMises) {
   double best = 0.0, at = 0.0;
   for (const SubsurfacePlane& pl : subsurface_von_mises(k, sol.pressure, 0.3, depths))
     if (pl.max_von_mises > best) best = pl.max_von_mises, at = pl.depth;
-  EXPECT_NEAR(best / p0, 0.620, 0.012);
+  EXPECT_NEAR(best / p0, 0.620, 0.0062);
   EXPECT_NEAR(at / a, 0.48, 0.03);  // the planes 0.02 a apart
 }
 

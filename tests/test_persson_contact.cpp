@@ -89,3 +89,24 @@ TEST(SpectralGradient, OfACosineAndACrossedCosine) {
   EXPECT_NEAR(surface::spectral_rms_gradient(g), std::sqrt(0.5 * (a * q1) * (a * q1) + 0.5 * (b * q2) * (b * q2)),
               1e-15);
 }
+
+TEST(Persson, HertzStripLimits) {
+  // Across a Hertz strip p(x) = p0 sqrt(1 - x^2/b^2): at light load A is linear in p, so the real
+  // area over 2b is sqrt(8/pi) (pi/4) p0/(E* g) (the elliptic profile's mean, pi/4 p0); as
+  // H/(E* g) -> 0 every contact yields: (pi/4) p0/H, all of it plastic, at the mean real pressure H.
+  const double g = 0.1;
+  const double light = 1e-6 * kEstar * g;
+  const PerssonStrip e = persson_hertz_strip(light, kEstar, g, kInf);
+  EXPECT_NEAR(e.real_area_ratio / (std::sqrt(8.0 / kPi) * 0.25 * kPi * 1e-6), 1.0, 1e-9);
+  EXPECT_EQ(e.plastic_area_fraction, 0.0);
+  const double h = 1e-4 * kEstar * g, p0 = 0.5 * h;
+  const PerssonStrip y = persson_hertz_strip(p0, kEstar, g, h);
+  EXPECT_NEAR(y.real_area_ratio / (0.25 * kPi * p0 / h), 1.0, 1e-9);
+  EXPECT_NEAR(y.plastic_area_fraction, 1.0, 1e-9);
+  EXPECT_NEAR(y.mean_real_pressure / h, 1.0, 1e-9);
+  // A Hertz peak above H: the theory taken at just below H there; finite, the area at most the band.
+  const PerssonStrip over = persson_hertz_strip(3.0 * h, kEstar, g, h);
+  EXPECT_TRUE(std::isfinite(over.real_area_ratio));
+  EXPECT_LE(over.real_area_ratio, 1.0);
+  EXPECT_EQ(persson_hertz_strip(0.0, kEstar, g, h).real_area_ratio, 0.0);
+}

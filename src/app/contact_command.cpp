@@ -196,8 +196,7 @@ void run(const Options& o) {
     try {
       s = contact::areal::solve_contact(kernel, hg.z, control, v, opt, start);
     } catch (const core::KeyedError& e) {
-      throw option_error(by_pressure ? "--pressure" : "--approach", by_pressure ? o.pressure : o.approach,
-                           e.what());
+      throw option_error(by_pressure ? "--pressure" : "--approach", by_pressure ? o.pressure : o.approach, e.what());
     }
     start = s.pressure;
     const contact::areal::ContactSpots spots = contact::areal::contact_spots(g, s.pressure);
@@ -215,24 +214,16 @@ void run(const Options& o) {
             : contact::PerssonAreas{0.0, 1.0};
     const bool few_spots = !spots.area.empty() && static_cast<int>(spots.area.size()) < kFewSpots;
     not_converged += !s.converged, few += few_spots;
-    const std::vector<double> row = {s.mean_pressure,
-                                     s.approach,
-                                     s.contact_fraction,
-                                     s.plastic_fraction,
-                                     s.peak_pressure,
-                                     s.contact_fraction > 0.0 ? s.mean_pressure / s.contact_fraction : 0.0,
-                                     static_cast<double>(spots.area.size()),
-                                     spots.area.empty() ? 0.0 : spots.area.front(),
-                                     spots.area.empty() ? 0.0 : contact_area / static_cast<double>(spots.area.size()),
-                                     gap_sum / static_cast<double>(g.size()),
-                                     planes.empty() ? std::nan("") : deepest->max_von_mises,
-                                     planes.empty() ? std::nan("") : deepest->depth,
-                                     persson.contact(),
-                                     persson.plastic,
-                                     static_cast<double>(s.iterations),
-                                     s.residual,
-                                     s.converged ? 0.0 : 1.0,
-                                     few_spots ? 1.0 : 0.0};
+    const std::vector<double> row = {
+        s.mean_pressure,
+        // undefined on a half-periodic window: its datum is arbitrary
+        g.periodic_x == g.periodic_y ? s.approach : std::nan(""), s.contact_fraction, s.plastic_fraction,
+        s.peak_pressure, s.contact_fraction > 0.0 ? s.mean_pressure / s.contact_fraction : 0.0,
+        static_cast<double>(spots.area.size()), spots.area.empty() ? 0.0 : spots.area.front(),
+        spots.area.empty() ? 0.0 : contact_area / static_cast<double>(spots.area.size()),
+        gap_sum / static_cast<double>(g.size()), planes.empty() ? std::nan("") : deepest->max_von_mises,
+        planes.empty() ? std::nan("") : deepest->depth, persson.contact(), persson.plastic,
+        static_cast<double>(s.iterations), s.residual, s.converged ? 0.0 : 1.0, few_spots ? 1.0 : 0.0};
     for (std::size_t k = 0; k < row.size(); ++k) col(k).push_back(row[k]);
     last = std::move(s), last_spots = spots, last_planes = planes;
   }

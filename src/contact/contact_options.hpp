@@ -65,7 +65,7 @@ struct ContactSettings {
   // the threads as above).
   contact::mixed_ehl::MixedEhlOptions mixed_ehl;
   // Areal: the window across the face, the flanks' lay, the solver's tolerance (the strip along the
-  // involute and the threads as the deterministic fidelity's).
+  // involute as the deterministic fidelity's; its positions are solved on one thread).
   contact::areal::ArealMeshOptions areal;
   // The option structs' validate(): throws core::KeyedError naming the field by its path from here
   // ("strip.strip_points", "boundary_elements.element_size", "mixed_ehl.solver.tolerance").

@@ -1,6 +1,7 @@
 #include "contact/half_plane_bem.hpp"
 
 #include "core/keyed_error.hpp"
+#include "core/log_antiderivative.hpp"
 
 #include <boost/math/quadrature/gauss.hpp>
 
@@ -21,7 +22,7 @@ namespace geartrib::contact {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
-double log_antiderivative(double t) { return t == 0.0 ? 0.0 : t * std::log(std::abs(t)) - t; }  // int ln|t| dt
+using core::log_antiderivative;  // int ln|t| dt
 
 // arctan(x) to 1 ulp without branches (Moshier's Cephes atan: the argument reduced to |t| <= 0.66
 // by pi/2 - atan(1/x) or pi/4 + atan((x-1)/(x+1)), then a (4,5) rational approximation in t^2),

@@ -1,5 +1,7 @@
 #include "contact/persson_contact.hpp"
 
+#include <boost/math/quadrature/gauss.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -89,6 +91,27 @@ PerssonAreas persson_elastic_plastic(double pbar, double e_star, double rms_grad
   // terms fall as e^{-n^2 pi^2 g_y}: to e^{-45} at the last.
   if (g_y < 0.05) return persson_elastic_plastic_images(r, g_y, 3);
   return persson_elastic_plastic_series(r, g_y, static_cast<int>(std::ceil(std::sqrt(45.0 / (kPi * kPi * g_y)))) + 1);
+}
+
+PerssonStrip persson_hertz_strip(double p0, double e_star, double rms_gradient, double hardness) {
+  PerssonStrip s;
+  if (!(p0 > 0.0)) return s;
+  // (1/2b) integral_{-b}^{b} A(p(x)) dx = (1/2) integral_{-pi/2}^{pi/2} A(p0 cos t) cos t dt; the pressure
+  // capped just below H where the Hertz field passes it (the theory holds below H).
+  auto areas = [&](double t) {
+    const double p = std::min(p0 * std::cos(t), std::nextafter(hardness, 0.0));
+    return persson_elastic_plastic(std::max(p, 0.0), e_star, rms_gradient, hardness);
+  };
+  using Gauss = boost::math::quadrature::gauss<double, 64>;
+  const double half_pi = 0.5 * kPi;
+  const double area =
+      0.5 * Gauss::integrate([&](double t) { return areas(t).contact() * std::cos(t); }, -half_pi, half_pi);
+  const double plastic =
+      0.5 * Gauss::integrate([&](double t) { return areas(t).plastic * std::cos(t); }, -half_pi, half_pi);
+  s.real_area_ratio = area;
+  s.plastic_area_fraction = area > 0.0 ? plastic / area : 0.0;
+  s.mean_real_pressure = area > 0.0 ? (kPi / 4.0) * p0 / area : 0.0;  // the mean Hertz pressure over the real area
+  return s;
 }
 
 }  // namespace geartrib::contact

@@ -47,4 +47,16 @@ PerssonAreas persson_elastic_plastic(double pbar, double e_star, double rms_grad
 PerssonAreas persson_elastic_plastic_series(double r, double g_y, int n_terms);
 PerssonAreas persson_elastic_plastic_images(double r, double g_y, int n_images);
 
+// Persson's theory across a Hertz strip (the uncoupled strip: the nominal pressure imposed,
+// p(x) = p0 sqrt(1 - x^2/b^2)): the real area over 2b, the share of it yielded and the mean real
+// pressure, by Gauss-Legendre in x = b sin(theta) (the elliptic profile's square root taken out).
+// rms_gradient: the composite surface's full gradient (an isotropic one's sqrt 2 times its profile
+// slope; a lay-directed one's, the slope across the lay).
+struct PerssonStrip {
+  double real_area_ratio = 0.0;        // real area / 2b
+  double plastic_area_fraction = 0.0;  // of the real area
+  double mean_real_pressure = 0.0;     // [Pa]
+};
+PerssonStrip persson_hertz_strip(double p0, double e_star, double rms_gradient, double hardness);
+
 }  // namespace geartrib::contact

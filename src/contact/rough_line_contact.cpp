@@ -1,6 +1,7 @@
 #include "contact/rough_line_contact.hpp"
 
 #include "core/keyed_error.hpp"
+#include "core/log_antiderivative.hpp"
 
 #include "asperity/cylinder.hpp"
 
@@ -49,7 +50,7 @@ void store(StripResult& r, const StripSums& s) {
 }
 
 // int ln|t| dt = t ln|t| - t
-double log_antiderivative(double t) { return t == 0.0 ? 0.0 : t * std::log(std::abs(t)) - t; }
+using core::log_antiderivative;  // int ln|t| dt
 
 // Coupled strip, started from the previous position's solution: how many iterations a factorised
 // Jacobian may serve (KINSOL refreshes it sooner when it stops reducing the residual), and the

@@ -1,5 +1,7 @@
 #include "runs/mesh_cycle.hpp"
 
+#include "contact/areal/mesh_areal.hpp"
+
 #include "case/asperity_setup.hpp"
 #include "case/gear_setup.hpp"
 #include "config/case_parameters.hpp"
@@ -523,6 +525,21 @@ void check_budget(const Case& c, const contact::FlankSpan& span, const int teeth
   if (cost.seconds > budget.seconds) refuse_time(c, span, teeth, w, cost, budget);
 }
 
+// The areal fidelity's peak memory (its maps and its window's solve) against the budget: refused at
+// areal.points, the knob that grows both.
+void check_areal_budget(const Case& c, const contact::FlankSpan& span) {
+  const double bytes = contact::areal::areal_run_bytes(span, c.contact.areal);
+  const io::ResourceBudget budget = io::resource_budget();
+  if (bytes > budget.bytes)
+    throw io::located_error(
+        c, "areal.points",
+        fmt::format("the areal run would hold about {} (both flanks' maps over {:.4g} and {:.4g} mm of involute, and "
+                    "a window of {} x {} elements), more than the memory budget of {} ({}): fewer points across the "
+                    "face, a coarser contact.element_size, or raise the budget",
+                    io::format_bytes(bytes), span.length(0) * 1e3, span.length(1) * 1e3, span.elements,
+                    c.contact.areal.points, io::format_bytes(budget.bytes), io::kMemoryBudgetVariable));
+}
+
 }  // namespace
 
 void check_finite_outputs(const contact::MeshContactResult& r) {
@@ -665,6 +682,7 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
                          [&](const contact::FlankSpan& span, const int teeth[2]) {
                            // The strip solves' estimate (the mixed-EHL windows have none yet).
                            if (span.reader == contact::FlankSpan::Reader::strip) check_budget(c, span, teeth);
+                           if (span.reader == contact::FlankSpan::Reader::areal) check_areal_budget(c, span);
                            return rolling_flanks(c, span, teeth, synthesis, half_widths);
                          });
   } catch (const contact::RoughSurfaceOverload& e) {

@@ -181,12 +181,14 @@ double spectral_rms_gradient(const HeightGrid& g) {
   double sum = 0.0;
   for (int ky = 0; ky < g.ny; ++ky)
     for (int kx = 0; kx < hx; ++kx) {
-      // A bin at the Nyquist frequency holds a cosine whose derivative vanishes on the grid: left out.
-      if ((g.nx % 2 == 0 && kx == g.nx / 2) || (g.ny % 2 == 0 && ky == g.ny / 2)) continue;
+      // Along an axis' Nyquist frequency the harmonic is a cosine whose derivative vanishes on the
+      // grid: that axis' part of q is left out (the bin's other part kept).
+      const bool nyquist_x = g.nx % 2 == 0 && kx == g.nx / 2, nyquist_y = g.ny % 2 == 0 && ky == g.ny / 2;
       const int sy = ky <= g.ny / 2 ? ky : ky - g.ny;
-      const double qx = 2.0 * std::numbers::pi * kx / (g.nx * g.dx), qy = 2.0 * std::numbers::pi * sy / (g.ny * g.dy);
+      const double qx = nyquist_x ? 0.0 : 2.0 * std::numbers::pi * kx / (g.nx * g.dx);
+      const double qy = nyquist_y ? 0.0 : 2.0 * std::numbers::pi * sy / (g.ny * g.dy);
       const fftw_complex& c = spectrum[static_cast<std::size_t>(ky) * hx + kx];
-      const double weight = (kx == 0 || (g.nx % 2 == 0 && kx == g.nx / 2)) ? 1.0 : 2.0;  // the half spectrum
+      const double weight = (kx == 0 || nyquist_x) ? 1.0 : 2.0;  // the half spectrum's mirrored bins
       sum += weight * (qx * qx + qy * qy) * (c[0] * c[0] + c[1] * c[1]) / (n * n);
     }
   return std::sqrt(sum);

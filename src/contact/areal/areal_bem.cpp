@@ -2,6 +2,7 @@
 
 #include "core/fftw_planner.hpp"
 #include "core/keyed_error.hpp"
+#include "core/log_antiderivative.hpp"
 
 #include <fmt/format.h>
 #include <boost/math/quadrature/gauss.hpp>
@@ -46,9 +47,9 @@ double love_corner(double x, double y) {
 std::vector<double> open_influence_under_mode(int n, double h, double q, double e_star) {
   std::vector<double> k(static_cast<std::size_t>(n), 0.0);
   if (q == 0.0) {
-    auto f = [](double s) { return s == 0.0 ? 0.0 : s * std::log(std::abs(s)) - s; };
     for (int m = 0; m < n; ++m)
-      k[static_cast<std::size_t>(m)] = -2.0 / (kPi * e_star) * (f((m + 0.5) * h) - f((m - 0.5) * h));
+      k[static_cast<std::size_t>(m)] =
+          -2.0 / (kPi * e_star) * (core::log_antiderivative((m + 0.5) * h) - core::log_antiderivative((m - 0.5) * h));
     return k;
   }
   // J(X) = integral_0^X K_0(t) dt, odd; J(inf) = pi/2. Increments by Gauss-Legendre on pieces of
@@ -115,8 +116,13 @@ void ArealGrid::validate() const {
 
 double areal_solve_bytes(const ArealGrid& g) {
   const double padded_points = static_cast<double>(padded(g.nx, g.periodic_x)) * padded(g.ny, g.periodic_y);
-  // The padded real array and its spectrum, the kernel's spectrum; the solve's seven fields.
-  return 8.0 * padded_points + 16.0 * 0.5 * padded_points + 8.0 * 0.5 * padded_points + 7.0 * 8.0 * g.size();
+  // The padded real array and its spectrum, the kernel's spectrum (and, open both ways, Love's corner
+  // values while it is built); the solve's seven fields; the subsurface stress's padded array, two
+  // spectra and six components on the window.
+  const double kernel = 8.0 * padded_points + 16.0 * 0.5 * padded_points + 8.0 * 0.5 * padded_points +
+                        (!g.periodic_x && !g.periodic_y ? 8.0 * padded_points : 0.0);
+  const double stress = 8.0 * padded_points + 2.0 * 16.0 * 0.5 * padded_points + 6.0 * 8.0 * g.size();
+  return kernel + 7.0 * 8.0 * g.size() + stress;
 }
 
 void ArealOptions::validate() const {
@@ -267,7 +273,10 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
   double h_var = 0.0;
   for (double v : h) h_var += (v - h_mean) * (v - h_mean);
   const double h_rms = std::sqrt(h_var / static_cast<double>(n));
-  const double scale = std::max(h_rms, 1e-15);  // [m] the residual's
+  // The residual's scale [m]: the heights' rms; for a flat or nearly flat surface a thousandth of
+  // the displacement the load makes over the window (the flat punch) or of the approach.
+  const double reach = load ? value * std::sqrt(g.area()) / kernel.modulus() : value;
+  const double scale = std::max({h_rms, 1e-3 * reach, 1e-15});
 
   ArealSolution s;
   std::vector<double>& p = s.pressure;
@@ -283,7 +292,8 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
     for (std::size_t i = 0; i < n; ++i) gap[i] = h_max - h[i];
     return s;
   }
-  if (!start.empty() && start.size() == n) {
+  const bool warm = start.size() == n && std::any_of(start.begin(), start.end(), [](double v) { return v > 0.0; });
+  if (warm) {
     for (std::size_t i = 0; i < n; ++i) p[i] = std::clamp(start[i], 0.0, cap);
   } else if (load) {
     std::fill(p.begin(), p.end(), value);
@@ -416,8 +426,8 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
     if (load && std::isfinite(cap)) {
       // Capped: the load restored by scaling the free elements' pressure alone (Polonsky & Keer's
       // scaling, which keeps an element that has just entered in contact), those it takes to H
-      // capped and the rest scaled again; when the capped elements alone carry the load the step is
-      // left as it is (the flat then lets some of them go).
+      // capped and the rest scaled again; when the capped elements alone carry more than the load,
+      // by the projection below; with no free element, the nearest one takes the rest.
       for (int round = 0; round < 8 && std::abs(target - total) > 1e-14 * target; ++round) {
         double capped_sum = 0.0, free_sum = 0.0;
         for (std::size_t i = 0; i < n; ++i) (state[i] == 2 ? capped_sum : free_sum) += state[i] == 0 ? 0.0 : p[i];
@@ -645,7 +655,16 @@ std::vector<SubsurfacePlane> subsurface_von_mises(const ElasticKernel& kernel, s
           const std::complex<double> ph(p_hat[k][0], p_hat[k][1]);
           std::complex<double> v = 0.0;
           if (q == 0.0) {
-            v = c == 2 ? -ph : 0.0;  // the mean pressure: sigma_zz alone
+            // The mean pressure: sigma_zz = -pbar, and along an open direction the lateral stress of
+            // the padded window's images, the q -> 0 limit along it (a row of line loads: mean
+            // sigma_ss = -pbar, sigma_tt = -2 nu pbar; open both ways, the mean over directions).
+            // A window periodic both ways: sigma_zz alone (its lateral stress is the body's beyond).
+            const double open_x = g.periodic_x ? 0.0 : 1.0, open_y = g.periodic_y ? 0.0 : 1.0;
+            const double sum = open_x + open_y;
+            const double wx = sum > 0.0 ? open_x / sum : 0.0, wy = sum > 0.0 ? open_y / sum : 0.0;
+            const double lateral_x = sum > 0.0 ? -(wx + 2.0 * nu * wy) : 0.0;
+            const double lateral_y = sum > 0.0 ? -(wy + 2.0 * nu * wx) : 0.0;
+            v = c == 0 ? lateral_x * ph : c == 1 ? lateral_y * ph : c == 2 ? -ph : 0.0;
           } else {
             // Plane strain under P cos(q s) (Airy phi = (P/q^2)(1 + qz) e^{-qz} cos qs), turned to
             // the mode's direction n = q/|q| (s along n, t across it).

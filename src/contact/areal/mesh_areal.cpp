@@ -1,5 +1,6 @@
 #include "contact/areal/mesh_areal.hpp"
 
+#include "contact/persson_contact.hpp"
 #include "contact/series_columns.hpp"
 #include "contact/stage_clock.hpp"
 #include "core/keyed_error.hpp"
@@ -39,6 +40,17 @@ double FlankMap::at(double sigma, int j) const {
   return row[i] + t * (row[i + 1] - row[i]);
 }
 
+double areal_run_bytes(const FlankSpan& span, const ArealMeshOptions& o) {
+  double maps = 0.0;
+  if (o.lay == ArealLay::isotropic)
+    for (int g = 0; g < 2; ++g)  // each map, and while one is made its noise and spectrum (about 2.5 x)
+      maps += 8.0 * std::ceil(span.length(g) / span.element_size) * o.points * (g == 0 ? 3.5 : 1.0);
+  ArealGrid w;
+  w.nx = span.elements, w.ny = o.points, w.dx = span.element_size, w.dy = o.spacing();
+  w.periodic_x = false, w.periodic_y = true;
+  return maps + areal_solve_bytes(w);
+}
+
 std::array<FlankMap, 2> flank_maps(const FidelityInputs& in, const FlankSpan& span, const RollingFlanks& flanks) {
   const ArealMeshOptions& o = in.contact.areal;
   const double e = span.element_size;
@@ -57,15 +69,6 @@ std::array<FlankMap, 2> flank_maps(const FidelityInputs& in, const FlankSpan& sp
                              fmt::format("the {}'s map would hold {} x {} points, beyond the {} a height map may hold: "
                                          "fewer points across the face, or a coarser contact.element_size",
                                          g == 0 ? "pinion" : "wheel", m.nx, m.ny, surface::kMaxGridPoints));
-    m.z.resize(static_cast<std::size_t>(m.nx) * m.ny);
-    if (o.lay == ArealLay::extruded) {
-      for (int i = 0; i < m.nx; ++i) {
-        const double c = m.start + i * e;
-        const double v = track_mean(t, std::max(t.start, c - 0.5 * e), std::min(t.end(), c + 0.5 * e));
-        for (int j = 0; j < m.ny; ++j) m.z[static_cast<std::size_t>(j) * m.nx + i] = v;
-      }
-      continue;
-    }
     // Isotropic: the generated ground profile's Gaussian correlation in every direction.
     const surface::FlankSpec* spec = in.flank_specs[static_cast<std::size_t>(g)];
     const std::string gear = g == 0 ? "pinion" : "wheel";
@@ -122,17 +125,21 @@ Areal::State Areal::prepare(const FidelityInputs& in, StageClock& clock) {
   const double margin = 0.5 * st.grid.size * st.grid.spacing + 2.0 * span.element_size;
   const double margins[2] = {margin, margin};
   set_span_ranges(span, pair, st.sigma, margins, margins);
+  span.reader = FlankSpan::Reader::areal;
   const int teeth[2] = {1, 1};
   st.flanks = in.flank_source(span, teeth);
   clock.lap("flank_profiles");
-  st.maps = flank_maps(in, span, st.flanks);
-  clock.lap("flank_maps");
+  if (cs.areal.lay == ArealLay::isotropic) {
+    st.maps = flank_maps(in, span, st.flanks);
+    clock.lap("flank_maps");
+  }
   build_rolled_flanks_model(in, span, st.flanks, name, clock, st.model);
   return st;
 }
 
 Areal::Solution Areal::solve(const FidelityInputs& in, State& st, const std::vector<double>& share, StageClock& clock) {
   Solution out;
+  out.share = share;
   if (st.model) {
     out.statistical = solve_statistical(in, *st.model, StripFidelity::uncoupled, share, nullptr, {});
     clock.lap("statistical_model");
@@ -164,13 +171,19 @@ Areal::Solution Areal::solve(const FidelityInputs& in, State& st, const std::vec
             fmt::format("the line load {:.4g} N/m would yield the window along the involute (+-{:.4g} mm at the "
                         "hardness {:.4g} GPa carries {:.4g} N/m): raise contact.strip_halfwidths or lower the torque",
                         w, 0.5e3 * length, o.hardness * 1e-9, length * o.hardness));
-      for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) {
-          const double x = st.grid.x(i);
-          h[static_cast<std::size_t>(j) * nx + i] = -x * x / (2.0 * p.radius[kk]) +
-                                                    st.maps[0].at(st.sigma[0][kk] - x, j) +
-                                                    st.maps[1].at(st.sigma[1][kk] + x, j);
-        }
+      const bool extruded = cs.areal.lay == ArealLay::extruded;
+      const FlankTrack &pinion = st.flanks.pinion.front(), &wheel = st.flanks.wheel.front();
+      for (int i = 0; i < nx; ++i) {
+        // Extruded: each profile's mean over the element, as the deterministic fidelity's strip takes it.
+        const double x = st.grid.x(i), sp = st.sigma[0][kk] - x, sw = st.sigma[1][kk] + x;
+        const double parabola = -x * x / (2.0 * p.radius[kk]);
+        const double profiles =
+            extruded ? track_mean(pinion, sp - 0.5 * e, sp + 0.5 * e) + track_mean(wheel, sw - 0.5 * e, sw + 0.5 * e)
+                     : 0.0;
+        for (int j = 0; j < ny; ++j)
+          h[static_cast<std::size_t>(j) * nx + i] =
+              parabola + (extruded ? profiles : st.maps[0].at(sp, j) + st.maps[1].at(sw, j));
+      }
       const ArealSolution sol = solve_contact(kernel, h, Control::mean_pressure, w / length, o, start);
       start = sol.pressure;
       const ContactSpots spots = contact_spots(g, sol.pressure);
@@ -189,7 +202,7 @@ Areal::Solution Areal::solve(const FidelityInputs& in, State& st, const std::vec
       for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
           const std::size_t e_ij = static_cast<std::size_t>(j) * nx + i;
-          if (std::abs(st.grid.x(i)) <= b) gap += std::max(sol.gap[e_ij], 0.0), ++band;
+          if (std::abs(st.grid.x(i)) <= std::max(b, 0.5 * e)) gap += std::max(sol.gap[e_ij], 0.0), ++band;
           if ((i == 0 || i == nx - 1) && sol.pressure[e_ij] > 0.0) s.edge_loaded = true;
         }
       s.mean_gap = band > 0 ? gap / band : kNaN;
@@ -216,7 +229,11 @@ Areal::Solution Areal::solve(const FidelityInputs& in, State& st, const std::vec
 
 void Areal::write(const FidelityInputs& in, State& st, Solution& s, MeshContactResult& r) {
   const ContactSettings& cs = in.contact;
-  if (s.statistical) write_statistical_beside(in, *st.model, *s.statistical, r);
+  if (s.statistical) {
+    write_statistical_beside(in, *st.model, *s.statistical, r);
+    // Persson on the maps' gradient: isotropic, twice the profiles' slope variance; extruded, theirs.
+    write_persson_beside(in, *st.model, s.share, cs.areal.lay == ArealLay::isotropic ? 2.0 : 1.0, r);
+  }
   using S = ArealStrip;
   using C = Column<S>;
   if (cs.real_area)
@@ -259,12 +276,14 @@ void Areal::write(const FidelityInputs& in, State& st, Solution& s, MeshContactR
       cs.areal.lay == ArealLay::isotropic ? "isotropic" : "extruded", st.grid.spacing * 1e6,
       cs.boundary_elements.strip_halfwidths, cs.areal.points, cs.areal.window * 1e6, r.regime, loaded, elastic,
       plastic);
-  const surface::FlankSpec* spec = in.flank_specs[0];
-  if (cs.areal.lay == ArealLay::isotropic && spec && spec->profile &&
-      cs.areal.window < 4.0 * spec->profile->correlation_length)
-    r.verdict += fmt::format(
-        " The window across the face holds fewer than four correlation lengths: its spots are few; widen "
-        "areal.window.");
+  for (const surface::FlankSpec* spec : in.flank_specs)
+    if (cs.areal.lay == ArealLay::isotropic && spec && spec->profile &&
+        cs.areal.window < 4.0 * spec->profile->correlation_length) {
+      r.verdict +=
+          " The window across the face holds fewer than four correlation lengths: its spots are few; widen "
+          "areal.window.";
+      break;
+    }
   if (n_edge > 0)
     r.verdict += fmt::format(
         " At {} positions the pressure reaches the window's ends along the involute: raise contact.strip_halfwidths.",

@@ -28,11 +28,17 @@ struct FlankMap {
   double at(double sigma, int j) const;
 };
 
-// Both flanks' maps for the span: extruded (each profile's element means across the face) or
-// isotropic (a Gaussian random surface with a generated ground profile's Rq and correlation length in
-// every direction, seeded by the profile's seed). Throws core::KeyedError ("areal.lay",
-// "areal.window", "areal.points") when the flanks cannot give the lay or the window is too narrow.
+// Both flanks' isotropic maps for the span (areal.lay = "isotropic"): a Gaussian random surface with
+// each flank's generated ground profile's Rq and correlation length in every direction, seeded by
+// the profile's seed, at the elements' spacing along the involute (read between its points by linear
+// interpolation, which lowers its Rq by (e/lambda)^2/6: 0.04 % on the shipped case). Throws
+// core::KeyedError ("areal.lay", "areal.window", "areal.points") when a flank cannot give the lay or
+// the window is too narrow. (An extruded lay needs no map: the profiles' element means, as the
+// deterministic fidelity takes them.)
 std::array<FlankMap, 2> flank_maps(const FidelityInputs& in, const FlankSpan& span, const RollingFlanks& flanks);
+
+// The bytes an areal run holds at its peak: both flanks' maps (isotropic) and the window's solve.
+double areal_run_bytes(const FlankSpan& span, const ArealMeshOptions& o);
 
 // One position's answer, per unit face width where it says so.
 struct ArealStrip {
@@ -60,10 +66,9 @@ inline constexpr std::array<std::string_view, 10> kKeys = {
     "contact.positions",         "contact.outputs", "contact.element_size", "contact.strip_halfwidths",
     "contact.pressure_profiles", "areal.window",    "areal.points",         "areal.lay",
     "areal.tolerance",           "asperity.model"};
-inline constexpr std::array<TradeKnob, 4> kKnobs = {TradeKnob{"positions", "contact.positions"},
-                                                    {"element_size", "contact.element_size"},
-                                                    {"points", "areal.points"},
-                                                    {"tolerance", "areal.tolerance"}};
+// (Not the positions: the ladder's finest, hundreds of positions, is minutes of the areal solver.)
+inline constexpr std::array<TradeKnob, 3> kKnobs = {
+    TradeKnob{"element_size", "contact.element_size"}, {"points", "areal.points"}, {"tolerance", "areal.tolerance"}};
 inline constexpr std::array<OutputGroup, 3> kGroups = {
     OutputGroup{"/contact",
                 "both flanks' height maps in contact by areal boundary elements, a window periodic "
@@ -85,12 +90,13 @@ struct Areal {
     HalfPlaneGrid grid;            // the strip's elements along the involute
     std::array<std::vector<double>, 2> sigma;
     RollingFlanks flanks;
-    std::array<FlankMap, 2> maps;
+    std::array<FlankMap, 2> maps;  // isotropic lay only
     std::optional<SurfaceModel> model;
     const SurfaceModel* surface() const { return model ? &*model : nullptr; }
   };
   struct Solution {
     std::optional<StatisticalSolution> statistical;
+    std::vector<double> share;  // the asperities' share of each position's load
     std::vector<ArealStrip> strips;
   };
   static State prepare(const FidelityInputs& in, StageClock& clock);

@@ -1,5 +1,6 @@
 #include "contact/deterministic/mesh_deterministic.hpp"
 
+#include "contact/persson_contact.hpp"
 #include "contact/position_threads.hpp"
 #include "contact/series_columns.hpp"
 #include "contact/stage_clock.hpp"
@@ -303,6 +304,26 @@ void write_statistical_beside(const FidelityInputs& in, const SurfaceModel& m, c
   for (const auto& w : s.warnings) r.warnings.push_back("statistical model: " + w);
 }
 
+void write_persson_beside(const FidelityInputs& in, const SurfaceModel& m, const std::vector<double>& share,
+                          double gradient_factor, MeshContactResult& r) {
+  const double g = std::sqrt(gradient_factor * (m.flanks.roughness[0].m2 + m.flanks.roughness[1].m2));
+  const double hardness = std::min(in.flanks.materials[0]->hardness, in.flanks.materials[1]->hardness);
+  Series area{"statistical_persson_real_area_ratio", "1", {}},
+      plastic{"statistical_persson_plastic_area_fraction", "1", {}},
+      pressure{"statistical_persson_mean_real_pressure_Pa", "Pa", {}};
+  for (std::size_t k = 0; k < in.path.size(); ++k) {
+    // The Hertz pressure scaled to the asperities' share (its shape kept).
+    const PerssonStrip s =
+        persson_hertz_strip(in.path.hertz_p0[k] * share[k], in.mesh.composite_modulus(), g, hardness);
+    area.values.push_back(s.real_area_ratio);
+    plastic.values.push_back(s.plastic_area_fraction);
+    pressure.values.push_back(s.mean_real_pressure);
+  }
+  r.statistical.push_back(std::move(area));
+  r.statistical.push_back(std::move(plastic));
+  r.statistical.push_back(std::move(pressure));
+}
+
 std::vector<std::string> path_point_names(const PathState& p) {
   const auto& path = p.path;
   const std::pair<const char*, double> named[] = {
@@ -461,6 +482,7 @@ BoundaryElements::State BoundaryElements::prepare(const FidelityInputs& in, Stag
 BoundaryElements::Solution BoundaryElements::solve(const FidelityInputs& in, State& st,
                                                    const std::vector<double>& share, StageClock& clock) {
   Solution out;
+  out.share = share;
   if (st.model) {
     out.statistical = solve_statistical(in, *st.model, StripFidelity::uncoupled, share, nullptr, {});
     clock.lap("statistical_model");
@@ -486,7 +508,10 @@ BoundaryElements::Solution BoundaryElements::solve(const FidelityInputs& in, Sta
 }
 
 void BoundaryElements::write(const FidelityInputs& in, State& st, Solution& s, MeshContactResult& r) {
-  if (s.statistical) write_statistical_beside(in, *st.model, *s.statistical, r);
+  if (s.statistical) {
+    write_statistical_beside(in, *st.model, *s.statistical, r);
+    write_persson_beside(in, *st.model, s.share, 1.0, r);  // the profiles extruded across the face
+  }
   add_contact_series(in.contact, s.first.strips, r);
   // The pressure profiles kept (first mesh), on the strip's grid (the one every solver has).
   std::vector<double> x(static_cast<std::size_t>(st.grid.size));

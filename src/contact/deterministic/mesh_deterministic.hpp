@@ -39,7 +39,8 @@ struct FlankSpan {
   // (element_size not finer than its spacing), or the mixed-EHL grid samples it at its nodes
   // (element_size, the nodes' spacing, not coarser than it; 0: chosen by the fidelity once the
   // profiles are made, never coarser).
-  enum class Reader { strip, grid };
+  // (areal: the areal fidelity's strip and its height maps across the face.)
+  enum class Reader { strip, grid, areal };
   Reader reader = Reader::strip;
   double length(int g) const { return last[g] - first[g]; }
   // A measured trace of `length` centred on the flank's active part: where its first point lies.
@@ -71,6 +72,13 @@ void build_rolled_flanks_model(const FidelityInputs& in, const FlankSpan& span, 
 // /statistical, its surface, plasticity index, asperity model and warnings ("statistical model: ").
 void write_statistical_beside(const FidelityInputs& in, const SurfaceModel& model, const StatisticalSolution& s,
                               MeshContactResult& r);
+// Persson's theory on the same flanks beside a rolling fidelity (contact/persson_contact.hpp): across
+// each position's Hertz strip at the asperities' share of its load, on the composite surface's full
+// gradient, gradient_factor times the profiles' summed slope variance m2 (1: lay-directed, the
+// profiles extruded across the face; 2: isotropic), capped at the softer flank's hardness. Its series
+// in /statistical: statistical_persson_real_area_ratio, _plastic_area_fraction, _mean_real_pressure_Pa.
+void write_persson_beside(const FidelityInputs& in, const SurfaceModel& m, const std::vector<double>& share,
+                          double gradient_factor, MeshContactResult& r);
 // The path's points A, B, C, D, E at their nearest positions ("" elsewhere).
 std::vector<std::string> path_point_names(const PathState& p);
 // The positions whose profiles are kept (contact.pressure_profiles: the named points, all or none).
@@ -146,7 +154,8 @@ struct BoundaryElements {
   };
   struct Solution {
     std::optional<StatisticalSolution> statistical;
-    MeshPass first;  // the first mesh's strips and pressure profiles
+    std::vector<double> share;  // the asperities' share of each position's load
+    MeshPass first;             // the first mesh's strips and pressure profiles
     std::vector<HistoryRow> history;
     std::optional<RunningInResult> running_in;
   };

@@ -2,6 +2,7 @@
 
 #include "contact/toeplitz_convolution.hpp"
 #include "core/keyed_error.hpp"
+#include "core/log_antiderivative.hpp"
 #include "lubrication/lubricant.hpp"
 
 #include <algorithm>
@@ -29,7 +30,7 @@ constexpr NamedChoice<FlowModel> kFlowModels[] = {{FlowModel::newtonian, "newton
 constexpr double kDensityA = 0.6e-9, kDensityB = 1.7e-9;
 // exp() of at most this (eta/eta_0 ~ 1e304): beyond it the film carries no Poiseuille flow anyway.
 constexpr double kMaxViscosityExponent = 700.0;
-double log_antiderivative(double t) { return t == 0.0 ? 0.0 : t * std::log(std::abs(t)) - t; }  // int ln|t| dt
+using core::log_antiderivative;  // int ln|t| dt
 
 using Block = std::array<double, 4>;  // 2x2, row major: (P, H) equations x (P, H) unknowns
 using Pair = std::array<double, 2>;
