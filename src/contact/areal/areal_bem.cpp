@@ -371,12 +371,15 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
         double sum = 0.0;
         for (double v : p) sum += v;
         s.converged = s.residual <= o.tolerance && (!load || std::abs(sum - target) <= 1e-9 * target);
-        break;
+        if (s.converged || it >= o.max_iterations) break;
+        // The contact conditions met but not the load (a capped contact short of it: the step's load
+        // balance gives the rest to the element nearest to touching): on.
+      } else {
+        kernel.apply(p, u);  // the carried displacement checked against a fresh one
+        recount();
+        fresh = true, clipped = 0.0, reset = true;
+        continue;
       }
-      kernel.apply(p, u);  // the carried displacement checked against a fresh one
-      recount();
-      fresh = true, clipped = 0.0, reset = true;
-      continue;
     }
     // The conjugate direction on the free set (Polonsky & Keer 1999 eq. 14).
     const double beta = reset || g_old == 0.0 ? 0.0 : big_g / g_old;
@@ -399,6 +402,7 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
     // opens are let go (either restarts the conjugate directions).
     bool moved = false;  // an element entered the contact or left the cap
     double total = 0.0;
+    std::size_t capped_count = 0;
     free_h = free_u = 0.0, free_count = 0;
     for (std::size_t i = 0; i < n; ++i) {
       double pi = p[i];
@@ -421,9 +425,11 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
       const unsigned char si = classify(pi);
       state[i] = si;
       total += pi;
+      capped_count += si == 2;
       if (si == 1) free_h += h[i], free_u += ui, ++free_count;
     }
-    if (load && std::isfinite(cap)) {
+    // (No element capped: Polonsky & Keer's scaling of every pressure, carried to u as well.)
+    if (load && capped_count > 0) {
       // Capped: the load restored by scaling the free elements' pressure alone (Polonsky & Keer's
       // scaling, which keeps an element that has just entered in contact), those it takes to H
       // capped and the rest scaled again; when the capped elements alone carry more than the load,
@@ -431,11 +437,10 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
       for (int round = 0; round < 8 && std::abs(target - total) > 1e-14 * target; ++round) {
         double capped_sum = 0.0, free_sum = 0.0;
         for (std::size_t i = 0; i < n; ++i) (state[i] == 2 ? capped_sum : free_sum) += state[i] == 0 ? 0.0 : p[i];
-        if (capped_sum >= target) {
-          // The capped elements alone carry more than the load (a step that capped too many): the
-          // pressure projected on the loads that balance, clamp(p + mu, 0, H) with the shift mu < 0
-          // found by bisection (the Euclidean projection on 0 <= p <= H, sum p = target); the
-          // conjugate directions restart.
+        if (capped_sum >= target && target < cap) {
+          // Less load than one element at H carries, and the step capped one: no element may stay
+          // capped. The pressure projected on the loads that balance, clamp(p + mu, 0, H) with the
+          // shift mu < 0 found by bisection (the Euclidean projection on 0 <= p <= H, sum p = target).
           double lo = -cap, hi = 0.0;
           auto sum_at = [&](double mu) {
             double t = 0.0;
@@ -454,6 +459,36 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
               p[i] = v;
               state[i] = classify(v);
             }
+            total += p[i];
+            if (state[i] == 1) free_h += h[i], free_u += u[i], ++free_count;
+          }
+          moved = true;
+          continue;
+        }
+        if (capped_sum >= target) {
+          // The capped elements alone carry more than the load (a step that capped too many): the
+          // floor(target/H) of them the flat overlaps most stay at H, the rest are let go (and the
+          // free ones scaled to the rest below); the conjugate directions restart. (A projection
+          // of every pressure by a common shift instead turns all the capped ones free at once, and
+          // the next step caps them again: a cycle.)
+          std::vector<std::pair<double, std::size_t>> overlap;  // (h - u, element) of the capped
+          for (std::size_t i = 0; i < n; ++i)
+            if (state[i] == 2) overlap.emplace_back(h[i] - u[i], i);
+          const auto keep = std::min(overlap.size(), static_cast<std::size_t>(std::floor(target / cap)));
+          std::nth_element(overlap.begin(), overlap.begin() + static_cast<std::ptrdiff_t>(keep), overlap.end(),
+                           std::greater<>());
+          // The load the kept ones and the free ones leave, shared by the released (below H).
+          const double rest = std::max(0.0, target - static_cast<double>(keep) * cap - free_sum);
+          const double share =
+              overlap.size() > keep ? std::min(rest / static_cast<double>(overlap.size() - keep), 0.5 * cap) : 0.0;
+          for (std::size_t k = keep; k < overlap.size(); ++k) {
+            const std::size_t i = overlap[k].second;
+            clipped += p[i] - share;
+            p[i] = share;
+            state[i] = classify(share);
+          }
+          total = 0.0, free_h = free_u = 0.0, free_count = 0;
+          for (std::size_t i = 0; i < n; ++i) {
             total += p[i];
             if (state[i] == 1) free_h += h[i], free_u += u[i], ++free_count;
           }
@@ -551,9 +586,10 @@ ArealSolution solve_contact(const ElasticKernel& kernel, std::span<const double>
                              "the approach of a window periodic in one direction alone is not defined (its mean "
                              "line load's displacement grows as ln of the distance): give a mean pressure");
   }
-  if (control == Control::approach && std::isfinite(o.hardness) && start.empty()) {
-    // Capped at an approach from nothing: the elastic contact first (from a cold start every element
-    // the flat overlaps would start at the cap).
+  if (std::isfinite(o.hardness) && start.empty() && value > 0.0) {
+    // Capped from nothing: the elastic contact first, then capped from it (from a cold start the
+    // first steps cap far more elements than the answer has, at an approach every element the flat
+    // overlaps, and the iteration has them to let go again).
     ArealOptions elastic = o;
     elastic.hardness = std::numeric_limits<double>::infinity();
     const ArealSolution e = polonsky_keer(kernel, h, control, value, elastic, {});
