@@ -4,8 +4,8 @@
 // its refusals at the key.
 #include "config/case_file.hpp"
 #include "config/case_prepare.hpp"
-#include "contact/mesh_contact.hpp"
 #include "config/input_error.hpp"
+#include "contact/mesh_contact.hpp"
 #include "runs/mesh_cycle.hpp"
 #include "surface/synthetic_surface.hpp"
 #include "test_support.hpp"
@@ -63,7 +63,8 @@ TEST(GaussianSurface, RqExactAndTheProfileAutocorrelationInBothDirections) {
   // are (exp(-1/256) = 0.996; rows of an open field that far apart would not be: about 0).
   double cross = 0.0, first = 0.0, last = 0.0;
   for (int i = 0; i < g.nx; ++i)
-    cross += g.at(i, g.ny - 1) * g.at(i, 0), first += g.at(i, 0) * g.at(i, 0), last += g.at(i, g.ny - 1) * g.at(i, g.ny - 1);
+    cross += g.at(i, g.ny - 1) * g.at(i, 0), first += g.at(i, 0) * g.at(i, 0),
+        last += g.at(i, g.ny - 1) * g.at(i, g.ny - 1);
   EXPECT_GT(cross / std::sqrt(first * last), 0.98);
   // Refused: a correlation length under two spacings, no points.
   s.correlation_length = 1.5e-6;
@@ -76,18 +77,23 @@ TEST(ArealFidelity, ExtrudedFlanksAgreeWithTheProfileFidelity) {
   // by linear interpolation at the contact point's arc, the strip averages the profile over each
   // element: measured equal to 1e-4 at 0.5 um), the peak pressure the hardness in both (45 steel,
   // 1.17 GPa).
-  const Case areal = areal_case({{"areal.lay", "extruded"}, {"positions", "3"}, {"areal.points", "4"},
-                                 {"element_size", "1um"}, {"contact.outputs", "[\"real_area\", \"plastic_fraction\"]"}});
-  const Case profile =
-      areal_case({{"contact.fidelity", "deterministic"}, {"positions", "3"}, {"element_size", "1um"},
-                  {"contact.outputs", "[\"real_area\", \"plastic_fraction\"]"}});
+  const Case areal = areal_case({{"areal.lay", "extruded"},
+                                 {"positions", "3"},
+                                 {"areal.points", "4"},
+                                 {"element_size", "1um"},
+                                 {"contact.outputs", "[\"real_area\", \"plastic_fraction\"]"}});
+  const Case profile = areal_case({{"contact.fidelity", "deterministic"},
+                                   {"positions", "3"},
+                                   {"element_size", "1um"},
+                                   {"contact.outputs", "[\"real_area\", \"plastic_fraction\"]"}});
   const contact::MeshContactResult a = runs::run_mesh_cycle(areal), d = runs::run_mesh_cycle(profile);
   EXPECT_EQ(a.fidelity, "areal");
   const auto &ra = values(a, "real_area_ratio"), &rd = values(d, "real_area_ratio");
   ASSERT_EQ(ra.size(), 3u);
   for (std::size_t k = 0; k < 3; ++k) {
     EXPECT_NEAR(ra[k] / rd[k], 1.0, 0.01) << k;
-    EXPECT_NEAR(values(a, "max_pressure_Pa")[k], values(d, "max_pressure_Pa")[k], 1e-6 * values(d, "max_pressure_Pa")[k]);
+    EXPECT_NEAR(values(a, "max_pressure_Pa")[k], values(d, "max_pressure_Pa")[k],
+                1e-6 * values(d, "max_pressure_Pa")[k]);
   }
   EXPECT_EQ(values(a, "flag_not_converged"), std::vector<double>(3, 0.0));
   EXPECT_FALSE(a.statistical.empty());  // the statistical model beside it, on the same profiles
@@ -109,5 +115,6 @@ TEST(ArealFidelity, RefusesAtTheKey) {
   // An isotropic map of a hobbed flank.
   EXPECT_EQ(key_of(areal_case({{"positions", "2"}, {"pinion.flank.profile.kind", "hobbed"}})), "areal.lay");
   // The correlation length across fewer than two points.
-  EXPECT_EQ(key_of(areal_case({{"positions", "2"}, {"areal.window", "256um"}, {"areal.points", "16"}})), "areal.points");
+  EXPECT_EQ(key_of(areal_case({{"positions", "2"}, {"areal.window", "256um"}, {"areal.points", "16"}})),
+            "areal.points");
 }

@@ -111,20 +111,9 @@ std::vector<double> stress_depths(double element_size, double hertz_half_width) 
 Areal::State Areal::prepare(const FidelityInputs& in, StageClock& clock) {
   if (!in.flank_source) throw std::invalid_argument("the areal fidelity needs the flanks' profiles");
   const ContactSettings& cs = in.contact;
-  const PathState& p = in.path;
-  const gear::SpurPair& pair = in.mesh.pair();
   State st;
-  const double b_max = *std::max_element(p.half_width.begin(), p.half_width.end());
   FlankSpan& span = st.span;
-  span.element_size = cs.boundary_elements.element_size;
-  span.strip_half_length = cs.boundary_elements.strip_halfwidths * b_max;
-  st.sigma = contact_arcs(pair, p);
-  st.options = deterministic_options(cs, *in.flanks.materials[0], *in.flanks.materials[1]);
-  st.grid = strip_grid(span.strip_half_length, st.options);
-  span.elements = st.grid.size;
-  const double margin = 0.5 * st.grid.size * st.grid.spacing + 2.0 * span.element_size;
-  const double margins[2] = {margin, margin};
-  set_span_ranges(span, pair, st.sigma, margins, margins);
+  plan_rolling_strip(in, span, st.sigma, st.options, st.grid);
   span.reader = FlankSpan::Reader::areal;
   const int teeth[2] = {1, 1};
   st.flanks = in.flank_source(span, teeth);
@@ -140,10 +129,7 @@ Areal::State Areal::prepare(const FidelityInputs& in, StageClock& clock) {
 Areal::Solution Areal::solve(const FidelityInputs& in, State& st, const std::vector<double>& share, StageClock& clock) {
   Solution out;
   out.share = share;
-  if (st.model) {
-    out.statistical = solve_statistical(in, *st.model, StripFidelity::uncoupled, share, nullptr, {});
-    clock.lap("statistical_model");
-  }
+  out.statistical = statistical_beside(in, st.model, share, clock);
   const ContactSettings& cs = in.contact;
   const PathState& p = in.path;
   const int nx = st.grid.size, ny = cs.areal.points;

@@ -276,6 +276,33 @@ void set_span_ranges(FlankSpan& span, const gear::SpurPair& pair, const std::arr
   }
 }
 
+void plan_rolling_strip(const FidelityInputs& in, FlankSpan& span, std::array<std::vector<double>, 2>& sigma,
+                        DeterministicOptions& options, HalfPlaneGrid& grid) {
+  const ContactSettings& cs = in.contact;
+  const PathState& p = in.path;
+  const gear::SpurPair& pair = in.mesh.pair();
+  const double b_max = *std::max_element(p.half_width.begin(), p.half_width.end());
+  span.element_size = cs.boundary_elements.element_size;
+  span.strip_half_length = cs.boundary_elements.strip_halfwidths * b_max;
+  sigma = contact_arcs(pair, p);
+  options = deterministic_options(cs, *in.flanks.materials[0], *in.flanks.materials[1]);
+  // The flanks are read over the grid's whole reach (at least 8 elements) and two elements more.
+  grid = strip_grid(span.strip_half_length, options);
+  span.elements = grid.size;
+  const double margin = 0.5 * grid.size * grid.spacing + 2.0 * cs.boundary_elements.element_size;
+  const double margins[2] = {margin, margin};
+  set_span_ranges(span, pair, sigma, margins, margins);
+}
+
+std::optional<StatisticalSolution> statistical_beside(const FidelityInputs& in,
+                                                      const std::optional<SurfaceModel>& model,
+                                                      const std::vector<double>& share, StageClock& clock) {
+  if (!model) return std::nullopt;
+  std::optional<StatisticalSolution> s = solve_statistical(in, *model, StripFidelity::uncoupled, share, nullptr, {});
+  clock.lap("statistical_model");
+  return s;
+}
+
 void build_rolled_flanks_model(const FidelityInputs& in, const FlankSpan& span, const RollingFlanks& flanks,
                                std::string_view fidelity, StageClock& clock, std::optional<SurfaceModel>& model) {
   const bool statistics = rough(flanks.pinion.front()) && rough(flanks.wheel.front());
@@ -352,26 +379,10 @@ namespace deterministic {
 
 namespace {
 
-// The strip, its boundary elements and the span of each flank it reads. The softer flank's
-// hardness caps the pressure and takes the plastic deformation (equal hardness: half each).
+// The strip, its boundary elements and the span of each flank it reads (plan_rolling_strip).
 void plan_strip(const FidelityInputs& in, BoundaryElements::State& st) {
-  const ContactSettings& cs = in.contact;
-  const PathState& p = in.path;
-  const gear::SpurPair& pair = in.mesh.pair();
-  const double b_max = *std::max_element(p.half_width.begin(), p.half_width.end());
-  FlankSpan& span = st.span;
-  span.element_size = cs.boundary_elements.element_size;
-  span.strip_half_length = cs.boundary_elements.strip_halfwidths * b_max;
-  st.sigma = contact_arcs(pair, p);
-  st.options = deterministic_options(cs, *in.flanks.materials[0], *in.flanks.materials[1]);
-  const DeterministicOptions& o = st.options;
-  // The flanks are read over the grid's whole reach (at least 8 elements) and two elements more.
-  st.grid = strip_grid(span.strip_half_length, o);
-  span.elements = st.grid.size;
-  const double margin = 0.5 * st.grid.size * st.grid.spacing + 2.0 * cs.boundary_elements.element_size;
-  const double margins[2] = {margin, margin};
-  set_span_ranges(span, pair, st.sigma, margins, margins);
-  span.running_in = in.running_in.meshes > 0;
+  plan_rolling_strip(in, st.span, st.sigma, st.options, st.grid);
+  st.span.running_in = in.running_in.meshes > 0;
 }
 
 // The positions' strips, at the load the asperities carry, and which pressure profiles are kept.
@@ -483,10 +494,7 @@ BoundaryElements::Solution BoundaryElements::solve(const FidelityInputs& in, Sta
                                                    const std::vector<double>& share, StageClock& clock) {
   Solution out;
   out.share = share;
-  if (st.model) {
-    out.statistical = solve_statistical(in, *st.model, StripFidelity::uncoupled, share, nullptr, {});
-    clock.lap("statistical_model");
-  }
+  out.statistical = statistical_beside(in, st.model, share, clock);
   const ContactSettings& cs = in.contact;
   const PathState& p = in.path;
   const std::vector<StripPosition> positions = strip_positions(p, st, share);

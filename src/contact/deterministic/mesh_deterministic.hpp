@@ -62,6 +62,17 @@ std::array<std::vector<double>, 2> contact_arcs(const gear::SpurPair& pair, cons
 // each flank read from `before[g]` below its active range to `after[g]` above it [m].
 void set_span_ranges(FlankSpan& span, const gear::SpurPair& pair, const std::array<std::vector<double>, 2>& sigma,
                      const double before[2], const double after[2]);
+// The strip every rolling fidelity solves along the involute (the deterministic one, the areal one):
+// +- contact.strip_halfwidths of the path's largest Hertz half-width in elements of
+// contact.element_size, the softer flank's hardness capping the pressure, and the span of each flank
+// it reads (the grid's reach and two elements more).
+void plan_rolling_strip(const FidelityInputs& in, FlankSpan& span, std::array<std::vector<double>, 2>& sigma,
+                        DeterministicOptions& options, HalfPlaneGrid& grid);
+// The statistical model's uncoupled strips beside a rolling fidelity (none without a model: a flat
+// flank), with the lap "statistical_model".
+std::optional<StatisticalSolution> statistical_beside(const FidelityInputs& in,
+                                                      const std::optional<SurfaceModel>& model,
+                                                      const std::vector<double>& share, StageClock& clock);
 // The flanks' statistical model from the rolled profiles (each flank's spectral moments over its
 // active part, McCool's summits), when both are rough; none when a flank is flat, which a lubricated
 // run refuses (core::KeyedError naming the flat flank: the film shares the load with the model).
