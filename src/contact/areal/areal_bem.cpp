@@ -362,7 +362,7 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
     s.iterations = it;
     auto apply_scale = [&] {
       if (scale_next == 1.0) return;
-      for (std::size_t i = 0; i < n; ++i) p[i] *= scale_next, u[i] *= scale_next;
+      for (std::size_t i = 0; i < n; ++i) p[i] = std::min(p[i] * scale_next, cap), u[i] *= scale_next;
       scale_next = 1.0;
     };
     if (s.residual <= o.tolerance || it >= o.max_iterations) {
@@ -428,6 +428,7 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
       capped_count += si == 2;
       if (si == 1) free_h += h[i], free_u += ui, ++free_count;
     }
+    scale_next = 1.0;  // the step took it (f); a new one is set below when uncapped
     // (No element capped: Polonsky & Keer's scaling of every pressure, carried to u as well.)
     if (load && capped_count > 0) {
       // Capped: the load restored by scaling the free elements' pressure alone (Polonsky & Keer's
@@ -465,7 +466,7 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
           moved = true;
           continue;
         }
-        if (capped_sum >= target) {
+        if (capped_sum > target) {
           // The capped elements alone carry more than the load (a step that capped too many): the
           // floor(target/H) of them the flat overlaps most stay at H, the rest are let go (and the
           // free ones scaled to the rest below); the conjugate directions restart. (A projection
@@ -523,20 +524,30 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
           if (state[i] == 1) free_h += h[i], free_u += u[i], ++free_count;
         }
       }
+    } else if (load && !(total > 0.0)) {
+      // Every pressure stepped to 0: the element nearest to touching takes the load.
+      std::size_t next = 0;
+      for (std::size_t i = 1; i < n; ++i)
+        if (gap[i] < gap[next]) next = i;
+      p[next] = std::min(target, cap);
+      state[next] = classify(p[next]);
+      if (state[next] == 1) free_h += h[next], free_u += u[next], ++free_count;
+      clipped += p[next];
+      total = p[next];
     } else {
       scale_next = load && total > 0.0 ? target / total : 1.0;
     }
     fresh = false;
     if (moved) reset = true;
     if (clipped > kClipped * s.residual * std::max(total, 1e-300) || (it + 1) % kFresh == 0) {
-      for (double& v : p) v *= scale_next;
+      for (double& v : p) v = std::min(v * scale_next, cap);
       scale_next = 1.0;
       kernel.apply(p, u);
       recount();
       fresh = true, clipped = 0.0;
     }
   }
-  kernel.apply(p, u);
+  // (u is K p: the iteration stops only on a fresh one.)
   if (load) {
     double sum = 0.0;
     std::size_t count = 0;
