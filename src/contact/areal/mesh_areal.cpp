@@ -241,27 +241,23 @@ void Areal::write(const FidelityInputs& in, State& st, Solution& s, MeshContactR
   add_columns<S>(r.contact, s.strips,
                  {C{"areal_iterations", "1", [](const S& a) { return static_cast<double>(a.iterations); }}});
   Series edge{"flag_strip_edge_loaded", "1", {}}, stopped{"flag_not_converged", "1", {}};
-  int n_edge = 0, n_stopped = 0, loaded = 0, elastic = 0, plastic = 0;
+  int n_edge = 0, n_stopped = 0;
+  RollingRegime regime;
   for (const S& a : s.strips) {
     edge.values.push_back(a.edge_loaded ? 1.0 : 0.0);
     stopped.values.push_back(a.converged ? 0.0 : 1.0);
     n_edge += a.edge_loaded, n_stopped += !a.converged;
-    if (a.real_area_per_width > 0.0) {
-      ++loaded;
-      elastic += a.plastic_area_fraction < 0.01;
-      plastic += a.plastic_area_fraction > 0.99;
-    }
+    regime.add(a.real_area_per_width, a.plastic_area_fraction);
   }
   r.validity.push_back(std::move(edge));
   r.validity.push_back(std::move(stopped));
-  r.regime = elastic == loaded ? "elastic" : plastic == loaded ? "fully plastic" : "elastic-plastic";
+  r.regime = regime.name();
   r.verdict = fmt::format(
       "Areal rough contact of both flanks' height maps ({} lay; elements of {:.3g} um along the involute over +-{:.3g} "
       "Hertz half-widths, {} points over {:.4g} um across the face, periodic): {}; of {} loaded positions {} elastic "
       "(<1% of the real area yielded), {} fully plastic (>99%).",
-      cs.areal.lay == ArealLay::isotropic ? "isotropic" : "extruded", st.grid.spacing * 1e6,
-      cs.boundary_elements.strip_halfwidths, cs.areal.points, cs.areal.window * 1e6, r.regime, loaded, elastic,
-      plastic);
+      choice_name(areal_lay_choices(), cs.areal.lay), st.grid.spacing * 1e6, cs.boundary_elements.strip_halfwidths,
+      cs.areal.points, cs.areal.window * 1e6, r.regime, regime.loaded, regime.elastic, regime.plastic);
   for (const surface::FlankSpec* spec : in.flank_specs)
     if (cs.areal.lay == ArealLay::isotropic && spec && spec->profile &&
         cs.areal.window < 4.0 * spec->profile->correlation_length) {

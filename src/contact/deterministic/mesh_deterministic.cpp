@@ -76,7 +76,8 @@ void add_contact_series(const ContactSettings& cs, const std::vector<Determinist
   };
   Series eps{"elements_per_spot", "1", {}}, edge{"flag_strip_edge_loaded", "1", {}},
       coarse{"flag_spots_unresolved", "1", {}};
-  int n_edge = 0, n_coarse = 0, loaded = 0, elastic = 0, plastic = 0;
+  int n_edge = 0, n_coarse = 0;
+  RollingRegime regime;
   for (const S& s : strips) {
     const double k = per_spot(s);
     eps.values.push_back(std::isnan(k) ? 0.0 : k);
@@ -84,20 +85,16 @@ void add_contact_series(const ContactSettings& cs, const std::vector<Determinist
     const bool unresolved = !std::isnan(k) && k < kMinElementsPerSpot;
     coarse.values.push_back(unresolved ? 1.0 : 0.0);
     n_edge += s.edge_loaded, n_coarse += unresolved;
-    if (s.real_area_per_width > 0.0) {
-      ++loaded;
-      elastic += s.plastic_area_fraction < 0.01;
-      plastic += s.plastic_area_fraction > 0.99;
-    }
+    regime.add(s.real_area_per_width, s.plastic_area_fraction);
   }
   r.validity.push_back(std::move(eps));
   r.validity.push_back(std::move(edge));
   r.validity.push_back(std::move(coarse));
-  r.regime = elastic == loaded ? "elastic" : plastic == loaded ? "fully plastic" : "elastic-plastic";
+  r.regime = regime.name();
   r.verdict = fmt::format(
       "Deterministic rough contact of the flanks' profiles (boundary elements of {:.3g} um over +-{:.3g} Hertz "
       "half-widths): {}; of {} loaded positions {} elastic (<1% of the real area yielded), {} fully plastic (>99%).",
-      e * 1e6, cs.boundary_elements.strip_halfwidths, r.regime, loaded, elastic, plastic);
+      e * 1e6, cs.boundary_elements.strip_halfwidths, r.regime, regime.loaded, regime.elastic, regime.plastic);
   if (n_edge > 0)
     r.verdict += fmt::format(
         " At {} positions the pressure reaches the strip's ends: the contact is cut short there; raise "
@@ -349,6 +346,17 @@ void write_persson_beside(const FidelityInputs& in, const SurfaceModel& m, const
   r.statistical.push_back(std::move(area));
   r.statistical.push_back(std::move(plastic));
   r.statistical.push_back(std::move(pressure));
+}
+
+void RollingRegime::add(double real_area, double plastic_area_fraction) {
+  if (!(real_area > 0.0)) return;
+  ++loaded;
+  elastic += plastic_area_fraction < 0.01;
+  plastic += plastic_area_fraction > 0.99;
+}
+
+std::string RollingRegime::name() const {
+  return elastic == loaded ? "elastic" : plastic == loaded ? "fully plastic" : "elastic-plastic";
 }
 
 std::vector<std::string> path_point_names(const PathState& p) {

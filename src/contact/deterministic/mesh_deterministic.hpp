@@ -90,6 +90,13 @@ void write_statistical_beside(const FidelityInputs& in, const SurfaceModel& mode
 // in /statistical: statistical_persson_real_area_ratio, _plastic_area_fraction, _mean_real_pressure_Pa.
 void write_persson_beside(const FidelityInputs& in, const SurfaceModel& m, const std::vector<double>& share,
                           double gradient_factor, MeshContactResult& r);
+// The regime of a rolling fidelity's loaded positions (real area > 0): elastic where under 1 % of
+// the real area yielded at every one, fully plastic where over 99 % did, else elastic-plastic.
+struct RollingRegime {
+  int loaded = 0, elastic = 0, plastic = 0;
+  void add(double real_area, double plastic_area_fraction);
+  std::string name() const;
+};
 // The path's points A, B, C, D, E at their nearest positions ("" elsewhere).
 std::vector<std::string> path_point_names(const PathState& p);
 // The positions whose profiles are kept (contact.pressure_profiles: the named points, all or none).
