@@ -48,7 +48,8 @@ struct ArealOptions {
   double hardness = std::numeric_limits<double>::infinity();  // the pressure cap H [Pa]; inf: elastic
   // The contact conditions' residual at which the iteration stops: the rms over the grid of the gap
   // where there is pressure, the interpenetration where there is none and the gap where the pressure
-  // is capped, over the heights' rms.
+  // is capped, over the heights' rms (a flat surface: over a thousandth of the displacement the load
+  // makes over the window, or of the approach). Under load control the load is also exact to 1e-9.
   double tolerance = 1e-8;
   int max_iterations = 20000;
   void validate() const;  // core::KeyedError naming the field
@@ -120,10 +121,11 @@ ContactSpots contact_spots(const ArealGrid& g, std::span<const double> pressure)
 
 // The stress under the surface from its pressure (the normal pressure alone: no traction), on planes
 // at the given depths: the von Mises stress's maximum on each and where. Each Fourier mode's field is
-// the plane-strain one of a harmonic pressure (Johnson 1985 section 2.? via the Airy function
-// (A + B z) e^{-kz} cos kx) turned to the mode's direction; the mean pressure adds sigma_zz = -pbar
-// alone (the lateral stress of a uniform pressure is the body's beyond the window). An open
-// direction's field is the zero-padded window's: its periodic images lie a window away.
+// the plane-strain one of a harmonic pressure P cos(ks), from the Airy function
+// (P/k^2)(1 + kz) e^{-kz} cos(ks) (docs/theory/areal-contact.md), turned to the mode's direction. The
+// mean pressure adds sigma_zz = -pbar and, along an open direction (the zero-padded window's, its
+// images a window away), the images' lateral stress, the q -> 0 limit along it; a window periodic
+// both ways takes sigma_zz alone (its lateral stress is the body's beyond the window).
 struct SubsurfacePlane {
   double depth = 0.0;        // [m]
   double max_von_mises = 0;  // [Pa]
