@@ -759,8 +759,9 @@ std::vector<SubsurfacePlane> subsurface_von_mises(const ElasticKernel& kernel, s
       if (fields) vm[k] = v;
       if (v > plane.max_von_mises) {
         plane.max_von_mises = v;
-        plane.x = static_cast<double>(k % static_cast<std::size_t>(nx)) * g.dx;
-        plane.y = static_cast<double>(k / static_cast<std::size_t>(nx)) * g.dy;
+        const std::size_t row = k / static_cast<std::size_t>(nx), column = k % static_cast<std::size_t>(nx);
+        plane.x = static_cast<double>(column) * g.dx;
+        plane.y = static_cast<double>(row) * g.dy;
       }
     }
     if (fields) fields->push_back(std::move(vm));
