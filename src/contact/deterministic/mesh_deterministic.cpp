@@ -383,6 +383,14 @@ std::vector<bool> kept_profiles(const ContactSettings& cs, const PathState& p) {
   return keep;
 }
 
+double FlankMap::at(double sigma, int j) const {
+  const double u = (sigma - start) / dx;
+  const int i = std::clamp(static_cast<int>(std::floor(u)), 0, nx - 2);
+  const double t = std::clamp(u - i, 0.0, 1.0);
+  const double* row = &z[static_cast<std::size_t>(j) * nx];
+  return row[i] + t * (row[i + 1] - row[i]);
+}
+
 namespace deterministic {
 
 namespace {
@@ -539,9 +547,16 @@ void BoundaryElements::write(const FidelityInputs& in, State& st, Solution& s, M
         {static_cast<int>(k), names[k], in.path.s[k], x, std::move(s.first.strips[k].pressure)});
   }
   if (!s.running_in) return;
-  using H = HistoryRow;
+  write_running_in_history(s.history, *s.running_in);
+  r.running_in = std::move(s.running_in);
+}
+
+}  // namespace deterministic
+
+void write_running_in_history(const std::vector<deterministic::HistoryRow>& history, RunningInResult& ri) {
+  using H = deterministic::HistoryRow;
   using C = Column<H>;
-  add_columns<H>(s.running_in->history, s.history,
+  add_columns<H>(ri.history, history,
                  {C{"mesh", "1", [](const H& h) { return h.mesh; }},
                   C{"new_plastic_deformation_m", "m", [](const H& h) { return h.new_plastic; }},
                   C{"real_area_ratio_mean", "1", [](const H& h) { return h.real_area; }},
@@ -555,9 +570,6 @@ void BoundaryElements::write(const FidelityInputs& in, State& st, Solution& s, M
                   C{"wheel_peak_height_m", "m", [](const H& h) { return h.flank[1].peak_height; }},
                   C{"wheel_rsk", "1", [](const H& h) { return h.flank[1].rsk; }},
                   C{"wheel_summit_radius_m", "m", [](const H& h) { return h.flank[1].summit_radius; }}});
-  r.running_in = std::move(s.running_in);
 }
-
-}  // namespace deterministic
 
 }  // namespace geartrib::contact

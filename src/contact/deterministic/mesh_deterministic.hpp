@@ -47,10 +47,22 @@ struct FlankSpan {
   double centred_start(int g, double length) const { return 0.5 * (active_first[g] + active_last[g]) - 0.5 * length; }
 };
 
+// A flank's height map over its stretch of the involute and a window across the face (the areal
+// fidelity's): z(sigma, y) at sigma = start + i dx, y = j dy (periodic across the face) [m].
+struct FlankMap {
+  int nx = 0, ny = 0;
+  double start = 0.0, dx = 0.0, dy = 0.0;  // [m]
+  std::vector<double> z;                   // [m], z[j * nx + i]
+  // The height at sigma on row j, linear between the map's points (sigma inside the map).
+  double at(double sigma, int j) const;
+};
+
 // The flanks a run rolls, supplied by the caller for the span: one track per tooth (`teeth[g]`
-// of them: 1 for a pair, z for the hunting order), each covering [first, last] of its gear.
+// of them: 1 for a pair, z for the hunting order), each covering [first, last] of its gear. The
+// areal fidelity's patch lay also takes each tooth's map from the caller (the track: its middle row).
 struct RollingFlanks {
   std::vector<FlankTrack> pinion, wheel;
+  std::vector<FlankMap> pinion_maps, wheel_maps;
 };
 
 // What every fidelity that rolls the flanks' profiles shares (the deterministic one, the mixed-EHL
@@ -183,5 +195,10 @@ struct BoundaryElements {
 };
 
 }  // namespace deterministic
+
+// The running-in history's series (/running_in: mesh, new plastic deformation, the path's mean real
+// area and plastic fraction, the peak pressure, each flank's Rq, peak height, Rsk and summit radius),
+// shared by the rolling fidelities that run in.
+void write_running_in_history(const std::vector<deterministic::HistoryRow>& history, RunningInResult& ri);
 
 }  // namespace geartrib::contact
