@@ -114,6 +114,8 @@ void generate(const GenerateOptions& o) {
     if (o.kind == "ground") {
       g = surface::gaussian_surface(s);
     } else {
+      if (!(o.plateau > 0.0 && o.plateau < 1.0))
+        throw std::invalid_argument(fmt::format("--plateau {:g}: the area cut flat must lie in (0, 1)", o.plateau));
       surface::SuperfinishedSpec f;
       f.ground = s;
       f.plateau = o.plateau;

@@ -368,7 +368,8 @@ void generated_tracks(const FlankRead& f, std::vector<contact::FlankTrack>& trac
 // The areal fidelity's patch lay: each tooth's map of the flank from the measured patch, synthesised
 // from its areal spectrum (seed + tooth) or tiled, over the span at the elements' spacing along the
 // involute and areal.window across the face; its track, the map's middle row.
-void patch_maps(const FlankRead& f, std::vector<contact::FlankTrack>& tracks, std::vector<contact::FlankMap>& maps) {
+void patch_maps(const FlankRead& f, std::vector<contact::FlankTrack>& tracks, std::vector<contact::FlankMap>& maps,
+                std::vector<contact::FlankSynthesis>& synthesis) {
   const contact::FlankSpan& span = f.span;
   const contact::areal::ArealMeshOptions& o = f.c.contact.areal;
   const surface::TopographySpec& topo = *f.flank.topography;
@@ -423,24 +424,29 @@ void patch_maps(const FlankRead& f, std::vector<contact::FlankTrack>& tracks, st
   }
   const int g = f.g;
   const double start = span.first[g] - dx;
+  const bool tiled = o.patch == contact::areal::ArealPatch::tiled;
+  contact::FlankSynthesis record;  // what the maps came from, as a profile synthesis is recorded
+  record.gear = f.gear, record.patch = topo.file, record.method = tiled ? "areal-tiled" : "areal-synthesis";
+  record.seed = static_cast<double>(topo.synthesis_seed), record.teeth = f.teeth;
+  record.patch_lines = patch.ny, record.patch_points = patch.nx, record.patch_spacing = patch.dx;
+  record.patch_rq = spectrum.patch_rq;
   const int nx = static_cast<int>(std::ceil(span.length(g) / dx)) + 3, ny = o.points;
   for (int tooth = 0; tooth < f.teeth; ++tooth) {
     contact::FlankMap m;
     m.nx = nx, m.ny = ny, m.start = start, m.dx = dx, m.dy = dy;
     try {
-      if (o.patch == contact::areal::ArealPatch::tiled) {
+      if (tiled) {
         // Tooth t starts a patch's length further along its mirror images.
         m.z = surface::tile_surface(patch, nx, ny, dx, dy, tooth * spectrum.length_x()).z;
       } else {
         // Periodic along the involute over an FFT-friendly length, cut to the map's.
         const int mx = static_cast<int>(fast_fft_size(static_cast<std::size_t>(nx)));
-        const surface::HeightGrid full =
-            surface::synthesise_surface(spectrum, mx, ny, dx, dy,
-                                        topo.synthesis_seed + static_cast<std::uint64_t>(tooth))
-                .grid;
+        const surface::SynthesisedSurface full = surface::synthesise_surface(
+            spectrum, mx, ny, dx, dy, topo.synthesis_seed + static_cast<std::uint64_t>(tooth));
+        if (tooth == 0) record.rolled_off_fraction = 1.0 - full.resolved_fraction;
         m.z.resize(static_cast<std::size_t>(nx) * ny);
         for (int j = 0; j < ny; ++j)
-          std::copy_n(&full.z[static_cast<std::size_t>(j) * mx], nx, &m.z[static_cast<std::size_t>(j) * nx]);
+          std::copy_n(&full.grid.z[static_cast<std::size_t>(j) * mx], nx, &m.z[static_cast<std::size_t>(j) * nx]);
       }
     } catch (const std::invalid_argument& e) {
       throw io::located_error(f.c, "areal.patch",
@@ -450,8 +456,14 @@ void patch_maps(const FlankRead& f, std::vector<contact::FlankTrack>& tracks, st
     surface::FlankProfile row{dx, std::vector<double>(&m.z[static_cast<std::size_t>(ny / 2) * nx],
                                                       &m.z[static_cast<std::size_t>(ny / 2) * nx] + nx)};
     tracks.push_back({std::move(row), start});
+    if (tooth == 0) {
+      double ms = 0.0;
+      for (double z : m.z) ms += z * z;
+      record.profile_length = (nx - 1) * dx, record.profile_rq = std::sqrt(ms / static_cast<double>(m.z.size()));
+    }
     maps.push_back(std::move(m));
   }
+  synthesis.push_back(std::move(record));
 }
 
 // A rolling fidelity's flanks (deterministic, mixed EHL): each gear's measured profile (its
@@ -492,7 +504,7 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
                                          "[{}.flank.topography] an areal surface (not a profile trace)",
                                          gear));
       }
-      patch_maps(f, tracks, g == 0 ? out.pinion_maps : out.wheel_maps);
+      patch_maps(f, tracks, g == 0 ? out.pinion_maps : out.wheel_maps, synthesis);
     } else if (topo && topo->synthesis != surface::SynthesisMethod::none) {
       synthesised_tracks(f, tracks, synthesis);
     } else if (f.flank.measured_profile) {

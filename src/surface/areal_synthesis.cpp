@@ -38,7 +38,7 @@ double ArealSpectrum::variance() const {
   double sum = 0.0;
   for (int l = 0; l < ny; ++l)
     for (int i = 0; i < kx; ++i) sum += half_plane_weight(i, nx) * psd[static_cast<std::size_t>(l) * kx + i];
-  return sum / (length_x() * length_y());
+  return sum / (nx * dx * ny * dy);
 }
 
 double ArealSpectrum::slope_variance(bool along_x) const {
@@ -46,10 +46,10 @@ double ArealSpectrum::slope_variance(bool along_x) const {
   double sum = 0.0;
   for (int l = 0; l < ny; ++l)
     for (int i = 0; i < kx; ++i) {
-      const double q = 2.0 * kPi * (along_x ? i / length_x() : signed_bin(l, ny) / length_y());
+      const double q = 2.0 * kPi * (along_x ? i / (nx * dx) : signed_bin(l, ny) / (ny * dy));
       sum += half_plane_weight(i, nx) * q * q * psd[static_cast<std::size_t>(l) * kx + i];
     }
-  return sum / (length_x() * length_y());
+  return sum / (nx * dx * ny * dy);
 }
 
 double ArealSpectrum::element_spacing(bool along_x) const {
@@ -58,10 +58,11 @@ double ArealSpectrum::element_spacing(bool along_x) const {
 }
 
 double ArealSpectrum::at(double fx, double fy) const {
-  if (fx < 0.0) fx = -fx, fy = -fy;                       // C(-f) = C(f)
-  const double u = fx * length_x(), v = fy * length_y();  // in bins
-  constexpr double kSlack = 1e-9;                         // a bin's own frequency, rounded
-  if (u > nx / 2 + kSlack || std::abs(v) > ny / 2 + kSlack || u * u + v * v < 1.0 - kSlack) return 0.0;
+  if (fx < 0.0) fx = -fx, fy = -fy;                         // C(-f) = C(f)
+  const double u = fx * nx * dx, v = fy * ny * dy;          // in bins
+  constexpr double kSlack = 1e-9;                           // a bin's own frequency, rounded
+  const double px = fx * length_x(), py = fy * length_y();  // periods across the patch
+  if (u > nx / 2 + kSlack || std::abs(v) > ny / 2 + kSlack || px * px + py * py < 1.0 - kSlack) return 0.0;
   const int kx = nx / 2 + 1;
   const int i0 = std::min(static_cast<int>(std::floor(u)), kx - 1), i1 = std::min(i0 + 1, kx - 1);
   const double tu = std::clamp(u - i0, 0.0, 1.0);
@@ -81,38 +82,32 @@ ArealSpectrum areal_spectrum(const HeightGrid& patch) {
   if (patch.nx < 8 || patch.ny < 8)
     throw std::invalid_argument(
         fmt::format("the patch has {} x {} points: an areal spectrum needs at least 8 each way", patch.nx, patch.ny));
+  if (4 * patch.size() > kMaxGridPoints)
+    throw std::invalid_argument(
+        fmt::format("the patch's {} x {} points, mirrored to twice each way, exceed the {} a "
+                    "height map may hold: resample it coarser",
+                    patch.nx, patch.ny, kMaxGridPoints));
   ArealSpectrum s;
-  s.nx = patch.nx, s.ny = patch.ny, s.dx = patch.dx, s.dy = patch.dy;
+  s.nx = 2 * patch.nx, s.ny = 2 * patch.ny, s.dx = patch.dx, s.dy = patch.dy;
   const int nx = s.nx, ny = s.ny, kx = nx / 2 + 1;
-  auto hann = [](int n) {
-    std::vector<double> w(static_cast<std::size_t>(n));
-    for (int j = 0; j < n; ++j) w[static_cast<std::size_t>(j)] = 0.5 * (1.0 - std::cos(2.0 * kPi * j / n));
-    return w;
-  };
-  const std::vector<double> wx = hann(nx), wy = hann(ny);
-  double power_x = 0.0, power_y = 0.0, weight = 0.0, weighted = 0.0, mean = 0.0;
-  for (double w : wx) power_x += w * w;
-  for (double w : wy) power_y += w * w;
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const double w = wx[static_cast<std::size_t>(i)] * wy[static_cast<std::size_t>(j)];
-      weight += w, weighted += w * patch.at(i, j), mean += patch.at(i, j);
-    }
+  double mean = 0.0;
+  for (double z : patch.z) mean += z;
   mean /= static_cast<double>(patch.size());
   for (double z : patch.z) s.patch_rq += (z - mean) * (z - mean);
   s.patch_rq = std::sqrt(s.patch_rq / static_cast<double>(patch.size()));
-  const double weighted_mean = weighted / weight;  // removed: the windowed heights sum to zero (C(0, 0) = 0)
-  const auto real = fftw_real_array(patch.size());
+  const std::size_t size = static_cast<std::size_t>(nx) * ny;
+  const auto real = fftw_real_array(size);
   const auto spectrum = fftw_complex_array(static_cast<std::size_t>(ny) * kx);
   const FftwPlan forward([&] { return fftw_plan_dft_r2c_2d(ny, nx, real.get(), spectrum.get(), FFTW_ESTIMATE); });
+  // The even extension: point (i, j) of 2N holds the patch's (i, j) folded back at each side.
+  auto fold = [](int i, int n) { return i < n ? i : 2 * n - 1 - i; };
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
-      real[static_cast<std::size_t>(j) * nx + i] =
-          wx[static_cast<std::size_t>(i)] * wy[static_cast<std::size_t>(j)] * (patch.at(i, j) - weighted_mean);
+      real[static_cast<std::size_t>(j) * nx + i] = patch.at(fold(i, patch.nx), fold(j, patch.ny)) - mean;
   fftw_execute(forward.get());
-  // C = dx dy |Z|^2 / (sum wx^2 sum wy^2): its sum times dfx dfy = sum (w z)^2 / (sum wx^2 sum wy^2).
+  // C = dx dy |Z|^2 / (nx ny): its sum times dfx dfy = sum z^2 / (nx ny), the variance.
   s.psd.resize(static_cast<std::size_t>(ny) * kx);
-  const double scale = s.dx * s.dy / (power_x * power_y);
+  const double scale = s.dx * s.dy / static_cast<double>(size);
   for (std::size_t k = 0; k < s.psd.size(); ++k)
     s.psd[k] = scale * (spectrum[k][0] * spectrum[k][0] + spectrum[k][1] * spectrum[k][1]);
   s.psd[0] = 0.0;

@@ -226,8 +226,8 @@ Areal::State Areal::prepare(const FidelityInputs& in, StageClock& clock) {
     st.maps = {std::move(st.flanks.pinion_maps), std::move(st.flanks.wheel_maps)};
   } else if (lay != ArealLay::extruded || span.running_in) {
     st.maps = flank_maps(in, span, st.flanks);
+    clock.lap("flank_maps");
   }
-  if (!st.maps[0].empty()) clock.lap("flank_maps");
   switch (lay) {
     case ArealLay::extruded:
       st.gradient_factor = 1.0;
