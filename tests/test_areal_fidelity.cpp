@@ -28,18 +28,6 @@ const std::vector<double>& values(const contact::MeshContactResult& r, const std
   if (!s) throw std::logic_error("no series " + name);
   return s->values;
 }
-// The autocorrelation of the grid's heights at a lag of k points along x (or y, cyclic), over Rq^2.
-double autocorrelation(const surface::HeightGrid& g, int k, bool along_x) {
-  double sum = 0.0, var = 0.0;
-  std::size_t n = 0;
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) {
-      var += g.at(i, j) * g.at(i, j);
-      if (along_x && i + k >= g.nx) continue;
-      sum += g.at(i, j) * (along_x ? g.at(i + k, j) : g.at(i, (j + k) % g.ny)), ++n;
-    }
-  return sum / static_cast<double>(n) / (var / static_cast<double>(g.size()));
-}
 }  // namespace
 
 TEST(GaussianSurface, RqExactAndTheProfileAutocorrelationInBothDirections) {
@@ -58,8 +46,8 @@ TEST(GaussianSurface, RqExactAndTheProfileAutocorrelationInBothDirections) {
   EXPECT_NEAR(mean / static_cast<double>(g.size()), 0.0, 1e-20);
   EXPECT_NEAR(std::sqrt(var / static_cast<double>(g.size())), s.rq, 1e-15);
   for (bool along_x : {true, false}) {
-    EXPECT_NEAR(autocorrelation(g, 16, along_x), std::exp(-1.0), 0.04) << along_x;
-    EXPECT_NEAR(autocorrelation(g, 8, along_x), std::exp(-0.25), 0.04) << along_x;
+    EXPECT_NEAR(test::autocorrelation(g, 16, along_x), std::exp(-1.0), 0.04) << along_x;
+    EXPECT_NEAR(test::autocorrelation(g, 8, along_x), std::exp(-0.25), 0.04) << along_x;
   }
   // Periodic along y: the last row is the first row's neighbour, correlated as rows one point apart
   // are (exp(-1/256) = 0.996; rows of an open field that far apart would not be: about 0).

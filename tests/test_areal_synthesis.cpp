@@ -5,6 +5,7 @@
 #include "core/fftw_planner.hpp"
 #include "surface/areal_synthesis.hpp"
 #include "surface/synthetic_surface.hpp"
+#include "test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -35,6 +36,19 @@ double slope_variance(const surface::HeightGrid& g, bool along_x) {
       s += d * d, ++n;
     }
   return s / static_cast<double>(n);
+}
+// A self-affine surface of n x n points at 0.5 um with a lay along x (correlation 3 x longer along it),
+// Rq 0.3 um, roll-off 20 um, cut-off 2 um.
+surface::SelfAffineSpec lay_along_x(int n) {
+  surface::SelfAffineSpec p;
+  p.nx = p.ny = n;
+  p.spacing = 0.5e-6;
+  p.rq = 0.3e-6;
+  p.rolloff_wavelength = 20e-6;
+  p.cutoff_wavelength = 2e-6;
+  p.anisotropy = 3.0;
+  p.seed = 4;
+  return p;
 }
 }  // namespace
 
@@ -74,14 +88,7 @@ TEST(ArealSpectrum, AMeasuredCutOfAKnownSurfaceKeepsItsSlopesAndVariance) {
   // spectrum's slope variances each way within 15 % of the parent's (finite differences over the
   // whole surface), and the share of variance it resolves within 10 % of the parent's share at the
   // wavelengths the cut holds, at three places (a cut holds about three roll-off lengths each way).
-  surface::SelfAffineSpec p;
-  p.nx = p.ny = 1024;
-  p.spacing = 0.5e-6;
-  p.rq = 0.3e-6;
-  p.rolloff_wavelength = 20e-6;
-  p.cutoff_wavelength = 2e-6;
-  p.anisotropy = 3.0;
-  p.seed = 4;
+  const surface::SelfAffineSpec p = lay_along_x(1024);
   const surface::HeightGrid parent = surface::self_affine_surface(p);
   const double along = slope_variance(parent, true), across = slope_variance(parent, false);
   ASSERT_GT(across / along, 5.0);  // a lay to keep
@@ -124,14 +131,7 @@ TEST(ArealSpectrum, AMeasuredCutOfAKnownSurfaceKeepsItsSlopesAndVariance) {
 TEST(ArealSynthesis, FixedAmplitudesGiveTheSpectrumsVarianceAndKeepTheLay) {
   // A self-affine patch with a lay along x (correlation 3 x longer along it), 128^2 at 0.5 um,
   // synthesised onto a map 4 x longer along x and 2 x across.
-  surface::SelfAffineSpec p;
-  p.nx = p.ny = 128;
-  p.spacing = 0.5e-6;
-  p.rq = 0.3e-6;
-  p.rolloff_wavelength = 20e-6;
-  p.cutoff_wavelength = 2e-6;
-  p.anisotropy = 3.0;
-  p.seed = 4;
+  const surface::SelfAffineSpec p = lay_along_x(128);
   const surface::HeightGrid patch = surface::self_affine_surface(p);
   const surface::ArealSpectrum s = surface::areal_spectrum(patch);
   const int nx = 512, ny = 256;
@@ -198,17 +198,7 @@ TEST(GeneratedSurfaces, GroundLayAndIsotropicIdentity) {
   s.correlation_length_y = 32e-6;
   s.seed = 3;
   const surface::HeightGrid g = surface::gaussian_surface(s);
-  auto acf = [&](int k, bool along_x) {
-    double sum = 0.0, var = 0.0;
-    std::size_t n = 0;
-    for (int j = 0; j < g.ny; ++j)
-      for (int i = 0; i < g.nx; ++i) {
-        var += g.at(i, j) * g.at(i, j);
-        if (along_x && i + k >= g.nx) continue;
-        sum += g.at(i, j) * (along_x ? g.at(i + k, j) : g.at(i, (j + k) % g.ny)), ++n;
-      }
-    return sum / static_cast<double>(n) / (var / static_cast<double>(g.size()));
-  };
+  auto acf = [&](int k, bool along_x) { return test::autocorrelation(g, k, along_x); };
   EXPECT_NEAR(acf(8, true), std::exp(-1.0), 0.05);
   EXPECT_NEAR(acf(32, false), std::exp(-1.0), 0.08);  // fewer correlation lengths along y: more scatter
   EXPECT_NEAR(acf(8, false), std::exp(-1.0 / 16.0), 0.03);

@@ -362,20 +362,7 @@ deterministic::HistoryRow areal_history_row(int mesh, const std::vector<const Ar
                                             const Areal::State& st) {
   deterministic::HistoryRow row;
   row.mesh = mesh;
-  if (!passes.empty()) {
-    row.new_plastic = row.real_area = row.plastic_fraction = row.peak_pressure = 0.0;
-    for (const ArealMeshPass* p : passes) {
-      std::vector<double> area, fraction;
-      for (const auto& s : p->strips) {
-        area.push_back(s.real_area_ratio);
-        fraction.push_back(s.plastic_area_fraction);
-        row.peak_pressure = std::max(row.peak_pressure, s.peak_pressure);
-      }
-      row.new_plastic = std::max(row.new_plastic, p->max_new_plastic);
-      row.real_area += path_mean(area) / static_cast<double>(passes.size());
-      row.plastic_fraction += path_mean(fraction) / static_cast<double>(passes.size());
-    }
-  }
+  row.add_passes(passes);
   for (int g = 0; g < 2; ++g) row.flank[g] = map_statistics(st.maps[static_cast<std::size_t>(g)], st.span, g);
   return row;
 }

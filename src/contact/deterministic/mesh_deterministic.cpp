@@ -122,20 +122,7 @@ HistoryRow history_row(int mesh, const std::vector<const MeshPass*>& passes,
                        const std::vector<const FlankTrack*> tracks[2], const FlankSpan& span) {
   HistoryRow row;
   row.mesh = mesh;
-  if (!passes.empty()) {
-    row.new_plastic = row.real_area = row.plastic_fraction = row.peak_pressure = 0.0;
-    for (const MeshPass* p : passes) {
-      std::vector<double> area, fraction;
-      for (const auto& s : p->strips) {
-        area.push_back(s.real_area_ratio);
-        fraction.push_back(s.plastic_area_fraction);
-        row.peak_pressure = std::max(row.peak_pressure, s.peak_pressure);
-      }
-      row.new_plastic = std::max(row.new_plastic, p->max_new_plastic);
-      row.real_area += path_mean(area) / static_cast<double>(passes.size());
-      row.plastic_fraction += path_mean(fraction) / static_cast<double>(passes.size());
-    }
-  }
+  row.add_passes(passes);
   for (int g = 0; g < 2; ++g) {  // the teeth's mean statistics, at the elements' sampling
     surface::ProfileStatistics& m = row.flank[g];
     for (const FlankTrack* t : tracks[g]) {

@@ -7,8 +7,10 @@
 #include "contact/deterministic_contact.hpp"
 #include "contact/fidelity.hpp"
 #include "contact/half_plane_bem.hpp"
+#include "contact/mesh_contact.hpp"
 #include "contact/statistical/strip_fidelities.hpp"
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <optional>
@@ -160,6 +162,25 @@ struct HistoryRow {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();  // row 0: before any mesh
   double mesh = 0.0, new_plastic = kNaN, real_area = kNaN, plastic_fraction = kNaN, peak_pressure = kNaN;
   surface::ProfileStatistics flank[2];
+  // A mesh's passes (one per tooth pair; each with strips of real_area_ratio, plastic_area_fraction and
+  // peak_pressure, and its max_new_plastic): the deepest new plastic deformation, the path's mean real
+  // area and plastic share over the passes, the peak pressure.
+  template <class Pass>
+  void add_passes(const std::vector<const Pass*>& passes) {
+    if (passes.empty()) return;
+    new_plastic = real_area = plastic_fraction = peak_pressure = 0.0;
+    for (const Pass* p : passes) {
+      std::vector<double> area, fraction;
+      for (const auto& s : p->strips) {
+        area.push_back(s.real_area_ratio);
+        fraction.push_back(s.plastic_area_fraction);
+        peak_pressure = std::max(peak_pressure, s.peak_pressure);
+      }
+      new_plastic = std::max(new_plastic, p->max_new_plastic);
+      real_area += path_mean(area) / static_cast<double>(passes.size());
+      plastic_fraction += path_mean(fraction) / static_cast<double>(passes.size());
+    }
+  }
 };
 
 // The flanks' profiles rolled through the strip by boundary elements, with the statistical model
