@@ -595,13 +595,13 @@ std::string MeshLubrication::verdict_text(const LubricationSummary& sum) const {
                : w <= 0.0 ? "by " + law + plastic
                           : fmt::format("by a blend, {:.2f} bearing area and {:.2f} {}{}", w, 1.0 - w, law, plastic);
   }
-  std::string text = fmt::format(
-      " Lubricated ({}): the film fills the {} between the rough flanks and the asperities press {}", sum.lubricant,
-      persson_ && w < 1.0                     ? "mean gap (Persson's, between the deformed flanks)"
-      : film_gap_ == lub::FilmGap::mean_gap   ? "mean gap"
-      : film_gap_ == lub::FilmGap::mean_plane ? "separation of the mean planes"
-                                              : "gap counted from the dry contact",
-      pressure);
+  std::string text =
+      fmt::format(" Lubricated ({}): the film fills the {} and the asperities press {}", sum.lubricant,
+                  persson_ && w < 1.0                     ? "mean gap between the deformed rough flanks (Persson's)"
+                  : film_gap_ == lub::FilmGap::mean_gap   ? "mean gap between the rough flanks"
+                  : film_gap_ == lub::FilmGap::mean_plane ? "separation of the mean planes between the rough flanks"
+                                                          : "gap counted from the dry contact between the rough flanks",
+                  pressure);
   const std::string between =
       persson_ ? fmt::format(
                      "Persson's law and the {} model's closure at the mean gap, the mean plane and the "
