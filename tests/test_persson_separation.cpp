@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <numbers>
 #include <vector>
@@ -231,7 +232,8 @@ TEST(PerssonSeparation, MeanGapOfTheArealBoundaryElements) {
   const areal::ElasticKernel kernel(grid, e);
   areal::ArealOptions options;
   options.composite_modulus = e;
-  const std::vector<double> loads = {0.01, 0.03, 0.1};  // p/(E* h'_rms)
+  // p/(E* h'_rms): the lighter three measured and printed, not asserted (above).
+  const std::vector<double> loads = {1e-4, 1e-3, 3e-3, 0.01, 0.03, 0.1};
   std::vector<double> mean_gap(loads.size(), 0.0);
   const int seeds = 3;
   for (int seed = 1; seed <= seeds; ++seed) {
@@ -250,6 +252,10 @@ TEST(PerssonSeparation, MeanGapOfTheArealBoundaryElements) {
   }
   for (std::size_t i = 0; i < loads.size(); ++i) {
     const double u = persson.separation(loads[i] * e * persson.rms_gradient());
-    EXPECT_NEAR(u / mean_gap[i], 1.0, 0.08) << loads[i] << ": Persson " << u / rq << " rq, BEM " << mean_gap[i] / rq;
+    std::cout << "p/(E* h'_rms) " << loads[i] << ": Persson u " << u / rq << " rq, boundary elements "
+              << mean_gap[i] / rq << " rq (" << 100.0 * (u / mean_gap[i] - 1.0) << " %)\n";
+    if (loads[i] >= 0.01) {
+      EXPECT_NEAR(u / mean_gap[i], 1.0, 0.08) << loads[i];
+    }
   }
 }
