@@ -465,6 +465,9 @@ check areal-lay-ratio-range 2 "key 'areal.lay_ratio' = 0.5" -- \
 check areal-patch-finer-elements 2 "key 'contact.element_size' = 0.2 um: finer than the spacing along x of surfaces/pinion-flank.h5" -- \
   "$bin" run gears/m6z30-measured.toml --set contact.fidelity=areal --set areal.lay=patch --set element_size=0.2um --positions 2 -o "$tmp/areal-bad.h5" -q
 [[ ! -e "$tmp/areal-bad.h5" ]] && echo "ok   areal-nothing-written" || { echo "FAIL areal-bad.h5 written"; fail=1; }
+# Persson's closure takes Gaussian heights: exponential ones refused at the key.
+check persson-exponential 2 "key 'lubrication.asperity_pressure' = persson: Persson's theory takes Gaussian heights" -- \
+  "$bin" run gears/m6z30.toml --set lubrication.asperity_pressure=persson --set roughness.distribution=exponential -o "$tmp/persson-bad.h5" -q
 # Generated ground and superfinished surfaces: written; a plateau outside (0, 1) refused, naming it.
 check surface-generate-ground 0 "" -- "$bin" surface generate ground -o "$tmp/ground.h5" --nx 64 --ny 64 --correlation 4um
 check surface-generate-superfinished 0 "" -- "$bin" surface generate superfinished -o "$tmp/sf.h5" --nx 64 --ny 64 --correlation 4um

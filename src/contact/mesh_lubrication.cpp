@@ -73,6 +73,11 @@ MeshLubrication::MeshLubrication(const LubricationInputs& in, const gear::GearMe
       bulk_law_(in.lubrication.mean_friction) {
   reduced_modulus_ = 2.0 * mesh.composite_modulus();
   if (lubrication_.asperity_pressure == lub::AsperityPressureModel::persson) {
+    if (model.flanks.distribution != surface::HeightDistribution::gaussian)
+      throw core::KeyedError("lubrication.asperity_pressure",
+                             "Persson's theory takes Gaussian heights (its diffusion of the pressure and its mean gap "
+                             "both assume them), and roughness.distribution is exponential: take the Gaussian heights "
+                             "or another asperity pressure (auto, asperity-model, bearing-area)");
     try {
       spectrum_ = flank_spectrum(in.flank_specs, model.surface);
     } catch (const std::invalid_argument& e) {

@@ -47,8 +47,8 @@ double areal_run_bytes(const FlankSpan& span, const ArealMeshOptions& o, const i
       const double points = 8.0 * (std::ceil(span.length(g) / span.element_size) + 3.0) * o.points;
       maps += points * (teeth[g] + (g == 0 ? 2.5 : 0.0));
     }
-  if (span.running_in)
-    maps += 8.0 * (std::ceil(span.length(0) / span.element_size) + 3.0) * o.points;  // a pass's deformation
+  if (span.running_in)  // a pass's deformation of each flank's map
+    for (int g = 0; g < 2; ++g) maps += 8.0 * (std::ceil(span.length(g) / span.element_size) + 3.0) * o.points;
   ArealGrid w;
   w.nx = span.elements, w.ny = o.points, w.dx = span.element_size, w.dy = o.spacing();
   w.periodic_x = false, w.periodic_y = true;
@@ -262,10 +262,10 @@ struct ArealMeshSetup {
   const ElasticKernel& kernel;
   const ArealOptions& options;
   const std::vector<double>& share;
-  std::vector<bool> keep;  // the positions whose pressure profiles are kept (first mesh only)
+  std::vector<bool> keep;  // the positions whose pressure profiles are kept (the first mesh's only)
 };
 
-ArealMeshPass areal_mesh_pass(const ArealMeshSetup& m, int pinion_tooth, int wheel_tooth, bool running_in,
+ArealMeshPass areal_mesh_pass(const ArealMeshSetup& m, int pinion_tooth, int wheel_tooth, bool running_in, bool first,
                               const std::function<void(int)>& solved) {
   const FidelityInputs& in = m.in;
   const Areal::State& st = m.st;
@@ -287,7 +287,7 @@ ArealMeshPass areal_mesh_pass(const ArealMeshSetup& m, int pinion_tooth, int whe
   const int n = static_cast<int>(p.size());
   for (int k = 0; k < n; ++k) {
     const auto kk = static_cast<std::size_t>(k);
-    const bool keep = kk < m.keep.size() && m.keep[kk];
+    const bool keep = first && kk < m.keep.size() && m.keep[kk];
     ArealStrip s;
     const double w = p.line_load[kk] * m.share[kk], b = p.half_width[kk];
     if (w > 0.0) {
@@ -414,7 +414,7 @@ Areal::Solution Areal::solve(const FidelityInputs& in, State& st, const std::vec
     for (int k = 0; k < per_round; ++k) {
       const long mesh_number = static_cast<long>(round - 1) * per_round + k;
       const int wheel_tooth = static_cast<int>(mesh_number % st.teeth[1]);
-      passes.push_back(areal_mesh_pass(setup, k, wheel_tooth, running_in, [&](int done) {
+      passes.push_back(areal_mesh_pass(setup, k, wheel_tooth, running_in, round == 1 && k == 0, [&](int done) {
         if (in.progress) in.progress(solved + done, total);
       }));
       solved += n;
