@@ -456,6 +456,20 @@ check areal-narrow-window 2 "key 'areal.window' = 8e-06 m: the window across the
   "$bin" run gears/m6z30-areal.toml --set areal.window=8um -o "$tmp/areal-bad.h5" -q
 check areal-hobbed-isotropic 2 "key 'areal.lay'.*an isotropic map is made from a generated ground profile" -- \
   "$bin" run gears/m6z30-areal.toml --set pinion.flank.profile.kind=hobbed -o "$tmp/areal-bad.h5" -q
+# The patch lay: a measured patch synthesised into the flanks' maps; refused without a topography, or
+# with a lay ratio out of its range.
+check areal-patch-no-topography 2 "key 'areal.lay' = patch: the patch lay makes each flank's map from its measured topography" -- \
+  "$bin" run gears/m6z30-areal.toml --set areal.lay=patch -o "$tmp/areal-bad.h5" -q
+check areal-lay-ratio-range 2 "key 'areal.lay_ratio' = 0.5" -- \
+  "$bin" run gears/m6z30-areal.toml --set areal.lay=directional --set areal.lay_ratio=0.5 -o "$tmp/areal-bad.h5" -q
+check areal-patch-finer-elements 2 "key 'contact.element_size' = 0.2 um: finer than the spacing along x of surfaces/pinion-flank.h5" -- \
+  "$bin" run gears/m6z30-measured.toml --set contact.fidelity=areal --set areal.lay=patch --set element_size=0.2um --positions 2 -o "$tmp/areal-bad.h5" -q
 [[ ! -e "$tmp/areal-bad.h5" ]] && echo "ok   areal-nothing-written" || { echo "FAIL areal-bad.h5 written"; fail=1; }
+# Generated ground and superfinished surfaces: written; a plateau outside (0, 1) refused, naming it.
+check surface-generate-ground 0 "" -- "$bin" surface generate ground -o "$tmp/ground.h5" --nx 64 --ny 64 --correlation 4um
+check surface-generate-superfinished 0 "" -- "$bin" surface generate superfinished -o "$tmp/sf.h5" --nx 64 --ny 64 --correlation 4um
+check surface-generate-plateau 2 "--plateau 1.5: the area cut flat must lie in \(0, 1\)" -- \
+  "$bin" surface generate superfinished -o "$tmp/sf-bad.h5" --nx 64 --ny 64 --plateau 1.5
+[[ ! -e "$tmp/sf-bad.h5" ]] && echo "ok   superfinished-nothing-written" || { echo "FAIL sf-bad.h5 written"; fail=1; }
 
 exit $fail

@@ -1,7 +1,8 @@
 // The mixed-lubrication closure: the mean gap and bearing area of the composite heights against
 // quadrature, the asperity pressure of the sharing (asperity model, bearing area, their blend),
-// measured traction curves, and, through the mesh cycle, the named points where they stand and the
-// roughness lambda is computed with.
+// measured traction curves, Persson's separation law in the closure (at the mean gap, the flanks'
+// spectrum, the datum it refuses, the mesh cycle's film against his u), and, through the mesh cycle,
+// the named points where they stand and the roughness lambda is computed with.
 #include "case/asperity_setup.hpp"
 #include "case/contact_setup.hpp"
 #include "config/case_file.hpp"
@@ -11,6 +12,8 @@
 #include "contact/greenwood_williamson.hpp"
 #include "contact/mesh_contact.hpp"
 #include "contact/mesh_lubrication.hpp"
+#include "contact/persson_contact.hpp"
+#include "contact/surface_model.hpp"
 #include "gear/gear_mesh.hpp"
 #include "lubrication/film_closure.hpp"
 #include "lubrication/lubricant.hpp"
@@ -83,6 +86,18 @@ TEST(FilmClosure, MeanGapLimitsAndInverse) {
   EXPECT_EQ(film_gap(FilmGap::mean_plane, s, -0.3e-6, 0.0), -0.3e-6);
 }
 
+TEST(FilmClosure, MeanGapHeightInvertsTheMeanGap) {
+  for (auto distribution : {surface::HeightDistribution::gaussian, surface::HeightDistribution::exponential})
+    for (double t : {1e-8, 1e-4, 0.01, 0.3, 1.0, 3.0, 30.0}) {
+      const CompositeHeights s{1.4e-6, distribution};
+      const double g = t * s.sigma;
+      EXPECT_NEAR(mean_gap(s, mean_gap_height(s, g)) / g, 1.0, 1e-11) << t;
+    }
+  EXPECT_EQ(mean_gap_height(CompositeHeights{0.0, surface::HeightDistribution::gaussian}, 2e-6), 2e-6);
+  EXPECT_THROW(mean_gap_height(CompositeHeights{1e-6, surface::HeightDistribution::gaussian}, 0.0),
+               std::invalid_argument);
+}
+
 // The seed's rough surface and its GW table.
 struct SeedSurface {
   Case c = test::lubricated_case();
@@ -123,6 +138,70 @@ TEST(AsperityPressure, ItsTwoModelsAndTheirBlend) {
   EXPECT_TRUE(bearing.saturated(1.2 * h_mean));
   EXPECT_FALSE(bearing.saturated(0.5 * h_mean));
   EXPECT_TRUE(std::isfinite(bearing.separation(1.2 * h_mean)));
+}
+
+TEST(AsperityPressure, PerssonsLawAtTheMeanGap) {
+  // Persson's pressure at the mean gap of the heights at h, less its value at the onset: the closure's
+  // separation h has mean gap u(p + p_on), and carries p; monotone; the blend with the bearing area
+  // carries p between the two.
+  const SeedSurface s;
+  const contact::RoughnessSpectrum spectrum{
+      {contact::SpectrumPart::gaussian(1e-6, 10e-6), contact::SpectrumPart::gaussian(1e-6, 10e-6)}};
+  const contact::PerssonSeparation law(spectrum, s.pair.modulus);
+  const CompositeHeights heights{spectrum.rms_height(), surface::HeightDistribution::gaussian};
+  const double hardness = s.pair.hardness;
+  const contact::AsperityPressure persson(law, heights, hardness, 0.0);
+  const contact::AsperityPressure bearing(law, heights, hardness, 1.0);
+  const contact::AsperityPressure half(law, heights, hardness, 0.5);
+  const double p_on = contact::AsperityPressure::kPerssonOnsetPressure * s.pair.modulus;
+  for (double p : {1e3, 1e6, 1e8, 1e9, 3e9}) {
+    const double h = persson.separation(p);
+    EXPECT_NEAR(mean_gap(heights, h) / law.separation(p + p_on), 1.0, 1e-11) << p;
+    EXPECT_NEAR(persson.pressure(h) / p, 1.0, 1e-9) << p;
+    const double b = half.separation(p);
+    EXPECT_NEAR(half.pressure(b) / p, 1.0, 1e-9) << p;
+    EXPECT_GE(b, std::min(h, bearing.separation(p)));
+    EXPECT_LE(b, std::max(h, bearing.separation(p)));
+  }
+  double last = std::numeric_limits<double>::infinity();
+  for (double t = -4.0; t < 40.0; t += 0.05) {
+    const double p = half.pressure(t * heights.sigma);
+    EXPECT_LE(p, last) << t;
+    last = p;
+  }
+  EXPECT_EQ(persson.pressure(persson.onset()), 0.0);
+  EXPECT_EQ(persson.separation(0.0), persson.onset());
+  // The onset: where Persson's pressure has fallen to 1e-15 E*, tens of sigma above the mean plane.
+  EXPECT_GT(persson.onset(), 10.0 * heights.sigma);
+}
+
+TEST(AsperityPressure, FlankSpectrumFromGroundProfilesOrFittedToTheSummitModel) {
+  // Flanks given by Ra: the self-affine spectrum whose moments give back the summit model (McCool's
+  // relations forward on the fitted spectrum: eta, beta and sigma of the equivalent surface).
+  const Case c = test::lubricated_case();
+  const surface::EquivalentSurface e = contact::case_equivalent_surface(c);
+  const contact::FlankSpectrum f = contact::flank_spectrum({&c.pinion.flank, &c.wheel.flank}, e);
+  ASSERT_EQ(f.spectrum.parts.size(), 1u);
+  EXPECT_FALSE(f.generated);
+  EXPECT_EQ(f.spectrum.parts[0].hurst, contact::kFittedSpectrumHurst);
+  const double m0 = f.spectrum.profile_m0(), m2 = f.spectrum.profile_m2(), m4 = f.spectrum.profile_m4();
+  EXPECT_NEAR(std::sqrt(m0) / e.surface_sigma, 1.0, 1e-12);
+  EXPECT_NEAR(m4 / (6.0 * std::numbers::pi * std::sqrt(3.0) * m2) / e.summit_density, 1.0, 1e-9);
+  EXPECT_NEAR(0.375 * std::sqrt(std::numbers::pi / m4) / e.summit_radius, 1.0, 1e-12);
+  // Two generated ground profiles: their Gaussian spectra, summed.
+  const Case g = io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30-mixed-ehl.toml"));
+  const contact::FlankSpectrum fg =
+      contact::flank_spectrum({&g.pinion.flank, &g.wheel.flank}, contact::case_equivalent_surface(g));
+  ASSERT_EQ(fg.spectrum.parts.size(), 2u);
+  EXPECT_TRUE(fg.generated);
+  EXPECT_EQ(fg.spectrum.parts[1].correlation_length, g.wheel.flank.profile->correlation_length);
+  EXPECT_NEAR(fg.spectrum.rms_height(), std::hypot(g.pinion.flank.profile->rq, g.wheel.flank.profile->rq), 1e-20);
+  // A GW product below 0.0214 makes a bandwidth m0 m4/m2^2 below 2: no self-affine spectrum has it.
+  const Case narrow =
+      io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30.toml", {{"roughness.eta_sigma_beta", "0.02"}}));
+  EXPECT_THROW(
+      contact::flank_spectrum({&narrow.pinion.flank, &narrow.wheel.flank}, contact::case_equivalent_surface(narrow)),
+      std::invalid_argument);
 }
 
 TEST(AsperityPressure, AutomaticWeightIsContinuousInThePlasticFraction) {
@@ -295,6 +374,52 @@ TEST(LubricatedCycle, TractionCurveIsTheFilmsTraction) {
   ASSERT_NE(flag, nullptr);
   EXPECT_GT(contact::path_mean(flag->values), 0.9);
   std::filesystem::remove_all(dir);
+}
+
+TEST(LubricatedCycle, PerssonsClosureFillsHisMeanGap) {
+  // Ground flanks of 0.3 um on case-hardened steel (lambda about 1.4: the film and the asperities
+  // share), Persson's closure elastic (his plastic fraction 0.70 under the whole load, below the
+  // blend's 0.9): at every position the film's thickness is his u at the asperities' share of the
+  // Hertz peak, and the spread covers the asperity model's closure at the mean gap (auto's own share).
+  const std::vector<io::CaseChange> flanks = {{"contact.fidelity", "uncoupled"},
+                                              {"pinion.flank.profile.rq", "0.3 um"},
+                                              {"wheel.flank.profile.rq", "0.3 um"},
+                                              {"pinion.material", "../materials/16MnCr5.toml"},
+                                              {"wheel.material", "../materials/16MnCr5.toml"}};
+  auto changes = flanks;
+  changes.push_back({"lubrication.asperity_pressure", "persson"});
+  const Case c = io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30-mixed-ehl.toml", changes));
+  const Case a = io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30-mixed-ehl.toml", flanks));
+  const auto r = run(c, 41);
+  const auto ra = run(a, 41);
+  EXPECT_EQ(r.lubrication_summary->bearing_area_weight, 0.0);
+  const contact::PerssonSeparation law(
+      contact::flank_spectrum({&c.pinion.flank, &c.wheel.flank}, contact::case_equivalent_surface(c)).spectrum,
+      gear::case_mesh(c).composite_modulus());
+  const double p_on = contact::AsperityPressure::kPerssonOnsetPressure * law.modulus();
+  const auto& share = r.find("asperity_load_share")->values;
+  const auto& gap = r.find("mean_gap_m")->values;
+  const auto& p0 = r.find("hertz_p0_Pa")->values;
+  const auto& spread = r.find("asperity_share_closure_spread")->values;
+  const auto& gw_share = ra.find("asperity_load_share")->values;
+  ASSERT_NE(r.find("persson_plastic_area_fraction"), nullptr);
+  ASSERT_NE(r.find("flag_persson_plastic"), nullptr);
+  for (std::size_t i = 0; i < share.size(); ++i) {
+    if (!(p0[i] > 0.0)) continue;
+    EXPECT_GT(share[i], 0.0) << i;
+    EXPECT_LT(share[i], 1.0) << i;
+    EXPECT_NEAR(gap[i] / law.separation(share[i] * p0[i] + p_on), 1.0, 1e-9) << i;
+    EXPECT_GE(spread[i] + 1e-12, std::abs(share[i] - gw_share[i])) << i;
+  }
+  // Persson's law with another film datum is refused at the key.
+  changes.push_back({"lubrication.film_gap", "mean-plane"});
+  try {
+    io::load_case(test::source_dir() / "gears/m6z30-mixed-ehl.toml", changes);
+    ADD_FAILURE() << "persson with the mean-plane datum was not refused";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.key(), "lubrication.film_gap");
+    EXPECT_NE(e.rule().find("mean-gap"), std::string::npos);
+  }
 }
 
 TEST(LubricatedSummary, NoLubricantRunsALubricatedCaseDry) {

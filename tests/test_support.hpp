@@ -7,6 +7,7 @@
 #include "case/gear_setup.hpp"
 #include "config/case_file.hpp"
 #include "config/case_prepare.hpp"
+#include "surface/height_grid.hpp"
 
 #include <filesystem>
 
@@ -31,6 +32,20 @@ inline std::vector<double> log_space(double lo, double hi, int n) {
   for (int i = 0; i < n; ++i) v.push_back(lo * std::pow(hi / lo, static_cast<double>(i) / (n - 1)));
   v.back() = hi;
   return v;
+}
+
+// The autocorrelation of a grid's heights at a lag of k points along x (open) or y (cyclic), over
+// their mean square.
+inline double autocorrelation(const surface::HeightGrid& g, int k, bool along_x) {
+  double sum = 0.0, var = 0.0;
+  std::size_t n = 0;
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      var += g.at(i, j) * g.at(i, j);
+      if (along_x && i + k >= g.nx) continue;
+      sum += g.at(i, j) * (along_x ? g.at(i + k, j) : g.at(i, (j + k) % g.ny)), ++n;
+    }
+  return sum / static_cast<double>(n) / (var / static_cast<double>(g.size()));
 }
 
 }  // namespace geartrib::test

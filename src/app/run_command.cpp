@@ -201,14 +201,20 @@ void run(const Options& o) {
             name, g->flank.topography->file, g->flank.measured->ra * 1e6, g->flank.measured->rq * 1e6,
             g->flank.measured->summits, g->flank.roughness.summit_density * 1e-12,
             g->flank.roughness.summit_radius * 1e6, g->flank.roughness.summit_sigma * 1e6);
-    for (const auto& f : r.synthesis)
+    for (const auto& f : r.synthesis) {
+      const bool map = f.method.starts_with("areal");
       fmt::print(
-          "{} flank synthesised ({}, seed {:.0f}{}) from {}: {:.0f} lines of {:.4g} um; Rq {:.4g} um along them, "
-          "{:.4g} um over {:.4g} mm ({:.1f}% of the patch's variance, at wavelengths near or beyond its length, left "
-          "out)\n",
-          f.gear, f.method, f.seed, f.teeth > 1 ? " + tooth" : "", f.patch, f.patch_lines,
-          f.patch_points * f.patch_spacing * 1e6, f.patch_rq * 1e6, f.profile_rq * 1e6, f.profile_length * 1e3,
-          100.0 * f.rolled_off_fraction);
+          "{} flank {} ({}, seed {:.0f}{}) from {}: {:.0f} lines of {:.4g} um; Rq {:.4g} um along them, {:.4g} um "
+          "over {:.4g} mm ({})\n",
+          f.gear, map ? "map made" : "synthesised", f.method, f.seed, f.teeth > 1 ? " + tooth" : "", f.patch,
+          f.patch_lines, f.patch_points * f.patch_spacing * 1e6, f.patch_rq * 1e6, f.profile_rq * 1e6,
+          f.profile_length * 1e3,
+          map ? fmt::format("its variance {:.1f}% of the patch's: no wave longer than the patch, and across the "
+                            "face only those the window holds",
+                            100.0 * (1.0 - f.rolled_off_fraction))
+              : fmt::format("{:.1f}% of the patch's variance, at wavelengths near or beyond its length, left out",
+                            100.0 * f.rolled_off_fraction));
+    }
     print_summary(r);
   }
   fmt::print("wrote {}{}{}\n", out.string(), o.csv.to_file() ? " and " + o.csv.file : "",

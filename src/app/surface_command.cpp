@@ -67,8 +67,9 @@ struct GenerateOptions {
   std::string output;
   int nx = 0, ny = 0;
   std::string spacing, rq = "0.3 um", rolloff = "30 um", short_cutoff, wavelength = "5 um", tip_radius = "6.6 um",
-                       noise = "0 um", lay_angle = "0 deg", unit = "um";
-  double hurst = 0.8, anisotropy = 1.0;
+                       noise = "0 um", lay_angle = "0 deg", unit = "um", correlation = "10 um", fine_rq = "0.02 um",
+                       fine_correlation = "2 um";
+  double hurst = 0.8, anisotropy = 0.0, plateau = 0.8;
   std::uint64_t seed = 1;
 };
 
@@ -91,10 +92,37 @@ void generate(const GenerateOptions& o) {
     s.hurst = o.hurst;
     s.rolloff_wavelength = length("--rolloff", o.rolloff);
     s.cutoff_wavelength = o.short_cutoff.empty() ? 4.0 * s.spacing : length("--short-cutoff", o.short_cutoff);
-    s.anisotropy = o.anisotropy;
+    s.anisotropy = o.anisotropy > 0.0 ? o.anisotropy : 1.0;
     s.lay_angle = quantity_option("--lay-angle", o.lay_angle, io::Dimension::angle);
     s.seed = o.seed;
     g = surface::self_affine_surface(s);
+  } else if (o.kind == "ground" || o.kind == "superfinished") {
+    surface::GaussianSurfaceSpec s;
+    if (o.nx) s.nx = o.nx;
+    if (o.ny) s.ny = o.ny;
+    if (!o.nx) s.nx = 256;
+    if (!o.ny) s.ny = 256;
+    check_size(s.nx, s.ny);
+    if (!o.spacing.empty()) s.dx = s.dy = spacing_option("--spacing", o.spacing);
+    s.rq = bounded_length("--rq", o.rq, 0.0, surface::kMaxHeight, false);
+    s.correlation_length = length("--correlation", o.correlation);
+    const double ratio = o.anisotropy > 0.0 ? o.anisotropy : 8.0;
+    if (!(ratio >= 1.0 && ratio <= 1000.0))
+      throw std::invalid_argument(fmt::format("--anisotropy {:g}: the ratio must lie in [1, 1000]", ratio));
+    s.correlation_length_y = ratio * s.correlation_length;
+    s.seed = o.seed;
+    if (o.kind == "ground") {
+      g = surface::gaussian_surface(s);
+    } else {
+      if (!(o.plateau > 0.0 && o.plateau < 1.0))
+        throw std::invalid_argument(fmt::format("--plateau {:g}: the area cut flat must lie in (0, 1)", o.plateau));
+      surface::SuperfinishedSpec f;
+      f.ground = s;
+      f.plateau = o.plateau;
+      f.fine_rq = bounded_length("--fine-rq", o.fine_rq, 0.0, surface::kMaxHeight, true);
+      f.fine_correlation = length("--fine-correlation", o.fine_correlation);
+      g = surface::superfinished_surface(f);
+    }
   } else {
     surface::HobbedSpec s;
     if (o.nx) s.nx = o.nx;
@@ -232,19 +260,34 @@ void add_surface_command(CLI::App& app) {
   auto* gen = cmd->add_subcommand(
       "generate", "Write a seeded synthetic surface: the test data (no measured flank ships with geartrib)");
   gen->add_option("kind", g->kind,
-                  "self-affine (random-phase, Hurst exponent, roll-off) or hobbed (parallel parabolic ridges)")
-      ->check(CLI::IsMember({"self-affine", "hobbed"}));
+                  "self-affine (random-phase, Hurst exponent, roll-off), ground (Gaussian correlation, a lay along "
+                  "y), superfinished (a ground surface's peaks cut to a plateau, a fine texture on it) or hobbed "
+                  "(parallel parabolic ridges)")
+      ->check(CLI::IsMember({"self-affine", "ground", "superfinished", "hobbed"}));
   add_output_option(gen, g->output, "the surface to write (format by extension; required)");
   gen->get_option("--output")->required();
-  gen->add_option("--nx", g->nx, "Points along x (self-affine 256, hobbed 512)")->check(CLI::Range(3, 1 << 14));
-  gen->add_option("--ny", g->ny, "Points along y (self-affine 256, hobbed 64)")->check(CLI::Range(3, 1 << 14));
-  gen->add_option("--spacing", g->spacing, "Grid spacing (self-affine 0.5 um, hobbed 0.1 um)");
-  gen->add_option("--rq", g->rq, "self-affine: root-mean-square height (default 0.3 um)");
+  gen->add_option("--nx", g->nx, "Points along x (self-affine, ground, superfinished 256; hobbed 512)")
+      ->check(CLI::Range(3, 1 << 14));
+  gen->add_option("--ny", g->ny, "Points along y (self-affine, ground, superfinished 256; hobbed 64)")
+      ->check(CLI::Range(3, 1 << 14));
+  gen->add_option("--spacing", g->spacing, "Grid spacing (self-affine, ground, superfinished 0.5 um; hobbed 0.1 um)");
+  gen->add_option("--rq", g->rq,
+                  "self-affine, ground: root-mean-square height; superfinished: the ground surface's before the cut "
+                  "(default 0.3 um)");
   gen->add_option("--hurst", g->hurst, "self-affine: Hurst exponent H in (0, 1) (default 0.8)");
   gen->add_option("--rolloff", g->rolloff, "self-affine: roll-off wavelength (default 30 um)");
   gen->add_option("--short-cutoff", g->short_cutoff, "self-affine: shortest wavelength (default 4 spacings)");
   gen->add_option("--anisotropy", g->anisotropy,
-                  "self-affine: correlation length ratio along/across the lay (default 1)");
+                  "self-affine, ground, superfinished: correlation length ratio along/across the lay (default 1; "
+                  "ground and superfinished 8)");
+  gen->add_option("--correlation", g->correlation,
+                  "ground, superfinished: correlation length across the lay, along x (default 10 um)");
+  gen->add_option("--plateau", g->plateau,
+                  "superfinished: the area cut flat, the material ratio at the cut (default 0.8)");
+  gen->add_option("--fine-rq", g->fine_rq,
+                  "superfinished: Rq of the finishing's fine isotropic texture (default 0.02 um)");
+  gen->add_option("--fine-correlation", g->fine_correlation,
+                  "superfinished: correlation length of the fine texture (default 2 um)");
   gen->add_option("--lay-angle", g->lay_angle, "self-affine: lay direction from the x axis (default \"0 deg\")");
   gen->add_option("--wavelength", g->wavelength, "hobbed: ridge spacing (default 5 um)");
   gen->add_option("--tip-radius", g->tip_radius, "hobbed: ridge tip radius (default 6.6 um)");

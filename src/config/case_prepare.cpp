@@ -2,6 +2,7 @@
 
 #include "config/case_parameters.hpp"
 #include "config/case_records.hpp"
+#include "contact/areal/mesh_areal.hpp"
 #include "contact/fidelity_registry.hpp"
 #include "core/keyed_error.hpp"
 #include "gear/iso6336_stiffness.hpp"
@@ -78,6 +79,9 @@ void prepare_measured(Case& c, int gear) {
       refuse(t + "synthesis", path.string() + ": " + e.what());
     }
   }
+  if (!trace && c.contact.fidelity.name() == contact::areal::Areal::name &&
+      c.contact.areal.lay == contact::areal::ArealLay::patch)
+    g.flank.patch = grid;  // synthesised or tiled into the areal fidelity's maps (runs/mesh_cycle.cpp)
   if (trace) {
     // A profile trace (a stylus's line along the involute): its spectral moments give the
     // roughness (McCool's summits), as for a generated profile.

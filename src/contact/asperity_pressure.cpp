@@ -19,6 +19,7 @@ double bearing_area_weight(AsperityPressureModel m, double plastic) {
     case AsperityPressureModel::bearing_area:
       return 1.0;
     case AsperityPressureModel::automatic:
+    case AsperityPressureModel::persson:  // by Persson's own plastic area fraction (mesh_lubrication.cpp)
       break;
   }
   return std::clamp((plastic - kPlasticBlendStart) / (kFullyPlasticAreaFraction - kPlasticBlendStart), 0.0, 1.0);
@@ -37,11 +38,23 @@ double smallest_plastic_fraction(const GreenwoodWilliamson& gw, const std::vecto
 
 AsperityPressure::AsperityPressure(const GreenwoodWilliamson& gw, lubrication::CompositeHeights heights,
                                    double hardness, double w)
-    : gw_(gw), heights_(heights), hardness_(hardness), bearing_weight_(std::clamp(w, 0.0, 1.0)) {
-  if (bearing_weight_ > 0.0 && !(hardness > 0.0 && heights.sigma > 0.0))
-    throw std::invalid_argument("the bearing-area asperity pressure needs a positive hardness and roughness");
+    : gw_(&gw), heights_(heights), hardness_(hardness), bearing_weight_(std::clamp(w, 0.0, 1.0)) {
   summit_offset_ = gw.surface().summit_mean_height;
-  onset_ = gw.contact_onset() + summit_offset_;
+  set_onset(gw.contact_onset() + summit_offset_);
+}
+
+AsperityPressure::AsperityPressure(const PerssonSeparation& persson, lubrication::CompositeHeights heights,
+                                   double hardness, double w)
+    : persson_(&persson), heights_(heights), hardness_(hardness), bearing_weight_(std::clamp(w, 0.0, 1.0)) {
+  summit_offset_ = 0.0;
+  persson_onset_pressure_ = kPerssonOnsetPressure * persson.modulus();
+  set_onset(lubrication::mean_gap_height(heights_, persson.separation(persson_onset_pressure_)));
+}
+
+void AsperityPressure::set_onset(double elastic_onset) {
+  if (bearing_weight_ > 0.0 && !(hardness_ > 0.0 && heights_.sigma > 0.0))
+    throw std::invalid_argument("the bearing-area asperity pressure needs a positive hardness and roughness");
+  onset_ = elastic_onset;
   onset_bearing_ = bearing_weight_ > 0.0 ? lubrication::bearing_area_fraction(heights_, onset_) : 0.0;
   saturation_height_ = -std::numeric_limits<double>::infinity();
   saturation_pressure_ = std::numeric_limits<double>::infinity();
@@ -51,10 +64,20 @@ AsperityPressure::AsperityPressure(const GreenwoodWilliamson& gw, lubrication::C
   }
 }
 
+double AsperityPressure::elastic_pressure(double h) const {
+  if (gw_) return gw_->pressure(h - summit_offset_);
+  return std::max(0.0, persson_->pressure(lubrication::mean_gap(heights_, h)) - persson_onset_pressure_);
+}
+
+double AsperityPressure::elastic_separation(double p) const {
+  if (gw_) return gw_->separation_for_pressure(p) + summit_offset_;
+  return lubrication::mean_gap_height(heights_, persson_->separation(p + persson_onset_pressure_));
+}
+
 double AsperityPressure::pressure(double h) const {
   if (h >= onset_) return 0.0;
   double p = 0.0;
-  if (bearing_weight_ < 1.0) p += (1.0 - bearing_weight_) * gw_.pressure(h - summit_offset_);
+  if (bearing_weight_ < 1.0) p += (1.0 - bearing_weight_) * elastic_pressure(h);
   if (bearing_weight_ > 0.0)
     p += bearing_weight_ * hardness_ * (lubrication::bearing_area_fraction(heights_, h) - onset_bearing_);
   return p;
@@ -63,7 +86,7 @@ double AsperityPressure::pressure(double h) const {
 double AsperityPressure::separation(double p) const {
   if (!(p >= 0.0) || !std::isfinite(p)) throw std::invalid_argument("nominal pressure must be finite and >= 0");
   if (p == 0.0) return onset_;
-  if (bearing_weight_ == 0.0) return gw_.separation_for_pressure(p) + summit_offset_;
+  if (bearing_weight_ == 0.0) return elastic_separation(p);
   if (bearing_weight_ == 1.0) {
     if (p >= saturation_pressure_) return saturation_height_;
     return lubrication::bearing_area_height(heights_, p / hardness_ + onset_bearing_);
@@ -73,8 +96,8 @@ double AsperityPressure::separation(double p) const {
   // model's (p/(1 - w) can lie far beyond GW's table: a quadrature bisection) only where the bearing
   // area cannot carry p.
   const double a = p / (bearing_weight_ * hardness_) + onset_bearing_;
-  const double lo = a < 1.0 ? lubrication::bearing_area_height(heights_, a)
-                            : gw_.separation_for_pressure(p / (1.0 - bearing_weight_)) + summit_offset_;
+  const double lo =
+      a < 1.0 ? lubrication::bearing_area_height(heights_, a) : elastic_separation(p / (1.0 - bearing_weight_));
   const double hi = onset_;
   const auto f = [&](double h) { return pressure(h) - p; };
   if (f(lo) <= 0.0) return lo;

@@ -88,7 +88,8 @@ void run_stages(const MeshCycleInputs& in, const PathState& path, StageClock& cl
   std::optional<MeshLubrication> lubricated;
   std::vector<double> share(path.size(), 1.0);
   if (in.lubrication && state.surface()) {
-    lubricated.emplace(LubricationInputs{*in.lubrication, in.operating}, in.mesh, path, *state.surface());
+    lubricated.emplace(LubricationInputs{*in.lubrication, in.operating, in.flank_specs}, in.mesh, path,
+                       *state.surface());
     share = lubricated->asperity_shares();
     clock.lap("film_and_load_sharing");
     fi.film = &*lubricated;

@@ -142,11 +142,13 @@ struct RunningInResult {
 };
 
 // A deterministic run's flank synthesised from a measured patch ([*.flank.topography] synthesis):
-// what it came from and how (surface/profile_synthesis.hpp).
+// what it came from and how (surface/profile_synthesis.hpp); and an areal run's maps made from one
+// (areal.lay = "patch"; surface/areal_synthesis.hpp; method areal-synthesis or areal-tiled, the
+// profile_* fields tooth 0's map, rolled_off_fraction the share of the patch's variance it leaves out).
 struct FlankSynthesis {
   std::string gear;    // pinion | wheel
   std::string patch;   // the topography file, as the case names it
-  std::string method;  // psd | iaaft
+  std::string method;  // psd | iaaft | areal-synthesis | areal-tiled
   double seed = 0;     // tooth 0's; tooth t: seed + t
   int teeth = 0;       // profiles synthesised (1, or the teeth of the hunting order)
   double patch_lines = 0, patch_points = 0;

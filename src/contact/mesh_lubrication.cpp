@@ -1,6 +1,7 @@
 #include "contact/mesh_lubrication.hpp"
 
 #include "contact/series_columns.hpp"
+#include "core/keyed_error.hpp"
 #include "gear/iso6336_stiffness.hpp"
 #include "gear/load_sharing.hpp"
 
@@ -71,6 +72,18 @@ MeshLubrication::MeshLubrication(const LubricationInputs& in, const gear::GearMe
       traction_(in.lubrication.traction),
       bulk_law_(in.lubrication.mean_friction) {
   reduced_modulus_ = 2.0 * mesh.composite_modulus();
+  if (lubrication_.asperity_pressure == lub::AsperityPressureModel::persson) {
+    try {
+      spectrum_ = flank_spectrum(in.flank_specs, model.surface);
+    } catch (const std::invalid_argument& e) {
+      throw core::KeyedError(
+          "lubrication.asperity_pressure",
+          fmt::format("Persson's theory needs the flanks' power spectrum; without generated ground profiles on both "
+                      "flanks it is fitted to the statistical model's moments, and none fits them ({}): give the "
+                      "flanks ground profiles, or a wider band (roughness.eta_sigma_beta above 0.0214)",
+                      e.what()));
+    }
+  }
   for (int g = 0; g < 2; ++g) {
     const Material& m = *model.flanks.materials[static_cast<std::size_t>(g)];
     thermal_coefficient_[g] = lub::thermal_contact_coefficient(m.thermal_conductivity, m.density, m.specific_heat);
@@ -157,15 +170,36 @@ void MeshLubrication::asperity_pressure() {
   // The asperities' pressure against the mean-plane separation.
   const GreenwoodWilliamson& gw = model_.table;
   plasticity_index_ = surface::plasticity_index(gw.surface(), gw.pair().modulus, gw.pair().hardness);
+  hardness_ = gw.pair().hardness;
   const lub::AsperityPressureModel model = lubrication_.asperity_pressure;
-  plastic_fraction_ =
-      model == lub::AsperityPressureModel::automatic ? smallest_plastic_fraction(gw, path_.hertz_p0) : 0.0;
-  const double weight = bearing_area_weight(model, plastic_fraction_);
   // The closure's heights are the summit model's surface (its composite sigma): the gap the film
   // fills and the asperities' pressure then describe one surface. (lambda and the ISO formulas take
   // the flanks' own Rq and Ra; for flanks given by Ra or Rq the two are the same.)
-  asperity_.emplace(gw, lub::CompositeHeights{gw.surface().surface_sigma, model_.flanks.distribution},
-                    gw.pair().hardness, weight);
+  const lub::CompositeHeights heights{gw.surface().surface_sigma, model_.flanks.distribution};
+  const double gw_plastic =
+      model == lub::AsperityPressureModel::automatic || spectrum_ ? smallest_plastic_fraction(gw, path_.hertz_p0) : 0.0;
+  if (!spectrum_) {
+    plastic_fraction_ = gw_plastic;
+    asperity_.emplace(gw, heights, gw.pair().hardness, bearing_area_weight(model, plastic_fraction_));
+    return;
+  }
+  // Persson's separation law on the flanks' spectrum, the bearing area blended in by his own
+  // elastic-plastic theory's plastic share under the whole load at the lightest position; beside
+  // it, the asperity model as auto takes it (the closure's spread).
+  persson_.emplace(spectrum_->spectrum, mesh_.composite_modulus());
+  plastic_fraction_ = 1.0;
+  for (double p : path_.hertz_p0)
+    if (p > 0.0) plastic_fraction_ = std::min(plastic_fraction_, persson_plastic_fraction(p));
+  asperity_.emplace(*persson_, heights, hardness_,
+                    bearing_area_weight(lub::AsperityPressureModel::automatic, plastic_fraction_));
+  comparison_.emplace(gw, heights, hardness_, bearing_area_weight(lub::AsperityPressureModel::automatic, gw_plastic));
+}
+
+double MeshLubrication::persson_plastic_fraction(double p) const {
+  // Persson's theory holds below the hardness: a nominal pressure at it has yielded everywhere.
+  if (!(p < hardness_)) return 1.0;
+  const PerssonAreas a = persson_elastic_plastic(p, mesh_.composite_modulus(), persson_->rms_gradient(), hardness_);
+  return a.contact() > 0.0 ? a.plastic / a.contact() : 0.0;
 }
 
 std::vector<double> MeshLubrication::asperity_shares() const {
@@ -229,26 +263,31 @@ void MeshLubrication::film(const PathPoint& p, ShareGuesses& guesses, Position& 
   }
   // The asperities carrying `share` of the Hertz peak at the strip's centre sit at h(share p0); the
   // film fills the closure's gap there (lubrication/film_closure.hpp).
-  const double h_dry = ap.separation(p0);
   q.bearing_saturated = ap.saturated(p0) ? 1.0 : 0.0;
   const double exponent = law.speed_exponent - law.material_exponent;
-  // Each datum's share, from its own solution at the last position (the path moves smoothly).
-  auto share_for = [&](lub::FilmGap gap) {
-    double& guess = guesses[static_cast<std::size_t>(gap)];
+  // A closure's share at a datum, from its own solution at the last position (the path moves
+  // smoothly): guesses[slot].
+  auto share_for = [&](const AsperityPressure& c, lub::FilmGap gap, std::size_t slot) {
+    const double h_dry = c.separation(p0);
+    double& guess = guesses[slot];
     const lub::LoadShare s = lub::share_load(
-        q.film, exponent, [&](double share) { return lub::film_gap(gap, heights, ap.separation(share * p0), h_dry); },
+        q.film, exponent, [&](double share) { return lub::film_gap(gap, heights, c.separation(share * p0), h_dry); },
         guess);
     if (s.film_share > 0.0) guess = std::log(s.film_share);
     return s;
   };
-  const lub::LoadShare s = share_for(film_gap_);
+  const std::size_t persson_slot = guesses.size() - 1;
+  const lub::LoadShare s = share_for(ap, film_gap_, persson_ ? persson_slot : static_cast<std::size_t>(film_gap_));
   q.asperity_share = s.asperity_share;
   q.mean_gap = s.film_thickness;
   q.separation = ap.separation(s.asperity_share * p0);
+  if (persson_) q.persson_plastic = persson_plastic_fraction(s.asperity_share * p0);
+  // The spread: over the other film gaps; with Persson's law, over the asperity model's closure (as
+  // auto takes it) at each film gap beside it.
   double lo = s.asperity_share, hi = s.asperity_share;
   for (lub::FilmGap other : {lub::FilmGap::mean_gap, lub::FilmGap::mean_plane, lub::FilmGap::dry_offset}) {
-    if (other == film_gap_) continue;
-    const double a = share_for(other).asperity_share;
+    if (other == film_gap_ && !persson_) continue;
+    const double a = share_for(persson_ ? *comparison_ : ap, other, static_cast<std::size_t>(other)).asperity_share;
     lo = std::min(lo, a);
     hi = std::max(hi, a);
   }
@@ -350,6 +389,7 @@ LubricationResult MeshLubrication::finish() {
   out.verdict = verdict_text(out.summary);
   out.warnings = warnings(out.summary);
   out.bearing_saturated_column = asperity_->bearing_weight() >= 1.0;
+  out.persson_column = persson_.has_value();
   out.traction_curve_column = traction_ == lub::FilmTraction::curve;
   out.positions = positions_;
   return out;
@@ -402,6 +442,11 @@ void add_lubrication_series(const LubricationResult& l, std::vector<Series>& g) 
   if (l.bearing_saturated_column)
     add_columns<Position>(
         g, l.positions, {C{"flag_bearing_area_saturated", "1", [](const Position& q) { return q.bearing_saturated; }}});
+  if (l.persson_column)
+    add_columns<Position>(g, l.positions,
+                          {C{"persson_plastic_area_fraction", "1", [](const Position& q) { return q.persson_plastic; }},
+                           C{"flag_persson_plastic", "1",
+                             [](const Position& q) { return q.persson_plastic > kPerssonPlasticFlag ? 1.0 : 0.0; }}});
   if (l.traction_curve_column)
     add_columns<Position>(
         g, l.positions,
@@ -532,23 +577,49 @@ std::string MeshLubrication::verdict_text(const LubricationSummary& sum) const {
                          : w <= 0.0 ? fmt::format("by the {} model{}", asperity_model, why)
                                     : fmt::format("by a blend, {:.2f} bearing area and {:.2f} {} model{}", w, 1.0 - w,
                                                   asperity_model, why);
-  std::string text = fmt::format(
-      " Lubricated ({}): the film fills the {} between the rough flanks and the asperities press {}", sum.lubricant,
-      film_gap_ == lub::FilmGap::mean_gap     ? "mean gap"
-      : film_gap_ == lub::FilmGap::mean_plane ? "separation of the mean planes"
-                                              : "gap counted from the dry contact",
-      pressure);
+  if (persson_) {
+    const SpectrumPart& f = spectrum_->spectrum.parts.front();
+    const std::string spectrum =
+        spectrum_->generated
+            ? "the ground profiles' Gaussian spectra taken isotropic"
+            : fmt::format(
+                  "a self-affine spectrum fitted to the summit model's moments (H = {:g}, roll-off {:.3g} um, "
+                  "shortest wavelength {:.3g} um)",
+                  f.hurst, 2e6 * std::numbers::pi / f.rolloff, 2e6 * std::numbers::pi / f.cutoff);
+    const std::string law = fmt::format("Persson's interfacial separation law (elastic, on {}; u0 {:.3g} um)", spectrum,
+                                        persson_->decay_length() * 1e6);
+    const std::string plastic = fmt::format(
+        "; Persson's elastic-plastic theory puts at least {:.3g} of the real area at the hardness under the whole load",
+        plastic_fraction_);
+    pressure = w >= 1.0   ? "by their bearing area at the hardness, the flanks fully plastic" + plastic
+               : w <= 0.0 ? "by " + law + plastic
+                          : fmt::format("by a blend, {:.2f} bearing area and {:.2f} {}{}", w, 1.0 - w, law, plastic);
+  }
+  std::string text =
+      fmt::format(" Lubricated ({}): the film fills the {} and the asperities press {}", sum.lubricant,
+                  persson_ && w < 1.0                     ? "mean gap between the deformed rough flanks (Persson's)"
+                  : film_gap_ == lub::FilmGap::mean_gap   ? "mean gap between the rough flanks"
+                  : film_gap_ == lub::FilmGap::mean_plane ? "separation of the mean planes between the rough flanks"
+                                                          : "gap counted from the dry contact between the rough flanks",
+                  pressure);
+  const std::string between =
+      persson_ ? fmt::format(
+                     "Persson's law and the {} model's closure at the mean gap, the mean plane and the "
+                     "dry-contact datum",
+                     asperity_model)
+               : "the mean gap, the mean plane and the dry-contact datum";
   if (sum.closure_dependent_positions > 0) {
     const auto worst = std::max_element(positions_.begin(), positions_.end(), [](const Position& a, const Position& b) {
       return a.share_spread < b.share_spread;
     });
     text += fmt::format(
-        "; the asperity share depends on that choice at {} of {} positions (it moves by up to {:.3f} between the "
-        "mean gap, the mean plane and the dry-contact datum, at s = {:.3f} mm): there it is a model's estimate",
-        sum.closure_dependent_positions, n, worst->share_spread,
+        "; the asperity share depends on that choice at {} of {} positions (it moves by up to {:.3f} between {}, at "
+        "s = {:.3f} mm): there it is a model's estimate",
+        sum.closure_dependent_positions, n, worst->share_spread, between,
         path_.s[static_cast<std::size_t>(worst - positions_.begin())] * 1e3);
   } else {
-    text += fmt::format("; the asperity share moves by at most {:.3f} between the film datums", sum.max_share_spread);
+    text += fmt::format("; the asperity share moves by at most {:.3f} between {}", sum.max_share_spread,
+                        persson_ ? between : std::string("the film datums"));
   }
   const auto& l = lubrication_.lubricant;
   text += traction_ == lub::FilmTraction::curve
@@ -658,6 +729,16 @@ std::vector<std::string> MeshLubrication::warnings(const LubricationSummary& sum
         "the Greenwood-Williamson parameters describe another surface than the one measured; lambda and the ISO "
         "formulas take the flanks' Rq and Ra, the asperity contact and the sharing the summit model",
         model_.surface.surface_sigma * 1e6, roughness_.rq * 1e6, roughness_.source, sigma_ratio()));
+  if (persson_) {
+    const auto yielded = std::count_if(positions_.begin(), positions_.end(),
+                                       [](const Position& q) { return q.persson_plastic > kPerssonPlasticFlag; });
+    if (yielded > 0 && asperity_->bearing_weight() < 1.0)
+      out.push_back(fmt::format(
+          "{} of {} positions (flag_persson_plastic) where Persson's elastic-plastic theory puts more than {:g} of the "
+          "real area at the hardness under the asperities' share (up to {:.3g}): his separation law is elastic and "
+          "overstates the pressure the yielded contacts carry at a gap, and with it the asperities' share",
+          yielded, n, kPerssonPlasticFlag, largest(positions_, &Position::persson_plastic)));
+  }
   if (largest(positions_, &Position::bearing_saturated) > 0.0)
     out.emplace_back(
         "the Hertz pressure reaches the hardness at some positions (flag_bearing_area_saturated): the bearing-area "

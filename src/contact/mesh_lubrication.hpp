@@ -1,9 +1,9 @@
 // The lubricated mesh cycle along A -> E: the smooth film and its inlet-heating correction, the
 // load shared between film and asperities (the film filling the mean gap between the rough flanks,
-// the asperities pressing by the run's Greenwood-Williamson table or, where the flanks are fully
-// plastic, by their bearing area), friction (thermal Eyring traction of the film), flash and
-// contact temperature, Archard wear, power loss and the ISO/TS 6336-20/-22 rating quantities
-// beside them: the mesh cycle's lubrication stage.
+// the asperities pressing by the run's Greenwood-Williamson table or Persson's separation law and,
+// where the flanks are fully plastic, by their bearing area), friction (thermal Eyring traction of
+// the film), flash and contact temperature, Archard wear, power loss and the ISO/TS 6336-20/-22
+// rating quantities beside them: the mesh cycle's lubrication stage.
 #pragma once
 
 #include "contact/asperity_pressure.hpp"
@@ -40,6 +40,8 @@ CompositeRoughness composite_roughness(const std::array<surface::FlankRoughness,
 struct LubricationInputs {
   const lubrication::LubricationSettings& lubrication;  // the oil and the models along the path
   LubricatedOperatingPoint operating;
+  // The case's flanks (Persson's spectrum: their generated ground profiles, when both have one).
+  std::array<const surface::FlankSpec*, 2> flank_specs = {nullptr, nullptr};
 };
 
 struct LubricationResult;
@@ -67,20 +69,24 @@ class MeshLubrication {
     double asperity_share = 0.0;
     double separation = 0.0;      // of the mean planes of heights [m]
     double mean_gap = 0.0;        // the film's gap: the mean gap (or the closure's) [m]
-    double share_spread = 0.0;    // the asperity share's range over the film gaps
+    double share_spread = 0.0;    // the asperity share's range over the film gaps (and Persson's, when taken)
     double iso_flash = 0.0;       // ISO/TS 6336-20 flash-temperature method [K]
     double blok_iso_flash = 0.0;  // Blok's with ISO/TS 6336-22's mu_mC [K]
     double friction = 0.0, film_traction = 0.0, midfilm_rise = 0.0, flash = 0.0, contact_temperature = 0.0,
            iso_contact_temperature = 0.0, power_loss = 0.0, wear_pinion = 0.0, wear_wheel = 0.0, iso_film = 0.0,
            iso_lambda = 0.0, lambda_film = 0.0, lambda_gap = 0.0, low_peclet = 0.0, curve_outside = 0.0,
            bearing_saturated = 0.0;
+    // Persson: the share of the real area at the hardness under the asperities' pressure at the
+    // strip's centre, by his elastic-plastic theory (contact/persson_contact.hpp).
+    double persson_plastic = 0.0;
     double oil_extrapolated = 0.0;  // 1: an oil (bulk, surfaces, ISO contact) beyond the lubricant's data range
     double oil_clamped = 0.0;       // 1: the surfaces' or ISO contact's oil taken at the end of its law range
   };
 
  private:
-  // ln(film share) of the last solution per film gap (lubrication::FilmGap), the next one's start.
-  using ShareGuesses = std::array<double, 3>;
+  // ln(film share) of the last solution per film gap (lubrication::FilmGap) and, last, Persson's:
+  // the next one's start.
+  using ShareGuesses = std::array<double, 4>;
   // The mixed friction at a position and what the film's traction found on the way.
   struct FilmFriction {
     double friction = 0.0, film_coefficient = 0.0, rise = 0.0;
@@ -89,6 +95,8 @@ class MeshLubrication {
   void pitch_and_iso();      // the pitch point, the gear-mean laws, ISO/TS 6336-20's factors
   void bulk_temperature();   // given, or ISO/TS 6336-20's estimate; the oil there
   void asperity_pressure();  // the asperities' pressure against the separation
+  // Persson's elastic-plastic share of the real area at the hardness under the nominal pressure p.
+  double persson_plastic_fraction(double p) const;
   void film(const PathPoint& p, ShareGuesses& guesses, Position& q) const;
   void rest(const PathPoint& p, Position& q) const;
   FilmFriction film_friction(const PathPoint& p, const Position& q) const;
@@ -136,8 +144,12 @@ class MeshLubrication {
   bool bulk_estimated_ = false;
   CompositeRoughness roughness_;
   double plasticity_index_ = 0.0;
-  double plastic_fraction_ = 0.0;  // the asperity model's smallest along the path (auto's weight)
-  std::optional<AsperityPressure> asperity_;
+  double plastic_fraction_ = 0.0;  // the asperity model's (Persson's) smallest along the path: the blend's weight
+  std::optional<FlankSpectrum> spectrum_;       // Persson's
+  std::optional<PerssonSeparation> persson_;    // Persson's separation law
+  std::optional<AsperityPressure> asperity_;    // the closure's asperity pressure
+  std::optional<AsperityPressure> comparison_;  // beside Persson's: the asperity model's, as auto takes it
+  double hardness_ = 0.0;                       // of the softer flank [Pa]
   std::vector<Position> positions_;
 };
 
@@ -147,7 +159,7 @@ struct LubricationResult {
   LubricationSummary summary;
   std::string verdict;                // what the run's verdict gains
   std::vector<std::string> warnings;  // in order
-  bool bearing_saturated_column = false, traction_curve_column = false;
+  bool bearing_saturated_column = false, traction_curve_column = false, persson_column = false;
 };
 // Its /lubrication series.
 // ISO/TS 6336-20's flash-temperature geometry of a pair: u, a, alpha_wt, alpha_t, Gamma at A and E.
@@ -160,5 +172,8 @@ void add_lubrication_series(const LubricationResult& l, std::vector<Series>& gro
 inline constexpr double kRoughnessDisagreementFactor = 1.25;
 // The asperity share's spread over the film gaps above which it "depends on the closure".
 inline constexpr double kClosureSpreadFlag = 0.1;
+// Persson's closure: the share of the real area at the hardness above which his elastic separation
+// law is flagged (flag_persson_plastic): the yielded contacts carry less than it says at that gap.
+inline constexpr double kPerssonPlasticFlag = 0.1;
 
 }  // namespace geartrib::contact

@@ -7,7 +7,9 @@
 #include "asperity/model.hpp"
 #include "contact/contact_options.hpp"
 #include "contact/greenwood_williamson.hpp"
+#include "contact/persson_contact.hpp"
 #include "material/material.hpp"
+#include "surface/flank_spec.hpp"
 #include "surface/rough_surface.hpp"
 
 #include <array>
@@ -35,5 +37,22 @@ struct SurfaceModel {
   double plasticity_index = 0.0;
   GreenwoodWilliamson table;
 };
+
+// The flanks' composite power spectrum for Persson's theory (contact/persson_contact.hpp):
+//  - both flanks generated ground profiles ([*.flank.profile] kind = "ground"): the sum of their
+//    Gaussian spectra, exact for isotropic surfaces with the profiles' correlation in every direction
+//    (the areal fidelity's isotropic lay). A lay-directed ground flank is not isotropic: Persson's
+//    isotropic theory takes it through this equivalent;
+//  - otherwise: the self-affine spectrum from q = 0 (H = kFittedSpectrumHurst, stated) whose profile
+//    moments are the statistical model's, McCool's relations inverted on its equivalent surface:
+//    m0 = sigma^2, m4 = 0.375^2 pi/beta^2, m2 = m4/(6 pi sqrt 3 eta). Flanks given by Ra or Rq take it
+//    as assumed as the summits' eta sigma_s beta (bandwidth 6.93 at 0.05); std::invalid_argument where
+//    the bandwidth is at most 2 (eta sigma_s beta below 0.0214), which no such spectrum has.
+struct FlankSpectrum {
+  RoughnessSpectrum spectrum;
+  bool generated = false;  // from the ground profiles; false: fitted to the moments
+};
+FlankSpectrum flank_spectrum(const std::array<const surface::FlankSpec*, 2>& specs,
+                             const surface::EquivalentSurface& s);
 
 }  // namespace geartrib::contact

@@ -3,9 +3,11 @@
 #include "core/named_choices.hpp"
 
 #include <boost/math/special_functions/erf.hpp>
+#include <boost/math/tools/roots.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <stdexcept>
 
@@ -17,7 +19,8 @@ constexpr NamedChoice<FilmGap> kGapNames[] = {
 constexpr NamedChoice<AsperityPressureModel> kAsperityPressureNames[] = {
     {AsperityPressureModel::automatic, "auto"},
     {AsperityPressureModel::asperity_model, "asperity-model"},
-    {AsperityPressureModel::bearing_area, "bearing-area"}};
+    {AsperityPressureModel::bearing_area, "bearing-area"},
+    {AsperityPressureModel::persson, "persson"}};
 }  // namespace
 
 std::span<const NamedChoice<FilmGap>> film_gap_choices() { return kGapNames; }
@@ -39,6 +42,23 @@ double mean_gap(const CompositeHeights& s, double h) {
   // (a = -t): the two terms agree to about 1/a^2 of their size, so the difference keeps all but
   // log10(a^2) of its digits (erfc is accurate relative to its value), until phi underflows.
   return s.sigma * (t * 0.5 * std::erfc(-t / std::numbers::sqrt2) + phi);
+}
+
+double mean_gap_height(const CompositeHeights& s, double g) {
+  if (!(g > 0.0) || !std::isfinite(g)) throw std::invalid_argument("the mean gap must be positive and finite");
+  if (!(s.sigma > 0.0)) return g;
+  // mean_gap rises from 0 to h + O(sigma e^(-h^2/2 sigma^2)) with slope P(z < h) in (0, 1]: g - h is
+  // positive, and h lies below g; downwards, the bracket doubles until the gap falls below g.
+  const auto f = [&](double h) { return mean_gap(s, h) - g; };
+  if (f(g) <= 0.0) return g;  // g far above the heights: the mean gap is h to the double's digits
+  double lo = g - s.sigma;
+  while (f(lo) >= 0.0) lo = g - 2.0 * (g - lo);
+  std::uintmax_t iterations = 200;
+  const double scale = s.sigma;
+  const auto [a, b] = boost::math::tools::toms748_solve(
+      f, lo, g, [scale](double x, double y) { return std::abs(y - x) <= 1e-14 * std::max(scale, std::abs(x)); },
+      iterations);
+  return 0.5 * (a + b);
 }
 
 double bearing_area_fraction(const CompositeHeights& s, double h) {

@@ -30,8 +30,13 @@ const char* film_gap_name(FilmGap g);
 //    along the path) rises from 0.9 to 0.99, the bound above which the run's regime verdict calls
 //    the flanks fully plastic: the asperity model where it holds, the bearing area where every
 //    contact flows, linear between (continuous across a sweep);
-//  - asperity_model: w = 0; bearing_area: w = 1.
-enum class AsperityPressureModel { automatic, asperity_model, bearing_area };
+//  - asperity_model: w = 0; bearing_area: w = 1;
+//  - persson: Persson's interfacial separation law (contact/persson_contact.hpp) in place of the asperity
+//    model: the film's thickness is the mean gap u between the deformed flanks at which they carry the
+//    asperities' pressure, p = p_P(u) (elastic), so film_gap must be mean_gap; the bearing area blended
+//    in as for auto, the plastic area fraction Persson's own (elastic-plastic, Persson 2001) under the
+//    whole load at the lightest position.
+enum class AsperityPressureModel { automatic, asperity_model, bearing_area, persson };
 std::span<const NamedChoice<AsperityPressureModel>> asperity_pressure_model_choices();  // lubrication.asperity_pressure
 const char* asperity_pressure_model_name(AsperityPressureModel m);
 
@@ -44,6 +49,8 @@ struct CompositeHeights {
 // (z = X - sigma, X ~ Exp(mean sigma)): c - sigma + sigma e^(-c/sigma) for c = h + sigma >= 0, else 0.
 // Increasing in h, > 0 (Gaussian), -> h for h >> sigma. sigma = 0: max(h, 0).
 double mean_gap(const CompositeHeights& heights, double h);
+// Its inverse: the separation h at which the mean gap is g > 0 [m] (sigma = 0: g).
+double mean_gap_height(const CompositeHeights& heights, double g);
 // Bearing-area fraction P(z > h) (Abbott & Firestone, Mech. Eng. 55 (1933) 569-572): the share
 // of the nominal area a plane at h cuts through material. Gaussian: Phi(-h/sigma); exponential:
 // e^(-(h + sigma)/sigma) above -sigma, 1 below.

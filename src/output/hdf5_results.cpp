@@ -108,7 +108,9 @@ void write_file(const std::string& path, const contact::MeshContactResult& r, co
     Handle group(H5Gcreate2(file, "/synthesis", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "group /synthesis");
     string_attribute(group, "meaning",
                      "flank profiles synthesised from a measured patch's profile spectrum (random phases; iaaft: its "
-                     "height distribution kept); tooth t's seed is seed + t");
+                     "height distribution kept); areal-synthesis, areal-tiled: the areal fidelity's height maps from "
+                     "the patch's areal spectrum, or the patch tiled by mirror images (profile_length_m, profile_rq_m: "
+                     "tooth 0's map along the involute, and its Rq); tooth t's seed is seed + t");
     for (const auto& f : r.synthesis) {
       Handle g(H5Gcreate2(group, f.gear.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
                "group /synthesis/" + f.gear);

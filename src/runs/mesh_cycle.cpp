@@ -14,6 +14,7 @@
 #include "contact/mesh_contact.hpp"
 #include "contact/position_threads.hpp"
 #include "contact/run_summary.hpp"
+#include "core/fftw_planner.hpp"
 #include "core/keyed_error.hpp"
 #include "core/stopwatch.hpp"
 #include "gear/gear_mesh.hpp"
@@ -21,6 +22,7 @@
 #include "runs/case_rating.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/kinsol_solver.hpp"
+#include "surface/areal_synthesis.hpp"
 
 #include <fmt/format.h>
 
@@ -363,6 +365,107 @@ void generated_tracks(const FlankRead& f, std::vector<contact::FlankTrack>& trac
   }
 }
 
+// The areal fidelity's patch lay: each tooth's map of the flank from the measured patch, synthesised
+// from its areal spectrum (seed + tooth) or tiled, over the span at the elements' spacing along the
+// involute and areal.window across the face; its track, the map's middle row.
+void patch_maps(const FlankRead& f, std::vector<contact::FlankTrack>& tracks, std::vector<contact::FlankMap>& maps,
+                std::vector<contact::FlankSynthesis>& synthesis) {
+  const contact::FlankSpan& span = f.span;
+  const contact::areal::ArealMeshOptions& o = f.c.contact.areal;
+  const surface::TopographySpec& topo = *f.flank.topography;
+  const std::string t = f.gear + ".flank.topography.";
+  if (!f.flank.patch) throw std::logic_error(f.gear + ": the patch lay asked for without the measured surface");
+  // The patch with its axis along the involute as x.
+  surface::HeightGrid patch = *f.flank.patch;
+  if (!topo.profile_along_x) {
+    surface::HeightGrid turned = surface::make_grid(patch.ny, patch.nx, patch.dy, patch.dx);
+    for (int j = 0; j < patch.ny; ++j)
+      for (int i = 0; i < patch.nx; ++i) {
+        turned.at(j, i) = patch.at(i, j);
+        turned.valid[static_cast<std::size_t>(i) * patch.ny + j] = patch.ok(i, j) ? 1 : 0;
+      }
+    patch = std::move(turned);
+  }
+  if (patch.missing() > 0)
+    throw io::located_error(f.c, t + "fill", "false",
+                            fmt::format("{} has {} missing points; a patch's areal spectrum or tiling needs every "
+                                        "point: fill = true",
+                                        topo.file, patch.missing()));
+  const double dx = span.element_size, dy = o.spacing();
+  const char* along = topo.profile_along_x ? "x" : "y";
+  const char* across = topo.profile_along_x ? "y" : "x";
+  if (dx < patch.dx * (1.0 - 1e-9))
+    throw io::located_error(f.c, "contact.element_size", um(dx),
+                            fmt::format("finer than the spacing along {} of {} ({}): the patch holds no detail that "
+                                        "fine; use elements of at least {}",
+                                        along, topo.file, um(patch.dx), um(patch.dx)));
+  if (dy < patch.dy * (1.0 - 1e-9))
+    throw io::located_error(f.c, "areal.points", std::to_string(o.points),
+                            fmt::format("{} points over {} across the face are {} apart, finer than the spacing along "
+                                        "{} of {} ({}): at most {} points",
+                                        o.points, um(o.window), um(dy), across, topo.file, um(patch.dy),
+                                        static_cast<int>(std::floor(o.window / patch.dy * (1.0 + 1e-9)))));
+  surface::ArealSpectrum spectrum;
+  try {
+    spectrum = surface::areal_spectrum(patch);
+  } catch (const std::invalid_argument& e) {
+    throw io::located_error(f.c, t + "file", topo.file, e.what());
+  }
+  // A patch shorter than one of its own hills (the mean spacing of the profile elements, RSm) holds
+  // no contact spot whole: nothing to synthesise or tile from.
+  for (const bool x : {true, false}) {
+    const double rsm = spectrum.element_spacing(x), side = x ? spectrum.length_x() : spectrum.length_y();
+    if (side < rsm)
+      throw io::located_error(
+          f.c, t + "file", topo.file,
+          fmt::format("the patch is {} long along {}, shorter than one spot: the mean spacing of its profile "
+                      "elements there, RSm = 2 pi sqrt(m0/m2), is {}; measure a larger patch (several RSm each way)",
+                      um(side), x == topo.profile_along_x ? "x" : "y", um(rsm)));
+  }
+  const int g = f.g;
+  const double start = span.first[g] - dx;
+  const bool tiled = o.patch == contact::areal::ArealPatch::tiled;
+  contact::FlankSynthesis record;  // what the maps came from, as a profile synthesis is recorded
+  record.gear = f.gear, record.patch = topo.file, record.method = tiled ? "areal-tiled" : "areal-synthesis";
+  record.seed = static_cast<double>(topo.synthesis_seed), record.teeth = f.teeth;
+  record.patch_lines = patch.ny, record.patch_points = patch.nx, record.patch_spacing = patch.dx;
+  record.patch_rq = spectrum.patch_rq;
+  const int nx = static_cast<int>(std::ceil(span.length(g) / dx)) + 3, ny = o.points;
+  for (int tooth = 0; tooth < f.teeth; ++tooth) {
+    contact::FlankMap m;
+    m.nx = nx, m.ny = ny, m.start = start, m.dx = dx, m.dy = dy;
+    try {
+      if (tiled) {
+        // Tooth t starts a patch's length further along its mirror images.
+        m.z = surface::tile_surface(patch, nx, ny, dx, dy, tooth * spectrum.length_x()).z;
+      } else {
+        // Periodic along the involute over an FFT-friendly length, cut to the map's.
+        const int mx = static_cast<int>(fast_fft_size(static_cast<std::size_t>(nx)));
+        const surface::SynthesisedSurface full = surface::synthesise_surface(
+            spectrum, mx, ny, dx, dy, topo.synthesis_seed + static_cast<std::uint64_t>(tooth));
+        if (tooth == 0) record.rolled_off_fraction = 1.0 - full.resolved_fraction;
+        m.z.resize(static_cast<std::size_t>(nx) * ny);
+        for (int j = 0; j < ny; ++j)
+          std::copy_n(&full.grid.z[static_cast<std::size_t>(j) * mx], nx, &m.z[static_cast<std::size_t>(j) * nx]);
+      }
+    } catch (const std::invalid_argument& e) {
+      throw io::located_error(f.c, "areal.patch",
+                              std::string(choice_name(contact::areal::areal_patch_choices(), o.patch)),
+                              fmt::format("{}: {}", topo.file, e.what()));
+    }
+    surface::FlankProfile row{dx, std::vector<double>(&m.z[static_cast<std::size_t>(ny / 2) * nx],
+                                                      &m.z[static_cast<std::size_t>(ny / 2) * nx] + nx)};
+    tracks.push_back({std::move(row), start});
+    if (tooth == 0) {
+      double ms = 0.0;
+      for (double z : m.z) ms += z * z;
+      record.profile_length = (nx - 1) * dx, record.profile_rq = std::sqrt(ms / static_cast<double>(m.z.size()));
+    }
+    maps.push_back(std::move(m));
+  }
+  synthesis.push_back(std::move(record));
+}
+
 // A rolling fidelity's flanks (deterministic, mixed EHL): each gear's measured profile (its
 // topography's line along the involute), one synthesised from the topography's spectrum, or a
 // generated one, checked against the stretch of flank the run reads and the element size (the
@@ -393,7 +496,16 @@ contact::RollingFlanks rolling_flanks(const Case& c, const contact::FlankSpan& s
                           rolls, gear, mm(span.strip_half_length + 2.0 * span.element_size))};
     auto& tracks = g == 0 ? out.pinion : out.wheel;
     const surface::TopographySpec* topo = f.flank.topography ? &*f.flank.topography : nullptr;
-    if (topo && topo->synthesis != surface::SynthesisMethod::none) {
+    if (span.reader == contact::FlankSpan::Reader::areal && c.contact.areal.lay == contact::areal::ArealLay::patch) {
+      if (!topo || !f.flank.patch) {
+        const auto [where, line] = io::location_of(c, "areal.lay");
+        throw io::InputError(where, line, "areal.lay", "patch",
+                             fmt::format("the patch lay makes each flank's map from its measured topography: give "
+                                         "[{}.flank.topography] an areal surface (not a profile trace)",
+                                         gear));
+      }
+      patch_maps(f, tracks, g == 0 ? out.pinion_maps : out.wheel_maps, synthesis);
+    } else if (topo && topo->synthesis != surface::SynthesisMethod::none) {
       synthesised_tracks(f, tracks, synthesis);
     } else if (f.flank.measured_profile) {
       measured_tracks(f, tracks);
@@ -527,8 +639,8 @@ void check_budget(const Case& c, const contact::FlankSpan& span, const int teeth
 
 // The areal fidelity's peak memory (its maps and its window's solve) against the budget: refused at
 // areal.points, the knob that grows both.
-void check_areal_budget(const Case& c, const contact::FlankSpan& span) {
-  const double bytes = contact::areal::areal_run_bytes(span, c.contact.areal);
+void check_areal_budget(const Case& c, const contact::FlankSpan& span, const int teeth[2]) {
+  const double bytes = contact::areal::areal_run_bytes(span, c.contact.areal, teeth);
   const io::ResourceBudget budget = io::resource_budget();
   if (bytes > budget.bytes)
     throw io::located_error(
@@ -682,7 +794,7 @@ contact::MeshContactResult run_mesh_cycle(const Case& c, const std::function<voi
                          [&](const contact::FlankSpan& span, const int teeth[2]) {
                            // The strip solves' estimate (the mixed-EHL windows have none yet).
                            if (span.reader == contact::FlankSpan::Reader::strip) check_budget(c, span, teeth);
-                           if (span.reader == contact::FlankSpan::Reader::areal) check_areal_budget(c, span);
+                           if (span.reader == contact::FlankSpan::Reader::areal) check_areal_budget(c, span, teeth);
                            return rolling_flanks(c, span, teeth, synthesis, half_widths);
                          });
   } catch (const contact::RoughSurfaceOverload& e) {

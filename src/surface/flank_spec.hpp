@@ -46,6 +46,7 @@ struct FlankSpec {
   std::optional<SurfaceStatistics> measured;
   std::optional<FlankProfile> measured_profile;   // the topography's line for the deterministic fidelity
   std::optional<ProfileSpectrum> patch_spectrum;  // its profile spectrum, when a synthesis is asked for
+  std::optional<HeightGrid> patch;                // the cleaned surface itself, for the areal fidelity's patch lay
   // A generated profile along the involute ([*.flank.profile]): the deterministic fidelity's flank,
   // and (its statistics) the roughness of the others.
   std::optional<GeneratedProfileSpec> profile;

@@ -1,6 +1,7 @@
 #include "surface/profile_synthesis.hpp"
 
 #include "core/fftw_planner.hpp"
+#include "core/portable_random.hpp"
 
 #include <fmt/format.h>
 
@@ -16,10 +17,6 @@ namespace geartrib::surface {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// A uniform draw on [0, 1) from the generator's top 53 bits: the same on every platform (the std
-// distributions' algorithms are implementation-defined).
-double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
 // The last bin of an N-point one-sided spectrum: N/2 (the Nyquist bin when N is even).
 std::size_t last_bin(std::size_t n) { return n / 2; }
@@ -186,7 +183,7 @@ SynthesisedProfile synthesise_profile(const ProfileSpectrum& s, const SynthesisO
   std::mt19937_64 rng(o.seed);
   spectrum[0][0] = spectrum[0][1] = 0.0;  // mean zero
   for (std::size_t j = 1; j < bins; ++j) {
-    const double u = uniform01(rng);
+    const double u = core::uniform01(rng);
     if (m % 2 == 0 && j == m / 2) {  // the Nyquist coefficient is real: phase 0 or pi
       spectrum[j][0] = u < 0.5 ? amplitude[j] : -amplitude[j];
       spectrum[j][1] = 0.0;

@@ -110,8 +110,10 @@ HeightGrid gaussian_surface(const GaussianSurfaceSpec& s) {
   if (s.nx < 2 || s.ny < 1) throw std::invalid_argument("a Gaussian surface needs at least 2 x 1 points");
   check_grid(s.nx, s.ny, std::min(s.dx, s.dy));
   if (!(s.rq > 0.0 && s.rq <= kMaxHeight)) throw std::invalid_argument("rq must lie in (0, 1] m");
-  if (!(s.correlation_length >= 2.0 * std::max(s.dx, s.dy)))
-    throw std::invalid_argument("the correlation length must be at least two spacings each way");
+  if (!(s.correlation_length >= 2.0 * std::max(s.dx, s.dy)) || !(s.lambda_y() >= 2.0 * s.dy) ||
+      !(s.lambda_y() <= 1e3 * s.correlation_length))
+    throw std::invalid_argument(
+        "the correlation length must be at least two spacings each way, and along y at most 1000 times that along x");
   // The kernel exp(-r^2/(2 sigma^2)), sigma = lambda/2, to 4 sigma = 2 lambda along x (the noise runs
   // on that far beyond the ends; the cyclic convolution over the noise's length then never wraps
   // into the outputs); along y the whole period (cyclic: the rows wrap). One 2-D transform.
@@ -131,16 +133,19 @@ HeightGrid gaussian_surface(const GaussianSurfaceSpec& s) {
   fftw_execute(forward.get());
   // The kernel's transform, separable: along x the truncated Gaussian's at the bins 0..mx/2 of mx,
   // along y the periodic one's (its offsets -my/2 < j <= my/2) at every bin.
-  auto transform = [&](int bins, int m, double h, int first, int last) {
+  auto transform = [&](int bins, int m, double h, double lambda, int first, int last) {
     std::vector<double> t(static_cast<std::size_t>(bins));
-    const double a = h / s.correlation_length;
+    const double a = h / lambda;
     for (int b = 0; b < bins; ++b)
       for (int j = first; j <= last; ++j)
         t[static_cast<std::size_t>(b)] += std::exp(-2.0 * (a * j) * (a * j)) * std::cos(2.0 * kPi * b * j / m);
     return t;
   };
-  const std::vector<double> tx_full = transform(kx, mx, s.dx, -hx, hx);
-  const std::vector<double> ty = transform(my, my, s.dy, -((my - 1) / 2), my / 2);
+  const std::vector<double> tx_full = transform(kx, mx, s.dx, s.correlation_length, -hx, hx);
+  // Along y the offsets of one period, or the kernel's 4 s_y where it is longer (its images wrap).
+  const int hy = static_cast<int>(std::ceil(2.0 * s.lambda_y() / s.dy));
+  const std::vector<double> ty =
+      transform(my, my, s.dy, s.lambda_y(), -std::max((my - 1) / 2, hy), std::max(my / 2, hy));
   for (int by = 0; by < my; ++by)
     for (int bx = 0; bx < kx; ++bx) {
       const double f = tx_full[static_cast<std::size_t>(bx)] * ty[static_cast<std::size_t>(by)];
@@ -157,6 +162,37 @@ HeightGrid gaussian_surface(const GaussianSurfaceSpec& s) {
   for (double& v : g.z) v -= mean, var += v * v;
   const double scale = s.rq / std::sqrt(var / static_cast<double>(g.size()));
   for (double& v : g.z) v *= scale;
+  return g;
+}
+
+void SuperfinishedSpec::validate() const {
+  if (!(plateau > 0.0 && plateau < 1.0)) throw std::invalid_argument("the plateau fraction must lie in (0, 1)");
+  if (!(fine_rq >= 0.0 && fine_rq <= kMaxHeight))
+    throw std::invalid_argument("the fine texture's rq must lie in [0, 1] m");
+  if (fine_rq > 0.0 && !(fine_correlation >= 2.0 * std::max(ground.dx, ground.dy)))
+    throw std::invalid_argument("the fine texture's correlation length must be at least two spacings each way");
+}
+
+HeightGrid superfinished_surface(const SuperfinishedSpec& s) {
+  s.validate();
+  HeightGrid g = gaussian_surface(s.ground);
+  std::vector<double> sorted = g.z;
+  // The cut: the height above which `plateau` of the area lies (the lower order statistic).
+  const auto k = static_cast<std::size_t>(std::floor((1.0 - s.plateau) * static_cast<double>(sorted.size() - 1)));
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(k), sorted.end());
+  const double cut = sorted[k];
+  for (double& z : g.z) z = std::min(z, cut);
+  if (s.fine_rq > 0.0) {
+    GaussianSurfaceSpec fine = s.ground;
+    fine.rq = s.fine_rq, fine.correlation_length = s.fine_correlation, fine.correlation_length_y = 0.0;
+    fine.seed = s.ground.seed + 1;
+    const HeightGrid f = gaussian_surface(fine);
+    for (std::size_t i = 0; i < g.z.size(); ++i) g.z[i] += f.z[i];
+  }
+  double mean = 0.0;
+  for (double z : g.z) mean += z;
+  mean /= static_cast<double>(g.size());
+  for (double& z : g.z) z -= mean;
   return g;
 }
 

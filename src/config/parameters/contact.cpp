@@ -263,8 +263,26 @@ void declare_contact(ParameterRows& table) {
       .doc(
           "Areal: each flank's height map across the face: isotropic (a random surface with the flank profile's "
           "Gaussian correlation in every direction: superfinished, vibratory-finished or shot-peened flanks; a "
-          "generated ground profile) or extruded (the profile repeated across the face: the deterministic "
-          "fidelity's flank, a lay across the profile)");
+          "generated ground profile), directional (the same with areal.lay_ratio times the correlation across "
+          "the face: a ground flank's lay), extruded (the profile repeated across the face: the deterministic "
+          "fidelity's flank, an endless lay across the profile) or patch (the flank's measured topography, "
+          "synthesised from its areal spectrum or tiled: areal.patch)");
+  add(number(
+          "areal.lay_ratio", [](auto& c, int) -> auto& { return c.contact.areal.lay_ratio; }))
+      .range(1.0, contact::areal::ArealMeshOptions::kMaxLayRatio)
+      .field("contact.areal.lay_ratio")
+      .plausible(1.0, 50.0)
+      .doc(
+          "Areal, directional lay: the correlation length across the face over that along the involute "
+          "(Peklenik's gamma; ground flanks about 3 to over 10): 1 is isotropic, and large ratios approach the "
+          "extruded lay");
+  add(named_choice(
+          "areal.patch", contact::areal::areal_patch_choices(), "patch method",
+          [](auto& c, int) -> auto& { return c.contact.areal.patch; }))
+      .doc(
+          "Areal, patch lay: how the measured patch (smaller than the flank) makes each flank's map: synthesis "
+          "(its areal power spectrum with random phases seeded by the topography's synthesis_seed: the lay "
+          "kept, no wavelength longer than the patch) or tiled (the patch itself repeated by mirror images)");
   add(number(
           "areal.tolerance", [](auto& c, int) -> auto& { return c.contact.areal.tolerance; }))
       .range(1e-12, 1e-2)

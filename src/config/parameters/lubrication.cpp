@@ -114,7 +114,9 @@ void declare_lubrication(ParameterRows& table) {
       .alias({"asperity_pressure"})
       .doc(
           "Asperity pressure in the load sharing: auto (the asperity model, or the bearing area at the hardness "
-          "where its plastic area fraction exceeds 0.99, blended from 0.9), asperity-model or bearing-area");
+          "where its plastic area fraction exceeds 0.99, blended from 0.9), asperity-model, bearing-area, or persson "
+          "(Persson's interfacial separation law on the flanks' spectrum, blended with the bearing area as auto by "
+          "his own plastic fraction; film_gap must be mean-gap)");
   add(named_choice(
           "lubrication.traction", lubrication::film_traction_choices(), "film traction model",
           [](auto& c, int) -> auto& { return c.lubrication.traction; }))

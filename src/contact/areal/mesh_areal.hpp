@@ -4,7 +4,9 @@
 // deterministic fidelity's strip, periodic across the face over areal.window. Each flank's map is
 // read where it has rolled to, sliding past the other as the profile fidelity rolls its profiles;
 // the pressure capped at the softer flank's hardness; the statistical model on the same flanks
-// beside it. Running-in is not carried (a single mesh of the new flanks).
+// beside it. Running-in as the profile fidelity does it: each mesh lowers the maps by the plastic
+// interpenetration where the pressure is capped (the softer flank takes it; equal hardness, half each),
+// until shakedown.
 #pragma once
 
 #include "contact/areal/areal_bem.hpp"
@@ -18,27 +20,22 @@
 
 namespace geartrib::contact::areal {
 
-// A flank's height map over its stretch of the involute: z(sigma, y) at sigma = start + i dx,
-// y = j dy (periodic across the face) [m].
-struct FlankMap {
-  int nx = 0, ny = 0;
-  double start = 0.0, dx = 0.0, dy = 0.0;  // [m]
-  std::vector<double> z;                   // [m], z[j * nx + i]
-  // The height at sigma on row j, linear between the map's points (sigma inside the map).
-  double at(double sigma, int j) const;
-};
+// Each flank's generated maps for the span, one per tooth (seed + tooth), at the elements' spacing
+// along the involute (read between its points by linear interpolation, which lowers its Rq by
+// (e/lambda)^2/6: 0.04 % on the shipped case):
+//  - isotropic, directional: a Gaussian random surface with the flank's generated ground profile's Rq
+//    and correlation length along the involute, and across the face that length (isotropic) or
+//    areal.lay_ratio times it (directional);
+//  - extruded: the profile's element means repeated across the face (made only for running-in, which
+//    lowers them differently row by row; without it the strip reads the profiles).
+// Throws core::KeyedError ("areal.lay", "areal.window", "areal.points") when a flank cannot give the
+// lay or the window is too narrow. (The patch lay's maps come with the flanks: RollingFlanks.)
+std::array<std::vector<FlankMap>, 2> flank_maps(const FidelityInputs& in, const FlankSpan& span,
+                                                const RollingFlanks& flanks);
 
-// Both flanks' isotropic maps for the span (areal.lay = "isotropic"): a Gaussian random surface with
-// each flank's generated ground profile's Rq and correlation length in every direction, seeded by
-// the profile's seed, at the elements' spacing along the involute (read between its points by linear
-// interpolation, which lowers its Rq by (e/lambda)^2/6: 0.04 % on the shipped case). Throws
-// core::KeyedError ("areal.lay", "areal.window", "areal.points") when a flank cannot give the lay or
-// the window is too narrow. (An extruded lay needs no map: the profiles' element means, as the
-// deterministic fidelity takes them.)
-std::array<FlankMap, 2> flank_maps(const FidelityInputs& in, const FlankSpan& span, const RollingFlanks& flanks);
-
-// The bytes an areal run holds at its peak: both flanks' maps (isotropic) and the window's solve.
-double areal_run_bytes(const FlankSpan& span, const ArealMeshOptions& o);
+// The bytes an areal run holds at its peak: the flanks' maps (teeth[g] of gear g; none for an
+// extruded lay without running-in) and the window's solve.
+double areal_run_bytes(const FlankSpan& span, const ArealMeshOptions& o, const int teeth[2]);
 
 // One position's answer, per unit face width where it says so.
 struct ArealStrip {
@@ -62,23 +59,25 @@ struct ArealStrip {
 // asperities' scale) and 0.786 b (the smooth line contact's maximum, Johnson 1985 section 4.2) [m].
 std::vector<double> stress_depths(double element_size, double hertz_half_width);
 
-inline constexpr std::array<std::string_view, 10> kKeys = {
-    "contact.positions",         "contact.outputs", "contact.element_size", "contact.strip_halfwidths",
-    "contact.pressure_profiles", "areal.window",    "areal.points",         "areal.lay",
-    "areal.tolerance",           "asperity.model"};
+inline constexpr std::array<std::string_view, 15> kKeys = {
+    "contact.positions",         "contact.outputs",  "contact.element_size", "contact.strip_halfwidths",
+    "contact.pressure_profiles", "areal.window",     "areal.points",         "areal.lay",
+    "areal.lay_ratio",           "areal.patch",      "areal.tolerance",      "running_in.meshes",
+    "running_in.tolerance",      "running_in.teeth", "asperity.model"};
 // (Not the positions: the ladder's finest, hundreds of positions, is minutes of the areal solver.)
 // "ladder": GW, Persson, the profile fidelity and this one on the same flanks (geartrib tradeoff).
 inline constexpr std::array<TradeKnob, 4> kKnobs = {TradeKnob{"element_size", "contact.element_size"},
                                                     {"points", "areal.points"},
                                                     {"tolerance", "areal.tolerance"},
                                                     {"ladder", ""}};
-inline constexpr std::array<OutputGroup, 3> kGroups = {
+inline constexpr std::array<OutputGroup, 4> kGroups = {
     OutputGroup{"/contact",
                 "both flanks' height maps in contact by areal boundary elements, a window periodic "
                 "across the face"},
     OutputGroup{"/contact/pressure", "the pressure across the strip (its mean across the face) at the positions kept"},
     OutputGroup{"/statistical",
-                "the statistical model (uncoupled) on the same flanks: their spectral moments from the profiles"}};
+                "the statistical model (uncoupled) on the same flanks: their spectral moments from the profiles"},
+    OutputGroup{"/running_in", "the flanks' plastic deformation carried from mesh to mesh, on their height maps"}};
 
 struct Areal {
   static constexpr std::string_view name = "areal";
@@ -89,18 +88,25 @@ struct Areal {
 
   struct State {
     FlankSpan span;
-    DeterministicOptions options;  // the strip, the cap and the Poisson ratio
+    DeterministicOptions options;  // the strip, the cap, the Poisson ratio and the plastic share
     HalfPlaneGrid grid;            // the strip's elements along the involute
     std::array<std::vector<double>, 2> sigma;
+    int teeth[2] = {1, 1};  // each gear's flanks held (the hunting order: every tooth's)
+    bool hunting = false;
     RollingFlanks flanks;
-    std::array<FlankMap, 2> maps;  // isotropic lay only
+    std::array<std::vector<FlankMap>, 2> maps;  // each tooth's; empty: the extruded lay reads the profiles
+    // Persson's full gradient over the profiles' slope variance along the involute (1 extruded, 2
+    // isotropic, 1 + 1/ratio^2 directional, the maps' own for a patch).
+    double gradient_factor = 1.0;
     std::optional<SurfaceModel> model;
     const SurfaceModel* surface() const { return model ? &*model : nullptr; }
   };
   struct Solution {
     std::optional<StatisticalSolution> statistical;
-    std::vector<double> share;  // the asperities' share of each position's load
-    std::vector<ArealStrip> strips;
+    std::vector<double> share;       // the asperities' share of each position's load
+    std::vector<ArealStrip> strips;  // the first mesh's
+    std::vector<deterministic::HistoryRow> history;
+    std::optional<RunningInResult> running_in;
   };
   static State prepare(const FidelityInputs& in, StageClock& clock);
   static Solution solve(const FidelityInputs& in, State& state, const std::vector<double>& share, StageClock& clock);

@@ -122,20 +122,7 @@ HistoryRow history_row(int mesh, const std::vector<const MeshPass*>& passes,
                        const std::vector<const FlankTrack*> tracks[2], const FlankSpan& span) {
   HistoryRow row;
   row.mesh = mesh;
-  if (!passes.empty()) {
-    row.new_plastic = row.real_area = row.plastic_fraction = row.peak_pressure = 0.0;
-    for (const MeshPass* p : passes) {
-      std::vector<double> area, fraction;
-      for (const auto& s : p->strips) {
-        area.push_back(s.real_area_ratio);
-        fraction.push_back(s.plastic_area_fraction);
-        row.peak_pressure = std::max(row.peak_pressure, s.peak_pressure);
-      }
-      row.new_plastic = std::max(row.new_plastic, p->max_new_plastic);
-      row.real_area += path_mean(area) / static_cast<double>(passes.size());
-      row.plastic_fraction += path_mean(fraction) / static_cast<double>(passes.size());
-    }
-  }
+  row.add_passes(passes);
   for (int g = 0; g < 2; ++g) {  // the teeth's mean statistics, at the elements' sampling
     surface::ProfileStatistics& m = row.flank[g];
     for (const FlankTrack* t : tracks[g]) {
@@ -385,6 +372,14 @@ std::vector<bool> kept_profiles(const ContactSettings& cs, const PathState& p) {
   return keep;
 }
 
+double FlankMap::at(double sigma, int j) const {
+  const double u = (sigma - start) / dx;
+  const int i = std::clamp(static_cast<int>(std::floor(u)), 0, nx - 2);
+  const double t = std::clamp(u - i, 0.0, 1.0);
+  const double* row = &z[static_cast<std::size_t>(j) * nx];
+  return row[i] + t * (row[i + 1] - row[i]);
+}
+
 namespace deterministic {
 
 namespace {
@@ -541,9 +536,16 @@ void BoundaryElements::write(const FidelityInputs& in, State& st, Solution& s, M
         {static_cast<int>(k), names[k], in.path.s[k], x, std::move(s.first.strips[k].pressure)});
   }
   if (!s.running_in) return;
-  using H = HistoryRow;
+  write_running_in_history(s.history, *s.running_in);
+  r.running_in = std::move(s.running_in);
+}
+
+}  // namespace deterministic
+
+void write_running_in_history(const std::vector<deterministic::HistoryRow>& history, RunningInResult& ri) {
+  using H = deterministic::HistoryRow;
   using C = Column<H>;
-  add_columns<H>(s.running_in->history, s.history,
+  add_columns<H>(ri.history, history,
                  {C{"mesh", "1", [](const H& h) { return h.mesh; }},
                   C{"new_plastic_deformation_m", "m", [](const H& h) { return h.new_plastic; }},
                   C{"real_area_ratio_mean", "1", [](const H& h) { return h.real_area; }},
@@ -557,9 +559,6 @@ void BoundaryElements::write(const FidelityInputs& in, State& st, Solution& s, M
                   C{"wheel_peak_height_m", "m", [](const H& h) { return h.flank[1].peak_height; }},
                   C{"wheel_rsk", "1", [](const H& h) { return h.flank[1].rsk; }},
                   C{"wheel_summit_radius_m", "m", [](const H& h) { return h.flank[1].summit_radius; }}});
-  r.running_in = std::move(s.running_in);
 }
-
-}  // namespace deterministic
 
 }  // namespace geartrib::contact

@@ -7,8 +7,10 @@
 #include "contact/deterministic_contact.hpp"
 #include "contact/fidelity.hpp"
 #include "contact/half_plane_bem.hpp"
+#include "contact/mesh_contact.hpp"
 #include "contact/statistical/strip_fidelities.hpp"
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <optional>
@@ -47,10 +49,22 @@ struct FlankSpan {
   double centred_start(int g, double length) const { return 0.5 * (active_first[g] + active_last[g]) - 0.5 * length; }
 };
 
+// A flank's height map over its stretch of the involute and a window across the face (the areal
+// fidelity's): z(sigma, y) at sigma = start + i dx, y = j dy (periodic across the face) [m].
+struct FlankMap {
+  int nx = 0, ny = 0;
+  double start = 0.0, dx = 0.0, dy = 0.0;  // [m]
+  std::vector<double> z;                   // [m], z[j * nx + i]
+  // The height at sigma on row j, linear between the map's points (sigma inside the map).
+  double at(double sigma, int j) const;
+};
+
 // The flanks a run rolls, supplied by the caller for the span: one track per tooth (`teeth[g]`
-// of them: 1 for a pair, z for the hunting order), each covering [first, last] of its gear.
+// of them: 1 for a pair, z for the hunting order), each covering [first, last] of its gear. The
+// areal fidelity's patch lay also takes each tooth's map from the caller (the track: its middle row).
 struct RollingFlanks {
   std::vector<FlankTrack> pinion, wheel;
+  std::vector<FlankMap> pinion_maps, wheel_maps;
 };
 
 // What every fidelity that rolls the flanks' profiles shares (the deterministic one, the mixed-EHL
@@ -149,6 +163,25 @@ struct HistoryRow {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();  // row 0: before any mesh
   double mesh = 0.0, new_plastic = kNaN, real_area = kNaN, plastic_fraction = kNaN, peak_pressure = kNaN;
   surface::ProfileStatistics flank[2];
+  // A mesh's passes (one per tooth pair; each with strips of real_area_ratio, plastic_area_fraction and
+  // peak_pressure, and its max_new_plastic): the deepest new plastic deformation, the path's mean real
+  // area and plastic share over the passes, the peak pressure.
+  template <class Pass>
+  void add_passes(const std::vector<const Pass*>& passes) {
+    if (passes.empty()) return;
+    new_plastic = real_area = plastic_fraction = peak_pressure = 0.0;
+    for (const Pass* p : passes) {
+      std::vector<double> area, fraction;
+      for (const auto& s : p->strips) {
+        area.push_back(s.real_area_ratio);
+        fraction.push_back(s.plastic_area_fraction);
+        peak_pressure = std::max(peak_pressure, s.peak_pressure);
+      }
+      new_plastic = std::max(new_plastic, p->max_new_plastic);
+      real_area += path_mean(area) / static_cast<double>(passes.size());
+      plastic_fraction += path_mean(fraction) / static_cast<double>(passes.size());
+    }
+  }
 };
 
 // The flanks' profiles rolled through the strip by boundary elements, with the statistical model
@@ -184,5 +217,10 @@ struct BoundaryElements {
 };
 
 }  // namespace deterministic
+
+// The running-in history's series (/running_in: mesh, new plastic deformation, the path's mean real
+// area and plastic fraction, the peak pressure, each flank's Rq, peak height, Rsk and summit radius),
+// shared by the rolling fidelities that run in.
+void write_running_in_history(const std::vector<deterministic::HistoryRow>& history, RunningInResult& ri);
 
 }  // namespace geartrib::contact
