@@ -453,7 +453,9 @@ std::string rung_verdict(const Setting& s, const Row& r, const Curves& c, const 
   if (beyond.empty()) return fmt::format("holds ({})", within);
   // The real area's path mean against the reference's: which way the model reads.
   const double bias = contact::path_mean(c.outputs[0]) / contact::path_mean(ref.outputs[0]) - 1.0;
-  const bool isotropic = row("areal.lay").get(base, -1).text == "isotropic";
+  // The flanks' lay: extruded, the profile fidelity's own flanks; any other, maps drawn on each grid.
+  const std::string lay = row("areal.lay").get(base, -1).text;
+  const bool extruded = lay == "extruded";
   std::vector<std::string> why;
   auto add = [&](bool when, const std::string& reason) {
     if (when && std::find(why.begin(), why.end(), reason) == why.end()) why.push_back(reason);
@@ -482,10 +484,10 @@ std::string rung_verdict(const Setting& s, const Row& r, const Curves& c, const 
       add(bias >= 0.0, "Persson's theory reads high here");
       break;
     case Rung::profile:
-      add(isotropic,
-          "the profile fidelity extrudes each flank's profile across the face: line contacts as wide as the face, "
-          "where these isotropic flanks (areal.lay = isotropic) touch in round spots");
-      add(!isotropic, "on the same extruded flanks: its strip's elements and stress planes differ from the window's");
+      add(!extruded, fmt::format("the profile fidelity extrudes each flank's profile across the face: line contacts "
+                                 "as wide as the face, where these flanks (areal.lay = {}) touch in {}",
+                                 lay, lay == "isotropic" ? "round spots" : "spots of finite length across it"));
+      add(extruded, "on the same extruded flanks: its strip's elements and stress planes differ from the window's");
       break;
     case Rung::areal: {
       auto coarser = [&](const std::string& key, bool finer_is_smaller) {
@@ -499,8 +501,7 @@ std::string rung_verdict(const Setting& s, const Row& r, const Curves& c, const 
                         value_of(s, "areal.tolerance", base) > value_of(finest, "areal.tolerance", base);
       add((off[0] || off[1]) && grid,
           std::string("a coarser grid than the reference's") +
-              (isotropic ? "; each grid draws its own realisation of the isotropic maps, whose scatter this holds too"
-                         : ""));
+              (extruded ? "" : "; each grid draws its own realisation of the maps, whose scatter this holds too"));
       add((off[0] || off[1]) && grid && stop, "and a looser stop (areal.tolerance)");
       add(off[2] && elements,
           "the von Mises maximum is sought on planes 1 to 32 element sizes deep (and at 0.786 b): coarser elements "
