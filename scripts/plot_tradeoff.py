@@ -7,6 +7,7 @@ Usage: scripts/plot_tradeoff.py TRADEOFF.csv OUT.png [TOLERANCE]
 Debian's python3-matplotlib; /usr/bin/python3.
 """
 import csv
+import math
 import sys
 
 import matplotlib
@@ -33,7 +34,9 @@ def main(argv):
     for n, k in enumerate(knobs + ["combined"]):
         sel = [r for r in rows if r["knob"] == k]
         t = [float(r["time_s"]) for r in sel]
-        e = [max(floor, max(float(r["error_real_area"]), float(r["error_plastic_fraction"]), float(r["error_peak_stress"])))
+        # The worst of the outputs the model has (a ladder's Persson has no peak stress: nan).
+        e = [max([floor] + [x for x in (float(r["error_real_area"]), float(r["error_plastic_fraction"]),
+                                        float(r["error_peak_stress"])) if not math.isnan(x)])
              for r in sel]
         style = "s--" if k == "combined" else markers[n % len(markers)] + "-"
         line, = ax.plot(t, e, style, ms=4, lw=0.8, label=k, color="k" if k == "combined" else colors[n % len(colors)])

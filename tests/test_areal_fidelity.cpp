@@ -89,6 +89,22 @@ TEST(ArealFidelity, ExtrudedFlanksAgreeWithTheProfileFidelity) {
   EXPECT_FALSE(a.statistical.empty());  // the statistical model beside it, on the same profiles
 }
 
+TEST(ArealFidelity, PerssonBesideIsItsOwnStage) {
+  // `geartrib tradeoff`'s ladder times Persson's theory by its stage: both rolling fidelities record
+  // it, last (it runs as they write), beside its three series.
+  const std::vector<io::CaseChange> cheap = {{"positions", "3"}, {"element_size", "1um"}};
+  std::vector<io::CaseChange> areal = cheap, profile = cheap;
+  areal.insert(areal.end(), {{"areal.lay", "extruded"}, {"areal.points", "4"}});
+  profile.push_back({"contact.fidelity", "deterministic"});
+  for (const auto& changes : {areal, profile}) {
+    const contact::MeshContactResult r = runs::run_mesh_cycle(areal_case(changes));
+    ASSERT_FALSE(r.stages.empty()) << r.fidelity;
+    EXPECT_EQ(r.stages.back().name, "persson_beside") << r.fidelity;
+    EXPECT_GE(r.stages.back().seconds, 0.0) << r.fidelity;
+    EXPECT_EQ(values(r, "statistical_persson_real_area_ratio").size(), 3u) << r.fidelity;
+  }
+}
+
 TEST(ArealFidelity, RefusesAtTheKey) {
   auto key_of = [](const Case& c) {
     try {

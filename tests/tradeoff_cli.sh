@@ -17,6 +17,19 @@ check text 0 "^Recommended \(cheapest within 1% of each knob's reference on all 
 check tight-tolerance 0 "" -- \
   bash -c '"$0" tradeoff --min-time 0 -q --tolerance 1e-9 --knob positions --csv > "$1"' "$bin" "$tmp/tight.csv"
 check unknown-knob 2 "none of the names is a knob" -- "$bin" tradeoff --min-time 0 --knob no_such_knob
+# A setting the case refuses (here the time budget's estimate of the finest elements: 21 positions of
+# 55 ms) is left out and said, and the next is the reference; a knob all of whose settings the case
+# refuses is the case's refusal (exit 2, its key and rule).
+refused=(gears/m6z30-deterministic.toml --knob element_size --min-time 0 -q --set threads=1)
+check refused-left-out 0 "^  element_size 0.125 um: .*more than the time budget of 1 s" -- \
+  env GEARTRIB_TIME_BUDGET=1s "$bin" tradeoff "${refused[@]}" --set positions=21
+check refused-next-is-reference 0 "^element_size,0.25 um,.*,0,0,0,\"reference, recommended\"" -- \
+  env GEARTRIB_TIME_BUDGET=1s "$bin" tradeoff "${refused[@]}" --set positions=21 --csv
+check refused-all 2 "key 'contact.positions' = 801: the run would take .* more than the time budget of 1 s" -- \
+  env GEARTRIB_TIME_BUDGET=1s "$bin" tradeoff "${refused[@]}" --set positions=801
+# The ladder's tolerance: a relative error in (0, 1] (the ladder itself: validation/areal-ladder, label long).
+check ladder-tolerance 2 "--ladder-tolerance: Value 2 not in range" -- \
+  "$bin" tradeoff gears/m6z30-areal.toml --knob ladder --ladder-tolerance 2
 # The runs behind five rows, computed independently: positions 11 against 801 (the positions differ:
 # path minimum, mean and maximum only), height_points 8 and 16 against 1024 and the ceb and hertz models
 # against the case's continuous one (same positions: pointwise too).

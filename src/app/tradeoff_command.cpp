@@ -4,6 +4,9 @@
 // real-area ratio, the plastic area fraction and the highest asperity's von Mises stress along
 // A -> E. Then the case as given and the recommended combination (each knob's cheapest setting
 // within the tolerance of its reference) are compared with all knobs at their highest settings.
+// An areal case has also the ladder: the models that answer the same question on the same flanks
+// (GW and Persson beside it, the profile fidelity, the areal fidelity at its knobs' settings)
+// against the areal fidelity at the finest settings the case allows, and where each one holds.
 #include "app/case_loading.hpp"
 #include "app/commands.hpp"
 #include "contact/fidelity_registry.hpp"
@@ -12,6 +15,8 @@
 
 #include "config/case_file.hpp"
 #include "config/case_prepare.hpp"
+#include "config/case_records.hpp"
+#include "config/input_error.hpp"
 #include "config/units.hpp"
 #include "fem/ccx_results.hpp"
 #include "output/column_table.hpp"
@@ -24,41 +29,74 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <exception>
 #include <iostream>
+#include <limits>
+#include <map>
+#include <optional>
+#include <set>
 #include <utility>
 
 namespace geartrib::app {
 
 namespace {
 
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
 struct Options {
   CaseOptions case_options;
   TableOptions table;
   double tolerance = 0.01;
+  double ladder_tolerance = 0.1;
   double min_time = 0.3;
   std::vector<std::string> knobs;
   bool quiet = false;
 };
 
+// The model a ladder's rung reads (the verdict says why each one departs where it does).
+enum class Rung { none, gw, persson, profile, areal };
+
 struct Setting {
+  Setting(std::string label_, std::vector<io::CaseChange> changes_, Rung rung_ = Rung::none,
+          std::optional<std::array<std::string, 3>> series_ = std::nullopt, std::vector<std::string> laps_ = {})
+      : label(std::move(label_)),
+        changes(std::move(changes_)),
+        rung(rung_),
+        series(std::move(series_)),
+        laps(std::move(laps_)) {}
   std::string label;
   std::vector<io::CaseChange> changes;
+  // A ladder's rung: its model; the three series it reads where that is not the run's fidelity (an
+  // empty name: the model has no such output); the stage laps that are its time (none: the run's).
+  Rung rung;
+  std::optional<std::array<std::string, 3>> series;
+  std::vector<std::string> laps;
 };
 
 // A knob's settings from cheapest to most faithful; the last is its reference. `physics`: the
 // settings are different models (or, for the integrator, not used by the case): reported, not
-// part of the recommended combination nor of the all-highest reference.
+// part of the recommended combination nor of the all-highest reference. `key`: the case key whose
+// ladder it runs (empty: one of the trade tool's own knobs). `ladder`: the areal ladder, whose
+// rungs are made once the case's allowed resolution settings are known (ladder_rungs).
 struct Knob {
+  Knob(std::string name_, std::vector<Setting> settings_, bool physics_, std::string key_ = "", bool ladder_ = false)
+      : name(std::move(name_)),
+        settings(std::move(settings_)),
+        physics(physics_),
+        key(std::move(key_)),
+        ladder(ladder_) {}
   std::string name;
   std::vector<Setting> settings;
-  bool physics = false;
+  bool physics;
+  std::string key;
+  bool ladder;
 };
 
 const io::Parameter& row(const std::string& key) { return *io::find_parameter(key).parameter; }
 
 // A resolution's ladder from the parameter table.
 Knob ladder(std::string_view name, std::string_view key) {
-  Knob k{std::string(name), {}, false};
+  Knob k{std::string(name), {}, false, std::string(key)};
   for (const auto& v : row(std::string(key)).ladder) k.settings.push_back({v, {{std::string(key), v}}});
   return k;
 }
@@ -165,6 +203,8 @@ std::vector<Knob> knobs_of(const Case& c) {
       out.push_back(choice_knob(k.name, "lubrication.film_formula", row("lubrication.film_formula").get(c, -1).text));
     } else if (k.name == "inlet_heating" && c.lubrication.lubricated) {
       out.push_back(choice_knob(k.name, "lubrication.inlet_heating", row("lubrication.inlet_heating").get(c, -1).text));
+    } else if (k.name == "ladder") {
+      out.push_back({"ladder", {}, true, "", true});
     }
   }
   return out;
@@ -178,42 +218,164 @@ std::array<std::string, 3> outputs_of(const Case& c) {
           std::string(contact::find_fidelity(c.contact.fidelity).traits.peak_stress)};
 }
 
-struct Curves {
-  std::vector<double> s;
-  std::vector<std::vector<double>> outputs;  // per kOutputs
-};
-
+// One case's mesh cycle: the fastest of its repeats, that repeat's result and the case's fidelity
+// outputs.
 struct Timed {
   double seconds = 0.0;
-  Curves curves;
+  contact::MeshContactResult result;
+  std::array<std::string, 3> outputs;
 };
 
-// One setting on top of the command line's --set changes.
-Timed run_timed(const std::filesystem::path& case_file, const std::vector<io::CaseChange>& base,
-                const std::vector<io::CaseChange>& setting, double min_time) {
-  std::vector<io::CaseChange> changes = base;
-  changes.insert(changes.end(), setting.begin(), setting.end());
-  const Case c = io::prepare_case(io::load_case(case_file, changes));
+Timed time_cycle(const Case& c, double min_time) {
   Timed t;
   t.seconds = 1e300;
+  t.outputs = outputs_of(c);
   double total = 0.0;
   for (int repeat = 0; repeat < 5 && (repeat == 0 || total < min_time); ++repeat) {
     const auto start = std::chrono::steady_clock::now();
-    const contact::MeshContactResult r = runs::run_mesh_cycle(c);
+    contact::MeshContactResult r = runs::run_mesh_cycle(c);
     const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    t.seconds = std::min(t.seconds, dt);  // the least disturbed of the repeats
+    // The tradeoff reads the per-position series and the stages: the profiles kept are dropped.
+    r.pressure_profiles.clear(), r.ehl_profiles.clear(), r.synthesis.clear(), r.running_in.reset();
+    if (dt < t.seconds) t.seconds = dt, t.result = std::move(r);  // the least disturbed of the repeats
     total += dt;
-    if (repeat == 0) {
-      t.curves.s = r.find("s_m")->values;
-      for (const std::string& name : outputs_of(c)) {
-        const contact::Series* q = r.find(name);
-        if (!q)
-          throw std::invalid_argument(std::string("tradeoff needs the case's contact outputs to include ") + name);
-        t.curves.outputs.push_back(q->values);
-      }
-    }
   }
   return t;
+}
+
+// The tradeoff's runs, each case once: settings whose cases hold the same parameters (a knob's
+// own setting and the case as given) share a run. A case refused as input (io::InputError: a
+// height map beyond the grid's limit, a budget) is remembered with its refusal.
+class Runs {
+ public:
+  struct Outcome {
+    std::optional<Timed> timed;
+    std::exception_ptr refusal;
+    std::string why;
+  };
+  Runs(std::filesystem::path case_file, std::vector<io::CaseChange> given, double min_time)
+      : case_file_(std::move(case_file)), given_(std::move(given)), min_time_(min_time) {}
+
+  // The case with the command line's --set changes and then the setting's.
+  const Outcome& run(const std::vector<io::CaseChange>& setting) {
+    std::vector<io::CaseChange> changes = given_;
+    changes.insert(changes.end(), setting.begin(), setting.end());
+    std::optional<Case> c;
+    std::string key;
+    try {
+      c = io::prepare_case(io::load_case(case_file_, changes));
+      for (const ResolvedParameter& p : io::current_parameters(*c)) key += p.key + '=' + p.value + '\n';
+    } catch (const io::InputError& e) {
+      key = "refused at loading:";
+      for (const auto& ch : changes) key += ' ' + ch.key + '=' + ch.value;
+      return done_.try_emplace(key, Outcome{std::nullopt, std::current_exception(), e.what()}).first->second;
+    }
+    if (const auto found = done_.find(key); found != done_.end()) return found->second;
+    Outcome o;
+    try {
+      o.timed = time_cycle(*c, min_time_);
+    } catch (const io::InputError& e) {
+      o.refusal = std::current_exception();
+      o.why = e.what();
+    }
+    return done_.emplace(key, std::move(o)).first->second;
+  }
+
+ private:
+  std::filesystem::path case_file_;
+  std::vector<io::CaseChange> given_;
+  double min_time_;
+  std::map<std::string, Outcome> done_;
+};
+
+// A knob's settings the case allows, each with its run, in the knob's order: a setting the case
+// refuses is left out and said in `left_out`; when it refuses all, its first refusal is thrown.
+std::vector<std::pair<Setting, const Timed*>> allowed(const Knob& k, Runs& runs, std::vector<std::string>& left_out) {
+  std::vector<std::pair<Setting, const Timed*>> out;
+  std::exception_ptr first;
+  for (const Setting& s : k.settings) {
+    const Runs::Outcome& o = runs.run(s.changes);
+    if (o.timed) {
+      out.emplace_back(s, &*o.timed);
+      continue;
+    }
+    if (!first) first = o.refusal;
+    const std::string note = k.name + " " + s.label + ": " + o.why;
+    if (std::find(left_out.begin(), left_out.end(), note) == left_out.end()) left_out.push_back(note);
+  }
+  if (out.empty() && first) std::rethrow_exception(first);
+  return out;
+}
+
+// The ladder on an areal case's flanks (contact.fidelity = areal), each rung with its model:
+// GW and Persson beside the case as given (their time: their stage laps), the profile fidelity on
+// the same flanks (on one thread, as the areal fidelity solves its positions), the areal fidelity
+// as given and at each setting of its resolution knobs the case allows (one run each: a setting
+// that is the case as given is not repeated), and the reference: every resolution knob at its
+// finest allowed setting. The reference's settings are named in `reference`.
+std::vector<Setting> ladder_rungs(const std::vector<Knob>& resolution, Runs& runs, std::vector<std::string>& left_out,
+                                  std::string& reference) {
+  std::vector<Setting> rungs = {
+      {"GW (statistical)",
+       {},
+       Rung::gw,
+       std::array<std::string, 3>{"statistical_real_area_ratio", "statistical_plastic_area_fraction",
+                                  "statistical_max_asperity_von_mises_Pa"},
+       {"statistical_surface_table", "statistical_model"}},
+      {"Persson",
+       {},
+       Rung::persson,
+       std::array<std::string, 3>{"statistical_persson_real_area_ratio", "statistical_persson_plastic_area_fraction",
+                                  ""},
+       {"persson_beside"}},
+      {"profile BEM", {{"contact.fidelity", "deterministic"}, {"contact.threads", "1"}}, Rung::profile},
+      {"areal (case)", {}, Rung::areal}};
+  // The case as given and the reference, each refused only as the case is: thrown.
+  auto required = [&](const std::vector<io::CaseChange>& changes) -> const Timed* {
+    const Runs::Outcome& r = runs.run(changes);
+    if (!r.timed) std::rethrow_exception(r.refusal);
+    return &*r.timed;
+  };
+  std::set<const Timed*> areal_runs = {required({})};
+  std::vector<io::CaseChange> finest;
+  for (const Knob& k : resolution) {
+    const auto settings = allowed(k, runs, left_out);
+    for (const auto& [s, t] : settings)
+      if (areal_runs.insert(t).second) rungs.push_back({"areal " + k.name + " " + s.label, s.changes, Rung::areal});
+    const Setting& last = settings.back().first;
+    finest.insert(finest.end(), last.changes.begin(), last.changes.end());
+    reference += (reference.empty() ? "" : ", ") + k.name + " " + last.label;
+  }
+  required(finest);
+  rungs.push_back({"areal finest", finest, Rung::areal});
+  return rungs;
+}
+
+// A model's outputs along the path, as a setting reads them from its run, and its time.
+struct Curves {
+  double seconds = 0.0;
+  std::vector<double> s;
+  std::array<std::vector<double>, 3> outputs;  // empty: the model has none
+};
+
+// The run's fidelity outputs and its time, or a rung's series and laps; none when the run holds no
+// such model (a rung's real area absent: no statistical model beside a flat flank).
+std::optional<Curves> read(const Setting& setting, const Timed& t) {
+  Curves c;
+  c.s = t.result.find("s_m")->values;
+  const std::array<std::string, 3>& names = setting.series ? *setting.series : t.outputs;
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (names[k].empty()) continue;
+    const contact::Series* q = t.result.find(names[k]);
+    if (!q && !setting.series)
+      throw std::invalid_argument(std::string("tradeoff needs the case's contact outputs to include ") + names[k]);
+    if (!q && k == 0) return std::nullopt;
+    if (q) c.outputs[k] = q->values;
+  }
+  c.seconds = setting.laps.empty() ? t.seconds : 0.0;
+  for (const contact::StageTiming& st : t.result.stages)
+    if (std::find(setting.laps.begin(), setting.laps.end(), st.name) != setting.laps.end()) c.seconds += st.seconds;
+  return c;
 }
 
 // The error of one output against the reference, relative to the reference's largest magnitude:
@@ -236,16 +398,135 @@ double curve_error(const std::vector<double>& s, const std::vector<double>& v, c
 struct Row {
   std::string knob, setting;
   double seconds = 0.0;
-  double errors[3] = {0.0, 0.0, 0.0};
+  double errors[3] = {0.0, 0.0, 0.0};  // NaN: the model has no such output
   bool reference = false, recommended = false;
-  double worst() const { return std::max({errors[0], errors[1], errors[2]}); }
+  std::string verdict;  // a ladder's rung: where it holds (rung_verdict)
+  // The largest error of the outputs the model has.
+  double worst() const {
+    double w = 0.0;
+    for (double e : errors)
+      if (!std::isnan(e)) w = std::max(w, e);
+    return w;
+  }
 };
 
-Row compare(const std::string& knob, const std::string& setting, const Timed& t, const Timed& ref) {
-  Row r{knob, setting, t.seconds, {}, false, false};
+Row compare(const std::string& knob, const std::string& setting, const Curves& c, const Curves& ref) {
+  Row r{knob, setting, c.seconds, {}, false, false, {}};
   for (std::size_t k = 0; k < 3; ++k)
-    r.errors[k] = curve_error(t.curves.s, t.curves.outputs[k], ref.curves.s, ref.curves.outputs[k]);
+    r.errors[k] =
+        c.outputs[k].empty() || ref.outputs[k].empty() ? kNaN : curve_error(c.s, c.outputs[k], ref.s, ref.outputs[k]);
   return r;
+}
+
+// A setting's value of a resolution key: its own change, else the case's.
+double value_of(const Setting& s, const std::string& key, const Case& base) {
+  const io::Parameter& p = row(key);
+  double v = p.get(base, -1).number;
+  for (const io::CaseChange& ch : s.changes)
+    if (ch.key == key) v = io::parse_quantity(ch.value, p.dimension);
+  return v;
+}
+
+// Where a ladder's rung holds on this case: within `tolerance` of the reference on every output it
+// has; where not, why the physics says it departs there, output by output. In brief before its
+// first " (": "holds", or "does not hold on" the outputs. `t`: the rung's run; `finest`: the
+// reference's setting.
+std::string rung_verdict(const Setting& s, const Row& r, const Curves& c, const Curves& ref, const Timed& t,
+                         const Setting& finest, const Case& base, double tolerance) {
+  static constexpr std::array<const char*, 3> kNames = {"real area", "plastic fraction", "peak stress"};
+  // A relative error in percent: two digits, whole percent from 100 % on.
+  auto percent = [](double x, bool sign = false) {
+    const std::string digits =
+        std::abs(x) < 0.995 ? fmt::format("{:.2g}", 100.0 * std::abs(x)) : fmt::format("{:.0f}", 100.0 * std::abs(x));
+    return (x < 0.0 ? "-" : sign ? "+" : "") + digits + " %";
+  };
+
+  std::string within, beyond, names;
+  std::array<bool, 3> off{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (std::isnan(r.errors[k])) continue;
+    off[k] = r.errors[k] > tolerance;
+    std::string& list = off[k] ? beyond : within;
+    list += fmt::format("{}{} {}", list.empty() ? "" : ", ", kNames[k], percent(r.errors[k]));
+    if (off[k]) names += (names.empty() ? "" : ", ") + std::string(kNames[k]);
+  }
+  if (beyond.empty()) return fmt::format("holds ({})", within);
+  // The real area's path mean against the reference's: which way the model reads.
+  const double bias = contact::path_mean(c.outputs[0]) / contact::path_mean(ref.outputs[0]) - 1.0;
+  // The flanks' lay: extruded, the profile fidelity's own flanks; any other, maps drawn on each grid.
+  const std::string lay = row("areal.lay").get(base, -1).text;
+  const bool extruded = lay == "extruded";
+  std::vector<std::string> why;
+  auto add = [&](bool when, const std::string& reason) {
+    if (when && std::find(why.begin(), why.end(), reason) == why.end()) why.push_back(reason);
+  };
+  switch (s.rung) {
+    case Rung::gw: {
+      int flagged = 0;
+      if (const contact::Series* f = t.result.find("statistical_flag_summits_interact"))
+        for (double x : f->values) flagged += x > 0.5;
+      add(off[0] && flagged > 0,
+          fmt::format("GW takes the summits as independent, and at this contact (real-area ratio up to {:.2g}) they "
+                      "interact (its own flag at {} of {} positions)",
+                      *std::max_element(ref.outputs[0].begin(), ref.outputs[0].end()), flagged, c.s.size()));
+      add(off[0] && flagged == 0,
+          "GW's summits (McCool's, from the profiles' spectral moments) are not the maps' spots");
+      add(off[1],
+          "its plastic fraction is the yielded share of each summit's contact (the asperity model's law), the "
+          "reference's the share at the hardness cap");
+      add(off[2], "its peak stress is the highest summit's von Mises (one asperity), not the maximum below the window");
+      break;
+    }
+    case Rung::persson:
+      add(bias < 0.0,
+          "Persson's theory underestimates the real area at light load (kappa 1.60 against about 2.2 from boundary "
+          "elements), and this contact is partly elastic");
+      add(bias >= 0.0, "Persson's theory reads high here");
+      break;
+    case Rung::profile:
+      add(!extruded, fmt::format("the profile fidelity extrudes each flank's profile across the face: line contacts "
+                                 "as wide as the face, where these flanks (areal.lay = {}) touch in {}",
+                                 lay, lay == "isotropic" ? "round spots" : "spots of finite length across it"));
+      add(extruded, "on the same extruded flanks: its strip's elements and stress planes differ from the window's");
+      break;
+    case Rung::areal: {
+      auto coarser = [&](const std::string& key, bool finer_is_smaller) {
+        const double mine = value_of(s, key, base), theirs = value_of(finest, key, base);
+        return finer_is_smaller ? mine > theirs * (1.0 + 1e-9) : mine < theirs * (1.0 - 1e-9);
+      };
+      const bool elements = coarser("contact.element_size", true), grid = elements || coarser("areal.points", false);
+      // The rung's own looser stop (the case's own is the rows' common part).
+      const bool stop = std::any_of(s.changes.begin(), s.changes.end(),
+                                    [](const io::CaseChange& ch) { return ch.key == "areal.tolerance"; }) &&
+                        value_of(s, "areal.tolerance", base) > value_of(finest, "areal.tolerance", base);
+      add((off[0] || off[1]) && grid,
+          std::string("a coarser grid than the reference's") +
+              (extruded ? "" : "; each grid draws its own realisation of the maps, whose scatter this holds too"));
+      add((off[0] || off[1]) && grid && stop, "and a looser stop (areal.tolerance)");
+      add(off[2] && elements,
+          "the von Mises maximum is sought on planes 1 to 32 element sizes deep (and at 0.786 b): coarser elements "
+          "than the reference's put the shallowest plane deeper");
+      add(why.empty(), "the solver's stop (areal.tolerance)");
+      break;
+    }
+    case Rung::none:
+      break;
+  }
+  std::string reasons;
+  for (const std::string& w : why) reasons += (reasons.empty() ? "" : "; ") + w;
+  return fmt::format("does not hold on {} ({}{}{}; the real area's path mean {}): {}", names, beyond,
+                     within.empty() ? "" : "; within: ", within, percent(bias, true), reasons);
+}
+
+// The reference's regime, for the verdict: its real-area range and how much of it yielded.
+std::string reference_line(const Curves& ref) {
+  const auto [lo, hi] = std::minmax_element(ref.outputs[0].begin(), ref.outputs[0].end());
+  const double plastic = contact::path_mean(ref.outputs[1]);
+  return fmt::format("real-area ratio {:.3g} to {:.3g} of the Hertz band, {:.0f} % of it yielded (path mean){}", *lo,
+                     *hi, 100.0 * plastic,
+                     plastic > 0.9 ? ": nearly fully plastic, where the real area is about the load over the hardness "
+                                     "whatever the model"
+                                   : "");
 }
 
 // With -o FILE.png: the Pareto plot, and the table as CSV beside it unless --csv names a file.
@@ -264,8 +545,11 @@ void run(const Options& o) {
   io::OutputSet outputs;  // -o, --csv FILE and a plot's CSV: all or none, checked before the runs
   reserve_table(o.table, outputs);
   if (png_output(o)) outputs.reserve(csv_beside_plot(o));
-  const std::vector<io::CaseChange> given = case_changes(o.case_options);
+  Runs runs(case_file, case_changes(o.case_options), o.min_time);
   std::vector<Knob> knobs = knobs_of(base);
+  std::vector<Knob> resolution;  // the fidelity's keyed knobs, whatever --knob selects: the ladder's rungs
+  std::copy_if(knobs.begin(), knobs.end(), std::back_inserter(resolution),
+               [](const Knob& k) { return !k.key.empty(); });
   if (!o.knobs.empty()) {
     std::erase_if(knobs,
                   [&](const Knob& k) { return std::find(o.knobs.begin(), o.knobs.end(), k.name) == o.knobs.end(); });
@@ -273,15 +557,33 @@ void run(const Options& o) {
   }
   std::vector<Row> rows;
   std::vector<io::CaseChange> recommended, highest;
-  for (const Knob& k : knobs) {
+  std::vector<std::string> left_out, verdict;  // settings the case refuses; where each rung holds
+  std::string ladder_reference;
+  for (Knob& k : knobs) {
+    if (k.ladder) k.settings = ladder_rungs(resolution, runs, left_out, ladder_reference);
     if (!o.quiet) std::cerr << "tradeoff: " << k.name << " (" << k.settings.size() << " settings)\n";
-    const Timed ref = run_timed(case_file, given, k.settings.back().changes, o.min_time);
+    const auto settings = allowed(k, runs, left_out);
+    const auto& [ref_setting, ref_run] = settings.back();
+    const Curves ref = *read(ref_setting, *ref_run);
     std::vector<Row> mine;
-    for (std::size_t i = 0; i + 1 < k.settings.size(); ++i)
-      mine.push_back(
-          compare(k.name, k.settings[i].label, run_timed(case_file, given, k.settings[i].changes, o.min_time), ref));
-    mine.push_back(compare(k.name, k.settings.back().label, ref, ref));
+    std::vector<const Setting*> kept;
+    for (const auto& [s, t] : settings) {
+      const std::optional<Curves> c = read(s, *t);
+      if (!c) {
+        left_out.push_back(k.name + " " + s.label + ": the run has no such model (a flank is flat)");
+        continue;
+      }
+      mine.push_back(compare(k.name, s.label, *c, ref));
+      kept.push_back(&s);
+      if (k.ladder && &s != &ref_setting)
+        mine.back().verdict = rung_verdict(s, mine.back(), *c, ref, *t, ref_setting, base, o.ladder_tolerance);
+    }
     mine.back().reference = true;
+    if (k.ladder) {
+      verdict.push_back("the reference: " + reference_line(ref));
+      for (const Row& r : mine)
+        if (!r.reference) verdict.push_back(r.setting + ": " + r.verdict);
+    }
     // The cheapest setting within the tolerance of the reference; times within 5% of the fastest
     // such setting are ties (timer noise), won by the lower setting of the ladder.
     double fastest = mine.back().seconds;
@@ -289,19 +591,24 @@ void run(const Options& o) {
       if (r.worst() <= o.tolerance) fastest = std::min(fastest, r.seconds);
     std::size_t best = 0;
     while (!(mine[best].worst() <= o.tolerance && mine[best].seconds <= 1.05 * fastest)) ++best;
-    if (!k.physics) mine[best].recommended = true;
     if (!k.physics) {
-      recommended.insert(recommended.end(), k.settings[best].changes.begin(), k.settings[best].changes.end());
-      highest.insert(highest.end(), k.settings.back().changes.begin(), k.settings.back().changes.end());
+      mine[best].recommended = true;
+      recommended.insert(recommended.end(), kept[best]->changes.begin(), kept[best]->changes.end());
+      highest.insert(highest.end(), ref_setting.changes.begin(), ref_setting.changes.end());
     }
     rows.insert(rows.end(), mine.begin(), mine.end());
   }
   // Later knobs' changes win where keys repeat (the coupled fidelity makes strip_points moot).
   if (!o.quiet) std::cerr << "tradeoff: the case as given and the recommended combination against all knobs highest\n";
-  const Timed all_highest = run_timed(case_file, given, highest, o.min_time);
-  rows.push_back(compare("combined", "case as given", run_timed(case_file, given, {}, o.min_time), all_highest));
-  rows.push_back(compare("combined", "recommended", run_timed(case_file, given, recommended, o.min_time), all_highest));
-  rows.push_back(compare("combined", "all highest", all_highest, all_highest));
+  const std::vector<Setting> combined = {{"case as given", {}}, {"recommended", recommended}, {"all highest", highest}};
+  std::vector<std::pair<Setting, const Timed*>> combined_runs;
+  for (const Setting& s : combined) {
+    const Runs::Outcome& r = runs.run(s.changes);
+    if (!r.timed) std::rethrow_exception(r.refusal);
+    combined_runs.emplace_back(s, &*r.timed);
+  }
+  const Curves all_highest = *read(combined_runs.back().first, *combined_runs.back().second);
+  for (const auto& [s, t] : combined_runs) rows.push_back(compare("combined", s.label, *read(s, *t), all_highest));
   rows.back().reference = true;
 
   io::ColumnTable t;
@@ -312,13 +619,18 @@ void run(const Options& o) {
                {"error_plastic_fraction", "1", false, {}, {}},
                {"error_peak_stress", "1", false, {}, {}},
                {"note", "", true, {}, {}}};
+  // The note: reference and recommended; a rung's verdict (the aligned table: in brief).
+  auto note = [](const Row& r, bool whole) -> std::string {
+    if (!r.verdict.empty()) return whole ? r.verdict : r.verdict.substr(0, r.verdict.find(" ("));
+    return r.reference ? (r.recommended ? "reference, recommended" : "reference")
+                       : (r.recommended ? "recommended" : "");
+  };
   for (const Row& r : rows) {
     t.columns[0].texts.push_back(r.knob);
     t.columns[1].texts.push_back(r.setting);
     t.columns[2].numbers.push_back(r.seconds);
     for (int k = 0; k < 3; ++k) t.columns[3 + k].numbers.push_back(r.errors[k]);
-    t.columns[6].texts.emplace_back(r.reference ? (r.recommended ? "reference, recommended" : "reference")
-                                                : (r.recommended ? "recommended" : ""));
+    t.columns[6].texts.push_back(note(r, true));
   }
   const std::string& output = o.table.output;
   const bool png = png_output(o);
@@ -326,22 +638,41 @@ void run(const Options& o) {
   const std::filesystem::path csv = png ? csv_beside_plot(o) : std::filesystem::path(csv_option.file);
   std::filesystem::path csv_written;  // its temporary, complete: what the plot reads
   if (csv_option.to_file() || png) csv_written = outputs.add_text(csv, io::format_csv(t));
+  if (!o.quiet)
+    for (const std::string& l : left_out) std::cerr << "tradeoff: left out: " << l << '\n';
   if (csv_option.in_place() && !png) {
     const std::string text = io::format_csv(t);
     if (output.empty()) outputs.add_stdout(text);
     else outputs.add_text(output, text);
   } else {
-    std::string text = fmt::format("{:<15} {:<16} {:>10} {:>16} {:>22} {:>17}  {}\n", "knob", "setting", "time_s",
-                                   "error_real_area", "error_plastic_fraction", "error_peak_stress", "note");
-    for (std::size_t i = 0; i < t.rows(); ++i)
-      text += fmt::format("{:<15} {:<16} {:>10.4g} {:>16.3g} {:>22.3g} {:>17.3g}  {}\n", t.columns[0].texts[i],
-                          t.columns[1].texts[i], t.columns[2].numbers[i], t.columns[3].numbers[i],
-                          t.columns[4].numbers[i], t.columns[5].numbers[i], t.columns[6].texts[i]);
+    // The setting's column as wide as its longest (a ladder's rungs), at least 16.
+    std::size_t width = 16;
+    for (const Row& r : rows) width = std::max(width, r.setting.size());
+    // An error the model does not have: "-".
+    auto error = [](double e, int w) {
+      return std::isnan(e) ? fmt::format("{:>{}}", "-", w) : fmt::format("{:>{}.3g}", e, w);
+    };
+    std::string text = fmt::format("{:<15} {:<{}} {:>10} {:>16} {:>22} {:>17}  {}\n", "knob", "setting", width,
+                                   "time_s", "error_real_area", "error_plastic_fraction", "error_peak_stress", "note");
+    for (const Row& r : rows)
+      text += fmt::format("{:<15} {:<{}} {:>10.4g} {} {} {}  {}\n", r.knob, r.setting, width, r.seconds,
+                          error(r.errors[0], 16), error(r.errors[1], 22), error(r.errors[2], 17), note(r, false));
     std::string advice = fmt::format(
         "\nRecommended (cheapest within {:g}% of each knob's reference on all three outputs):", 100 * o.tolerance);
     for (const Row& r : rows)
       if (r.recommended && r.knob != "combined") advice += fmt::format(" {} = {};", r.knob, r.setting);
     text += advice + "\n";
+    if (!verdict.empty()) {
+      text += fmt::format(
+          "\nWhere each holds on this case (the ladder: within {:g}% of the areal fidelity at {} on every output "
+          "the model has; GW's and Persson's times are their stage laps beside the case as given):\n",
+          100 * o.ladder_tolerance, ladder_reference);
+      for (const std::string& l : verdict) text += "  " + l + "\n";
+    }
+    if (!left_out.empty()) {
+      text += "\nLeft out:\n";
+      for (const std::string& l : left_out) text += "  " + l + "\n";
+    }
     if (png || output.empty()) outputs.add_stdout(text);
     else outputs.add_text(output, text);
   }
@@ -376,20 +707,29 @@ void add_tradeoff_command(CLI::App& app) {
       "height_points (summit-height quadrature), table_points (pressure-separation table per sigma),\n"
       "strip_points (uncoupled quadrature across the Hertz strip), strip_lookup (cubic cells or the exact\n"
       "table inversion), stress_table (intervals of the normalised von Mises table, 0: exact maximisation),\n"
-      "fidelity (uncoupled, coupled with N nodes), integrator (odeint/cvode and tolerance of the dynamic cycle; recommended only when the case\n"
-      "asks for dynamics); reported as physics choices, not recommended: dynamics (static against the\n"
-      "dynamic cycle) and asperity_model. Each setting runs with the other knobs as the case has them and\n"
+      "fidelity (uncoupled, coupled with N nodes), integrator (odeint/cvode and tolerance of the dynamic\n"
+      "cycle; recommended only when the case asks for dynamics); reported as physics choices, not\n"
+      "recommended: dynamics (static against the dynamic cycle), asperity_model and, on a lubricated case,\n"
+      "film_formula and inlet_heating. Each setting runs with the other knobs as the case has them and\n"
       "is compared with the knob's highest setting on the real-area ratio, the plastic area fraction and\n"
       "the highest asperity's von Mises stress: the largest difference of the path's minimum, mean and\n"
       "maximum and, where the positions coincide, of any position, relative to the reference's largest\n"
-      "value. Time: the fastest of up to 5 runs (at least --min-time in all).\n"
+      "value. Time: the fastest of up to 5 runs (at least --min-time in all). A setting the case refuses\n"
+      "(a height map beyond the grid's limit, a budget) is left out and said; the next is the reference.\n"
       "Then the case as given and the recommended combination against all knobs at their highest.\n"
       "A deterministic case (contact.fidelity = deterministic) has its own knobs: positions, element_size\n"
       "(boundary-element width) and strip_halfwidths (the strip's reach in Hertz half-widths), compared on\n"
       "the real-area ratio, the plastic area fraction and the von Mises maximum below the strip (set\n"
       "threads=1 for one core's times). A mixed-EHL case (contact.fidelity = mixed_ehl): positions,\n"
-      "grid_spacing (not coarser than the flanks' profiles), window, time_step and tolerance, compared on\n"
-      "the asperity contact's area ratio and plastic fraction within the film and the von Mises maximum.\n"
+      "grid_spacing (not coarser than the flanks' profiles), window, lead_in, time_step and tolerance,\n"
+      "compared on the asperity contact's area ratio and plastic fraction within the film and the von\n"
+      "Mises maximum. An areal case (contact.fidelity = areal): element_size (along the involute), points\n"
+      "(across the face) and tolerance (the solver's stop), compared also on the von Mises maximum below\n"
+      "the window; and the ladder (a physics choice): GW and Persson beside it on the same flanks (their time:\n"
+      "their stage laps), the profile fidelity on the same flanks (one thread), the areal fidelity as given\n"
+      "and at its knobs' settings, each against the areal fidelity at the finest settings the case allows\n"
+      "(a peak stress a model has not: \"-\"), and where each holds: within --ladder-tolerance on every\n"
+      "output it has, and why the physics says it departs where it does.\n"
       "The multi-asperity study's boundary-element grid: `geartrib_bench\n"
       "--benchmark_filter=multi_asperity` (docs/reference/timings.md).");
   add_case_argument(cmd, o->case_options);
@@ -398,6 +738,10 @@ void add_tradeoff_command(CLI::App& app) {
                     "error) with scripts/plot_tradeoff.py and writes the table beside it as .csv (or to --csv FILE)");
   add_csv_option(cmd, o->table.csv, "the table as CSV: to FILE, or without one in place of the aligned table");
   cmd->add_option("--tolerance", o->tolerance, "Relative error a recommended setting may have (default 0.01)")
+      ->check(CLI::Range(1e-9, 1.0));
+  cmd->add_option("--ladder-tolerance", o->ladder_tolerance,
+                  "Relative error within which a ladder's rung holds (an areal case; default 0.1: the isotropic\n"
+                  "maps' realisation scatter between grids is a few percent)")
       ->check(CLI::Range(1e-9, 1.0));
   cmd->add_option("--min-time", o->min_time, "Repeat each run until this much time [s] is spent (default 0.3)")
       ->check(CLI::Range(0.0, 1e4));

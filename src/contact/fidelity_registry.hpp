@@ -15,7 +15,7 @@ namespace geartrib::contact {
 
 // A knob of the trade tool (`geartrib tradeoff`): its name and the case key whose ladder it runs,
 // or no key: one of the trade tool's own knobs by name (fidelity, dynamics, integrator,
-// asperity_model, film_formula, inlet_heating).
+// asperity_model, film_formula, inlet_heating, ladder).
 struct TradeKnob {
   std::string_view name, key;
 };

@@ -65,8 +65,11 @@ inline constexpr std::array<std::string_view, 15> kKeys = {
     "areal.lay_ratio",           "areal.patch",      "areal.tolerance",      "running_in.meshes",
     "running_in.tolerance",      "running_in.teeth", "asperity.model"};
 // (Not the positions: the ladder's finest, hundreds of positions, is minutes of the areal solver.)
-inline constexpr std::array<TradeKnob, 3> kKnobs = {
-    TradeKnob{"element_size", "contact.element_size"}, {"points", "areal.points"}, {"tolerance", "areal.tolerance"}};
+// "ladder": GW, Persson, the profile fidelity and this one on the same flanks (geartrib tradeoff).
+inline constexpr std::array<TradeKnob, 4> kKnobs = {TradeKnob{"element_size", "contact.element_size"},
+                                                    {"points", "areal.points"},
+                                                    {"tolerance", "areal.tolerance"},
+                                                    {"ladder", ""}};
 inline constexpr std::array<OutputGroup, 4> kGroups = {
     OutputGroup{"/contact",
                 "both flanks' height maps in contact by areal boundary elements, a window periodic "

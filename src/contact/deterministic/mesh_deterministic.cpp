@@ -317,6 +317,7 @@ void write_statistical_beside(const FidelityInputs& in, const SurfaceModel& m, c
 
 void write_persson_beside(const FidelityInputs& in, const SurfaceModel& m, const std::vector<double>& share,
                           double gradient_factor, MeshContactResult& r) {
+  Stopwatch watch;
   const double g = std::sqrt(gradient_factor * (m.flanks.roughness[0].m2 + m.flanks.roughness[1].m2));
   const double hardness = std::min(in.flanks.materials[0]->hardness, in.flanks.materials[1]->hardness);
   Series area{"statistical_persson_real_area_ratio", "1", {}},
@@ -333,6 +334,7 @@ void write_persson_beside(const FidelityInputs& in, const SurfaceModel& m, const
   r.statistical.push_back(std::move(area));
   r.statistical.push_back(std::move(plastic));
   r.statistical.push_back(std::move(pressure));
+  r.stages.push_back({"persson_beside", watch.lap()});
 }
 
 void RollingRegime::add(double real_area, double plastic_area_fraction) {

@@ -101,7 +101,8 @@ void write_statistical_beside(const FidelityInputs& in, const SurfaceModel& mode
 // each position's Hertz strip at the asperities' share of its load, on the composite surface's full
 // gradient, gradient_factor times the profiles' summed slope variance m2 (1: lay-directed, the
 // profiles extruded across the face; 2: isotropic), capped at the softer flank's hardness. Its series
-// in /statistical: statistical_persson_real_area_ratio, _plastic_area_fraction, _mean_real_pressure_Pa.
+// in /statistical: statistical_persson_real_area_ratio, _plastic_area_fraction, _mean_real_pressure_Pa;
+// its time the stage "persson_beside".
 void write_persson_beside(const FidelityInputs& in, const SurfaceModel& m, const std::vector<double>& share,
                           double gradient_factor, MeshContactResult& r);
 // The regime of a rolling fidelity's loaded positions (real area > 0): elastic where under 1 % of
