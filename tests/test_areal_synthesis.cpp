@@ -171,7 +171,6 @@ TEST(ArealSynthesis, TilingByMirrorImagesIsContinuousAndPeriodicInTwoSides) {
   p.rolloff_wavelength = 10e-6;
   p.cutoff_wavelength = 4e-6;
   const surface::HeightGrid patch = surface::self_affine_surface(p);
-  const double l = 31e-6;  // (n - 1) spacings
   const surface::HeightGrid t = surface::tile_surface(patch, 200, 100, 1e-6, 1e-6);
   double mean = 0.0;
   for (double z : patch.z) mean += z;
@@ -182,7 +181,6 @@ TEST(ArealSynthesis, TilingByMirrorImagesIsContinuousAndPeriodicInTwoSides) {
       EXPECT_NEAR(t.at(62 - i, j), t.at(i, j), 1e-18);        // mirrored at x = L
       EXPECT_NEAR(t.at(i + 62, j + 62), t.at(i, j), 1e-18);   // period 2 L each way
     }
-  (void)l;
   surface::HeightGrid holed = patch;
   holed.valid[3] = 0;
   EXPECT_THROW(surface::tile_surface(holed, 10, 10, 1e-6, 1e-6), std::invalid_argument);
