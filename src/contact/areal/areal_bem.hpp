@@ -14,7 +14,9 @@
 // set of elements whose pressure lies strictly between 0 and H, the capped ones held at H as
 // Almqvist et al. (2007, Wear 262:980) do: an elastic-perfectly-plastic half-space in the
 // "saturated" sense, the plastic deformation being the flat's interpenetration at the capped
-// elements. Load (mean pressure) or approach control.
+// elements. Load (mean pressure) or approach control; capped under load control, every step
+// projected on the loads that balance and kept only where it lowers the energy (gradient projection,
+// Bertsekas 1976: docs/theory/areal-contact.md).
 #pragma once
 
 #include <cstdint>
