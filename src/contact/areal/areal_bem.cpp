@@ -224,27 +224,46 @@ ElasticKernel::ElasticKernel(const ArealGrid& grid, double e_star) : grid_(grid)
   self_ = u[0];
 }
 
-void ElasticKernel::apply(std::span<const double> p, std::span<double> u) const {
+double* ElasticKernel::window_row(int j) const { return fft_->real.get() + static_cast<std::size_t>(j) * mx_; }
+
+double ElasticKernel::apply_in_place() const {
   const int nx = grid_.nx, ny = grid_.ny, hx = mx_ / 2 + 1;
   double* r = fft_->real.get();
-  if (mx_ == nx && my_ == ny) {
-    std::copy(p.begin(), p.end(), r);
-  } else {
-    std::fill(r, r + static_cast<std::size_t>(mx_) * my_, 0.0);
+  // The padding (an open direction's second half) zeroed: the last transform left u's images there.
+  if (mx_ > nx)
     for (int j = 0; j < ny; ++j)
-      std::copy_n(p.begin() + static_cast<std::ptrdiff_t>(j) * nx, nx, r + static_cast<std::size_t>(j) * mx_);
-  }
+      std::fill(r + static_cast<std::size_t>(j) * mx_ + nx, r + static_cast<std::size_t>(j + 1) * mx_, 0.0);
+  if (my_ > ny) std::fill(r + static_cast<std::size_t>(ny) * mx_, r + static_cast<std::size_t>(my_) * mx_, 0.0);
   fftw_execute(fft_->forward->get());
+  // The kernel's multiplier, and p.K p = sum_k K_k |p_k|^2 over the whole spectrum (Parseval; the
+  // multiplier holds the transform's 1/N): the half spectrum's columns 0 < kx < mx/2 twice.
   fftw_complex* s = fft_->spectrum.get();
-  const std::size_t spectral = static_cast<std::size_t>(my_) * hx;
-  for (std::size_t k = 0; k < spectral; ++k) {
-    s[k][0] *= kernel_hat_[k];
-    s[k][1] *= kernel_hat_[k];
+  double pkp = 0.0;
+  auto power = [&](std::size_t k) { return kernel_hat_[k] * (s[k][0] * s[k][0] + s[k][1] * s[k][1]); };
+  for (int ky = 0; ky < my_; ++ky) {
+    const std::size_t row = static_cast<std::size_t>(ky) * hx;
+    // (kx = 0, and kx = mx/2 for an even mx, appear once in the whole spectrum.)
+    const double edges = power(row) + (mx_ % 2 == 0 && hx > 1 ? power(row + static_cast<std::size_t>(hx - 1)) : 0.0);
+    double sum_row = 0.0;
+    for (int kx = 0; kx < hx; ++kx) {
+      const std::size_t k = row + static_cast<std::size_t>(kx);
+      const double kh = kernel_hat_[k], re = s[k][0], im = s[k][1];
+      sum_row += kh * (re * re + im * im);
+      s[k][0] = re * kh;
+      s[k][1] = im * kh;
+    }
+    pkp += 2.0 * sum_row - edges;
   }
   fftw_execute(fft_->backward->get());
   executed_transforms += 2;
-  for (int j = 0; j < ny; ++j)
-    std::copy_n(r + static_cast<std::size_t>(j) * mx_, nx, u.begin() + static_cast<std::ptrdiff_t>(j) * nx);
+  return pkp;
+}
+
+void ElasticKernel::apply(std::span<const double> p, std::span<double> u) const {
+  const int nx = grid_.nx, ny = grid_.ny;
+  for (int j = 0; j < ny; ++j) std::copy_n(p.begin() + static_cast<std::ptrdiff_t>(j) * nx, nx, window_row(j));
+  apply_in_place();
+  for (int j = 0; j < ny; ++j) std::copy_n(window_row(j), nx, u.begin() + static_cast<std::ptrdiff_t>(j) * nx);
 }
 
 namespace {
@@ -383,19 +402,20 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
   // iterations, and before the iteration may stop.
   constexpr double kClipped = 0.1;
   constexpr int kFresh = 32;
-  std::vector<double> t(n, 0.0), w(n, 0.0);
+  std::vector<double> t(n, 0.0);
   std::vector<unsigned char> state(n);
   auto classify = [cap](double v) -> unsigned char { return v <= 0.0 ? 0 : v >= cap ? 2 : 1; };
   double g_old = 0.0, tau = 1.0 / self;
   bool reset = true, fresh = true;
   double clipped = 0.0, scale_next = 1.0;
-  double free_h = 0.0, free_u = 0.0;  // sums over the free elements (the flat's height, load control)
+  // Sums over the free elements: the flat's height (load control), the last direction's mean.
+  double free_h = 0.0, free_u = 0.0, t_free = 0.0;
   std::size_t free_count = 0;
   auto recount = [&] {
-    free_h = free_u = 0.0, free_count = 0;
+    free_h = free_u = t_free = 0.0, free_count = 0;
     for (std::size_t i = 0; i < n; ++i) {
       state[i] = classify(p[i]);
-      if (state[i] == 1) free_h += h[i], free_u += u[i], ++free_count;
+      if (state[i] == 1) free_h += h[i], free_u += u[i], t_free += t[i], ++free_count;
     }
   };
   recount();
@@ -405,10 +425,11 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
     const double f = scale_next;
     if (load && free_count > 0) flat = (free_h - f * free_u) / static_cast<double>(free_count);
     // (The load's scale f reaches p and u in the step below, which reads and writes them anyway.)
+    // The residual's sums. (The gap f u - h + flat is formed afresh in each pass that reads it: a
+    // pass over the grid fewer than storing it; the solution's is formed at the end.)
     double res2 = 0.0, big_g = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       const double gi = f * u[i] - h[i] + flat;
-      gap[i] = gi;
       const unsigned char si = state[i];
       big_g += si == 1 ? gi * gi : 0.0;
       res2 += (si == 0 && gi < 0.0) || (si == 2 && gi > 0.0) ? gi * gi : 0.0;
@@ -436,60 +457,78 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
         continue;
       }
     }
-    // The conjugate direction on the free set (Polonsky & Keer 1999 eq. 14).
+    // The conjugate direction on the free set (Polonsky & Keer 1999 eq. 14), written into the
+    // transform's own array as it is formed. Under load control the last direction less its mean on
+    // the free set: the gap's mean there is 0 (the flat's height), so t's is, and a step along t keeps
+    // the load (the free set changed since the last direction: it need not have been). Its step
+    // tau = g.t/t.Kt, t.Kt by Parseval in the transform (K t is read in place, in the step below).
     const double beta = reset || g_old == 0.0 ? 0.0 : big_g / g_old;
-    for (std::size_t i = 0; i < n; ++i) t[i] = state[i] == 1 ? gap[i] + beta * t[i] : 0.0;
+    const double t_mean = load && free_count > 0 ? t_free / static_cast<double>(free_count) : 0.0;
     g_old = big_g;
     reset = false;
-    if (free_count > 0 && big_g > 0.0) {
-      kernel.apply(t, w);
-      double w_sum = 0.0, t_sum = 0.0, wt = 0.0, rt = 0.0;
-      for (std::size_t i = 0; i < n; ++i) {
-        const double ti = t[i], wi = state[i] == 1 ? w[i] : 0.0;  // t is 0 off the free set
-        w_sum += wi, t_sum += ti, wt += wi * ti, rt += gap[i] * ti;
+    const bool step_t = free_count > 0 && big_g > 0.0;
+    double rt = 0.0;
+    for (int j = 0; j < g.ny; ++j) {
+      double* r = kernel.window_row(j);
+      const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(g.nx);
+      for (int i = 0; i < g.nx; ++i) {
+        const std::size_t e = row + static_cast<std::size_t>(i);
+        const double ti = state[e] == 1 ? f * u[e] - h[e] + flat + beta * (t[e] - t_mean) : 0.0;
+        t[e] = ti;
+        r[i] = ti;
+        rt += state[e] == 1 ? (f * u[e] - h[e] + flat) * ti : 0.0;
       }
-      if (load) wt -= w_sum / static_cast<double>(free_count) * t_sum;  // K t less its mean on the free set
+    }
+    if (step_t) {
+      const double wt = kernel.apply_in_place();
       if (wt > 0.0) tau = rt / wt;
-    } else {
-      std::fill(w.begin(), w.end(), 0.0);
     }
     // The step, projected on 0 <= p <= H; elements the flat overlaps enter, capped ones whose gap
     // opens are let go (either restarts the conjugate directions).
     bool moved = false;  // an element entered the contact or left the cap
     double total = 0.0;
-    free_h = free_u = 0.0, free_count = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      double pi = p[i];
-      switch (state[i]) {
-        case 1:
-          pi = f * pi - tau * t[i];
-          if (pi <= 0.0) clipped -= pi, pi = 0.0;
-          else if (pi >= cap) clipped += pi - cap, pi = cap;
-          break;
-        case 0:  // (p = 0: unscaled)
-          if (gap[i] < 0.0) pi = std::min(-tau * gap[i], cap), clipped += pi, moved = true;
-          break;
-        default:
-          if (gap[i] > 0.0) pi = std::max(0.0, cap - tau * gap[i]), clipped += cap - pi, moved = true;
-          break;
+    free_h = free_u = t_free = 0.0, free_count = 0;
+    for (int j = 0; j < g.ny; ++j) {
+      const double* w = kernel.window_row(j);  // K t (0 when no step was taken along t)
+      const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(g.nx);
+      for (int c = 0; c < g.nx; ++c) {
+        const std::size_t i = row + static_cast<std::size_t>(c);
+        double pi = p[i];
+        switch (state[i]) {
+          case 1:
+            pi = f * pi - tau * t[i];
+            if (pi <= 0.0) clipped -= pi, pi = 0.0;
+            else if (pi >= cap) clipped += pi - cap, pi = cap;
+            break;
+          case 0: {  // (p = 0: unscaled)
+            const double gi = f * u[i] - h[i] + flat;
+            if (gi < 0.0) pi = std::min(-tau * gi, cap), clipped += pi, moved = true;
+            break;
+          }
+          default: {
+            const double gi = f * u[i] - h[i] + flat;
+            if (gi > 0.0) pi = std::max(0.0, cap - tau * gi), clipped += cap - pi, moved = true;
+            break;
+          }
+        }
+        p[i] = pi;
+        const double ui = f * u[i] - (step_t ? tau * w[c] : 0.0);
+        u[i] = ui;
+        const unsigned char si = classify(pi);
+        state[i] = si;
+        total += pi;
+        if (si == 1) free_h += h[i], free_u += ui, t_free += t[i], ++free_count;
       }
-      p[i] = pi;
-      const double ui = f * u[i] - tau * w[i];
-      u[i] = ui;
-      const unsigned char si = classify(pi);
-      state[i] = si;
-      total += pi;
-      if (si == 1) free_h += h[i], free_u += ui, ++free_count;
     }
     scale_next = 1.0;  // the step took it (f); load control sets a new one below
     if (load && !(total > 0.0)) {
       // Every pressure stepped to 0: the element nearest to touching takes the load.
       std::size_t next = 0;
-      for (std::size_t i = 1; i < n; ++i)
-        if (gap[i] < gap[next]) next = i;
+      for (std::size_t i = 1; i < n; ++i)  // (the gap after the step, u - h + flat: u has taken it)
+        if (u[i] - h[i] < u[next] - h[next]) next = i;
       p[next] = std::min(target, cap);
       state[next] = classify(p[next]);
-      if (state[next] == 1) free_h += h[next], free_u += u[next], ++free_count;
+      if (state[next] == 1) free_h += h[next], free_u += u[next], t_free += t[next], ++free_count;
       clipped += p[next];
       total = p[next];
     } else if (load) {
