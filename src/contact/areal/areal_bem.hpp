@@ -14,7 +14,9 @@
 // set of elements whose pressure lies strictly between 0 and H, the capped ones held at H as
 // Almqvist et al. (2007, Wear 262:980) do: an elastic-perfectly-plastic half-space in the
 // "saturated" sense, the plastic deformation being the flat's interpenetration at the capped
-// elements. Load (mean pressure) or approach control.
+// elements. Load (mean pressure) or approach control; capped under load control, every step
+// projected on the loads that balance and kept only where it lowers the energy (gradient projection,
+// Bertsekas 1976: docs/theory/areal-contact.md).
 #pragma once
 
 #include <cstdint>
@@ -67,6 +69,12 @@ class ElasticKernel {
   // u = K p: p and u of grid().size() [Pa -> m]; u may not alias p. Uses the kernel's own
   // transform arrays: one thread at a time per kernel.
   void apply(std::span<const double> p, std::span<double> u) const;
+  // The transform's own array, for a caller that writes K's input and reads its output in place
+  // (no copy either way): the window's row j at window_row(j), nx values. apply_in_place() turns
+  // the pressure the rows hold into u = K p there (until the next application) and returns p.K p
+  // [m Pa] by Parseval's sum over the spectrum. One thread at a time per kernel.
+  double* window_row(int j) const;
+  double apply_in_place() const;
   // The displacement of an element under a unit pressure on itself [m/Pa].
   double self_influence() const { return self_; }
   // The padded transform's sizes (twice the window along an open direction).
