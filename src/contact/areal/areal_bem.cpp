@@ -448,8 +448,8 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
         for (double v : p) sum += v;
         s.converged = s.residual <= o.tolerance && (!load || std::abs(sum - target) <= 1e-9 * target);
         if (s.converged || it >= o.max_iterations) break;
-        // The contact conditions met but not the load (a capped contact short of it: the step's load
-        // balance gives the rest to the element nearest to touching): on.
+        // The contact conditions met but not the load (a safeguard: the scaling restores the load
+        // after every step of the elastic iteration): on.
       } else {
         kernel.apply(p, u);  // the carried displacement checked against a fresh one
         recount();
