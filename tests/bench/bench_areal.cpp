@@ -126,3 +126,22 @@ static void cycle_areal(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(runs::run_mesh_cycle(c));
 }
 BENCHMARK(cycle_areal)->Arg(64)->Arg(256)->ArgName("points")->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The patch lay (issue 35 item 4): gears/m6z30-measured.toml's 96 um patches made into both flanks'
+// maps (their areal spectra, random phases; argument 1: tiled instead) over the 11 mm the strip
+// reads, five positions A -> E, 128 points over 64 um across the face, 0.5 um elements: the maps'
+// making and the solves.
+static void cycle_areal_patch(benchmark::State& state) {
+  const bool tiled = state.range(0) != 0;
+  const std::vector<io::CaseChange> changes = {{"contact.fidelity", "areal"},
+                                               {"areal.lay", "patch"},
+                                               {"areal.patch", tiled ? "tiled" : "synthesis"},
+                                               {"positions", "5"},
+                                               {"areal.points", "128"},
+                                               {"areal.window", "64um"},
+                                               {"element_size", "0.5um"}};
+  const Case c = io::prepare_case(
+      io::load_case(std::filesystem::path(GEARTRIB_SOURCE_DIR) / "gears/m6z30-measured.toml", changes));
+  for (auto _ : state) benchmark::DoNotOptimize(runs::run_mesh_cycle(c));
+}
+BENCHMARK(cycle_areal_patch)->Arg(0)->Arg(1)->ArgName("tiled")->Unit(benchmark::kMillisecond)->Iterations(1);
