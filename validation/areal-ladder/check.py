@@ -13,8 +13,9 @@ fidelity, GW and Persson beside it) and the profile fidelity (contact.fidelity =
 Asserted (README.md): the tradeoff names that reference; its errors of GW, Persson, the profile
 fidelity and the areal case equal those recomputed here from the runs' HDF5 by the table's metric;
 the real area's mean error over the positions against the ladder measured by hand
-(docs/guide/contact.md, the previous session); every rung's three errors and its verdict as stored;
-the times' order of magnitude. About 3 minutes of CPU (CTest label long).
+(docs/guide/contact.md, the previous session); every rung's three errors and its verdict as stored.
+The times are reported by the table, not asserted (a benchmark's business: geartrib_bench
+cycle_areal). About 3 minutes of CPU (CTest label long).
 Exits 1 when any row is not as expected (expected.csv); --write stores the model column.
 """
 import csv
@@ -158,15 +159,6 @@ def main():
                                  "tolerance": "0.01", "verdict": "departs", "regression": "0.002",
                                  "reason": "the hand's 7.0 % is not reproduced: the errors' mean magnitude is 5.7 %, "
                                            "their mean -2.7 %, their rms 6.6 % (README.md); its range is (the min and max rows)"})
-            t = {rung: float(by_rung[rung]["time_s"]) for rung in by_rung}
-            areal = t["areal (case)"]
-            rows.append({"key": f"{material}/ladder", "quantity": "times in order",
-                         "model": t["GW (statistical)"] < 0.01 * areal and t["Persson"] < 0.01 * areal
-                         and t["profile BEM"] < 0.1 * areal and areal < t["areal finest"],
-                         "reference": None, "regression": "=",
-                         "reason": "GW and Persson (their stage laps) under 1 % of the areal case's cycle, the profile "
-                                   "fidelity under 10 % of it, the areal case under the reference (margins of about "
-                                   "1000, 100 and 3: a loaded machine keeps the order)"})
     return expected_table.check(rows, os.path.join(HERE, "expected.csv"), sys.argv, binary,
                                 "the ladder on the same flanks (geartrib tradeoff --knob ladder) on gears/m6z30-areal.toml",
                                 "validation/areal-ladder/check.py build/geartrib")
