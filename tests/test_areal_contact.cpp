@@ -5,9 +5,11 @@
 // equilibrium and Hertz's maximum von Mises stress, the plastic limit (the bearing area), the
 // identity of load and approach control, the capped load control on the states that stalled it (white
 // surfaces loaded to whole multiples of H and to 0.6 H, a heavily plastic window of the mesh cycle), and
-// the spots' connected components.
+// the spots' connected components; the preconditioner (the kernel's inverse) and the preconditioned
+// iteration against Polonsky & Keer's own from light to nearly complete contact.
 #include "contact/areal/areal_bem.hpp"
 #include "reference_solutions.hpp"
+#include "surface/synthetic_surface.hpp"
 
 #include <gtest/gtest.h>
 
@@ -439,4 +441,160 @@ TEST(ArealContact, CappedStallOfTheMeshCycle) {
   EXPECT_NEAR(warm.approach / cold.approach, 1.0, 1e-5);
   EXPECT_EQ(warm.contact_fraction, cold.contact_fraction);
   EXPECT_EQ(warm.plastic_fraction, cold.plastic_fraction);
+}
+
+namespace {
+// The window's rows written from v, and read back into out (the transform's own array).
+void to_rows(const ElasticKernel& k, const std::vector<double>& v) {
+  const ArealGrid& g = k.grid();
+  for (int j = 0; j < g.ny; ++j) std::copy_n(v.begin() + static_cast<std::ptrdiff_t>(j) * g.nx, g.nx, k.window_row(j));
+}
+std::vector<double> from_rows(const ElasticKernel& k) {
+  const ArealGrid& g = k.grid();
+  std::vector<double> out(g.size());
+  for (int j = 0; j < g.ny; ++j)
+    std::copy_n(k.window_row(j), g.nx, out.begin() + static_cast<std::ptrdiff_t>(j) * g.nx);
+  return out;
+}
+// The rms slope of a periodic n x n map of spacing dx over both directions (forward differences):
+// the scale E* h'_rms of the pressures that bring it to full contact.
+double rms_gradient(const std::vector<double>& h, int n, double dx) {
+  double s2 = 0.0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double z = h[static_cast<std::size_t>(j) * n + i];
+      const double a = h[static_cast<std::size_t>(j) * n + (i + 1) % n] - z;
+      const double b = h[static_cast<std::size_t>((j + 1) % n) * n + i] - z;
+      s2 += (a * a + b * b) / (dx * dx);
+    }
+  return std::sqrt(s2 / (static_cast<double>(n) * n));
+}
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+  return std::inner_product(a.begin(), a.end(), b.begin(), 0.0);
+}
+std::vector<double> white(std::size_t n, unsigned seed, bool zero_mean) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> z(0.0, 1.0);
+  std::vector<double> v(n);
+  for (double& x : v) x = z(rng);
+  if (zero_mean) {
+    const double m = std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(n);
+    for (double& x : v) x -= m;
+  }
+  return v;
+}
+}  // namespace
+
+TEST(ArealKernel, PreconditionerIsTheKernelsInverse) {
+  // Periodic both ways (an odd and an even axis): M (K x) = x for any x of zero mean (the rigid mode
+  // both set aside), to rounding; the returned g.M g is the sum over the grid (Parseval).
+  {
+    const ElasticKernel k(grid(33, 24, 1e-6, 2e-6, true, true), kEstar);
+    const std::vector<double> x = white(k.grid().size(), 1, true);
+    std::vector<double> kx(x.size());
+    k.apply(x, kx);
+    to_rows(k, kx);
+    const double gmg = k.precondition_in_place();
+    const std::vector<double> mkx = from_rows(k);
+    double err = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) err = std::max(err, std::abs(mkx[i] - x[i]));
+    EXPECT_LT(err, 1e-10);  // x of unit rms: rounding of two transform pairs, ~1e-15 measured
+    EXPECT_NEAR(gmg / dot(kx, mkx), 1.0, 1e-12);
+  }
+  // Open both ways (M the padded grid's cyclic inverse, restricted): symmetric, positive, and the
+  // returned g.M g is g's product with M g.
+  const ElasticKernel k(grid(20, 12, 1e-6, 1e-6, false, false), kEstar);
+  const std::vector<double> a = white(k.grid().size(), 2, false), b = white(k.grid().size(), 3, false);
+  to_rows(k, a);
+  const double ama = k.precondition_in_place();
+  const std::vector<double> ma = from_rows(k);
+  to_rows(k, b);
+  k.precondition_in_place();
+  const std::vector<double> mb = from_rows(k);
+  EXPECT_NEAR(dot(b, ma) / dot(a, mb), 1.0, 1e-10);  // rounding against products ~ E*/dx
+  EXPECT_GT(ama, 0.0);
+  EXPECT_NEAR(ama / dot(a, ma), 1.0, 1e-12);
+}
+
+TEST(ArealContact, PreconditionedAndPlainIterationsAgree) {
+  // The same contact problem (its solution unique: the energy is strictly convex on the pressures)
+  // by the preconditioned conjugate gradients and by Polonsky & Keer's own, on a self-affine surface
+  // periodic both ways and on one open both ways, elastic under load, capped under load (the gradient
+  // projection) and capped at the approach, from
+  // 0.3 % to 97 % contact: the same elements in contact, and the pressures within 1e-8 of their
+  // rms. (Both stop at a residual r of 1e-11 of the heights' rms; r moves a pressure by about
+  // E* r/dx = 1 Pa, 4e-10 of the rms pressure at the lightest load; 3e-12 to 6e-10 measured.)
+  for (const bool periodic : {true, false}) {
+    const int n = 64;
+    geartrib::surface::SelfAffineSpec spec;
+    spec.nx = spec.ny = n;
+    spec.spacing = 1e-6;
+    spec.rq = 1e-6;
+    spec.hurst = 0.8;
+    spec.rolloff_wavelength = n * spec.spacing / 8.0;
+    spec.cutoff_wavelength = 4.0 * spec.spacing;
+    spec.seed = 7;
+    const std::vector<double> h = geartrib::surface::self_affine_surface(spec).z;
+    const ElasticKernel k(grid(n, n, spec.spacing, spec.spacing, periodic, periodic), kEstar);
+    const double scale = kEstar * rms_gradient(h, n, spec.spacing);
+    for (const double ratio : {1e-3, 0.01, 0.1, 0.3, 1.0}) {
+      const double pbar = ratio * scale;
+      for (const int capped : {0, 1, 2}) {  // elastic; capped at the load; capped at the approach
+        ArealOptions pre = elastic(1e-11), plain = pre;
+        plain.precondition = false;
+        Control control = Control::mean_pressure;
+        double value = pbar;
+        if (capped > 0) {  // capped at half the elastic peak (or 1.5 times the mean pressure)
+          const ArealSolution e = solve_contact(k, h, Control::mean_pressure, pbar, pre);
+          pre.hardness = plain.hardness = std::max(1.5 * pbar, 0.5 * e.peak_pressure);
+          if (capped == 2) control = Control::approach, value = e.approach;
+        }
+        const ArealSolution a = solve_contact(k, h, control, value, pre);
+        const ArealSolution b = solve_contact(k, h, control, value, plain);
+        ASSERT_TRUE(a.converged && b.converged) << periodic << " " << pbar << " " << capped;
+        EXPECT_EQ(a.contact_fraction, b.contact_fraction) << periodic << " " << pbar << " " << capped;
+        EXPECT_EQ(a.plastic_fraction, b.plastic_fraction) << periodic << " " << pbar << " " << capped;
+        double d2 = 0.0, p2 = 0.0;
+        for (std::size_t i = 0; i < h.size(); ++i)
+          d2 += (a.pressure[i] - b.pressure[i]) * (a.pressure[i] - b.pressure[i]), p2 += b.pressure[i] * b.pressure[i];
+        EXPECT_LT(std::sqrt(d2 / p2), 1e-8) << periodic << " " << pbar << " " << capped;
+      }
+    }
+  }
+}
+
+TEST(ArealContact, PreconditionedIterationStaysShortFromLightToNearlyFullContact) {
+  // A 128^2 self-affine surface loaded from 0.3 % to 97 % contact, each load from the last one's
+  // pressure (the mesh cycle's and `geartrib contact`'s warm starts), three seeds: the preconditioned
+  // iteration converges in at most 120 iterations at every load (15 to 47 measured). Polonsky & Keer's
+  // own takes up to 1423 here. Before the directions restarted at every clipped element the
+  // preconditioned one stagnated (5302 and 13759 iterations at 256^2 and 97 %: a conjugate direction
+  // built across the jump of the residual a clipped element leaves).
+  const int n = 128;
+  geartrib::surface::SelfAffineSpec spec;
+  spec.nx = spec.ny = n;
+  spec.spacing = 1e-6;
+  spec.rq = 1e-6;
+  spec.hurst = 0.8;
+  spec.rolloff_wavelength = n * spec.spacing / 16.0;
+  spec.cutoff_wavelength = 4.0 * spec.spacing;
+  const ElasticKernel k(grid(n, n, spec.spacing, spec.spacing, true, true), kEstar);
+  ArealOptions o = elastic(1e-8);
+  o.max_iterations = 120;
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    spec.seed = seed;
+    const std::vector<double> h = geartrib::surface::self_affine_surface(spec).z;
+    std::vector<double> start;
+    double last_area = 0.0;
+    const double scale = kEstar * rms_gradient(h, n, spec.spacing);
+    for (const double ratio : {1e-3, 0.01, 0.03, 0.1, 0.2, 0.3, 0.5, 1.0}) {
+      const double pbar = ratio * scale;
+      const ArealSolution s = solve_contact(k, h, Control::mean_pressure, pbar, o, start);
+      EXPECT_TRUE(s.converged) << seed << " " << pbar << ": " << s.iterations << " iterations, residual " << s.residual;
+      EXPECT_GT(s.contact_fraction, last_area) << seed << " " << pbar;
+      last_area = s.contact_fraction;
+      start = s.pressure;
+    }
+    EXPECT_GT(last_area, 0.95) << seed;  // the heaviest load nearly complete
+  }
 }

@@ -243,7 +243,8 @@ TEST(PerssonSeparation, MeanGapOfTheArealBoundaryElements) {
     for (std::size_t i = 0; i < loads.size(); ++i) {
       const areal::ArealSolution sol = areal::solve_contact(kernel, h.z, areal::Control::mean_pressure,
                                                             loads[i] * e * persson.rms_gradient(), options, start);
-      ASSERT_TRUE(sol.converged);
+      ASSERT_TRUE(sol.converged) << "p/(E* h'_rms) " << loads[i] << ", seed " << seed << ": " << sol.iterations
+                                 << " iterations, residual " << sol.residual;
       double g = 0.0;
       for (double v : sol.gap) g += v;
       mean_gap[i] += g / static_cast<double>(sol.gap.size()) / seeds;

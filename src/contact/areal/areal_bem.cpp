@@ -116,10 +116,10 @@ void ArealGrid::validate() const {
 
 double areal_solve_bytes(const ArealGrid& g) {
   const double padded_points = static_cast<double>(padded(g.nx, g.periodic_x)) * padded(g.ny, g.periodic_y);
-  // The padded real array and its spectrum, the kernel's spectrum (and, open both ways, Love's corner
-  // values while it is built); the solve's seven fields; the subsurface stress's padded array, two
-  // spectra and six components on the window.
-  const double kernel = 8.0 * padded_points + 16.0 * 0.5 * padded_points + 8.0 * 0.5 * padded_points +
+  // The padded real array and its spectrum, the kernel's spectrum and its inverse's (and, open both
+  // ways, Love's corner values while it is built); the solve's seven fields; the subsurface stress's
+  // padded array, two spectra and six components on the window.
+  const double kernel = 8.0 * padded_points + 16.0 * 0.5 * padded_points + 2.0 * 8.0 * 0.5 * padded_points +
                         (!g.periodic_x && !g.periodic_y ? 8.0 * padded_points : 0.0);
   const double stress = 8.0 * padded_points + 2.0 * 16.0 * 0.5 * padded_points + 6.0 * 8.0 * g.size();
   return kernel + 7.0 * 8.0 * g.size() + stress;
@@ -217,6 +217,13 @@ ElasticKernel::ElasticKernel(const ArealGrid& grid, double e_star) : grid_(grid)
       }
     }
   }
+  // The inverse's multiplier: apply's is K_k/N (N the padded points; the inverse transform is
+  // unnormalised), so M_k/N = 1/(N^2 kernel_hat); the rigid mode (0) and any bin the padded kernel's
+  // transform leaves not positive set aside.
+  inverse_hat_.assign(spectral, 0.0);
+  const double kernel_max = *std::max_element(kernel_hat_.begin(), kernel_hat_.end());
+  for (std::size_t k = 0; k < spectral; ++k)
+    if (kernel_hat_[k] > 1e-14 * kernel_max) inverse_hat_[k] = norm * norm / kernel_hat_[k];
   // The self-influence: the displacement of element 0 under a unit pressure on it.
   std::vector<double> unit(grid_.size(), 0.0), u(grid_.size());
   unit[0] = 1.0;
@@ -226,7 +233,10 @@ ElasticKernel::ElasticKernel(const ArealGrid& grid, double e_star) : grid_(grid)
 
 double* ElasticKernel::window_row(int j) const { return fft_->real.get() + static_cast<std::size_t>(j) * mx_; }
 
-double ElasticKernel::apply_in_place() const {
+double ElasticKernel::apply_in_place() const { return transform_in_place(kernel_hat_); }
+double ElasticKernel::precondition_in_place() const { return transform_in_place(inverse_hat_); }
+
+double ElasticKernel::transform_in_place(const std::vector<double>& multiplier) const {
   const int nx = grid_.nx, ny = grid_.ny, hx = mx_ / 2 + 1;
   double* r = fft_->real.get();
   // The padding (an open direction's second half) zeroed: the last transform left u's images there.
@@ -239,7 +249,7 @@ double ElasticKernel::apply_in_place() const {
   // multiplier holds the transform's 1/N): the half spectrum's columns 0 < kx < mx/2 twice.
   fftw_complex* s = fft_->spectrum.get();
   double pkp = 0.0;
-  auto power = [&](std::size_t k) { return kernel_hat_[k] * (s[k][0] * s[k][0] + s[k][1] * s[k][1]); };
+  auto power = [&](std::size_t k) { return multiplier[k] * (s[k][0] * s[k][0] + s[k][1] * s[k][1]); };
   for (int ky = 0; ky < my_; ++ky) {
     const std::size_t row = static_cast<std::size_t>(ky) * hx;
     // (kx = 0, and kx = mx/2 for an even mx, appear once in the whole spectrum.)
@@ -247,7 +257,7 @@ double ElasticKernel::apply_in_place() const {
     double sum_row = 0.0;
     for (int kx = 0; kx < hx; ++kx) {
       const std::size_t k = row + static_cast<std::size_t>(kx);
-      const double kh = kernel_hat_[k], re = s[k][0], im = s[k][1];
+      const double kh = multiplier[k], re = s[k][0], im = s[k][1];
       sum_row += kh * (re * re + im * im);
       s[k][0] = re * kh;
       s[k][1] = im * kh;
@@ -405,7 +415,8 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
   std::vector<double> t(n, 0.0);
   std::vector<unsigned char> state(n);
   auto classify = [cap](double v) -> unsigned char { return v <= 0.0 ? 0 : v >= cap ? 2 : 1; };
-  double g_old = 0.0, tau = 1.0 / self;
+  const bool pre = o.precondition;
+  double rho_old = 0.0, tau = pre ? 1.0 : 1.0 / self;
   bool reset = true, fresh = true;
   double clipped = 0.0, scale_next = 1.0;
   // Sums over the free elements: the flat's height (load control), the last direction's mean.
@@ -427,12 +438,20 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
     // (The load's scale f reaches p and u in the step below, which reads and writes them anyway.)
     // The residual's sums. (The gap f u - h + flat is formed afresh in each pass that reads it: a
     // pass over the grid fewer than storing it; the solution's is formed at the end.)
+    // Preconditioned, the same pass writes the free set's gap into the transform's array (g, 0
+    // elsewhere), for M g below.
     double res2 = 0.0, big_g = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double gi = f * u[i] - h[i] + flat;
-      const unsigned char si = state[i];
-      big_g += si == 1 ? gi * gi : 0.0;
-      res2 += (si == 0 && gi < 0.0) || (si == 2 && gi > 0.0) ? gi * gi : 0.0;
+    for (int j = 0; j < g.ny; ++j) {
+      double* r = kernel.window_row(j);
+      const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(g.nx);
+      for (int c = 0; c < g.nx; ++c) {
+        const std::size_t i = row + static_cast<std::size_t>(c);
+        const double gi = f * u[i] - h[i] + flat;
+        const unsigned char si = state[i];
+        big_g += si == 1 ? gi * gi : 0.0;
+        res2 += (si == 0 && gi < 0.0) || (si == 2 && gi > 0.0) ? gi * gi : 0.0;
+        if (pre) r[c] = si == 1 ? gi : 0.0;
+      }
     }
     s.residual = std::sqrt((res2 + big_g) / static_cast<double>(n)) / scale;
     s.iterations = it;
@@ -462,30 +481,56 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
     // the free set: the gap's mean there is 0 (the flat's height), so t's is, and a step along t keeps
     // the load (the free set changed since the last direction: it need not have been). Its step
     // tau = g.t/t.Kt, t.Kt by Parseval in the transform (K t is read in place, in the step below).
-    const double beta = reset || g_old == 0.0 ? 0.0 : big_g / g_old;
-    const double t_mean = load && free_count > 0 ? t_free / static_cast<double>(free_count) : 0.0;
-    g_old = big_g;
-    reset = false;
+    // Preconditioned: z = M g on the free set (M g's mean there taken out under load control, as
+    // the gap's is), rho = g.z; plain: z = g.
     const bool step_t = free_count > 0 && big_g > 0.0;
+    double rho = big_g, z_mean = 0.0;
+    if (pre && step_t) {
+      rho = kernel.precondition_in_place();
+      if (load) {
+        double z_sum = 0.0;
+        for (int j = 0; j < g.ny; ++j) {
+          const double* r = kernel.window_row(j);
+          const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(g.nx);
+          for (int i = 0; i < g.nx; ++i) z_sum += state[row + static_cast<std::size_t>(i)] == 1 ? r[i] : 0.0;
+        }
+        z_mean = z_sum / static_cast<double>(free_count);
+      }
+    }
+    const double beta = reset || rho_old == 0.0 ? 0.0 : rho / rho_old;
+    const double t_mean = load && free_count > 0 ? t_free / static_cast<double>(free_count) : 0.0;
+    rho_old = rho;
+    reset = false;
     double rt = 0.0;
     for (int j = 0; j < g.ny; ++j) {
       double* r = kernel.window_row(j);
       const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(g.nx);
       for (int i = 0; i < g.nx; ++i) {
         const std::size_t e = row + static_cast<std::size_t>(i);
-        const double ti = state[e] == 1 ? f * u[e] - h[e] + flat + beta * (t[e] - t_mean) : 0.0;
+        const double gi = f * u[e] - h[e] + flat;
+        const double zi = pre && step_t ? r[i] - z_mean : gi;
+        const double ti = state[e] == 1 ? zi + beta * (t[e] - t_mean) : 0.0;
         t[e] = ti;
         r[i] = ti;
-        rt += state[e] == 1 ? (f * u[e] - h[e] + flat) * ti : 0.0;
+        rt += state[e] == 1 ? gi * ti : 0.0;
       }
     }
     if (step_t) {
       const double wt = kernel.apply_in_place();
       if (wt > 0.0) tau = rt / wt;
+      // (Preconditioned, a direction that does not descend, g.t <= 0, is not taken: the next
+      // iteration starts the directions afresh.)
+      if (pre && !(rt > 0.0)) tau = 0.0, reset = true;
     }
+    // The step of the elements that enter the contact or leave the cap [Pa/m]: Polonsky & Keer's
+    // tau; preconditioned (tau then a number), tau times M's Rayleigh quotient on the gap, g.M g/g.g,
+    // the stiffness at the residual's own wavelengths (M's diagonal, a lone element's, overshoots
+    // where a patch enters at once: a warm start at three times the load diverged on it).
+    const double tau_bound = pre && step_t ? tau * rho / big_g : pre ? 1.0 / self : tau;
     // The step, projected on 0 <= p <= H; elements the flat overlaps enter, capped ones whose gap
     // opens are let go (either restarts the conjugate directions).
     bool moved = false;  // an element entered the contact or left the cap
+    bool left = false;   // a free element was clipped at 0 or H
     double total = 0.0;
     free_h = free_u = t_free = 0.0, free_count = 0;
     for (int j = 0; j < g.ny; ++j) {
@@ -497,17 +542,17 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
         switch (state[i]) {
           case 1:
             pi = f * pi - tau * t[i];
-            if (pi <= 0.0) clipped -= pi, pi = 0.0;
-            else if (pi >= cap) clipped += pi - cap, pi = cap;
+            if (pi <= 0.0) clipped -= pi, pi = 0.0, left = true;
+            else if (pi >= cap) clipped += pi - cap, pi = cap, left = true;
             break;
           case 0: {  // (p = 0: unscaled)
             const double gi = f * u[i] - h[i] + flat;
-            if (gi < 0.0) pi = std::min(-tau * gi, cap), clipped += pi, moved = true;
+            if (gi < 0.0) pi = std::min(-tau_bound * gi, cap), clipped += pi, moved = true;
             break;
           }
           default: {
             const double gi = f * u[i] - h[i] + flat;
-            if (gi > 0.0) pi = std::max(0.0, cap - tau * gi), clipped += cap - pi, moved = true;
+            if (gi > 0.0) pi = std::max(0.0, cap - tau_bound * gi), clipped += cap - pi, moved = true;
             break;
           }
         }
@@ -535,12 +580,16 @@ ArealSolution polonsky_keer(const ElasticKernel& kernel, std::span<const double>
       scale_next = target / total;  // Polonsky & Keer's scaling of every pressure, carried to u as well
     }
     fresh = false;
-    if (moved) reset = true;
+    // (Preconditioned, a clipped element restarts the directions too: the preconditioner's
+    // restriction changed, and M's large entries turn the residual's jump there into a direction
+    // that does not descend.)
+    if (moved || (pre && left)) reset = true;
     if (clipped > kClipped * s.residual * std::max(total, 1e-300) || (it + 1) % kFresh == 0) {
       for (double& v : p) v = std::min(v * scale_next, cap);
       scale_next = 1.0;
       kernel.apply(p, u);
       recount();
+      if (pre && clipped > 0.0) reset = true;  // the residual jumps by the clipped pressure's displacement
       fresh = true, clipped = 0.0;
     }
   }
@@ -606,7 +655,9 @@ ArealSolution capped_load_control(const ElasticKernel& kernel, std::span<const d
   std::vector<unsigned char> state(n);
   for (std::size_t i = 0; i < n; ++i) state[i] = classify(p[i]);
   std::vector<double> t(n, 0.0), w(n, 0.0), trial(n, 0.0);  // trial: the step's pressure (scratch between)
-  double g_old = 0.0, tau = 1.0 / kernel.self_influence(), clipped = 0.0, flat = 0.0;
+  const bool pre = o.precondition;
+  std::vector<double> z(pre ? n : 0);
+  double rho_old = 0.0, tau = pre ? 1.0 : 1.0 / kernel.self_influence(), clipped = 0.0, flat = 0.0;
   bool reset = true, fresh = true;
   for (int it = 0;; ++it) {
     // The flat's height: the mean over the free elements of their deformed heights.
@@ -636,12 +687,33 @@ ArealSolution capped_load_control(const ElasticKernel& kernel, std::span<const d
       fresh = true, clipped = 0.0, reset = true;
       continue;
     }
-    // The conjugate direction on the free set (Polonsky & Keer 1999 eq. 14) and its step.
-    const double beta = reset || g_old == 0.0 ? 0.0 : big_g / g_old;
-    for (std::size_t i = 0; i < n; ++i) t[i] = state[i] == 1 ? gap[i] + beta * t[i] : 0.0;
-    g_old = big_g;
+    // The conjugate direction on the free set (Polonsky & Keer 1999 eq. 14) and its step; the
+    // preconditioned one's z = M g there, less its mean (as polonsky_keer's), else z = g.
+    const bool step_t = free_count > 0 && big_g > 0.0;
+    double rho = big_g;
+    if (pre && step_t) {
+      const ArealGrid& g = kernel.grid();
+      for (int j = 0; j < g.ny; ++j) {
+        double* r = kernel.window_row(j);
+        const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(g.nx);
+        for (int c = 0; c < g.nx; ++c) r[c] = state[row + c] == 1 ? gap[row + c] : 0.0;
+      }
+      rho = kernel.precondition_in_place();
+      double z_sum = 0.0;
+      for (int j = 0; j < g.ny; ++j) {
+        const double* r = kernel.window_row(j);
+        const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(g.nx);
+        for (int c = 0; c < g.nx; ++c) z[row + c] = state[row + c] == 1 ? r[c] : 0.0, z_sum += z[row + c];
+      }
+      const double z_mean = z_sum / static_cast<double>(free_count);
+      for (std::size_t i = 0; i < n; ++i) z[i] -= state[i] == 1 ? z_mean : 0.0;
+    }
+    const bool use_z = pre && step_t;
+    const double beta = reset || rho_old == 0.0 ? 0.0 : rho / rho_old;
+    for (std::size_t i = 0; i < n; ++i) t[i] = state[i] == 1 ? (use_z ? z[i] : gap[i]) + beta * t[i] : 0.0;
+    rho_old = rho;
     reset = false;
-    if (free_count > 0 && big_g > 0.0) {
+    if (step_t) {
       kernel.apply(t, w);
       double w_sum = 0.0, t_sum = 0.0, wt = 0.0, rt = 0.0;
       for (std::size_t i = 0; i < n; ++i) {
@@ -650,14 +722,17 @@ ArealSolution capped_load_control(const ElasticKernel& kernel, std::span<const d
       }
       wt -= w_sum / static_cast<double>(free_count) * t_sum;  // K t less its mean on the free set
       if (wt > 0.0) tau = rt / wt;
+      if (pre && !(rt > 0.0)) tau = 0.0, reset = true;  // not a descent direction: not taken (polonsky_keer)
     } else {
       std::fill(w.begin(), w.end(), 0.0);
     }
-    // The step p - tau d projected on C: d = t on the free elements, g on the others.
+    // The step p - tau d projected on C: d = t on the free elements, g on the others (preconditioned,
+    // tau times M's Rayleigh quotient on the gap there, as in polonsky_keer).
+    double tau_bound = use_z ? tau * rho / big_g : pre ? 1.0 / kernel.self_influence() : tau;
     for (int halving = 0;; ++halving) {
       for (std::size_t i = 0; i < n; ++i) {
         const unsigned char si = state[i];
-        trial[i] = si == 1 ? p[i] - tau * t[i] : si == 0 ? -tau * gap[i] : cap - tau * gap[i];
+        trial[i] = si == 1 ? p[i] - tau * t[i] : si == 0 ? -tau_bound * gap[i] : cap - tau_bound * gap[i];
       }
       const double mu = capped_shift(trial, cap, target);
       bool changed = false;
@@ -666,7 +741,7 @@ ArealSolution capped_load_control(const ElasticKernel& kernel, std::span<const d
         changed = changed || classify(v) != state[i];
         trial[i] = v;
       }
-      if (!changed) {
+      if (!changed && halving == 0) {
         // The active set kept: u carried by K t, the load's shift of the free elements left out of it.
         for (std::size_t i = 0; i < n; ++i) {
           u[i] -= tau * w[i];
@@ -674,6 +749,13 @@ ArealSolution capped_load_control(const ElasticKernel& kernel, std::span<const d
         }
         p.swap(trial);
         fresh = false;
+        break;
+      }
+      if (!changed) {
+        // Kept after a halving: w holds K of a rejected trial, not K t: u afresh.
+        p.swap(trial);
+        kernel.apply(p, u);
+        fresh = true, clipped = 0.0, reset = true;
         break;
       }
       // The active set changed: F's change p -> p + D is g.D + D.K D/2 (sum D = 0, the load kept),
@@ -693,12 +775,14 @@ ArealSolution capped_load_control(const ElasticKernel& kernel, std::span<const d
         fresh = true, clipped = 0.0, reset = true;
         break;
       }
-      // Rejected: along the gradient (the conjugate direction need not descend on the arc), half the step.
-      tau *= 0.5;
-      for (std::size_t i = 0; i < n; ++i) t[i] = state[i] == 1 ? gap[i] : 0.0;
+      // Rejected: along the (preconditioned) gradient (the conjugate direction need not descend on
+      // the arc), half the step.
+      tau *= 0.5, tau_bound *= 0.5;
+      for (std::size_t i = 0; i < n; ++i) t[i] = state[i] == 1 ? (use_z ? z[i] : gap[i]) : 0.0;
     }
     if (!fresh && (clipped > kClipped * s.residual * target || (it + 1) % kFresh == 0)) {
       kernel.apply(p, u);
+      if (pre && clipped > 0.0) reset = true;  // the residual jumps by the load shift's displacement
       fresh = true, clipped = 0.0;
     }
   }
