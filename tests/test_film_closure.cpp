@@ -349,6 +349,22 @@ Case with(const std::vector<io::CaseChange>& changes) {
   return io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30.toml", changes));
 }
 
+TEST(LubricatedSummary, PerssonRunOnMeasuredFlanksTakesTheirSpectrum) {
+  // End to end: gears/m6z30-measured.toml lubricated with Persson's closure runs on the patches' radial
+  // spectrum (its rq and h'_rms, the verdict naming it), not the fit (refused on these summits, above).
+  const Case c = measured_persson();
+  const auto r = run(c, 21);
+  ASSERT_TRUE(r.lubrication_summary.has_value());
+  const auto& sum = *r.lubrication_summary;
+  const contact::RoughnessSpectrum measured =
+      contact::flank_spectrum({&c.pinion.flank, &c.wheel.flank}, contact::case_equivalent_surface(c)).spectrum;
+  EXPECT_EQ(sum.persson_spectrum, "measured");
+  EXPECT_NEAR(sum.persson_rms_height / measured.rms_height(), 1.0, 1e-12);
+  EXPECT_NEAR(sum.persson_rms_gradient / measured.rms_gradient(), 1.0, 1e-12);
+  EXPECT_NE(r.verdict.find("the measured patches' radial spectra"), std::string::npos);
+  ASSERT_NE(r.find("persson_plastic_area_fraction"), nullptr);
+}
+
 TEST(LubricatedSummary, NamedPointsStandWhereTheyAreBAndDOnTheSinglePairSide) {
   const Case c = with({});
   const auto r = run(c, 401);

@@ -491,6 +491,11 @@ LubricationSummary MeshLubrication::summary() const {
   sum.mean_ra = roughness_.mean_ra;
   sum.roughness_source = roughness_.source;
   sum.summit_model_sigma = model_.surface.surface_sigma;
+  if (persson_) {
+    sum.persson_spectrum = spectrum_->sources();
+    sum.persson_rms_height = persson_->rms_height();
+    sum.persson_rms_gradient = persson_->rms_gradient();
+  }
   sum.iso_effective_relief = iso_effective_relief_;
   for (const auto& [law, f] : mean_laws_)
     sum.mean_friction.push_back({lub::mean_friction_law_name(law), f.coefficient});
