@@ -207,7 +207,9 @@ void prepare_case(Case& c) {
             fmt::format("the {} flank has no spectrum of its own (a measured areal topography or a generated ground "
                         "profile; {}): take \"moments\", the statistical model's fit",
                         gear == 0 ? "pinion" : "wheel",
-                        f.topography ? "its topography is a profile trace" : "it is given by its statistics"));
+                        f.topography ? "its topography is a profile trace"
+                        : f.profile  ? "its generated profile is not a ground one"
+                                     : "it is given by its statistics"));
     }
 }
 

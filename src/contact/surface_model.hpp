@@ -63,7 +63,7 @@ struct SurfaceModel {
 //    equivalent surface: m0 = sigma^2, m4 = 0.375^2 pi/beta^2, m2 = m4/(6 pi sqrt 3 eta). Flanks given
 //    by Ra or Rq take it as assumed as the summits' eta sigma_s beta (bandwidth 6.93 at 0.05);
 //    std::invalid_argument where the bandwidth is at most 2 (eta sigma_s beta below 0.0214), which no
-//    such spectrum has (measured summits can be: gears/m6z30-measured.toml's are).
+//    such spectrum has (measured summits can lie there: gears/m6z30-measured.toml's do).
 // A measured patch whose spectrum cannot be taken (too few points, a missing point, no power) throws
 // MeasuredSpectrumError naming the flank.
 enum class SpectrumSource { generated, measured, fitted };
@@ -71,7 +71,7 @@ const char* spectrum_source_name(SpectrumSource s);  // "generated", "measured",
 struct FlankSpectrum {
   RoughnessSpectrum spectrum;  // fitted: one part; else the pinion's part, then the wheel's
   std::array<SpectrumSource, 2> source = {SpectrumSource::fitted, SpectrumSource::fitted};  // pinion, wheel
-  bool fell_back = false;  // flanks asked for, one flank's own taken as the pair's fit
+  bool fell_back = false;  // flanks asked for, one flank alone had its own: the pair fitted instead
   // A measured flank's wavelengths its patch resolves [m]: two of its (coarser) spacings to its (longer)
   // side; 0 for the others.
   std::array<double, 2> shortest = {0.0, 0.0}, longest = {0.0, 0.0};
