@@ -468,6 +468,13 @@ check areal-patch-finer-elements 2 "key 'contact.element_size' = 0.2 um: finer t
 # Persson's closure takes Gaussian heights: exponential ones refused at the key.
 check persson-exponential 2 "key 'lubrication.asperity_pressure' = persson: Persson's theory takes Gaussian heights" -- \
   "$bin" run gears/m6z30.toml --set lubrication.asperity_pressure=persson --set roughness.distribution=exponential -o "$tmp/persson-bad.h5" -q
+# The flanks' own spectra asked for where a flank has none (given by Ra): refused at the key; the
+# moments' fit asked for where these measured summits' band admits none: refused, naming the other.
+check persson-spectrum-flanks 2 "key 'lubrication.persson_spectrum' = \"flanks\": the pinion flank has no spectrum of its own" -- \
+  "$bin" run gears/m6z30.toml --set lubrication.asperity_pressure=persson --set lubrication.persson_spectrum=flanks -o "$tmp/persson-bad.h5" -q
+check persson-spectrum-moments 2 "with lubrication.persson_spectrum = \"moments\" it is fitted to the statistical model's moments, and none fits them" -- \
+  "$bin" run gears/m6z30-measured.toml --set lubricant.file=../lubricants/mineral-vg220.toml --set operating.oil_temperature=70degC \
+  --set lubrication.asperity_pressure=persson --set lubrication.persson_spectrum=moments -o "$tmp/persson-bad.h5" -q
 # Generated ground and superfinished surfaces: written; a plateau outside (0, 1) refused, naming it.
 check surface-generate-ground 0 "" -- "$bin" surface generate ground -o "$tmp/ground.h5" --nx 64 --ny 64 --correlation 4um
 check surface-generate-superfinished 0 "" -- "$bin" surface generate superfinished -o "$tmp/sf.h5" --nx 64 --ny 64 --correlation 4um

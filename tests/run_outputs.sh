@@ -108,6 +108,20 @@ f = h5py.File(sys.argv[1], "r")
 assert f["z"].attrs["units"] in (b"m", "m") and f["z"].attrs["dx"] == 0.25e-6 and f.attrs["geartrib_version"]
 PY
 
+# Persson's closure on measured flanks (issue 35): it takes the patches' radial spectrum, says so on the
+# terminal and in /lubrication, its rq the flanks' composite Rq (the average keeps each patch's variance).
+"$bin" run gears/m6z30-measured.toml --positions 11 -o "$tmp/persson.h5" --set lubricant.file=../lubricants/mineral-vg220.toml \
+  --set operating.oil_temperature=70degC --set lubrication.asperity_pressure=persson 2>/dev/null \
+  | grep -q "^Persson's spectrum: measured (rq 1.407 um" && ok persson-measured-printed || bad persson-measured-printed
+"$py" - "$tmp/persson.h5" <<'PY' && ok persson-measured-recorded || bad persson-measured-recorded
+import sys, h5py
+a = h5py.File(sys.argv[1], "r")["lubrication"].attrs
+text = lambda v: v.decode() if isinstance(v, bytes) else v
+assert text(a["persson_spectrum"]) == "measured", a["persson_spectrum"]
+assert abs(a["persson_spectrum_rq_m"] / a["composite_rq_m"] - 1) < 1e-12
+assert 0.9 < a["persson_spectrum_rms_gradient"] < 1.0, a["persson_spectrum_rms_gradient"]  # the patches' 0.934
+PY
+
 # Only what the case asks for: real area only, mu = 0 (no side contact), coupled fidelity.
 mkdir -p "$tmp/g"
 sed -e 's/^outputs = .*/outputs = ["real_area"]/' -e 's#"../materials/#"'"$PWD"'/materials/#' -e 's#"../lubricants/#"'"$PWD"'/lubricants/#' gears/m6z30.toml > "$tmp/g/area.toml"

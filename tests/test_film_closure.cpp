@@ -19,6 +19,7 @@
 #include "lubrication/lubricant.hpp"
 #include "runs/mesh_cycle.hpp"
 #include "solvers/integrators.hpp"
+#include "surface/areal_synthesis.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -182,7 +183,8 @@ TEST(AsperityPressure, FlankSpectrumFromGroundProfilesOrFittedToTheSummitModel) 
   const surface::EquivalentSurface e = contact::case_equivalent_surface(c);
   const contact::FlankSpectrum f = contact::flank_spectrum({&c.pinion.flank, &c.wheel.flank}, e);
   ASSERT_EQ(f.spectrum.parts.size(), 1u);
-  EXPECT_FALSE(f.generated);
+  EXPECT_EQ(f.sources(), "fitted");
+  EXPECT_FALSE(f.fell_back);
   EXPECT_EQ(f.spectrum.parts[0].hurst, contact::kFittedSpectrumHurst);
   const double m0 = f.spectrum.profile_m0(), m2 = f.spectrum.profile_m2(), m4 = f.spectrum.profile_m4();
   EXPECT_NEAR(std::sqrt(m0) / e.surface_sigma, 1.0, 1e-12);
@@ -193,7 +195,7 @@ TEST(AsperityPressure, FlankSpectrumFromGroundProfilesOrFittedToTheSummitModel) 
   const contact::FlankSpectrum fg =
       contact::flank_spectrum({&g.pinion.flank, &g.wheel.flank}, contact::case_equivalent_surface(g));
   ASSERT_EQ(fg.spectrum.parts.size(), 2u);
-  EXPECT_TRUE(fg.generated);
+  EXPECT_EQ(fg.sources(), "generated");
   EXPECT_EQ(fg.spectrum.parts[1].correlation_length, g.wheel.flank.profile->correlation_length);
   EXPECT_NEAR(fg.spectrum.rms_height(), std::hypot(g.pinion.flank.profile->rq, g.wheel.flank.profile->rq), 1e-20);
   // A GW product below 0.0214 makes a bandwidth m0 m4/m2^2 below 2: no self-affine spectrum has it.
@@ -202,6 +204,86 @@ TEST(AsperityPressure, FlankSpectrumFromGroundProfilesOrFittedToTheSummitModel) 
   EXPECT_THROW(
       contact::flank_spectrum({&narrow.pinion.flank, &narrow.wheel.flank}, contact::case_equivalent_surface(narrow)),
       std::invalid_argument);
+}
+
+namespace {
+// gears/m6z30-measured.toml lubricated (the oil of gears/m6z30.toml) with Persson's closure.
+Case measured_persson(std::vector<io::CaseChange> changes = {}) {
+  changes.insert(changes.begin(), {{"lubricant.file", "../lubricants/mineral-vg220.toml"},
+                                   {"operating.oil_temperature", "70 degC"},
+                                   {"lubrication.asperity_pressure", "persson"}});
+  return io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30-measured.toml", changes));
+}
+}  // namespace
+
+TEST(AsperityPressure, FlankSpectrumFromMeasuredPatches) {
+  // Measured areal flanks: each patch's radial spectrum, tabulated, holding the patch's variance and
+  // full gradient variance (m2x + m2y of its areal spectrum, surface::radial_spectrum: to rounding); the
+  // two added.
+  const Case c = measured_persson();
+  ASSERT_TRUE(c.pinion.flank.patch.has_value());  // kept for Persson's spectrum (no areal patch lay here)
+  ASSERT_TRUE(c.wheel.flank.patch.has_value());
+  const surface::EquivalentSurface e = contact::case_equivalent_surface(c);
+  const contact::FlankSpectrum f = contact::flank_spectrum({&c.pinion.flank, &c.wheel.flank}, e);
+  EXPECT_EQ(f.sources(), "measured");
+  ASSERT_EQ(f.spectrum.parts.size(), 2u);
+  for (std::size_t g = 0; g < 2; ++g) {
+    const contact::SpectrumPart& part = f.spectrum.parts[g];
+    EXPECT_EQ(part.shape, contact::SpectrumPart::Shape::tabulated) << g;
+    const surface::ArealSpectrum a = surface::areal_spectrum(*(g == 0 ? c.pinion : c.wheel).flank.patch);
+    const contact::RoughnessSpectrum one{{part}};
+    EXPECT_NEAR(one.rms_height() / a.patch_rq, 1.0, 1e-12) << g;
+    EXPECT_NEAR(one.rms_gradient() / std::sqrt(a.slope_variance(true) + a.slope_variance(false)), 1.0, 1e-12) << g;
+  }
+  // The patch's variance is the cleaned surface's Rq^2: the spectrum's rq is the flanks' composite Rq.
+  const double rq = std::hypot(c.pinion.flank.measured->rq, c.wheel.flank.measured->rq);
+  EXPECT_NEAR(f.spectrum.rms_height() / rq, 1.0, 1e-12);
+  // The moments' fit asked for instead: these summits' band (eta sigma_s beta 0.015) is narrower than
+  // any self-affine spectrum's; with summit radii of 3 um (0.030) one fits, and it is the pair's.
+  EXPECT_THROW(contact::flank_spectrum({&c.pinion.flank, &c.wheel.flank}, e, lubrication::PerssonSpectrum::moments),
+               std::invalid_argument);
+  const Case wide = measured_persson({{"pinion.flank.summit_radius", "3 um"}, {"wheel.flank.summit_radius", "3 um"}});
+  const contact::FlankSpectrum m =
+      contact::flank_spectrum({&wide.pinion.flank, &wide.wheel.flank}, contact::case_equivalent_surface(wide),
+                              lubrication::PerssonSpectrum::moments);
+  EXPECT_EQ(m.sources(), "fitted");
+  ASSERT_EQ(m.spectrum.parts.size(), 1u);
+  EXPECT_EQ(m.spectrum.parts[0].shape, contact::SpectrumPart::Shape::self_affine);
+  // A measured pinion beside a ground wheel: each its own, added, the source said per flank.
+  const Case ground = io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30-mixed-ehl.toml"));
+  const contact::FlankSpectrum mixed = contact::flank_spectrum({&c.pinion.flank, &ground.wheel.flank}, e);
+  EXPECT_EQ(mixed.sources(), "measured/generated");
+  ASSERT_EQ(mixed.spectrum.parts.size(), 2u);
+  EXPECT_EQ(mixed.spectrum.parts[1].correlation_length, ground.wheel.flank.profile->correlation_length);
+  // A measured pinion beside a flank given by Ra: the pair's fit (one flank's own is not added to a fit
+  // of the composite moments that hold it), and it says so.
+  const Case ra = test::lubricated_case();
+  const contact::FlankSpectrum fallback =
+      contact::flank_spectrum({&c.pinion.flank, &ra.wheel.flank}, contact::case_equivalent_surface(ra));
+  EXPECT_EQ(fallback.sources(), "fitted");
+  EXPECT_TRUE(fallback.fell_back);
+}
+
+TEST(AsperityPressure, MeasuredPatchKeptOnlyWhereTakenAndRefusals) {
+  // The patch is kept where Persson's closure takes the flanks' own spectra, not otherwise.
+  EXPECT_FALSE(measured_persson({{"lubrication.persson_spectrum", "moments"}}).pinion.flank.patch.has_value());
+  EXPECT_FALSE(measured_persson({{"lubrication.asperity_pressure", "auto"}}).pinion.flank.patch.has_value());
+  // "flanks" given where a flank has no spectrum of its own (flanks given by Ra): refused at the key.
+  try {
+    io::prepare_case(
+        io::load_case(test::source_dir() / "gears/m6z30.toml",
+                      {{"lubrication.asperity_pressure", "persson"}, {"lubrication.persson_spectrum", "flanks"}}));
+    ADD_FAILURE() << "flanks without a spectrum of their own was not refused";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.key(), "lubrication.persson_spectrum");
+  }
+  // A patch with missing points (outliers masked, not filled) has no areal spectrum: refused at fill.
+  try {
+    measured_persson({{"pinion.flank.topography.outliers", "2"}, {"pinion.flank.topography.fill", "false"}});
+    ADD_FAILURE() << "a patch with missing points was not refused";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.key(), "pinion.flank.topography.fill");
+  }
 }
 
 TEST(AsperityPressure, AutomaticWeightIsContinuousInThePlasticFraction) {
@@ -265,6 +347,22 @@ contact::MeshContactResult run(const Case& c, int positions = 41) {
 }
 Case with(const std::vector<io::CaseChange>& changes) {
   return io::prepare_case(io::load_case(test::source_dir() / "gears/m6z30.toml", changes));
+}
+
+TEST(LubricatedSummary, PerssonRunOnMeasuredFlanksTakesTheirSpectrum) {
+  // End to end: gears/m6z30-measured.toml lubricated with Persson's closure runs on the patches' radial
+  // spectrum (its rq and h'_rms, the verdict naming it), not the fit (refused on these summits, above).
+  const Case c = measured_persson();
+  const auto r = run(c, 21);
+  ASSERT_TRUE(r.lubrication_summary.has_value());
+  const auto& sum = *r.lubrication_summary;
+  const contact::RoughnessSpectrum measured =
+      contact::flank_spectrum({&c.pinion.flank, &c.wheel.flank}, contact::case_equivalent_surface(c)).spectrum;
+  EXPECT_EQ(sum.persson_spectrum, "measured");
+  EXPECT_NEAR(sum.persson_rms_height / measured.rms_height(), 1.0, 1e-12);
+  EXPECT_NEAR(sum.persson_rms_gradient / measured.rms_gradient(), 1.0, 1e-12);
+  EXPECT_NE(r.verdict.find("the measured patches' radial spectra"), std::string::npos);
+  ASSERT_NE(r.find("persson_plastic_area_fraction"), nullptr);
 }
 
 TEST(LubricatedSummary, NamedPointsStandWhereTheyAreBAndDOnTheSinglePairSide) {

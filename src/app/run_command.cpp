@@ -73,6 +73,9 @@ void print_summary(const contact::MeshContactResult& r) {
         l.film_formula, l.inlet_heating, l.film_gap, l.asperity_pressure, l.traction);
     fmt::print("Roughness: Rq {:.4g} um (composite), Ra {:.4g} um (mean) from {}; the summit model's sigma {:.4g} um\n",
                l.composite_rq * 1e6, l.mean_ra * 1e6, l.roughness_source, l.summit_model_sigma * 1e6);
+    if (!l.persson_spectrum.empty())
+      fmt::print("Persson's spectrum: {} (rq {:.4g} um, full rms gradient h'_rms {:.4g})\n", l.persson_spectrum,
+                 l.persson_rms_height * 1e6, l.persson_rms_gradient);
     fmt::print("{:<4} {:>8} {:>9} {:>8} {:>9} {:>7} {:>9} {:>7} {:>8} {:>7} {:>8} {:>8} {:>8}\n", "pt", "s mm",
                "film um", "lam_film", "gap um", "lam_gap", "ISO h_Y", "lam_GF", "asp shr", "mu", "flash K", "ISO fl K",
                "T_B degC");

@@ -38,6 +38,14 @@ bool given(const Case& c, const std::string& key) {
   return p && p->origin.kind != Origin::Kind::default_value;
 }
 
+// Persson's closure on the flanks' own spectra (lubrication.persson_spectrum = flanks): a measured
+// areal flank's cleaned patch is kept for its spectrum (contact::flank_spectrum).
+bool persson_takes_patches(const Case& c) {
+  const auto& l = c.lubrication;
+  return l.lubricated && l.asperity_pressure == lubrication::AsperityPressureModel::persson &&
+         l.persson_spectrum == lubrication::PerssonSpectrum::flanks;
+}
+
 // A measured flank: the cleaned surface's summits give density, height sigma and radius
 // (summit_radius, if given, overrides the measured radius: grid sampling biases it); a profile
 // trace (fewer than 3 lines) its spectral moments.
@@ -79,9 +87,15 @@ void prepare_measured(Case& c, int gear) {
       refuse(t + "synthesis", path.string() + ": " + e.what());
     }
   }
-  if (!trace && c.contact.fidelity.name() == contact::areal::Areal::name &&
-      c.contact.areal.lay == contact::areal::ArealLay::patch)
-    g.flank.patch = grid;  // synthesised or tiled into the areal fidelity's maps (runs/mesh_cycle.cpp)
+  const bool patch_lay = c.contact.fidelity.name() == contact::areal::Areal::name &&
+                         c.contact.areal.lay == contact::areal::ArealLay::patch;
+  if (!trace && persson_takes_patches(c) && grid.missing() > 0)
+    refuse(t + "fill", fmt::format("{} has {} missing points; Persson's closure takes the patch's own spectrum "
+                                   "(lubrication.persson_spectrum = flanks), which needs every point: fill = true, "
+                                   "or take \"moments\"",
+                                   path.string(), grid.missing()));
+  // Synthesised or tiled into the areal fidelity's maps (runs/mesh_cycle.cpp); Persson's spectrum.
+  if (!trace && (patch_lay || persson_takes_patches(c))) g.flank.patch = grid;
   if (trace) {
     // A profile trace (a stylus's line along the involute): its spectral moments give the
     // roughness (McCool's summits), as for a generated profile.
@@ -182,6 +196,21 @@ void prepare_case(Case& c) {
     r2.summit_radius = radius2;
   }
   prepare_gear_pair(c);
+  // Persson's spectrum from the flanks themselves, asked for in so many words: both must have one.
+  const std::string spectrum_key = "lubrication.persson_spectrum";
+  if (persson_takes_patches(c) && given(c, spectrum_key))
+    for (int gear = 0; gear < 2; ++gear) {
+      const surface::FlankSpec& f = (gear == 0 ? c.pinion : c.wheel).flank;
+      if (!f.patch && !(f.profile && f.profile->kind == surface::ProfileKind::ground))
+        throw located_error_as_written(
+            c, spectrum_key,
+            fmt::format("the {} flank has no spectrum of its own (a measured areal topography or a generated ground "
+                        "profile; {}): take \"moments\", the statistical model's fit",
+                        gear == 0 ? "pinion" : "wheel",
+                        f.topography ? "its topography is a profile trace"
+                        : f.profile  ? "its generated profile is not a ground one"
+                                     : "it is given by its statistics"));
+    }
 }
 
 Case prepare_case(Case&& c) {

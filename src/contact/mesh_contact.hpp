@@ -53,6 +53,11 @@ struct LubricationSummary {
   double mean_ra = 0.0;              // (Ra1 + Ra2)/2 [m]
   std::string roughness_source;      // where Rq and Ra came from
   double summit_model_sigma = 0.0;   // the equivalent surface's composite sigma [m]
+  // Persson's closure (empty otherwise): its spectrum's source (contact::FlankSpectrum::sources(): measured,
+  // generated, fitted, or the pinion's/the wheel's), and that spectrum's rq and full rms gradient h'_rms.
+  std::string persson_spectrum;
+  double persson_rms_height = 0.0;    // [m]
+  double persson_rms_gradient = 0.0;  // [1]
   struct LawValue {
     std::string law;
     double coefficient = 0.0;

@@ -78,15 +78,28 @@ MeshLubrication::MeshLubrication(const LubricationInputs& in, const gear::GearMe
                              "Persson's theory takes Gaussian heights (its diffusion of the pressure and its mean gap "
                              "both assume them), and roughness.distribution is exponential: take the Gaussian heights "
                              "or another asperity pressure (auto, asperity-model, bearing-area)");
+    const lub::PerssonSpectrum asked = lubrication_.persson_spectrum;
     try {
-      spectrum_ = flank_spectrum(in.flank_specs, model.surface);
+      spectrum_ = flank_spectrum(in.flank_specs, model.surface, asked);
+    } catch (const MeasuredSpectrumError& e) {
+      throw core::KeyedError("lubrication.persson_spectrum",
+                             fmt::format("Persson's theory takes the measured flanks' own power spectrum, and {}: "
+                                         "correct the topography, or take \"moments\" (the statistical model's fit)",
+                                         e.what()));
     } catch (const std::invalid_argument& e) {
       throw core::KeyedError(
           "lubrication.asperity_pressure",
-          fmt::format("Persson's theory needs the flanks' power spectrum; without generated ground profiles on both "
-                      "flanks it is fitted to the statistical model's moments, and none fits them ({}): give the "
-                      "flanks ground profiles, or a wider band (roughness.eta_sigma_beta above 0.0214)",
-                      e.what()));
+          fmt::format("Persson's theory needs the flanks' power spectrum; {} it is fitted to the statistical model's "
+                      "moments, and none fits them ({}): {}",
+                      asked == lub::PerssonSpectrum::moments
+                          ? "with lubrication.persson_spectrum = \"moments\""
+                          : "without a spectrum of their own on both flanks (a measured areal topography or a "
+                            "generated ground profile)",
+                      e.what(),
+                      asked == lub::PerssonSpectrum::moments
+                          ? "take the flanks' own (\"flanks\"), where they have one"
+                          : "give the flanks measured areal topographies or ground profiles, or a wider band "
+                            "(roughness.eta_sigma_beta above 0.0214)"));
     }
   }
   for (int g = 0; g < 2; ++g) {
@@ -478,6 +491,11 @@ LubricationSummary MeshLubrication::summary() const {
   sum.mean_ra = roughness_.mean_ra;
   sum.roughness_source = roughness_.source;
   sum.summit_model_sigma = model_.surface.surface_sigma;
+  if (persson_) {
+    sum.persson_spectrum = spectrum_->sources();
+    sum.persson_rms_height = persson_->rms_height();
+    sum.persson_rms_gradient = persson_->rms_gradient();
+  }
   sum.iso_effective_relief = iso_effective_relief_;
   for (const auto& [law, f] : mean_laws_)
     sum.mean_friction.push_back({lub::mean_friction_law_name(law), f.coefficient});
@@ -567,6 +585,37 @@ bool MeshLubrication::surfaces_disagree() const {
   return roughness_.from_heights && (r > kRoughnessDisagreementFactor || r < 1.0 / kRoughnessDisagreementFactor);
 }
 
+std::string MeshLubrication::spectrum_text() const {
+  const FlankSpectrum& f = *spectrum_;
+  if (f.source[0] == SpectrumSource::fitted) {
+    const SpectrumPart& p = f.spectrum.parts.front();
+    return fmt::format(
+        "a self-affine spectrum fitted to the summit model's moments (H = {:g}, roll-off {:.3g} um, shortest "
+        "wavelength {:.3g} um{})",
+        p.hurst, 2e6 * std::numbers::pi / p.rolloff, 2e6 * std::numbers::pi / p.cutoff,
+        lubrication_.persson_spectrum == lub::PerssonSpectrum::moments ? "; lubrication.persson_spectrum = moments"
+        : f.fell_back ? "; one flank alone has a spectrum of its own, and it is not added to a fit that holds it"
+                      : "");
+  }
+  // A measured patch's wavelengths [um], what it resolves.
+  const auto band = [&](std::size_t g) {
+    return fmt::format("{:.3g}-{:.3g} um", f.shortest[g] * 1e6, f.longest[g] * 1e6);
+  };
+  if (f.source[0] == f.source[1])
+    return f.source[0] == SpectrumSource::measured
+               ? fmt::format("the measured patches' radial spectra (the wavelengths they resolve: {} and {})", band(0),
+                             band(1))
+               : std::string("the ground profiles' Gaussian spectra taken isotropic");
+  std::string text;
+  for (std::size_t g = 0; g < 2; ++g) {
+    text += g == 0 ? "the pinion's " : " and the wheel's ";
+    text += f.source[g] == SpectrumSource::measured
+                ? "measured patch's radial spectrum (the wavelengths it resolves: " + band(g) + ")"
+                : std::string("ground profile's Gaussian spectrum taken isotropic");
+  }
+  return text;
+}
+
 std::string MeshLubrication::verdict_text(const LubricationSummary& sum) const {
   // What produced the numbers and where they rest on a choice: said in the verdict.
   const std::size_t n = positions_.size();
@@ -583,19 +632,13 @@ std::string MeshLubrication::verdict_text(const LubricationSummary& sum) const {
                                     : fmt::format("by a blend, {:.2f} bearing area and {:.2f} {} model{}", w, 1.0 - w,
                                                   asperity_model, why);
   if (persson_) {
-    const SpectrumPart& f = spectrum_->spectrum.parts.front();
-    const std::string spectrum =
-        spectrum_->generated
-            ? "the ground profiles' Gaussian spectra taken isotropic"
-            : fmt::format(
-                  "a self-affine spectrum fitted to the summit model's moments (H = {:g}, roll-off {:.3g} um, "
-                  "shortest wavelength {:.3g} um)",
-                  f.hurst, 2e6 * std::numbers::pi / f.rolloff, 2e6 * std::numbers::pi / f.cutoff);
-    const std::string law = fmt::format("Persson's interfacial separation law (elastic, on {}; u0 {:.3g} um)", spectrum,
-                                        persson_->decay_length() * 1e6);
+    // The spectrum named in either case: it sets his plastic share (the blend's weight) as well as his law.
+    const std::string law =
+        fmt::format("Persson's interfacial separation law (elastic; u0 {:.3g} um)", persson_->decay_length() * 1e6);
     const std::string plastic = fmt::format(
-        "; Persson's elastic-plastic theory puts at least {:.3g} of the real area at the hardness under the whole load",
-        plastic_fraction_);
+        "; Persson's theory on {} (rq {:.3g} um, h'_rms {:.3g}): his elastic-plastic share puts at least {:.3g} of "
+        "the real area at the hardness under the whole load",
+        spectrum_text(), persson_->rms_height() * 1e6, persson_->rms_gradient(), plastic_fraction_);
     pressure = w >= 1.0   ? "by their bearing area at the hardness, the flanks fully plastic" + plastic
                : w <= 0.0 ? "by " + law + plastic
                           : fmt::format("by a blend, {:.2f} bearing area and {:.2f} {}{}", w, 1.0 - w, law, plastic);

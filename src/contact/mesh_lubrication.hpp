@@ -40,7 +40,7 @@ CompositeRoughness composite_roughness(const std::array<surface::FlankRoughness,
 struct LubricationInputs {
   const lubrication::LubricationSettings& lubrication;  // the oil and the models along the path
   LubricatedOperatingPoint operating;
-  // The case's flanks (Persson's spectrum: their generated ground profiles, when both have one).
+  // The case's flanks (Persson's spectrum: their measured patches or generated ground profiles).
   std::array<const surface::FlankSpec*, 2> flank_specs = {nullptr, nullptr};
 };
 
@@ -112,6 +112,7 @@ class MeshLubrication {
   std::vector<LubricationSummary::NamedPoint> named_points() const;
   double sigma_ratio() const;  // the summit model's composite sigma over the flanks' Rq
   bool surfaces_disagree() const;
+  std::string spectrum_text() const;  // Persson's spectrum, for the verdict
   std::string verdict_text(const LubricationSummary& sum) const;
   std::vector<std::string> warnings(const LubricationSummary& sum) const;
   void oil_warnings(const LubricationSummary& sum, std::vector<std::string>& out) const;

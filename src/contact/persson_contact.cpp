@@ -1,5 +1,7 @@
 #include "contact/persson_contact.hpp"
 
+#include "core/power_law_integral.hpp"
+
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/special_functions/expint.hpp>
 #include <boost/math/special_functions/gamma.hpp>
@@ -11,6 +13,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace geartrib::contact {
 
@@ -141,7 +144,31 @@ SpectrumPart SpectrumPart::self_affine(double rq, double rolloff, double cutoff,
   return p;
 }
 
+SpectrumPart SpectrumPart::tabulated(std::vector<double> nodes, std::vector<double> values) {
+  SpectrumPart p;
+  p.shape = Shape::tabulated;
+  p.nodes = std::move(nodes);
+  p.values = std::move(values);
+  p.validate();
+  p.rq = std::sqrt(2.0 * kPi * p.moment(1, std::numeric_limits<double>::infinity()));
+  return p;
+}
+
 void SpectrumPart::validate() const {
+  if (shape == Shape::tabulated) {
+    if (nodes.size() < 2 || values.size() != nodes.size())
+      throw std::invalid_argument("spectrum: a table needs at least two nodes and one value per node");
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      if (!(nodes[k] > 0.0) || !std::isfinite(nodes[k]) || (k > 0 && !(nodes[k] > nodes[k - 1])))
+        throw std::invalid_argument("spectrum: a table's wavenumbers must be positive, finite and increasing");
+      if (!(values[k] >= 0.0) || !std::isfinite(values[k]))
+        throw std::invalid_argument("spectrum: a table's C(q) must be finite and not negative");
+    }
+    bool power = false;  // a segment with both ends positive
+    for (std::size_t k = 0; k + 1 < nodes.size(); ++k) power = power || (values[k] > 0.0 && values[k + 1] > 0.0);
+    if (!power) throw std::invalid_argument("spectrum: the table carries no power (no segment with both ends above 0)");
+    return;
+  }
   if (!(rq > 0.0) || !std::isfinite(rq)) throw std::invalid_argument("spectrum: rq must be positive");
   if (shape == Shape::gaussian) {
     if (!(correlation_length > 0.0) || !std::isfinite(correlation_length))
@@ -172,6 +199,28 @@ double self_affine_shape_moment(const SpectrumPart& s, int n, double q) {
 double self_affine_level(const SpectrumPart& s) {
   return s.rq * s.rq / (2.0 * kPi * self_affine_shape_moment(s, 1, s.cutoff));
 }
+// The tabulated shape's segment k (nodes k and k + 1): its exponent s_k, or NaN where an end is 0.
+double table_exponent(const SpectrumPart& s, std::size_t k) {
+  const double c0 = s.values[k], c1 = s.values[k + 1];
+  if (!(c0 > 0.0 && c1 > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  return std::log(c1 / c0) / std::log(s.nodes[k + 1] / s.nodes[k]);
+}
+double table_psd(const SpectrumPart& s, double q) {
+  if (!(q >= s.nodes.front() && q <= s.nodes.back())) return 0.0;
+  const auto k = static_cast<std::size_t>(std::upper_bound(s.nodes.begin(), s.nodes.end(), q) - s.nodes.begin()) - 1;
+  if (q == s.nodes[k]) return s.values[k];  // a node's own value (the last node's too)
+  const double e = table_exponent(s, k);
+  return std::isnan(e) ? 0.0 : s.values[k] * std::pow(q / s.nodes[k], e);
+}
+double table_moment(const SpectrumPart& s, int n, double q) {
+  double m = 0.0;
+  for (std::size_t k = 0; k + 1 < s.nodes.size() && s.nodes[k] < q; ++k) {
+    const double e = table_exponent(s, k);
+    if (!std::isnan(e))
+      m += core::power_law_integral(s.values[k], s.nodes[k], e, n, s.nodes[k], std::min(q, s.nodes[k + 1]));
+  }
+  return m;
+}
 }  // namespace
 
 double SpectrumPart::psd(double q) const {
@@ -179,6 +228,7 @@ double SpectrumPart::psd(double q) const {
     const double l = correlation_length;
     return rq * rq * l * l / (4.0 * kPi) * std::exp(-0.25 * q * q * l * l);
   }
+  if (shape == Shape::tabulated) return table_psd(*this, q);
   if (q < lower || q > cutoff) return 0.0;
   const double c0 = self_affine_level(*this);
   return q < rolloff ? c0 : c0 * std::pow(q / rolloff, -2.0 * (1.0 + hurst));
@@ -193,6 +243,7 @@ double SpectrumPart::moment(int n, double q) const {
     const double whole = rq * rq * std::pow(2.0, n - 2) * std::pow(l, 1 - n) / kPi * std::tgamma(a);
     return std::isfinite(q) ? whole * boost::math::gamma_p(a, 0.25 * q * q * l * l) : whole;
   }
+  if (shape == Shape::tabulated) return table_moment(*this, n, q);
   return self_affine_level(*this) * self_affine_shape_moment(*this, n, q);
 }
 
@@ -283,6 +334,14 @@ std::vector<double> breaks(const RoughnessSpectrum& c) {
       first = std::min(first, 2.0 / p.correlation_length);
       last = std::max(last, kGaussianEnd * 2.0 / p.correlation_length);
       open = true;
+      continue;
+    }
+    if (p.shape == SpectrumPart::Shape::tabulated) {      // C's slope changes at every node; it starts at
+      b.insert(b.end(), p.nodes.begin(), p.nodes.end());  // its first segment with power
+      std::size_t k = 0;
+      while (k + 2 < p.nodes.size() && !(p.values[k] > 0.0 && p.values[k + 1] > 0.0)) ++k;
+      first = std::min(first, p.nodes[k]);
+      last = std::max(last, p.nodes.back());
       continue;
     }
     if (p.lower > 0.0) b.push_back(p.lower);

@@ -72,9 +72,12 @@ PerssonStrip persson_hertz_strip(double p0, double e_star, double rms_gradient, 
 //    whose autocorrelation is rq^2 exp(-r^2/lambda^2) (a generated ground flank's correlation taken in
 //    every direction: surface/flank_profile.hpp, surface::gaussian_surface);
 //  - self_affine: C0 on [q_l, q_r), C0 (q/q_r)^(-2(1 + H)) on [q_r, q_1], 0 elsewhere (a roll-off at
-//    q_r, Hurst exponent H in (0, 1): surface::self_affine_surface's spectrum), C0 set by rq.
+//    q_r, Hurst exponent H in (0, 1): surface::self_affine_surface's spectrum), C0 set by rq;
+//  - tabulated: C_k at nodes q_k (a measured patch's radial average, surface::radial_spectrum), between
+//    neighbours the power law through them, C_k (q/q_k)^s_k with s_k = ln(C_k+1/C_k)/ln(q_k+1/q_k)
+//    (log-log linear; a segment with a zero end is zero), 0 outside [q_0, q_N]; rq the table's own.
 struct SpectrumPart {
-  enum class Shape { gaussian, self_affine };
+  enum class Shape { gaussian, self_affine, tabulated };
   Shape shape = Shape::gaussian;
   double rq = 0.0;                  // [m]
   double correlation_length = 0.0;  // lambda [m] (gaussian)
@@ -82,11 +85,15 @@ struct SpectrumPart {
   double rolloff = 0.0;             // q_r [1/m] (self_affine)
   double cutoff = 0.0;              // q_1 [1/m] (self_affine)
   double hurst = 0.8;               // H (self_affine)
+  std::vector<double> nodes;        // q_k [1/m] (tabulated): at least two, positive, increasing
+  std::vector<double> values;       // C(q_k) [m^4] (tabulated): >= 0, one per node
   static SpectrumPart gaussian(double rq, double correlation_length);
   static SpectrumPart self_affine(double rq, double rolloff, double cutoff, double hurst, double lower = 0.0);
+  static SpectrumPart tabulated(std::vector<double> nodes, std::vector<double> values);  // rq from the table
   void validate() const;  // std::invalid_argument naming the rule
   double psd(double q) const;
-  // integral_0^q q'^n C(q') dq' for n = 1, 3, 5 [m^(3 - n)], closed forms (q = inf: the whole).
+  // integral_0^q q'^n C(q') dq' for n = 1, 3, 5 [m^(3 - n)], closed forms (q = inf: the whole; tabulated:
+  // segment by segment, core::power_law_integral).
   double moment(int n, double q) const;
 };
 

@@ -174,6 +174,11 @@ Summary lubrication_summary(const LubricationSummary& l) {
       {"positions_oil_temperature_clamped", "1", static_cast<double>(l.oil_clamped_positions)},
       {"iso_effective_tip_relief_m", "m", l.iso_effective_relief}};
   s.values.insert(s.values.end(), rest.begin(), rest.end());
+  if (!l.persson_spectrum.empty()) {
+    s.texts.push_back({"persson_spectrum", l.persson_spectrum});
+    s.values.push_back({"persson_spectrum_rq_m", "m", l.persson_rms_height});
+    s.values.push_back({"persson_spectrum_rms_gradient", "1", l.persson_rms_gradient});
+  }
   if (l.iso_scuffing_safety > 0.0) {
     s.values.push_back({"iso_scuffing_safety", "1", l.iso_scuffing_safety});
     s.values.push_back({"scuffing_safety", "1", l.scuffing_safety});

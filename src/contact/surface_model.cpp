@@ -1,9 +1,14 @@
 #include "contact/surface_model.hpp"
 
 #include "asperity/contact_pair.hpp"
+#include "surface/areal_synthesis.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace geartrib::contact {
 
@@ -33,17 +38,63 @@ SurfaceModel::SurfaceModel(const StatisticalFlanks& f, const ContactSettings& cs
       plasticity_index(surface::plasticity_index(surface, contact_pair(f).modulus, contact_pair(f).hardness)),
       table(surface, *f.model, contact_pair(f), 1.5 * max_pressure + 1.0, table_options(cs)) {}
 
-FlankSpectrum flank_spectrum(const std::array<const surface::FlankSpec*, 2>& specs,
-                             const surface::EquivalentSurface& s) {
+const char* spectrum_source_name(SpectrumSource s) {
+  switch (s) {
+    case SpectrumSource::generated:
+      return "generated";
+    case SpectrumSource::measured:
+      return "measured";
+    case SpectrumSource::fitted:
+      break;
+  }
+  return "fitted";
+}
+
+std::string FlankSpectrum::sources() const {
+  return source[0] == source[1] ? spectrum_source_name(source[0])
+                                : std::string(spectrum_source_name(source[0])) + "/" + spectrum_source_name(source[1]);
+}
+
+namespace {
+
+// A flank's own spectrum: its measured patch's radial average (Persson's convention: the tabulated
+// part's), or its generated ground profile's Gaussian; none for the others.
+struct OwnSpectrum {
+  SpectrumPart part;
+  SpectrumSource source = SpectrumSource::generated;
+  double shortest = 0.0, longest = 0.0;  // a patch's resolved wavelengths [m]
+};
+std::optional<OwnSpectrum> own_spectrum(const surface::FlankSpec* f, const char* gear) {
+  if (!f) return std::nullopt;
+  if (const auto& g = f->patch) {
+    try {
+      const surface::RadialSpectrum r = surface::radial_spectrum(surface::areal_spectrum(*g));
+      return OwnSpectrum{SpectrumPart::tabulated(r.q, r.c), SpectrumSource::measured, 2.0 * std::max(g->dx, g->dy),
+                         std::max(g->nx * g->dx, g->ny * g->dy)};
+    } catch (const std::invalid_argument& e) {
+      throw MeasuredSpectrumError(fmt::format("the {}'s measured topography: {}", gear, e.what()));
+    }
+  }
+  if (f->profile && f->profile->kind == surface::ProfileKind::ground)
+    return OwnSpectrum{SpectrumPart::gaussian(f->profile->rq, f->profile->correlation_length)};
+  return std::nullopt;
+}
+
+}  // namespace
+
+FlankSpectrum flank_spectrum(const std::array<const surface::FlankSpec*, 2>& specs, const surface::EquivalentSurface& s,
+                             lubrication::PerssonSpectrum choice) {
   FlankSpectrum out;
-  const auto ground = [](const surface::FlankSpec* f) {
-    return f && f->profile && f->profile->kind == surface::ProfileKind::ground;
-  };
-  if (ground(specs[0]) && ground(specs[1])) {
-    for (const surface::FlankSpec* f : specs)
-      out.spectrum.parts.push_back(SpectrumPart::gaussian(f->profile->rq, f->profile->correlation_length));
-    out.generated = true;
-    return out;
+  if (choice == lubrication::PerssonSpectrum::flanks) {
+    const auto pinion = own_spectrum(specs[0], "pinion"), wheel = own_spectrum(specs[1], "wheel");
+    if (pinion && wheel) {
+      out.spectrum.parts = {pinion->part, wheel->part};
+      out.source = {pinion->source, wheel->source};
+      out.shortest = {pinion->shortest, wheel->shortest};
+      out.longest = {pinion->longest, wheel->longest};
+      return out;
+    }
+    out.fell_back = pinion || wheel;
   }
   if (!(s.summit_density > 0.0 && s.summit_radius > 0.0 && s.surface_sigma > 0.0))
     throw std::invalid_argument(

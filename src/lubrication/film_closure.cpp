@@ -21,6 +21,8 @@ constexpr NamedChoice<AsperityPressureModel> kAsperityPressureNames[] = {
     {AsperityPressureModel::asperity_model, "asperity-model"},
     {AsperityPressureModel::bearing_area, "bearing-area"},
     {AsperityPressureModel::persson, "persson"}};
+constexpr NamedChoice<PerssonSpectrum> kPerssonSpectrumNames[] = {{PerssonSpectrum::flanks, "flanks"},
+                                                                  {PerssonSpectrum::moments, "moments"}};
 }  // namespace
 
 std::span<const NamedChoice<FilmGap>> film_gap_choices() { return kGapNames; }
@@ -29,6 +31,8 @@ std::span<const NamedChoice<AsperityPressureModel>> asperity_pressure_model_choi
 const char* asperity_pressure_model_name(AsperityPressureModel m) {
   return choice_name(asperity_pressure_model_choices(), m);
 }
+std::span<const NamedChoice<PerssonSpectrum>> persson_spectrum_choices() { return kPerssonSpectrumNames; }
+const char* persson_spectrum_name(PerssonSpectrum s) { return choice_name(persson_spectrum_choices(), s); }
 
 double mean_gap(const CompositeHeights& s, double h) {
   if (!(s.sigma > 0.0)) return std::max(h, 0.0);

@@ -40,6 +40,17 @@ enum class AsperityPressureModel { automatic, asperity_model, bearing_area, pers
 std::span<const NamedChoice<AsperityPressureModel>> asperity_pressure_model_choices();  // lubrication.asperity_pressure
 const char* asperity_pressure_model_name(AsperityPressureModel m);
 
+// The power spectrum Persson's law takes (contact::flank_spectrum):
+//  - flanks (default): each flank's own, the two added (independent surfaces): a measured areal
+//    topography's radial average (surface::radial_spectrum: the PSD the patch resolves), a generated
+//    ground profile's Gaussian. Where a flank has neither (given by Ra, Rq, summits or moments, or a
+//    profile trace), the pair's spectrum is the moments' fit below;
+//  - moments: the self-affine spectrum fitted to the statistical model's moments (its summits through
+//    McCool's relations), whatever the flanks are: for comparison.
+enum class PerssonSpectrum { flanks, moments };
+std::span<const NamedChoice<PerssonSpectrum>> persson_spectrum_choices();  // lubrication.persson_spectrum
+const char* persson_spectrum_name(PerssonSpectrum s);
+
 struct CompositeHeights {
   double sigma = 0.0;  // [m]
   surface::HeightDistribution distribution = surface::HeightDistribution::gaussian;

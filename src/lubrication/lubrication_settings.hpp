@@ -20,6 +20,7 @@ struct LubricationSettings {
   InletHeating inlet_heating = InletHeating::gupta;
   FilmGap film_gap = FilmGap::mean_gap;
   AsperityPressureModel asperity_pressure = AsperityPressureModel::automatic;
+  PerssonSpectrum persson_spectrum = PerssonSpectrum::flanks;  // Persson's spectrum (asperity_pressure = persson)
   FilmTraction traction = FilmTraction::thermal_eyring;
   MeanFrictionLaw mean_friction = MeanFrictionLaw::iso_flash;  // the bulk-temperature estimate's law
   double wear_coefficient = 1e-17;    // Archard's dimensional k [m^2/N = m^3/(N m)] (assumed order, mild wear)

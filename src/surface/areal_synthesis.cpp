@@ -2,12 +2,14 @@
 
 #include "core/fftw_planner.hpp"
 #include "core/portable_random.hpp"
+#include "core/power_law_integral.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <stdexcept>
@@ -112,6 +114,98 @@ ArealSpectrum areal_spectrum(const HeightGrid& patch) {
     s.psd[k] = scale * (spectrum[k][0] * spectrum[k][0] + spectrum[k][1] * spectrum[k][1]);
   s.psd[0] = 0.0;
   return s;
+}
+
+namespace {
+
+// The radial average's rings: 2^(1/8) wide where a bin is narrower; the fixed point's stop, the
+// rings' variance carried to 1e-13 of the whole, and its bound (~0.5 a step: ~45 steps).
+constexpr double kRingRatio = 1.0905077326652577;
+constexpr double kRingTolerance = 1e-13;
+constexpr int kRingSteps = 200;
+
+// integral_a^b q^n C dq of the nodes' interpolant: log-log linear, a segment with a zero end zero.
+double interpolant_moment(const std::vector<double>& q, const std::vector<double>& c, int n, double a, double b) {
+  double m = 0.0;
+  for (std::size_t k = 0; k + 1 < q.size(); ++k) {
+    const double lo = std::max(a, q[k]), hi = std::min(b, q[k + 1]);
+    if (!(hi > lo) || !(c[k] > 0.0 && c[k + 1] > 0.0)) continue;
+    m += core::power_law_integral(c[k], q[k], std::log(c[k + 1] / c[k]) / std::log(q[k + 1] / q[k]), n, lo, hi);
+  }
+  return m;
+}
+
+struct Ring {
+  double inner = 0.0, outer = 0.0;  // [1/m]
+  double power = 0.0;               // sum P: its share of the variance [m^2]
+  double node = 0.0;                // [1/m]
+  double value = 0.0;               // C there [m^4]
+};
+
+}  // namespace
+
+RadialSpectrum radial_spectrum(const ArealSpectrum& s) {
+  const int kx = s.nx / 2 + 1;
+  const double dfx = 1.0 / (s.nx * s.dx), dfy = 1.0 / (s.ny * s.dy);
+  const double fine = 2.0 * kPi * std::min(dfx, dfy), coarse = 2.0 * kPi * std::max(dfx, dfy);
+  double largest = 0.0;
+  for (int l = 0; l < s.ny; ++l)
+    largest = std::max(largest, 2.0 * kPi * std::hypot((kx - 1) * dfx, signed_bin(l, s.ny) * dfy));
+  std::vector<double> edges = {0.5 * fine};
+  while (edges.back() <= largest) edges.push_back(std::max(kRingRatio * edges.back(), edges.back() + coarse));
+  // Each ring's power P = C dfx dfy (a half-plane column standing for its mirror too), sum q^2 P, and
+  // its bins' sum q^2 and count (a ring without power: its node at their rms).
+  const std::size_t n_rings = edges.size() - 1;
+  std::vector<double> p0(n_rings), p2(n_rings), q2(n_rings), count(n_rings);
+  double variance = 0.0, gradient = 0.0;
+  for (int l = 0; l < s.ny; ++l)
+    for (int i = 0; i < kx; ++i) {
+      const double q = 2.0 * kPi * std::hypot(i * dfx, signed_bin(l, s.ny) * dfy);
+      if (q == 0.0) continue;
+      const double p = half_plane_weight(i, s.nx) * s.psd[static_cast<std::size_t>(l) * kx + i] * dfx * dfy;
+      const auto k = static_cast<std::size_t>(std::upper_bound(edges.begin(), edges.end(), q) - edges.begin()) - 1;
+      p0[k] += p, p2[k] += q * q * p, q2[k] += q * q, count[k] += 1.0;
+      variance += p, gradient += q * q * p;
+    }
+  if (!(variance > 0.0)) throw std::invalid_argument("the spectrum carries no power (a flat patch)");
+  std::vector<Ring> rings;
+  for (std::size_t k = 0; k < n_rings; ++k) {
+    if (count[k] == 0.0) continue;
+    Ring r{edges[k], edges[k + 1], p0[k]};
+    r.node =
+        std::clamp(std::sqrt(p0[k] > 0.0 ? p2[k] / p0[k] : q2[k] / count[k]), r.inner, std::nextafter(r.outer, 0.0));
+    r.value = r.power / (kPi * (r.outer * r.outer - r.inner * r.inner));
+    rings.push_back(r);
+  }
+  // The nodes: the range's ends (their rings' values) and the rings'.
+  const bool low_end = rings.front().inner < rings.front().node;
+  RadialSpectrum out;
+  auto assemble = [&] {
+    out.q.clear(), out.c.clear();
+    if (low_end) out.q.push_back(rings.front().inner), out.c.push_back(rings.front().value);
+    for (const Ring& r : rings) out.q.push_back(r.node), out.c.push_back(r.value);
+    out.q.push_back(rings.back().outer), out.c.push_back(rings.back().value);
+  };
+  for (int step = 0;; ++step) {
+    assemble();
+    std::vector<double> carried(rings.size());
+    double miss = 0.0;
+    for (std::size_t k = 0; k < rings.size(); ++k) {
+      carried[k] = 2.0 * kPi * interpolant_moment(out.q, out.c, 1, rings[k].inner, rings[k].outer);
+      miss += std::abs(carried[k] - rings[k].power);
+    }
+    if (miss <= kRingTolerance * variance || step == kRingSteps) break;
+    for (std::size_t k = 0; k < rings.size(); ++k)
+      if (carried[k] > 0.0 && rings[k].power > 0.0) rings[k].value *= rings[k].power / carried[k];
+  }
+  // C(q) -> a C(q/b)/b^2 keeps integral q C dq times a and multiplies integral q^3 C dq by a b^2.
+  const double inf = std::numeric_limits<double>::infinity();
+  const double m1 = interpolant_moment(out.q, out.c, 1, 0.0, inf), m3 = interpolant_moment(out.q, out.c, 3, 0.0, inf);
+  const double a = variance / (2.0 * kPi * m1), b = std::sqrt(gradient / variance * m1 / m3);
+  for (double& q : out.q) q *= b;
+  for (double& c : out.c) c *= a / (b * b);
+  out.scale = a, out.stretch = b;
+  return out;
 }
 
 SynthesisedSurface synthesise_surface(const ArealSpectrum& s, int nx, int ny, double dx, double dy,

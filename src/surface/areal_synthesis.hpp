@@ -51,6 +51,38 @@ struct ArealSpectrum {
 // either way, or an extension beyond kMaxGridPoints.
 ArealSpectrum areal_spectrum(const HeightGrid& patch);
 
+// The radial (angular) average of an areal spectrum: the isotropic spectrum that theories of isotropic
+// surfaces take (Persson's: contact::SpectrumPart's tabulated shape), in Persson's convention, C(q)
+// [m^4] at q = 2 pi |f| [1/m] with <h^2> = integral C d^2q = 2 pi integral q C dq (the ArealSpectrum's
+// C per cycle is (2 pi)^2 times it). Between the nodes C is the power law through them (log-log
+// linear), zero outside them. Built as follows:
+//  - the bins (the whole plane's, the mean's excluded) gathered in rings about q = 0: the first from
+//    half the finer bin spacing dq, each one bin wide (the coarser spacing) until 2^(1/8) times its
+//    inner radius is wider, then 2^(1/8) wide (every ring holds bins; ~8 a doubling of q);
+//  - a node per ring at the rms wavenumber of its power (sqrt(sum q^2 P/sum P), P = C dfx dfy each
+//    bin's share of the variance), and one at each end of the range (the first ring's inner edge, the
+//    last's outer edge: the corners of the square of bins) carrying its ring's value;
+//  - the values such that the interpolant carries each ring's variance sum P exactly (from sum P over
+//    the ring's area; a ring's integral rests mostly on its own node: multiplicative fixed-point
+//    steps, converging geometrically);
+//  - then q scaled by b and C by a/b^2 so that the variance and the full gradient variance, sum q^2 P =
+//    slope_variance(x) + slope_variance(y) (the 2-D gradient that Persson's theory takes: an
+//    anisotropic patch's m2 along x plus across), are the spectrum's own to rounding. a is 1 once the
+//    rings carry their variance; before b, the rings' interpolant holds the gradient variance to the
+//    place of the power inside each ring (0.03-0.15 % measured), so b - 1 is of that order.
+// What the average holds is what the patch resolves: nothing longer than twice the patch's side (its
+// mirror's half periods, below q = 2 pi/L: the patch's form residue, little once its form is removed)
+// and nothing finer than two spacings (the Nyquist wavelength; sqrt 2 spacings in the corners of the
+// square of bins). An anisotropic patch's directions are averaged away: the isotropic theories'
+// equivalent of it, not its lay. Throws std::invalid_argument for a spectrum without power (a flat patch).
+struct RadialSpectrum {
+  std::vector<double> q;  // the nodes [1/m], increasing
+  std::vector<double> c;  // C(q) at them [m^4], >= 0
+  double scale = 1.0;     // a: the values' scaling that made the variance exact (1 once the rings carry theirs)
+  double stretch = 1.0;   // b: the nodes' scaling that made the gradient variance exact
+};
+RadialSpectrum radial_spectrum(const ArealSpectrum& s);
+
 // A map of nx x ny points at spacings dx, dy, periodic both ways (period nx dx by ny dy):
 // z = sum_k a_k cos(2 pi f_k . r + phi_k) over the map's wavevectors f_k, a_k^2/2 = C(f_k) dfx dfy
 // (C the spectrum's at(), dfx = 1/(nx dx), dfy = 1/(ny dy)), the amplitudes fixed so that the map's

@@ -118,6 +118,15 @@ void declare_lubrication(ParameterRows& table) {
           "(Persson's interfacial separation law on the flanks' spectrum, blended with the bearing area as auto by "
           "his own plastic fraction; film_gap must be mean-gap)");
   add(named_choice(
+          "lubrication.persson_spectrum", lubrication::persson_spectrum_choices(), "Persson spectrum",
+          [](auto& c, int) -> auto& { return c.lubrication.persson_spectrum; }))
+      .alias({"persson_spectrum"})
+      .doc(
+          "Persson's closure: the power spectrum his law takes. flanks: each flank's own, added (a measured areal "
+          "topography's radial average, a generated ground profile's Gaussian; where a flank has neither, the "
+          "moments' fit for the pair); moments: the self-affine spectrum fitted to the statistical model's "
+          "moments, for comparison");
+  add(named_choice(
           "lubrication.traction", lubrication::film_traction_choices(), "film traction model",
           [](auto& c, int) -> auto& { return c.lubrication.traction; }))
       .alias({"traction"})
