@@ -269,7 +269,7 @@ TEST(RadialSpectrum, AnIsotropicGaussianSurfaceGivesTheGaussianSpectrum) {
   // Gaussian at 0.01 and 0.1 E* h'_rms (the moderate loads of the closure): within 2 % in the mean
   // (measured -0.3 % at both; a map's 0.5 % and 0.8 % apart at most over six seeds: u rests on the
   // spectrum over all q, below the gradient's wavenumbers as well, and scatters less than it).
-  const double rq = 0.3e-6, lambda = 4e-6, e_star = 1e11, inf = std::numeric_limits<double>::infinity();
+  const double rq = 0.3e-6, lambda = 4e-6, e_star = 1e11;
   const contact::RoughnessSpectrum gaussian{{contact::SpectrumPart::gaussian(rq, lambda)}};
   const contact::PerssonSeparation exact(gaussian, e_star);
   const std::vector<double> loads = {0.01, 0.1};
