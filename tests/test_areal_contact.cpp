@@ -469,6 +469,18 @@ double rms_gradient(const std::vector<double>& h, int n, double dx) {
     }
   return std::sqrt(s2 / (static_cast<double>(n) * n));
 }
+// A self-affine n x n map of 1 um spacing and 1 um rq, H = 0.8, rolled off at a window's fraction,
+// cut off at 4 spacings.
+geartrib::surface::SelfAffineSpec self_affine(int n, double rolloff_fraction) {
+  geartrib::surface::SelfAffineSpec spec;
+  spec.nx = spec.ny = n;
+  spec.spacing = 1e-6;
+  spec.rq = 1e-6;
+  spec.hurst = 0.8;
+  spec.rolloff_wavelength = n * spec.spacing / rolloff_fraction;
+  spec.cutoff_wavelength = 4.0 * spec.spacing;
+  return spec;
+}
 double dot(const std::vector<double>& a, const std::vector<double>& b) {
   return std::inner_product(a.begin(), a.end(), b.begin(), 0.0);
 }
@@ -520,19 +532,12 @@ TEST(ArealContact, PreconditionedAndPlainIterationsAgree) {
   // The same contact problem (its solution unique: the energy is strictly convex on the pressures)
   // by the preconditioned conjugate gradients and by Polonsky & Keer's own, on a self-affine surface
   // periodic both ways and on one open both ways, elastic under load, capped under load (the gradient
-  // projection) and capped at the approach, from
-  // 0.3 % to 97 % contact: the same elements in contact, and the pressures within 1e-8 of their
-  // rms. (Both stop at a residual r of 1e-11 of the heights' rms; r moves a pressure by about
-  // E* r/dx = 1 Pa, 4e-10 of the rms pressure at the lightest load; 3e-12 to 6e-10 measured.)
+  // projection) and capped at the approach, from 0.3 % to 97 % contact: the same elements in contact,
+  // and the pressures within 1e-8 of their rms. (Both stop at a residual r of 1e-11 of the heights' rms; r moves a
+  // pressure by about E* r/dx = 1 Pa, 4e-10 of the rms pressure at the lightest load; 3e-12 to 6e-10 measured.)
   for (const bool periodic : {true, false}) {
     const int n = 64;
-    geartrib::surface::SelfAffineSpec spec;
-    spec.nx = spec.ny = n;
-    spec.spacing = 1e-6;
-    spec.rq = 1e-6;
-    spec.hurst = 0.8;
-    spec.rolloff_wavelength = n * spec.spacing / 8.0;
-    spec.cutoff_wavelength = 4.0 * spec.spacing;
+    geartrib::surface::SelfAffineSpec spec = self_affine(n, 8.0);
     spec.seed = 7;
     const std::vector<double> h = geartrib::surface::self_affine_surface(spec).z;
     const ElasticKernel k(grid(n, n, spec.spacing, spec.spacing, periodic, periodic), kEstar);
@@ -571,13 +576,7 @@ TEST(ArealContact, PreconditionedIterationStaysShortFromLightToNearlyFullContact
   // preconditioned one stagnated (5302 and 13759 iterations at 256^2 and 97 %: a conjugate direction
   // built across the jump of the residual a clipped element leaves).
   const int n = 128;
-  geartrib::surface::SelfAffineSpec spec;
-  spec.nx = spec.ny = n;
-  spec.spacing = 1e-6;
-  spec.rq = 1e-6;
-  spec.hurst = 0.8;
-  spec.rolloff_wavelength = n * spec.spacing / 16.0;
-  spec.cutoff_wavelength = 4.0 * spec.spacing;
+  geartrib::surface::SelfAffineSpec spec = self_affine(n, 16.0);
   const ElasticKernel k(grid(n, n, spec.spacing, spec.spacing, true, true), kEstar);
   ArealOptions o = elastic(1e-8);
   o.max_iterations = 120;
