@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -124,7 +125,8 @@ std::string svg_plot(const std::string& title, const std::string& x_label, const
                      const std::vector<Curve>& curves, const std::string& y_label,
                      const std::vector<std::pair<std::string, double>>& marks) {
   const double w = 640, h = 300, left = 70, right = 20, top = 30, bottom = 45;
-  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  double x0 = kInf, x1 = -kInf, y0 = kInf, y1 = -kInf;
   for (double v : x) x0 = std::min(x0, v), x1 = std::max(x1, v);
   for (const auto& c : curves)
     for (double v : c.y)

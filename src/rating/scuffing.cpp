@@ -39,11 +39,11 @@ IntegralTemperature iso_integral_temperature(const IntegralTemperatureInputs& in
   const double b = spec.face_width;
   const double eps = p.contact_ratio;
   if (eps < 1.0 || eps > 2.5)
-    out.findings.push_back(fmt::format("integral temperature: eps_alpha = {:.3f} outside [1, 2.5]", eps));
+    out.findings.emplace_back(fmt::format("integral temperature: eps_alpha = {:.3f} outside [1, 2.5]", eps));
   if (alpha < 15.0 * std::numbers::pi / 180.0 || alpha > 25.0 * std::numbers::pi / 180.0)
-    out.findings.push_back("integral temperature: pressure angle outside [15, 25] deg");
+    out.findings.emplace_back("integral temperature: pressure angle outside [15, 25] deg");
   if (in.pitch_line_speed > kMaxScuffingSpeed)
-    out.findings.push_back(
+    out.findings.emplace_back(
         fmt::format("scuffing: v = {:.3g} m/s beyond the methods' tests (v < 80 m/s)", in.pitch_line_speed));
 
   // Eqs. (1)-(7): mu_mC at C with w_Bt = K F_t/b (K_Bgamma = 1 for eps_gamma <= 2).
@@ -62,11 +62,11 @@ IntegralTemperature iso_integral_temperature(const IntegralTemperatureInputs& in
       lubrication::mean_friction(lubrication::MeanFrictionLaw::iso, c, lubrication::BaseOil::mineral);
   add("mu_mC", mu.coefficient, "1", "ISO/TS 6336-21 eq. (1) (lubrication.mean_friction = iso)");
   if (mu.load_raised)
-    out.findings.push_back("integral temperature: w_Bt below 150 N/mm, mu_mC evaluated at 150 N/mm (clause 5.1)");
+    out.findings.emplace_back("integral temperature: w_Bt below 150 N/mm, mu_mC evaluated at 150 N/mm (clause 5.1)");
   if (mu.speed_capped)
-    out.findings.push_back("integral temperature: v above 50 m/s, mu_mC evaluated at 50 m/s (clause 5.1)");
+    out.findings.emplace_back("integral temperature: v above 50 m/s, mu_mC evaluated at 50 m/s (clause 5.1)");
   if (mu.below_speed_range)
-    out.findings.push_back(
+    out.findings.emplace_back(
         "integral temperature: v below 1 m/s, where the friction exceeds mu_mC's formula (clause 5.1)");
 
   // Eq. (22)-(24): geometry factor at the pinion tip E.

@@ -99,7 +99,7 @@ void rate_scuffing(LubricatedRating& x) {
     theta_s = x.add("theta_S", rating::fzg_scuffing_temperature(oil.fzg_scuffing_stage, x_w, x_l), "K",
                     "ISO/TS 6336-20 eq. (99): 80 degC + (0.85 + 1.4 X_W) X_L S_FZG^2", oil.fzg_assumed);
   } else {
-    out.findings.push_back(
+    out.findings.emplace_back(
         "scuffing: no scuffing temperature (lubrication.scuffing_temperature, or the oil's fzg_scuffing_stage): the "
         "contact and integral temperatures are reported without the safeties S_B and S_intS");
   }
@@ -121,7 +121,7 @@ void rate_scuffing(LubricatedRating& x) {
   }
   if (ls.bulk_estimated && c.lubrication.mean_friction == lubrication::MeanFrictionLaw::iso &&
       pair.tangential_line_load(c.operating.pinion_torque) < lubrication::kIsoMinTangentialLoad)
-    out.findings.push_back(
+    out.findings.emplace_back(
         "scuffing: the bulk estimate's friction law (iso) is floored at 150 N/mm at the nominal load: its rise taken "
         "to the rating load with the flash temperatures is approximate");
   const double bulk = ls.bulk_estimated ? t_oil + (ls.bulk_temperature - t_oil) * contact::path_mean(scaled) /
@@ -163,7 +163,7 @@ void rate_scuffing(LubricatedRating& x) {
   out.findings.insert(out.findings.end(), ti.findings.begin(), ti.findings.end());
   out.integral_scuffing_safety = ti.safety;
   if (!(ti.safety > 0.0) && theta_s > 0.0)
-    out.findings.push_back("integral temperature: no permissible temperature (the oil has no fzg_scuffing_stage)");
+    out.findings.emplace_back("integral temperature: no permissible temperature (the oil has no fzg_scuffing_stage)");
 }
 
 // Micropitting: lambda_GF,min at the rating load and the permissible film (given, or from the oil's
@@ -181,7 +181,7 @@ void rate_micropitting(LubricatedRating& x) {
   // Method B's development range (ISO/TS 6336-22 scope): modules 3..11 mm, 8..60 m/s, applicable above 2 m/s.
   const double v = x.lc.find("v")->value, m = c.gear_pair.module;
   if (v < 2.0 || v > 60.0 || m < 3e-3 || m > 11e-3)
-    out.findings.push_back(fmt::format(
+    out.findings.emplace_back(fmt::format(
         "micropitting: v = {:.3g} m/s, m = {:.3g} mm outside method B's development range (3..11 mm, 8..60 m/s; "
         "applicable above 2 m/s)",
         v, m * 1e3));
@@ -210,7 +210,7 @@ void rate_micropitting(LubricatedRating& x) {
                      "ISO/TR 15144-1: 1.4 W_W lambda_GFT (recollected)", true,
                      "unconfirmed: the standard's text was not available");
   } else {
-    out.findings.push_back(
+    out.findings.emplace_back(
         "micropitting: no permissible film (the oil's permissible_lambda or fzg_micropitting_stage): lambda_GF,min "
         "is reported without the safety S_lambda");
   }
@@ -226,7 +226,8 @@ rating::RatingResult rate_case(const Case& c, const gear::GearMesh& mesh, const 
   rating::RatingResult out;
   const bool lub = c.lubrication.lubricated;
   if (!lub && (req.pitting || req.scuffing || req.micropitting)) {
-    out.findings.push_back("a dry case: pitting (Z_L, Z_v), scuffing and micropitting need the oil and are not rated");
+    out.findings.emplace_back(
+        "a dry case: pitting (Z_L, Z_v), scuffing and micropitting need the oil and are not rated");
     req.pitting = req.scuffing = req.micropitting = false;
   }
   const gear::SpurPair& pair = mesh.pair();

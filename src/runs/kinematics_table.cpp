@@ -34,8 +34,8 @@ io::Table empty_table(const gear::GearMesh& mesh) {
               "mesh_stiffness_N_per_m",
               "pairs_in_contact"};
   if (mesh.tooth_contact()) {
-    t.header.push_back("separation_m");
-    t.header.push_back("transmission_error_m");
+    t.header.emplace_back("separation_m");
+    t.header.emplace_back("transmission_error_m");
   }
   return t;
 }

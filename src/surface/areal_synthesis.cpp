@@ -64,7 +64,8 @@ double ArealSpectrum::at(double fx, double fy) const {
   const double u = fx * nx * dx, v = fy * ny * dy;          // in bins
   constexpr double kSlack = 1e-9;                           // a bin's own frequency, rounded
   const double px = fx * length_x(), py = fy * length_y();  // periods across the patch
-  if (u > nx / 2 + kSlack || std::abs(v) > ny / 2 + kSlack || px * px + py * py < 1.0 - kSlack) return 0.0;
+  const int top_x = nx / 2, top_y = ny / 2;                 // the highest bins (an odd count's floor)
+  if (u > top_x + kSlack || std::abs(v) > top_y + kSlack || px * px + py * py < 1.0 - kSlack) return 0.0;
   const int kx = nx / 2 + 1;
   const int i0 = std::min(static_cast<int>(std::floor(u)), kx - 1), i1 = std::min(i0 + 1, kx - 1);
   const double tu = std::clamp(u - i0, 0.0, 1.0);
