@@ -167,7 +167,7 @@ Knob dynamics_knob(const Case& c, bool integrators) {
     for (std::size_t i = 0; i + 1 < rtols.size(); ++i)
       integrator.settings.push_back(
           {engine + " " + rtols[i], {{"mesh.dynamics", engine}, {"dynamics.relative_tolerance", rtols[i]}}});
-  integrator.settings.push_back({"cvode " + rtols.back(), finest});
+  integrator.settings.emplace_back("cvode " + rtols.back(), finest);
   return integrator;
 }
 
@@ -341,13 +341,13 @@ std::vector<Setting> ladder_rungs(const std::vector<Knob>& resolution, Runs& run
   for (const Knob& k : resolution) {
     const auto settings = allowed(k, runs, left_out);
     for (const auto& [s, t] : settings)
-      if (areal_runs.insert(t).second) rungs.push_back({"areal " + k.name + " " + s.label, s.changes, Rung::areal});
+      if (areal_runs.insert(t).second) rungs.emplace_back("areal " + k.name + " " + s.label, s.changes, Rung::areal);
     const Setting& last = settings.back().first;
     finest.insert(finest.end(), last.changes.begin(), last.changes.end());
     reference += (reference.empty() ? "" : ", ") + k.name + " " + last.label;
   }
   required(finest);
-  rungs.push_back({"areal finest", finest, Rung::areal});
+  rungs.emplace_back("areal finest", finest, Rung::areal);
   return rungs;
 }
 

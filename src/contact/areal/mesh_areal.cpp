@@ -282,6 +282,7 @@ ArealMeshPass areal_mesh_pass(const ArealMeshSetup& m, int pinion_tooth, int whe
   const FlankMap* wm = mapped ? &st.maps[1][static_cast<std::size_t>(wheel_tooth)] : nullptr;
   const double share1 = st.options.pinion_plastic_share, share2 = 1.0 - share1;
   ArealMeshPass out;
+  if (running_in && !mapped) throw std::logic_error("areal running-in without the flanks' maps");
   if (running_in) out.plastic = {std::vector<double>(pm->z.size(), 0.0), std::vector<double>(wm->z.size(), 0.0)};
   std::vector<double> h(g.size()), start, plastic(running_in ? g.size() : 0);
   const int n = static_cast<int>(p.size());
@@ -431,6 +432,7 @@ Areal::Solution Areal::solve(const FidelityInputs& in, State& st, const std::vec
     for (const auto& q : passes) new_plastic = std::max(new_plastic, q.max_new_plastic);
     if (running_in) {
       std::vector<const ArealMeshPass*> views;
+      views.reserve(passes.size());
       for (const auto& q : passes) views.push_back(&q);
       out.history.push_back(areal_history_row(round, views, st));
     }
