@@ -212,15 +212,7 @@ double table_psd(const SpectrumPart& s, double q) {
   const double e = table_exponent(s, k);
   return std::isnan(e) ? 0.0 : s.values[k] * std::pow(q / s.nodes[k], e);
 }
-double table_moment(const SpectrumPart& s, int n, double q) {
-  double m = 0.0;
-  for (std::size_t k = 0; k + 1 < s.nodes.size() && s.nodes[k] < q; ++k) {
-    const double e = table_exponent(s, k);
-    if (!std::isnan(e))
-      m += core::power_law_integral(s.values[k], s.nodes[k], e, n, s.nodes[k], std::min(q, s.nodes[k + 1]));
-  }
-  return m;
-}
+
 }  // namespace
 
 double SpectrumPart::psd(double q) const {
@@ -243,7 +235,7 @@ double SpectrumPart::moment(int n, double q) const {
     const double whole = rq * rq * std::pow(2.0, n - 2) * std::pow(l, 1 - n) / kPi * std::tgamma(a);
     return std::isfinite(q) ? whole * boost::math::gamma_p(a, 0.25 * q * q * l * l) : whole;
   }
-  if (shape == Shape::tabulated) return table_moment(*this, n, q);
+  if (shape == Shape::tabulated) return core::log_log_moment(nodes, values, n, 0.0, q);
   return self_affine_level(*this) * self_affine_shape_moment(*this, n, q);
 }
 

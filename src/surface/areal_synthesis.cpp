@@ -125,17 +125,6 @@ constexpr double kRingRatio = 1.0905077326652577;
 constexpr double kRingTolerance = 1e-13;
 constexpr int kRingSteps = 200;
 
-// integral_a^b q^n C dq of the nodes' interpolant: log-log linear, a segment with a zero end zero.
-double interpolant_moment(const std::vector<double>& q, const std::vector<double>& c, int n, double a, double b) {
-  double m = 0.0;
-  for (std::size_t k = 0; k + 1 < q.size(); ++k) {
-    const double lo = std::max(a, q[k]), hi = std::min(b, q[k + 1]);
-    if (!(hi > lo) || !(c[k] > 0.0 && c[k + 1] > 0.0)) continue;
-    m += core::power_law_integral(c[k], q[k], std::log(c[k + 1] / c[k]) / std::log(q[k + 1] / q[k]), n, lo, hi);
-  }
-  return m;
-}
-
 struct Ring {
   double inner = 0.0, outer = 0.0;  // [1/m]
   double power = 0.0;               // sum P: its share of the variance [m^2]
@@ -192,7 +181,7 @@ RadialSpectrum radial_spectrum(const ArealSpectrum& s) {
     std::vector<double> carried(rings.size());
     double miss = 0.0;
     for (std::size_t k = 0; k < rings.size(); ++k) {
-      carried[k] = 2.0 * kPi * interpolant_moment(out.q, out.c, 1, rings[k].inner, rings[k].outer);
+      carried[k] = 2.0 * kPi * core::log_log_moment(out.q, out.c, 1, rings[k].inner, rings[k].outer);
       miss += std::abs(carried[k] - rings[k].power);
     }
     if (miss <= kRingTolerance * variance || step == kRingSteps) break;
@@ -201,7 +190,8 @@ RadialSpectrum radial_spectrum(const ArealSpectrum& s) {
   }
   // C(q) -> a C(q/b)/b^2 keeps integral q C dq times a and multiplies integral q^3 C dq by a b^2.
   const double inf = std::numeric_limits<double>::infinity();
-  const double m1 = interpolant_moment(out.q, out.c, 1, 0.0, inf), m3 = interpolant_moment(out.q, out.c, 3, 0.0, inf);
+  const double m1 = core::log_log_moment(out.q, out.c, 1, 0.0, inf),
+               m3 = core::log_log_moment(out.q, out.c, 3, 0.0, inf);
   const double a = variance / (2.0 * kPi * m1), b = std::sqrt(gradient / variance * m1 / m3);
   for (double& q : out.q) q *= b;
   for (double& c : out.c) c *= a / (b * b);
