@@ -269,11 +269,18 @@ double ElasticKernel::transform_in_place(const std::vector<double>& multiplier) 
   return pkp;
 }
 
-void ElasticKernel::apply(std::span<const double> p, std::span<double> u) const {
+double ElasticKernel::transform(std::span<const double> in, std::span<double> out,
+                                const std::vector<double>& multiplier) const {
   const int nx = grid_.nx, ny = grid_.ny;
-  for (int j = 0; j < ny; ++j) std::copy_n(p.begin() + static_cast<std::ptrdiff_t>(j) * nx, nx, window_row(j));
-  apply_in_place();
-  for (int j = 0; j < ny; ++j) std::copy_n(window_row(j), nx, u.begin() + static_cast<std::ptrdiff_t>(j) * nx);
+  for (int j = 0; j < ny; ++j) std::copy_n(in.begin() + static_cast<std::ptrdiff_t>(j) * nx, nx, window_row(j));
+  const double product = transform_in_place(multiplier);
+  for (int j = 0; j < ny; ++j) std::copy_n(window_row(j), nx, out.begin() + static_cast<std::ptrdiff_t>(j) * nx);
+  return product;
+}
+
+void ElasticKernel::apply(std::span<const double> p, std::span<double> u) const { transform(p, u, kernel_hat_); }
+double ElasticKernel::precondition(std::span<const double> g, std::span<double> z) const {
+  return transform(g, z, inverse_hat_);
 }
 
 namespace {
@@ -692,21 +699,12 @@ ArealSolution capped_load_control(const ElasticKernel& kernel, std::span<const d
     const bool step_t = free_count > 0 && big_g > 0.0;
     double rho = big_g;
     if (pre && step_t) {
-      const ArealGrid& g = kernel.grid();
-      for (int j = 0; j < g.ny; ++j) {
-        double* r = kernel.window_row(j);
-        const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(g.nx);
-        for (int c = 0; c < g.nx; ++c) r[c] = state[row + c] == 1 ? gap[row + c] : 0.0;
-      }
-      rho = kernel.precondition_in_place();
+      for (std::size_t i = 0; i < n; ++i) w[i] = state[i] == 1 ? gap[i] : 0.0;  // (w free until K t below)
+      rho = kernel.precondition(w, z);
       double z_sum = 0.0;
-      for (int j = 0; j < g.ny; ++j) {
-        const double* r = kernel.window_row(j);
-        const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(g.nx);
-        for (int c = 0; c < g.nx; ++c) z[row + c] = state[row + c] == 1 ? r[c] : 0.0, z_sum += z[row + c];
-      }
+      for (std::size_t i = 0; i < n; ++i) z_sum += state[i] == 1 ? z[i] : 0.0;
       const double z_mean = z_sum / static_cast<double>(free_count);
-      for (std::size_t i = 0; i < n; ++i) z[i] -= state[i] == 1 ? z_mean : 0.0;
+      for (std::size_t i = 0; i < n; ++i) z[i] = state[i] == 1 ? z[i] - z_mean : 0.0;
     }
     const bool use_z = pre && step_t;
     const double beta = reset || rho_old == 0.0 ? 0.0 : rho / rho_old;

@@ -75,6 +75,8 @@ class ElasticKernel {
   // u = K p: p and u of grid().size() [Pa -> m]; u may not alias p. Uses the kernel's own
   // transform arrays: one thread at a time per kernel.
   void apply(std::span<const double> p, std::span<double> u) const;
+  // z = M g with the kernel's inverse (below), returning g.M g [m Pa]; z may not alias g.
+  double precondition(std::span<const double> g, std::span<double> z) const;
   // The transform's own array, for a caller that writes K's input and reads its output in place
   // (no copy either way): the window's row j at window_row(j), nx values. apply_in_place() turns
   // the pressure the rows hold into u = K p there (until the next application) and returns p.K p
@@ -98,6 +100,7 @@ class ElasticKernel {
   std::vector<double> kernel_hat_;   // real (the kernel is even), my_ x (mx_/2 + 1), scaled by 1/(mx_ my_)
   std::vector<double> inverse_hat_;  // the inverse's multiplier, likewise (0 where the kernel's is not positive)
   double transform_in_place(const std::vector<double>& multiplier) const;
+  double transform(std::span<const double> in, std::span<double> out, const std::vector<double>& multiplier) const;
   struct Transforms;  // FFTW's arrays and plans (core/fftw_planner.hpp, internal)
   std::unique_ptr<Transforms> fft_;
   double self_ = 0.0;
