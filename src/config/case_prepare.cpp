@@ -4,6 +4,7 @@
 #include "config/case_records.hpp"
 #include "contact/areal/mesh_areal.hpp"
 #include "contact/fidelity_registry.hpp"
+#include "contact/surface_model.hpp"
 #include "core/keyed_error.hpp"
 #include "gear/iso6336_stiffness.hpp"
 #include "gear/spur_pair.hpp"
@@ -201,7 +202,7 @@ void prepare_case(Case& c) {
   if (persson_takes_patches(c) && given(c, spectrum_key))
     for (int gear = 0; gear < 2; ++gear) {
       const surface::FlankSpec& f = (gear == 0 ? c.pinion : c.wheel).flank;
-      if (!f.patch && !(f.profile && f.profile->kind == surface::ProfileKind::ground))
+      if (!contact::has_own_spectrum(f))
         throw located_error_as_written(
             c, spectrum_key,
             fmt::format("the {} flank has no spectrum of its own (a measured areal topography or a generated ground "

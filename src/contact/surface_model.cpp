@@ -1,6 +1,7 @@
 #include "contact/surface_model.hpp"
 
 #include "asperity/contact_pair.hpp"
+#include "core/named_choices.hpp"
 #include "surface/areal_synthesis.hpp"
 
 #include <fmt/format.h>
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <span>
 
 namespace geartrib::contact {
 
@@ -38,16 +40,18 @@ SurfaceModel::SurfaceModel(const StatisticalFlanks& f, const ContactSettings& cs
       plasticity_index(surface::plasticity_index(surface, contact_pair(f).modulus, contact_pair(f).hardness)),
       table(surface, *f.model, contact_pair(f), 1.5 * max_pressure + 1.0, table_options(cs)) {}
 
+namespace {
+constexpr NamedChoice<SpectrumSource> kSpectrumSources[] = {{SpectrumSource::generated, "generated"},
+                                                            {SpectrumSource::measured, "measured"},
+                                                            {SpectrumSource::fitted, "fitted"}};
+}  // namespace
+
 const char* spectrum_source_name(SpectrumSource s) {
-  switch (s) {
-    case SpectrumSource::generated:
-      return "generated";
-    case SpectrumSource::measured:
-      return "measured";
-    case SpectrumSource::fitted:
-      break;
-  }
-  return "fitted";
+  return choice_name(std::span<const NamedChoice<SpectrumSource>>(kSpectrumSources), s);
+}
+
+bool has_own_spectrum(const surface::FlankSpec& f) {
+  return f.patch || (f.profile && f.profile->kind == surface::ProfileKind::ground);
 }
 
 std::string FlankSpectrum::sources() const {
@@ -65,7 +69,7 @@ struct OwnSpectrum {
   double shortest = 0.0, longest = 0.0;  // a patch's resolved wavelengths [m]
 };
 std::optional<OwnSpectrum> own_spectrum(const surface::FlankSpec* f, const char* gear) {
-  if (!f) return std::nullopt;
+  if (!f || !has_own_spectrum(*f)) return std::nullopt;
   if (const auto& g = f->patch) {
     try {
       const surface::RadialSpectrum r = surface::radial_spectrum(surface::areal_spectrum(*g));
@@ -75,9 +79,7 @@ std::optional<OwnSpectrum> own_spectrum(const surface::FlankSpec* f, const char*
       throw MeasuredSpectrumError(fmt::format("the {}'s measured topography: {}", gear, e.what()));
     }
   }
-  if (f->profile && f->profile->kind == surface::ProfileKind::ground)
-    return OwnSpectrum{SpectrumPart::gaussian(f->profile->rq, f->profile->correlation_length)};
-  return std::nullopt;
+  return OwnSpectrum{SpectrumPart::gaussian(f->profile->rq, f->profile->correlation_length)};  // a ground profile
 }
 
 }  // namespace

@@ -83,5 +83,8 @@ struct MeasuredSpectrumError : std::invalid_argument {
 };
 FlankSpectrum flank_spectrum(const std::array<const surface::FlankSpec*, 2>& specs, const surface::EquivalentSurface& s,
                              lubrication::PerssonSpectrum choice = lubrication::PerssonSpectrum::flanks);
+// Whether a flank has a spectrum of its own (a measured areal patch, or a generated ground profile):
+// what flank_spectrum's `flanks` takes for it.
+bool has_own_spectrum(const surface::FlankSpec& f);
 
 }  // namespace geartrib::contact
